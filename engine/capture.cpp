@@ -1,0 +1,37 @@
+#include "engine/capture.h"
+
+#include <cstring>
+
+namespace pf {
+
+RgbaImage captureFrame(const GpuContext& ctx, const SceneRenderer& renderer, const RenderTarget& target) {
+    const VkExtent2D extent = target.extent;
+    const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
+    Buffer readback = createHostBuffer(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+
+    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+        renderer.record(cmd, target);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {extent.width, extent.height, 1};
+        vkCmdCopyImageToBuffer(cmd, target.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1,
+                               &region);
+        // Make the copy visible to the host read that follows the wait.
+        VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+        barrier.srcStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+        barrier.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        barrier.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+        barrier.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dep.memoryBarrierCount = 1;
+        dep.pMemoryBarriers = &barrier;
+        vkCmdPipelineBarrier2(cmd, &dep);
+    });
+
+    RgbaImage image{extent.width, extent.height, std::vector<uint8_t>(bytes)};
+    std::memcpy(image.pixels.data(), readback.mapped, bytes);
+    destroyBuffer(ctx, readback);
+    return image;
+}
+
+} // namespace pf

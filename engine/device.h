@@ -1,0 +1,72 @@
+// Vulkan instance, debug messenger, physical device choice and the logical
+// device with its one graphics+compute queue.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace pf {
+
+// Collects what the Khronos validation layer reports. Tests fail on any
+// message; tools print them as they come.
+struct ValidationLog {
+    mutable std::mutex mutex;
+    std::vector<std::string> messages; // warnings and errors, in order
+    uint32_t errorCount = 0;
+    uint32_t warningCount = 0;
+    bool echoToStderr = true;
+
+    uint32_t count() const;
+    std::vector<std::string> snapshot() const;
+    void clear();
+};
+
+struct GpuOptions {
+    bool validation = false;
+    // Case-insensitive substring of the device name; when empty the
+    // PLANTFIELD_DEVICE environment variable is used, then the best device.
+    std::string deviceName;
+    std::vector<std::string> instanceExtensions; // e.g. what GLFW needs
+    bool echoValidation = true;
+};
+
+struct GpuContext {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+    VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t queueFamily = 0;
+    VkCommandPool commandPool = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties properties{};
+    VkPhysicalDeviceMemoryProperties memoryProperties{};
+    bool presentation = false; // VK_KHR_swapchain enabled
+    std::unique_ptr<ValidationLog> validationLog;
+};
+
+// Step 1: the instance (and the messenger when validation is on).
+void createInstance(GpuContext& ctx, const GpuOptions& options);
+// Step 2: pick a physical device and create the logical device. With a
+// surface, only devices whose queue can present to it are considered and
+// VK_KHR_swapchain is enabled.
+void createDevice(GpuContext& ctx, const GpuOptions& options, VkSurfaceKHR surface = VK_NULL_HANDLE);
+// Both steps for headless use.
+void createHeadlessContext(GpuContext& ctx, const GpuOptions& options);
+void destroyContext(GpuContext& ctx);
+
+struct PhysicalDeviceInfo {
+    std::string name;
+    std::string type; // "discrete", "integrated", "virtual", "cpu", "other"
+    uint32_t apiVersion = 0;
+};
+std::vector<PhysicalDeviceInfo> listPhysicalDevices(VkInstance instance);
+
+// Validation defaults to on in debug builds and when PLANTFIELD_VALIDATION=1.
+bool validationWantedByDefault();
+
+} // namespace pf

@@ -1,0 +1,144 @@
+#include "engine/resources.h"
+
+#include "engine/vk_check.h"
+
+#include <cstring>
+#include <stdexcept>
+
+namespace pf {
+
+uint32_t findMemoryType(const GpuContext& ctx, uint32_t typeBits, VkMemoryPropertyFlags flags) {
+    const VkPhysicalDeviceMemoryProperties& props = ctx.memoryProperties;
+    for (uint32_t i = 0; i < props.memoryTypeCount; ++i)
+        if ((typeBits & (1u << i)) && (props.memoryTypes[i].propertyFlags & flags) == flags) return i;
+    throw std::runtime_error("no Vulkan memory type with the required properties");
+}
+
+Buffer createBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage, VkMemoryPropertyFlags memoryFlags) {
+    Buffer out;
+    out.size = size;
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = size;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VK_CHECK(vkCreateBuffer(ctx.device, &info, nullptr, &out.buffer));
+
+    VkMemoryRequirements req;
+    vkGetBufferMemoryRequirements(ctx.device, out.buffer, &req);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    alloc.memoryTypeIndex = findMemoryType(ctx, req.memoryTypeBits, memoryFlags);
+    VK_CHECK(vkAllocateMemory(ctx.device, &alloc, nullptr, &out.memory));
+    VK_CHECK(vkBindBufferMemory(ctx.device, out.buffer, out.memory, 0));
+    if (memoryFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
+        VK_CHECK(vkMapMemory(ctx.device, out.memory, 0, VK_WHOLE_SIZE, 0, &out.mapped));
+    return out;
+}
+
+Buffer createHostBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage) {
+    return createBuffer(ctx, size, usage, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+}
+
+Buffer createDeviceBufferWithData(const GpuContext& ctx, const void* data, VkDeviceSize size, VkBufferUsageFlags usage) {
+    Buffer staging = createHostBuffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    std::memcpy(staging.mapped, data, size);
+    Buffer out = createBuffer(ctx, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+        VkBufferCopy region{0, 0, size};
+        vkCmdCopyBuffer(cmd, staging.buffer, out.buffer, 1, &region);
+    });
+    destroyBuffer(ctx, staging);
+    return out;
+}
+
+void destroyBuffer(const GpuContext& ctx, Buffer& buffer) {
+    if (buffer.buffer) vkDestroyBuffer(ctx.device, buffer.buffer, nullptr);
+    if (buffer.memory) vkFreeMemory(ctx.device, buffer.memory, nullptr);
+    buffer = {};
+}
+
+Image createImage(const GpuContext& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
+                  VkSampleCountFlagBits samples, VkImageAspectFlags aspect) {
+    Image out;
+    out.format = format;
+    out.extent = extent;
+    out.samples = samples;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {extent.width, extent.height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = samples;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VK_CHECK(vkCreateImage(ctx.device, &info, nullptr, &out.image));
+
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(ctx.device, out.image, &req);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    alloc.memoryTypeIndex = findMemoryType(ctx, req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    VK_CHECK(vkAllocateMemory(ctx.device, &alloc, nullptr, &out.memory));
+    VK_CHECK(vkBindImageMemory(ctx.device, out.image, out.memory, 0));
+
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = out.image;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = format;
+    view.subresourceRange = {aspect, 0, 1, 0, 1};
+    VK_CHECK(vkCreateImageView(ctx.device, &view, nullptr, &out.view));
+    return out;
+}
+
+void destroyImage(const GpuContext& ctx, Image& image) {
+    if (image.view) vkDestroyImageView(ctx.device, image.view, nullptr);
+    if (image.image) vkDestroyImage(ctx.device, image.image, nullptr);
+    if (image.memory) vkFreeMemory(ctx.device, image.memory, nullptr);
+    image = {};
+}
+
+void submitAndWait(const GpuContext& ctx, const std::function<void(VkCommandBuffer)>& record) {
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = ctx.commandPool;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    VkCommandBuffer cmd;
+    VK_CHECK(vkAllocateCommandBuffers(ctx.device, &alloc, &cmd));
+
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+    record(cmd);
+    VK_CHECK(vkEndCommandBuffer(cmd));
+
+    VkCommandBufferSubmitInfo cmdInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+    cmdInfo.commandBuffer = cmd;
+    VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+    submit.commandBufferInfoCount = 1;
+    submit.pCommandBufferInfos = &cmdInfo;
+    VK_CHECK(vkQueueSubmit2(ctx.queue, 1, &submit, VK_NULL_HANDLE));
+    VK_CHECK(vkQueueWaitIdle(ctx.queue));
+    vkFreeCommandBuffers(ctx.device, ctx.commandPool, 1, &cmd);
+}
+
+void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, const ImageTransition& t) {
+    VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    barrier.srcStageMask = t.srcStage;
+    barrier.srcAccessMask = t.srcAccess;
+    barrier.dstStageMask = t.dstStage;
+    barrier.dstAccessMask = t.dstAccess;
+    barrier.oldLayout = t.oldLayout;
+    barrier.newLayout = t.newLayout;
+    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = image;
+    barrier.subresourceRange = {aspect, 0, 1, 0, 1};
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.imageMemoryBarrierCount = 1;
+    dep.pImageMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+} // namespace pf

@@ -1,0 +1,52 @@
+// Buffers, images, one-shot command submission and the barriers between them.
+#pragma once
+
+#include "engine/device.h"
+
+#include <functional>
+
+namespace pf {
+
+struct Buffer {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkDeviceSize size = 0;
+    void* mapped = nullptr; // persistently mapped when host visible
+};
+
+struct Image {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent{};
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+};
+
+uint32_t findMemoryType(const GpuContext& ctx, uint32_t typeBits, VkMemoryPropertyFlags flags);
+
+Buffer createBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage, VkMemoryPropertyFlags memoryFlags);
+// A host-visible, coherent, mapped buffer for data the CPU writes or reads.
+Buffer createHostBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage);
+// A device-local buffer filled through a staging copy.
+Buffer createDeviceBufferWithData(const GpuContext& ctx, const void* data, VkDeviceSize size, VkBufferUsageFlags usage);
+void destroyBuffer(const GpuContext& ctx, Buffer& buffer);
+
+Image createImage(const GpuContext& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
+                  VkSampleCountFlagBits samples, VkImageAspectFlags aspect);
+void destroyImage(const GpuContext& ctx, Image& image);
+
+// Records with `record`, submits, and waits for the queue to finish.
+void submitAndWait(const GpuContext& ctx, const std::function<void(VkCommandBuffer)>& record);
+
+struct ImageTransition {
+    VkPipelineStageFlags2 srcStage;
+    VkAccessFlags2 srcAccess;
+    VkPipelineStageFlags2 dstStage;
+    VkAccessFlags2 dstAccess;
+    VkImageLayout oldLayout;
+    VkImageLayout newLayout;
+};
+void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, const ImageTransition& t);
+
+} // namespace pf

@@ -1,0 +1,30 @@
+#pragma once
+// Diagnostics for malformed input and errors raised while deriving.
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lsys {
+
+// One problem found in a source file. Lines and columns are 1-based.
+struct Diagnostic {
+    std::string file;
+    int line = 0;
+    int column = 0;
+    std::string message;   // what is wrong
+    std::string expected;  // what would have been accepted here (may be empty)
+};
+
+// "file:line:col: error: message (expected ...)" followed by the offending
+// source line and a caret under the column.
+std::string formatDiagnostic(const Diagnostic& diagnostic, std::string_view source);
+std::string formatDiagnostics(const std::vector<Diagnostic>& diagnostics, std::string_view source);
+
+// Raised by derivation and interpretation: budget exceeded, bad runtime value.
+struct DerivationError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace lsys

@@ -1,0 +1,279 @@
+#include "lsystem/expression.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+
+namespace lsys {
+
+namespace {
+
+struct Function {
+    std::string_view name;
+    Op op;
+    int arity;
+};
+
+constexpr Function kFunctions[] = {
+    {"sin", Op::Sin, 1},     {"cos", Op::Cos, 1},     {"tan", Op::Tan, 1},   {"asin", Op::Asin, 1},
+    {"acos", Op::Acos, 1},   {"atan", Op::Atan, 1},   {"atan2", Op::Atan2, 2}, {"sqrt", Op::Sqrt, 1},
+    {"exp", Op::Exp, 1},     {"log", Op::Log, 1},     {"abs", Op::Abs, 1},   {"floor", Op::Floor, 1},
+    {"ceil", Op::Ceil, 1},   {"min", Op::Min, 2},     {"max", Op::Max, 2},   {"clamp", Op::Clamp, 3},
+    {"ran", Op::Ran, 1},     {"nran", Op::NRan, 2},
+};
+
+// Net effect of each instruction on the stack depth.
+int stackEffect(Op op) {
+    switch (op) {
+        case Op::Const: case Op::Var: return 1;
+        case Op::Neg: case Op::Not: case Op::Sin: case Op::Cos: case Op::Tan: case Op::Asin: case Op::Acos:
+        case Op::Atan: case Op::Sqrt: case Op::Exp: case Op::Log: case Op::Abs: case Op::Floor: case Op::Ceil:
+        case Op::Ran: return 0;
+        case Op::Select: case Op::Clamp: return -2;
+        default: return -1;
+    }
+}
+
+// Binary operators by precedence level, lowest first; '?:' sits below them all.
+struct Binary {
+    std::string_view token;
+    Op op;
+    int precedence;
+};
+constexpr Binary kBinaries[] = {
+    {"||", Op::Or, 1}, {"&&", Op::And, 2}, {"==", Op::Eq, 3}, {"!=", Op::Ne, 3}, {"<=", Op::Le, 4},
+    {">=", Op::Ge, 4}, {"<", Op::Lt, 4},   {">", Op::Gt, 4},  {"+", Op::Add, 5}, {"-", Op::Sub, 5},
+    {"*", Op::Mul, 6}, {"/", Op::Div, 6},  {"%", Op::Mod, 6},
+};
+
+struct Compiler {
+    Cursor& cursor;
+    const ExpressionScope& scope;
+    const std::string& file;
+    std::vector<Diagnostic>& diagnostics;
+    Expression out;
+    int depth = 0;
+    int maxDepth = 0;
+    bool failed = false;
+    bool usesVariablesOrRandom = false;
+
+    void emit(Instruction instruction) {
+        out.code.push_back(instruction);
+        depth += stackEffect(instruction.op);
+        maxDepth = std::max(maxDepth, depth);
+        if (instruction.op == Op::Var || instruction.op == Op::Ran || instruction.op == Op::NRan)
+            usesVariablesOrRandom = true;
+    }
+
+    void fail(std::string message, std::string expected = {}) {
+        if (!failed) diagnostics.push_back(errorAt(cursor, file, std::move(message), std::move(expected)));
+        failed = true;
+    }
+
+    const Binary* peekBinary() {
+        cursor.skipSpaces();
+        if (cursor.atArrow()) return nullptr;  // "x > 0 --> ..." : the '-' begins the arrow
+        for (const Binary& binary : kBinaries)
+            if (cursor.startsWith(binary.token)) return &binary;
+        return nullptr;
+    }
+
+    // expression := binary ('?' expression ':' expression)?
+    void expression(int nesting) {
+        if (nesting > kMaxNesting) return fail("expression nested too deeply");
+        binary(1, nesting + 1);
+        if (failed) return;
+        cursor.skipSpaces();
+        if (cursor.peek() == '?') {
+            cursor.accept("?");
+            expression(nesting + 1);
+            if (failed) return;
+            cursor.skipSpaces();
+            if (!cursor.accept(":")) return fail("incomplete conditional expression", "':'");
+            expression(nesting + 1);
+            emit({Op::Select});
+        }
+    }
+
+    void binary(int minPrecedence, int nesting) {
+        if (nesting > kMaxNesting) return fail("expression nested too deeply");
+        unary(nesting + 1);
+        while (!failed) {
+            const Binary* binary = peekBinary();
+            if (!binary || binary->precedence < minPrecedence) return;
+            cursor.pos += binary->token.size();
+            this->binary(binary->precedence + 1, nesting + 1);
+            emit({binary->op});
+        }
+    }
+
+    void unary(int nesting) {
+        if (nesting > kMaxNesting) return fail("expression nested too deeply");
+        cursor.skipSpaces();
+        if (cursor.peek() == '-' && !cursor.atArrow()) {
+            cursor.accept("-");
+            unary(nesting + 1);
+            emit({Op::Neg});
+        } else if (cursor.peek() == '+') {
+            cursor.accept("+");
+            unary(nesting + 1);
+        } else if (cursor.peek() == '!' && cursor.peek(1) != '=') {
+            cursor.accept("!");
+            unary(nesting + 1);
+            emit({Op::Not});
+        } else {
+            power(nesting + 1);
+        }
+    }
+
+    // Right-associative and tighter than unary minus: -2^2 is -4.
+    void power(int nesting) {
+        primary(nesting + 1);
+        cursor.skipSpaces();
+        if (!failed && cursor.peek() == '^') {
+            cursor.accept("^");
+            unary(nesting + 1);
+            emit({Op::Pow});
+        }
+    }
+
+    void number() {
+        size_t begin = cursor.pos;
+        while (std::isdigit(static_cast<unsigned char>(cursor.peek())) || cursor.peek() == '.') ++cursor.pos;
+        if ((cursor.peek() == 'e' || cursor.peek() == 'E') &&
+            (std::isdigit(static_cast<unsigned char>(cursor.peek(1))) ||
+             ((cursor.peek(1) == '-' || cursor.peek(1) == '+') && std::isdigit(static_cast<unsigned char>(cursor.peek(2)))))) {
+            cursor.pos += 2;
+            while (std::isdigit(static_cast<unsigned char>(cursor.peek()))) ++cursor.pos;
+        }
+        std::string_view text = cursor.text.substr(begin, cursor.pos - begin);
+        double value = 0;
+        auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error != std::errc() || end != text.data() + text.size()) {
+            cursor.pos = begin;
+            return fail("malformed number '" + std::string(text) + "'");
+        }
+        emit({Op::Const, 0, value});
+    }
+
+    void call(const Function& function, int nesting) {
+        cursor.skipSpaces();
+        if (!cursor.accept("(")) return fail("function '" + std::string(function.name) + "' needs arguments", "'('");
+        for (int argument = 0; argument < function.arity; ++argument) {
+            if (argument > 0) {
+                cursor.skipSpaces();
+                if (!cursor.accept(","))
+                    return fail("function '" + std::string(function.name) + "' takes " + std::to_string(function.arity) +
+                                    " arguments", "','");
+            }
+            expression(nesting + 1);
+            if (failed) return;
+        }
+        cursor.skipSpaces();
+        if (!cursor.accept(")"))
+            return fail("function '" + std::string(function.name) + "' takes " + std::to_string(function.arity) +
+                            " argument" + (function.arity > 1 ? "s" : ""), "')'");
+        emit({function.op});
+    }
+
+    void primary(int nesting) {
+        cursor.skipSpaces();
+        char c = cursor.peek();
+        if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && std::isdigit(static_cast<unsigned char>(cursor.peek(1))))) {
+            number();
+        } else if (c == '(') {
+            cursor.accept("(");
+            expression(nesting + 1);
+            if (failed) return;
+            cursor.skipSpaces();
+            if (!cursor.accept(")")) fail("unbalanced parenthesis", "')'");
+        } else if (isIdentifierStart(c)) {
+            size_t begin = cursor.pos;
+            std::string name(cursor.identifier());
+            for (const Function& function : kFunctions)
+                if (function.name == name) return call(function, nesting);
+            for (size_t i = 0; i < scope.variables.size(); ++i)
+                if (scope.variables[i] == name) return emit({Op::Var, static_cast<uint16_t>(i)});
+            if (scope.constants)
+                if (auto found = scope.constants->find(name); found != scope.constants->end())
+                    return emit({Op::Const, 0, found->second});
+            cursor.pos = begin;
+            fail("unknown name '" + name + "'", "a parameter of this production, a #define constant or a function");
+        } else {
+            fail(cursor.atEnd() ? "expression ends too early" : std::string("unexpected '") + c + "' in expression",
+                 "a number, a name, '(' or a unary operator");
+        }
+    }
+};
+
+}  // namespace
+
+std::optional<Expression> parseExpression(Cursor& cursor, const ExpressionScope& scope, const std::string& file,
+                                          std::vector<Diagnostic>& diagnostics) {
+    Compiler compiler{cursor, scope, file, diagnostics};
+    compiler.expression(0);
+    if (!compiler.failed && compiler.maxDepth > kMaxStack) compiler.fail("expression too complex to evaluate");
+    if (compiler.failed) return std::nullopt;
+    // Fold expressions of constants only, so "#define" arithmetic costs nothing per module.
+    if (!compiler.usesVariablesOrRandom && compiler.out.code.size() > 1) {
+        RandomStream unused;
+        double value = evaluate(compiler.out, nullptr, unused);
+        compiler.out.code = {{Op::Const, 0, value}};
+    }
+    return std::move(compiler.out);
+}
+
+double evaluate(const Expression& expression, const double* variables, RandomStream& random) {
+    double stack[kMaxStack];
+    int top = -1;  // index of the top element
+    for (const Instruction& instruction : expression.code) {
+        double& a = stack[top > 0 ? top - 1 : 0];  // second from the top, for binary operators
+        double& t = stack[top >= 0 ? top : 0];
+        switch (instruction.op) {
+            case Op::Const: stack[++top] = instruction.value; break;
+            case Op::Var: stack[++top] = variables[instruction.variable]; break;
+            case Op::Neg: t = -t; break;
+            case Op::Not: t = t == 0.0 ? 1.0 : 0.0; break;
+            case Op::Add: a = a + t; --top; break;
+            case Op::Sub: a = a - t; --top; break;
+            case Op::Mul: a = a * t; --top; break;
+            case Op::Div: a = a / t; --top; break;
+            case Op::Pow: a = std::pow(a, t); --top; break;
+            case Op::Mod: a = std::fmod(a, t); --top; break;
+            case Op::Lt: a = a < t; --top; break;
+            case Op::Le: a = a <= t; --top; break;
+            case Op::Gt: a = a > t; --top; break;
+            case Op::Ge: a = a >= t; --top; break;
+            case Op::Eq: a = a == t; --top; break;
+            case Op::Ne: a = a != t; --top; break;
+            case Op::And: a = (a != 0.0 && t != 0.0); --top; break;
+            case Op::Or: a = (a != 0.0 || t != 0.0); --top; break;
+            case Op::Select: stack[top - 2] = stack[top - 2] != 0.0 ? stack[top - 1] : stack[top]; top -= 2; break;
+            case Op::Sin: t = std::sin(t); break;
+            case Op::Cos: t = std::cos(t); break;
+            case Op::Tan: t = std::tan(t); break;
+            case Op::Asin: t = std::asin(t); break;
+            case Op::Acos: t = std::acos(t); break;
+            case Op::Atan: t = std::atan(t); break;
+            case Op::Atan2: a = std::atan2(a, t); --top; break;
+            case Op::Sqrt: t = std::sqrt(t); break;
+            case Op::Exp: t = std::exp(t); break;
+            case Op::Log: t = std::log(t); break;
+            case Op::Abs: t = std::fabs(t); break;
+            case Op::Floor: t = std::floor(t); break;
+            case Op::Ceil: t = std::ceil(t); break;
+            case Op::Min: a = std::min(a, t); --top; break;
+            case Op::Max: a = std::max(a, t); --top; break;
+            case Op::Clamp:
+                stack[top - 2] = std::clamp(stack[top - 2], std::min(stack[top - 1], t), std::max(stack[top - 1], t));
+                top -= 2;
+                break;
+            case Op::Ran: t = t * random.uniform(); break;
+            case Op::NRan: a = random.normal(a, t); --top; break;
+        }
+    }
+    return top >= 0 ? stack[top] : 0.0;
+}
+
+}  // namespace lsys

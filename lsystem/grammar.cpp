@@ -1,0 +1,42 @@
+#include "lsystem/grammar.h"
+
+namespace lsys {
+
+namespace {
+
+bool drawsRandom(const Expression& expression) {
+    for (const Instruction& instruction : expression.code)
+        if (instruction.op == Op::Ran || instruction.op == Op::NRan) return true;
+    return false;
+}
+
+void index(ProductionSet& set, size_t symbolCount) {
+    set.bySymbol.assign(symbolCount, {});
+    set.producesParameters = false;
+    set.contextSensitive = false;
+    for (size_t i = 0; i < set.productions.size(); ++i) {
+        Production& production = set.productions[i];
+        production.usesRandom = production.groupSize > 1 || (production.condition && drawsRandom(*production.condition));
+        for (const SuccessorModule& module : production.successor) {
+            set.producesParameters |= !module.arguments.empty();
+            for (const Expression& argument : module.arguments) production.usesRandom |= drawsRandom(argument);
+        }
+        set.contextSensitive |= !production.left.empty() || !production.right.empty();
+        if (production.groupSize > 0) set.bySymbol[production.strict.symbol].push_back(static_cast<uint32_t>(i));
+    }
+    // An alternative of a stochastic group draws if any alternative does: the leader decides for all.
+    for (size_t i = 0; i < set.productions.size(); ++i)
+        for (uint32_t k = 1; k < set.productions[i].groupSize; ++k)
+            set.productions[i].usesRandom |= set.productions[i + k].usesRandom;
+}
+
+}  // namespace
+
+void finalizeGrammar(Grammar& grammar) {
+    index(grammar.rules, grammar.symbols.size());
+    index(grammar.decomposition, grammar.symbols.size());
+    index(grammar.interpretation, grammar.symbols.size());
+    grammar.ignored.resize(grammar.symbols.size(), 0);
+}
+
+}  // namespace lsys

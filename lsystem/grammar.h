@@ -1,0 +1,75 @@
+#pragma once
+// The parsed form of an L-system: header settings, axiom and the three
+// production tables (rules, decomposition, interpretation).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "lsystem/expression.h"
+#include "lsystem/symbols.h"
+
+namespace lsys {
+
+// A module of a predecessor or context: its parameters bind the formal
+// variables firstVariable .. firstVariable+paramCount-1 of the production.
+struct PatternModule {
+    SymbolId symbol = 0;
+    uint16_t paramCount = 0;
+    uint16_t firstVariable = 0;
+};
+
+struct SuccessorModule {
+    SymbolId symbol = 0;
+    std::vector<Expression> arguments;
+};
+
+struct Production {
+    std::string label;
+    int line = 0;
+    std::vector<PatternModule> left;   // left context, in string order
+    PatternModule strict;              // the module being replaced
+    std::vector<PatternModule> right;  // right context, may contain [ and ]
+    std::vector<std::string> variables;
+    std::optional<Expression> condition;
+    std::vector<SuccessorModule> successor;
+    // Stochastic productions: the first of a group holds groupSize, the number
+    // of consecutive alternatives (itself included); the others hold 0.
+    double probability = 1.0;
+    bool stochastic = false;
+    uint32_t groupSize = 1;
+    bool usesRandom = false;  // condition, probability choice or arguments draw random numbers
+};
+
+struct ProductionSet {
+    std::vector<Production> productions;  // file order
+    // Per symbol, the productions to try in order (group leaders only).
+    std::vector<std::vector<uint32_t>> bySymbol;
+    int maxDepth = 1;  // decomposition / interpretation passes
+    bool producesParameters = false;
+    bool contextSensitive = false;
+    bool empty() const { return productions.empty(); }
+};
+
+struct Grammar {
+    std::string file;
+    SymbolTable symbols;
+    std::unordered_map<std::string, double> constants;
+    uint64_t seed = 0;
+    int derivationLength = 0;
+    double angle = 45.0;  // degrees, default for bare + - & ^ \ /
+    double step = 1.0;    // default length for bare F f
+    double width = 1.0;   // initial width
+    std::vector<SuccessorModule> axiom;  // evaluated when a derivation starts, with its seed
+    std::vector<uint8_t> ignored;  // per symbol: 1 when skipped while matching context
+    ProductionSet rules;
+    ProductionSet decomposition;
+    ProductionSet interpretation;
+};
+
+// Indexes productions by symbol and sizes the per-symbol tables; called by the parser.
+void finalizeGrammar(Grammar& grammar);
+
+}  // namespace lsys

@@ -1,0 +1,78 @@
+#include "lsystem/module_string.h"
+
+#include <cstdio>
+
+namespace lsys {
+
+void ModuleString::clear() {
+    symbols.clear();
+    paramStart.clear();
+    params.clear();
+}
+
+void ModuleString::addOffsets() {
+    if (!paramStart.empty()) return;
+    paramStart.assign(symbols.size() + 1, static_cast<uint32_t>(params.size()));
+}
+
+void ModuleString::push(SymbolId symbol, std::span<const float> parameters) {
+    if (!parameters.empty()) addOffsets();
+    symbols.push_back(symbol);
+    if (!paramStart.empty()) {
+        params.insert(params.end(), parameters.begin(), parameters.end());
+        paramStart.push_back(static_cast<uint32_t>(params.size()));
+    }
+}
+
+void ModuleString::append(const ModuleString& other) {
+    if (other.hasParameters()) addOffsets();
+    size_t base = params.size();
+    symbols.insert(symbols.end(), other.symbols.begin(), other.symbols.end());
+    if (!paramStart.empty()) {
+        if (other.hasParameters()) {
+            for (size_t i = 1; i < other.paramStart.size(); ++i)
+                paramStart.push_back(static_cast<uint32_t>(base + other.paramStart[i]));
+        } else {
+            paramStart.resize(symbols.size() + 1, static_cast<uint32_t>(base));
+        }
+    }
+    params.insert(params.end(), other.params.begin(), other.params.end());
+}
+
+std::string toString(const ModuleString& string, const SymbolTable& symbols) {
+    std::string out;
+    out.reserve(string.size());
+    char buffer[32];
+    for (size_t i = 0; i < string.size(); ++i) {
+        out += symbols.name(string.symbols[i]);
+        std::span<const float> parameters = string.parameters(i);
+        if (parameters.empty()) continue;
+        out += '(';
+        for (size_t p = 0; p < parameters.size(); ++p) {
+            if (p > 0) out += ',';
+            std::snprintf(buffer, sizeof buffer, "%g", static_cast<double>(parameters[p]));
+            out += buffer;
+        }
+        out += ')';
+    }
+    return out;
+}
+
+void computeBracketPartners(const ModuleString& string, std::vector<int32_t>& partners) {
+    const size_t n = string.size();
+    partners.assign(n, -1);
+    std::vector<int32_t> open;
+    for (size_t i = 0; i < n; ++i) {
+        SymbolId symbol = string.symbols[i];
+        if (symbol == kPush) {
+            open.push_back(static_cast<int32_t>(i));
+        } else if (symbol == kPop && !open.empty()) {
+            partners[i] = open.back();
+            partners[open.back()] = static_cast<int32_t>(i);
+            open.pop_back();
+        }
+    }
+    for (int32_t unclosed : open) partners[unclosed] = static_cast<int32_t>(n);
+}
+
+}  // namespace lsys

@@ -1,0 +1,45 @@
+#pragma once
+// The derived word as a structure of arrays: one symbol id per module, and the
+// parameters of all modules packed in one float array. A word in which no
+// module has parameters stores no offsets at all, which halves the memory
+// traffic of plain D0L systems.
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "lsystem/symbols.h"
+
+namespace lsys {
+
+struct ModuleString {
+    std::vector<SymbolId> symbols;
+    // Empty when no module has parameters; otherwise size()+1 entries and the
+    // parameters of module i are params[paramStart[i] .. paramStart[i+1]).
+    std::vector<uint32_t> paramStart;
+    std::vector<float> params;
+
+    size_t size() const { return symbols.size(); }
+    bool empty() const { return symbols.empty(); }
+    bool hasParameters() const { return !paramStart.empty(); }
+    uint32_t paramCount(size_t i) const { return paramStart.empty() ? 0 : paramStart[i + 1] - paramStart[i]; }
+    const float* paramData(size_t i) const { return params.data() + (paramStart.empty() ? 0 : paramStart[i]); }
+    std::span<const float> parameters(size_t i) const { return {paramData(i), paramCount(i)}; }
+
+    void clear();
+    void push(SymbolId symbol, std::span<const float> parameters = {});
+    // Appends a whole string (used to join the chunks rewritten in parallel).
+    void append(const ModuleString& other);
+    // Switches to the representation with offsets (all modules so far without parameters).
+    void addOffsets();
+};
+
+// Canonical text: modules back to back, parameters printed with %g joined by commas: F(1,0.5)[+A(2)]
+std::string toString(const ModuleString& string, const SymbolTable& symbols);
+
+// Index of the matching bracket for every '[' and ']'; -1 for other modules and
+// for an unmatched ']'; size() for an unclosed '['.
+void computeBracketPartners(const ModuleString& string, std::vector<int32_t>& partners);
+
+}  // namespace lsys

@@ -1,0 +1,52 @@
+// Shading shared by every pass: one sun, a sky dome, distance fog, tone map.
+#include "layouts.h"
+
+layout(set = 0, binding = BINDING_FRAME_UNIFORMS, std140) uniform FrameBlock {
+    FrameUniforms frame;
+};
+
+vec3 skyRadiance(vec3 dir) {
+    float up = clamp(dir.y, 0.0, 1.0);
+    vec3 sky = mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, pow(up, 0.5));
+    // Below the horizon the dome fades to a darker ground bounce.
+    sky = dir.y < 0.0 ? mix(frame.skyHorizon.rgb, frame.groundAlbedo.rgb * 0.5, clamp(-dir.y * 4.0, 0.0, 1.0)) : sky;
+    float sunDot = max(dot(dir, frame.sunDirection.xyz), 0.0);
+    sky += frame.sunRadiance.rgb * (0.02 * pow(sunDot, 8.0) + 0.25 * pow(sunDot, 64.0));
+    sky += frame.sunRadiance.rgb * smoothstep(0.9995, 0.9998, sunDot) * 8.0;
+    return sky;
+}
+
+// Lambert sun plus a hemispherical sky term that favours upward normals.
+vec3 shadeDiffuse(vec3 albedo, vec3 normal, float occlusion) {
+    float sun = max(dot(normal, frame.sunDirection.xyz), 0.0);
+    float skyWeight = 0.5 + 0.5 * normal.y;
+    vec3 ambient = mix(frame.groundAlbedo.rgb * frame.skyHorizon.rgb, frame.skyZenith.rgb, skyWeight);
+    return albedo * (frame.sunRadiance.rgb * sun + ambient * occlusion);
+}
+
+vec3 applyFog(vec3 color, vec3 worldPos) {
+    vec3 toPoint = worldPos - frame.cameraPosition.xyz;
+    float dist = length(toPoint);
+    float amount = 1.0 - exp(-dist * frame.fog.x);
+    return mix(color, skyRadiance(normalize(vec3(toPoint.x, max(toPoint.y, 0.0), toPoint.z))), amount);
+}
+
+// Narkowicz's fit of the ACES filmic curve; the sRGB attachment encodes gamma.
+vec3 toneMap(vec3 x) {
+    return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
+
+// Deterministic value noise for surface variation (no textures yet).
+float hash12(vec2 p) {
+    vec3 p3 = fract(vec3(p.xyx) * 0.1031);
+    p3 += dot(p3, p3.yzx + 33.33);
+    return fract((p3.x + p3.y) * p3.z);
+}
+
+float valueNoise(vec2 p) {
+    vec2 i = floor(p);
+    vec2 f = fract(p);
+    vec2 u = f * f * (3.0 - 2.0 * f);
+    return mix(mix(hash12(i), hash12(i + vec2(1, 0)), u.x),
+               mix(hash12(i + vec2(0, 1)), hash12(i + vec2(1, 1)), u.x), u.y);
+}

@@ -1,0 +1,10 @@
+#version 460
+// A full-screen triangle at the far plane; the fragment shader reconstructs
+// each pixel's view ray.
+layout(location = 0) out vec2 outNdc;
+
+void main() {
+    vec2 uv = vec2((gl_VertexIndex << 1) & 2, gl_VertexIndex & 2);
+    outNdc = uv * 2.0 - 1.0;
+    gl_Position = vec4(outNdc, 1.0, 1.0);
+}

@@ -1,0 +1,37 @@
+// Every file in data/plants parses without diagnostics and derives its
+// derivation length within the default budget.
+
+#include <filesystem>
+
+#include "lsystem/turtle.h"
+#include "test_support.h"
+
+namespace lsys::test {
+namespace {
+
+std::vector<std::string> plantFiles() {
+    std::vector<std::string> files;
+    for (const auto& entry : std::filesystem::directory_iterator(dataPath("plants")))
+        if (entry.path().extension() == ".lsys") files.push_back(entry.path().filename().string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+TEST(DataFiles, ThereAreEnough) { EXPECT_GE(plantFiles().size(), 20u); }
+
+TEST(DataFiles, EveryPlantLoadsAndDerives) {
+    for (const std::string& file : plantFiles()) {
+        SCOPED_TRACE(file);
+        ParseResult result = loadLsystemFile(dataPath("plants/" + file));
+        bool readable = false;
+        std::string source = readTextFile(dataPath("plants/" + file), readable);
+        ASSERT_TRUE(result.ok()) << formatDiagnostics(result.diagnostics, source);
+        EXPECT_NE(source.find("//"), std::string::npos) << "each plant file documents where it comes from";
+        ModuleString string = derive(result.grammar);
+        EXPECT_GT(string.size(), 0u);
+        if (string.size() < 2'000'000) turtleSegments(result.grammar, string);
+    }
+}
+
+}  // namespace
+}  // namespace lsys::test

@@ -1,0 +1,118 @@
+// The 3D turtle: ABOP frame conventions, segments, widths, branching.
+
+#include <glm/geometric.hpp>
+
+#include "lsystem/turtle.h"
+#include "test_support.h"
+
+namespace lsys::test {
+namespace {
+
+std::vector<TurtleSegment> segmentsOf(const std::string& source) {
+    Grammar grammar = parseOk(source);
+    return turtleSegments(grammar, derive(grammar));
+}
+
+void expectNear(glm::vec3 actual, glm::vec3 expected) {
+    EXPECT_NEAR(glm::distance(actual, expected), 0.0f, 1e-5f) << actual.x << "," << actual.y << "," << actual.z;
+}
+
+TEST(Turtle, FDrawsAlongTheHeadingWithTheDefaultStep) {
+    auto segments = segmentsOf("step: 2\nwidth: 0.5\nAxiom: FF(3)\n");
+    ASSERT_EQ(segments.size(), 2u);
+    expectNear(segments[0].start, {0, 0, 0});
+    expectNear(segments[0].end, {0, 2, 0});
+    expectNear(segments[1].end, {0, 5, 0});
+    EXPECT_FLOAT_EQ(segments[0].startRadius, 0.25f);
+    EXPECT_EQ(segments[0].parent, -1);
+    EXPECT_EQ(segments[1].parent, 0);
+}
+
+TEST(Turtle, SmallFMovesWithoutDrawing) {
+    auto segments = segmentsOf("Axiom: f(2)F\n");
+    ASSERT_EQ(segments.size(), 1u);
+    expectNear(segments[0].start, {0, 2, 0});
+}
+
+TEST(Turtle, PlusTurnsTowardsLeft) {
+    // H = +Y, L = -X: '+' turns the heading towards -X (counter-clockwise seen from +Z).
+    auto segments = segmentsOf("angle: 90\nAxiom: +F\n");
+    expectNear(segments.at(0).end, {-1, 0, 0});
+    segments = segmentsOf("angle: 90\nAxiom: -F\n");
+    expectNear(segments.at(0).end, {1, 0, 0});
+}
+
+TEST(Turtle, PitchAndRoll) {
+    // '&' pitches down: the heading turns towards -U (-Z).
+    expectNear(segmentsOf("angle: 90\nAxiom: &F\n").at(0).end, {0, 0, -1});
+    expectNear(segmentsOf("angle: 90\nAxiom: ^F\n").at(0).end, {0, 0, 1});
+    // Rolling does not move the heading, but changes what '+' does afterwards.
+    expectNear(segmentsOf("angle: 90\nAxiom: \\(90)F\n").at(0).end, {0, 1, 0});
+    expectNear(segmentsOf("angle: 90\nAxiom: /(90)+F\n").at(0).end, {0, 0, -1});
+    expectNear(segmentsOf("angle: 90\nAxiom: \\(90)+F\n").at(0).end, {0, 0, 1});
+}
+
+TEST(Turtle, TurnAroundAndExplicitAngles) {
+    expectNear(segmentsOf("Axiom: |F\n").at(0).end, {0, -1, 0});
+    expectNear(segmentsOf("angle: 10\nAxiom: +(90)F\n").at(0).end, {-1, 0, 0});
+}
+
+TEST(Turtle, BranchesRestoreStateAndRecordParents) {
+    auto segments = segmentsOf("angle: 90\nAxiom: F[+F][-F]F\n");
+    ASSERT_EQ(segments.size(), 4u);
+    expectNear(segments[1].end, {-1, 1, 0});
+    expectNear(segments[2].end, {1, 1, 0});
+    expectNear(segments[3].start, {0, 1, 0});
+    expectNear(segments[3].end, {0, 2, 0});
+    EXPECT_EQ(segments[1].parent, 0);
+    EXPECT_EQ(segments[2].parent, 0);
+    EXPECT_EQ(segments[3].parent, 0);
+}
+
+TEST(Turtle, WidthAndTaper) {
+    auto segments = segmentsOf("width: 2\nAxiom: F!(1)F!F(1,0.2)\n");
+    ASSERT_EQ(segments.size(), 3u);
+    EXPECT_FLOAT_EQ(segments[0].startRadius, 1.0f);
+    EXPECT_FLOAT_EQ(segments[1].startRadius, 0.5f);
+    EXPECT_FLOAT_EQ(segments[2].startRadius, 0.35f);  // bare ! multiplies by 0.7
+    EXPECT_FLOAT_EQ(segments[2].endRadius, 0.1f);
+}
+
+TEST(Turtle, MaterialIndex) {
+    auto segments = segmentsOf("Axiom: F;(3)F;F'F\n");
+    ASSERT_EQ(segments.size(), 4u);
+    EXPECT_EQ(segments[0].material, 0u);
+    EXPECT_EQ(segments[1].material, 3u);
+    EXPECT_EQ(segments[2].material, 4u);
+    EXPECT_EQ(segments[3].material, 5u);
+}
+
+TEST(Turtle, RollToHorizontalKeepsHeading) {
+    auto segments = segmentsOf("angle: 30\nAxiom: &+/(50)$F+(90)F\n");
+    ASSERT_EQ(segments.size(), 2u);
+    // After $, L is horizontal, so a yaw keeps the height of the end point.
+    glm::vec3 first = segments[0].end - segments[0].start;
+    glm::vec3 second = segments[1].end - segments[1].start;
+    glm::vec3 left = glm::normalize(second - first * glm::dot(first, second));
+    EXPECT_NEAR(left.y, 0.0f, 1e-5f);
+}
+
+TEST(Turtle, CutSkipsTheRestOfTheBranch) {
+    auto segments = segmentsOf("Axiom: F[F%F[F]F]F\n");
+    EXPECT_EQ(segments.size(), 3u);
+}
+
+TEST(Turtle, UsesTheInterpretationRules) {
+    auto segments = segmentsOf("Axiom: L(2)\ninterpretation:\nL(s) --> F(s)F(s)\n");
+    ASSERT_EQ(segments.size(), 2u);
+    expectNear(segments[1].end, {0, 4, 0});
+}
+
+TEST(Turtle, FrameStaysOrthonormalOverManyTurns) {
+    auto segments = segmentsOf("angle: 13.7\nAxiom: A\nA --> +&\\/F^A\nderivation length: 2000\n");
+    ASSERT_EQ(segments.size(), 2000u);
+    for (const TurtleSegment& segment : segments) ASSERT_NEAR(glm::distance(segment.start, segment.end), 1.0f, 1e-4f);
+}
+
+}  // namespace
+}  // namespace lsys::test

@@ -1,0 +1,19 @@
+// A test fixture with a headless Vulkan context on which the Khronos
+// validation layer is always on: any validation message fails the test.
+#pragma once
+
+#include "engine/device.h"
+
+#include <gtest/gtest.h>
+
+namespace pf::test {
+
+class GpuTest : public ::testing::Test {
+protected:
+    void SetUp() override;
+    void TearDown() override;
+
+    GpuContext ctx;
+};
+
+} // namespace pf::test
