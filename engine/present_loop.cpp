@@ -67,7 +67,10 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
     while (!window.shouldClose() && (options.maxFrames == 0 || stats.frames < options.maxFrames)) {
         window.pollEvents();
         const VkExtent2D size = window.framebufferExtent();
-        if (size.width == 0 || size.height == 0) continue; // minimised
+        if (size.width == 0 || size.height == 0) { // minimised: nothing to draw until restored
+            window.waitEvents();
+            continue;
+        }
 
         // One frame in flight: the uniforms and command buffer are reused.
         VK_CHECK(vkWaitForFences(ctx.device, 1, &frameDone, VK_TRUE, UINT64_MAX));

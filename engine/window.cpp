@@ -49,6 +49,8 @@ bool Window::shouldClose() const { return glfwWindowShouldClose(window_); }
 
 void Window::pollEvents() const { glfwPollEvents(); }
 
+void Window::waitEvents() const { glfwWaitEvents(); }
+
 VkExtent2D Window::framebufferExtent() const {
     int w = 0, h = 0;
     glfwGetFramebufferSize(window_, &w, &h);

@@ -24,6 +24,7 @@ public:
     VkSurfaceKHR createSurface(VkInstance instance);
     bool shouldClose() const;
     void pollEvents() const;
+    void waitEvents() const; // blocks until something happens, e.g. while minimised
     VkExtent2D framebufferExtent() const;
     void setTitle(const std::string& title);
 

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package the project needs, and only what is missing.
-# This is the one list; run.sh and test.sh call it. Safe to run again: when all
-# packages are present it returns in well under a second without touching apt.
+# This is the one list; run.sh, test.sh and the other scripts call it. Safe to
+# run again: when all packages are present it returns at once without apt.
+# Usage: tools/deps.sh [fuzz] [bench]
+#   fuzz:  clang and libFuzzer for tools/fuzz.sh
+#   bench: hyperfine and Node.js for the peer benchmarks in tools/bench/
 set -euo pipefail
 
 PACKAGES=(
@@ -10,6 +13,17 @@ PACKAGES=(
   libglm-dev libglfw3-dev libstb-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev xvfb xauth
 )
+FUZZ_PACKAGES=(clang libclang-rt-14-dev)
+BENCH_PACKAGES=(hyperfine)
+command -v node >/dev/null && command -v npm >/dev/null || BENCH_PACKAGES+=(nodejs npm)
+
+for group in "$@"; do
+  case "$group" in
+    fuzz) PACKAGES+=("${FUZZ_PACKAGES[@]}") ;;
+    bench) PACKAGES+=("${BENCH_PACKAGES[@]}") ;;
+    *) echo "deps.sh: unknown package group '$group' (known: fuzz, bench)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${PACKAGES[@]}"; do

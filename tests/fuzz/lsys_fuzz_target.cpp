@@ -1,0 +1,30 @@
+#include "lsys_fuzz_target.h"
+
+#include "lsystem/error.h"
+#include "lsystem/parser.h"
+#include "lsystem/rewriter.h"
+#include "lsystem/turtle.h"
+
+#include <algorithm>
+#include <exception>
+#include <string_view>
+
+namespace pf::fuzz {
+
+void runLsysInput(const uint8_t* data, size_t size) {
+    const lsys::ParseResult parsed = lsys::parseLsystem(std::string_view(reinterpret_cast<const char*>(data), size));
+    if (!parsed.ok()) return;
+    lsys::DeriveOptions options;
+    // Bounded work per input: a grammar may ask for a billion steps.
+    options.steps = std::clamp(parsed.grammar.derivationLength, 0, 6);
+    options.maxModules = 20000;
+    options.threads = 1;
+    try {
+        const lsys::ModuleString derived = lsys::derive(parsed.grammar, options);
+        (void)lsys::turtleSegments(parsed.grammar, derived);
+    } catch (const lsys::DerivationError&) {
+        // A clear error for over-budget or invalid derivations is the right outcome.
+    }
+}
+
+} // namespace pf::fuzz

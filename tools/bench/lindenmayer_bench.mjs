@@ -1,0 +1,35 @@
+// The peer of issue 3's rewriter benchmark: the npm `lindenmayer` library
+// (v1.5.4) deriving the same three systems as data/plants/fractal_bush.lsys,
+// decreasing_tree.lsys and context_benchmark.lsys. Prints the module count so
+// runs can be checked against lsys; hyperfine times the whole process.
+// Usage: node lindenmayer_bench.mjs bush|tree|context STEPS
+import LSystem from 'lindenmayer';
+
+const [system, stepsText] = process.argv.slice(2);
+const steps = Number(stepsText);
+
+const systems = {
+    // (a) F → FF+[+F-F-F]-[-F+F+F]
+    bush: () => new LSystem({axiom: 'F', productions: {F: 'FF+[+F-F-F]-[-F+F+F]'}}),
+    // (b) A(w) → F(1)!(w)[+A(w*0.707)][-A(w*0.707)], F(s) → F(s*1.456): parametric modules are objects.
+    tree: () => new LSystem({
+        axiom: [{symbol: 'A', w: 5}],
+        productions: {
+            A: ({part}) => [{symbol: 'F', s: 1}, {symbol: '!', w: part.w}, {symbol: '['}, {symbol: '+'},
+                            {symbol: 'A', w: part.w * 0.707}, {symbol: ']'}, {symbol: '['}, {symbol: '-'},
+                            {symbol: 'A', w: part.w * 0.707}, {symbol: ']'}],
+            F: ({part}) => ({symbol: 'F', s: part.s * 1.456}),
+        },
+    }),
+    // (c) context-sensitive, ignoring + and -.
+    context: () => new LSystem({axiom: 'AB', productions: {'A<B': 'B[+A]B', 'B<B': 'BA', 'A>A': 'B'},
+                                ignoredSymbols: '+-'}),
+};
+
+if (!(system in systems) || !Number.isInteger(steps) || steps < 0) {
+    console.error('usage: node lindenmayer_bench.mjs bush|tree|context STEPS');
+    process.exit(2);
+}
+const lsystem = systems[system]();
+lsystem.iterate(steps);
+console.log(JSON.stringify({system, steps, modules: lsystem.axiom.length}));
