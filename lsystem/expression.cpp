@@ -82,7 +82,7 @@ struct Compiler {
     // expression := binary ('?' expression ':' expression)?
     void expression(int nesting) {
         if (nesting > kMaxNesting) return fail("expression nested too deeply");
-        binary(1, nesting + 1);
+        binary(1, nesting);
         if (failed) return;
         cursor.skipSpaces();
         if (cursor.peek() == '?') {
@@ -97,13 +97,12 @@ struct Compiler {
     }
 
     void binary(int minPrecedence, int nesting) {
-        if (nesting > kMaxNesting) return fail("expression nested too deeply");
-        unary(nesting + 1);
+        unary(nesting);
         while (!failed) {
             const Binary* binary = peekBinary();
             if (!binary || binary->precedence < minPrecedence) return;
             cursor.pos += binary->token.size();
-            this->binary(binary->precedence + 1, nesting + 1);
+            this->binary(binary->precedence + 1, nesting);
             emit({binary->op});
         }
     }
@@ -123,13 +122,13 @@ struct Compiler {
             unary(nesting + 1);
             emit({Op::Not});
         } else {
-            power(nesting + 1);
+            power(nesting);
         }
     }
 
     // Right-associative and tighter than unary minus: -2^2 is -4.
     void power(int nesting) {
-        primary(nesting + 1);
+        primary(nesting);
         cursor.skipSpaces();
         if (!failed && cursor.peek() == '^') {
             cursor.accept("^");

@@ -24,21 +24,6 @@ void ModuleString::push(SymbolId symbol, std::span<const float> parameters) {
     }
 }
 
-void ModuleString::append(const ModuleString& other) {
-    if (other.hasParameters()) addOffsets();
-    size_t base = params.size();
-    symbols.insert(symbols.end(), other.symbols.begin(), other.symbols.end());
-    if (!paramStart.empty()) {
-        if (other.hasParameters()) {
-            for (size_t i = 1; i < other.paramStart.size(); ++i)
-                paramStart.push_back(static_cast<uint32_t>(base + other.paramStart[i]));
-        } else {
-            paramStart.resize(symbols.size() + 1, static_cast<uint32_t>(base));
-        }
-    }
-    params.insert(params.end(), other.params.begin(), other.params.end());
-}
-
 std::string toString(const ModuleString& string, const SymbolTable& symbols) {
     std::string out;
     out.reserve(string.size());

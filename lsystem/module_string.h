@@ -9,16 +9,17 @@
 #include <string>
 #include <vector>
 
+#include "lsystem/buffer.h"
 #include "lsystem/symbols.h"
 
 namespace lsys {
 
 struct ModuleString {
-    std::vector<SymbolId> symbols;
+    Buffer<SymbolId> symbols;
     // Empty when no module has parameters; otherwise size()+1 entries and the
     // parameters of module i are params[paramStart[i] .. paramStart[i+1]).
-    std::vector<uint32_t> paramStart;
-    std::vector<float> params;
+    Buffer<uint32_t> paramStart;
+    Buffer<float> params;
 
     size_t size() const { return symbols.size(); }
     bool empty() const { return symbols.empty(); }
@@ -29,8 +30,6 @@ struct ModuleString {
 
     void clear();
     void push(SymbolId symbol, std::span<const float> parameters = {});
-    // Appends a whole string (used to join the chunks rewritten in parallel).
-    void append(const ModuleString& other);
     // Switches to the representation with offsets (all modules so far without parameters).
     void addOffsets();
 };

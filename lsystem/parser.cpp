@@ -113,10 +113,12 @@ struct Parser {
         if (cursor.accept("#define")) return define(cursor);
         if (cursor.peek() == '#') return error(cursor, "unknown directive", "'#define'");
         if (acceptHeader(cursor, "endlsystem", false)) {
-            ended = expectLineEnd(cursor) || true;
+            expectLineEnd(cursor);
+            ended = true;
             return;
         }
         if (acceptHeader(cursor, "lsystem")) return;  // lpfg's "lsystem: 1" names the system; nothing to do
+        if (acceptHeader(cursor, "dialect")) return;  // chosen before parsing (parseLsystem)
         if (acceptHeader(cursor, "seed")) return seed(cursor);
         if (acceptHeader(cursor, "derivation length")) return derivationLength(cursor);
         if (acceptHeader(cursor, "angle")) return number(cursor, grammar.angle);
@@ -146,6 +148,7 @@ struct Parser {
     }
 
     void seed(Cursor& cursor) {
+        cursor.skipSpaces();
         Cursor start = cursor;
         std::optional<double> value = constantExpression(cursor);
         if (!value || !expectLineEnd(cursor)) return;
@@ -176,6 +179,7 @@ struct Parser {
     }
 
     void number(Cursor& cursor, double& target) {
+        cursor.skipSpaces();
         std::optional<double> value = constantExpression(cursor);
         if (value && expectLineEnd(cursor)) target = *value;
     }
@@ -426,9 +430,7 @@ struct Parser {
     }
 };
 
-}  // namespace
-
-ParseResult parseLsystem(std::string_view source, const ParseOptions& options) {
+ParseResult parseNative(std::string_view source, const ParseOptions& options) {
     ParseResult result;
     result.grammar.file = options.file;
     for (auto& [name, value] : options.defines) result.grammar.constants[name] = value;
@@ -445,8 +447,53 @@ ParseResult parseLsystem(std::string_view source, const ParseOptions& options) {
     }
     parser.finish();
     if (!parser.sawAxiom && result.diagnostics.empty())
-        result.diagnostics.push_back({options.file, static_cast<int>(lines.size()), 1, "no axiom", "an 'Axiom:' line"});
+        result.diagnostics.push_back({options.file, 1, 1, "no axiom", "an 'Axiom:' line"});
+    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+        return a.line != b.line ? a.line < b.line : a.column < b.column;
+    });
     return result;
+}
+
+// Translates, parses the native text, and points diagnostics back at the original statements.
+ParseResult parseTranslated(std::string_view source, Dialect dialect, const ParseOptions& options) {
+    std::string original(source);
+    // The "dialect:" line belongs to no dialect's own syntax: blank it.
+    size_t header = original.find("dialect");
+    if (header != std::string::npos) {
+        size_t end = original.find('\n', header);
+        std::fill(original.begin() + static_cast<ptrdiff_t>(header),
+                  end == std::string::npos ? original.end() : original.begin() + static_cast<ptrdiff_t>(end), ' ');
+    }
+    Translation translation = translate(dialect, original, options.file);
+    ParseResult result = parseNative(translation.native, options);
+    for (Diagnostic& diagnostic : result.diagnostics) {
+        if (diagnostic.line >= 1 && static_cast<size_t>(diagnostic.line) <= translation.origins.size()) {
+            const Translation::Origin& origin = translation.origins[static_cast<size_t>(diagnostic.line) - 1];
+            diagnostic.line = origin.line;
+            diagnostic.column = origin.column;
+        }
+    }
+    result.diagnostics.insert(result.diagnostics.end(), translation.diagnostics.begin(), translation.diagnostics.end());
+    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+        return a.line != b.line ? a.line < b.line : a.column < b.column;
+    });
+    return result;
+}
+
+}  // namespace
+
+ParseResult parseLsystem(std::string_view source, const ParseOptions& options) {
+    std::optional<Dialect> dialect = options.dialect;
+    if (!dialect) {
+        std::optional<std::string> declared = declaredDialect(source);
+        dialect = declared ? dialectByName(*declared) : Dialect::Native;
+        if (!dialect) {
+            ParseResult result;
+            result.diagnostics.push_back({options.file, 1, 1, "unknown dialect '" + *declared + "'", "native, crankshaw, robbins or plantlang"});
+            return result;
+        }
+    }
+    return *dialect == Dialect::Native ? parseNative(source, options) : parseTranslated(source, *dialect, options);
 }
 
 std::string readTextFile(const std::string& path, bool& ok) {

@@ -1,8 +1,8 @@
 #include "lsystem/rewriter.h"
 
 #include <algorithm>
-#include <cstring>
 #include <exception>
+#include <new>
 #include <string>
 #include <thread>
 
@@ -20,10 +20,16 @@ constexpr uint64_t kAxiomPass = ~0ull;
 constexpr uint64_t kInterpretationPass = 1ull << 62;
 
 // A ProductionSet prepared for one derivation. Deterministic context-free
-// rules without parameters (D0L) get a table of successor spans copied with
-// memcpy, and an exact output size computed before writing.
+// rules without parameters (D0L) get a table of successor spans that are
+// block-copied, and an exact output size computed before writing.
 struct PreparedSet {
     const ProductionSet* set = nullptr;
+    // Per symbol, the most modules and parameters one module can become (1 and
+    // 0 without rules): a pass sizes its output from these before writing.
+    std::vector<uint32_t> maxModules;
+    std::vector<uint32_t> maxParameters;
+    uint32_t longestSuccessor = 1;
+    uint32_t mostArguments = 0;  // of any successor module
     bool isD0L = false;
     std::vector<uint32_t> successorStart;  // per symbol, into successorSymbols
     std::vector<uint32_t> successorLength;
@@ -32,6 +38,19 @@ struct PreparedSet {
 
 PreparedSet prepare(const ProductionSet& set, size_t symbolCount) {
     PreparedSet prepared{&set};
+    prepared.maxModules.assign(symbolCount, 1);
+    prepared.maxParameters.assign(symbolCount, 0);
+    for (const Production& production : set.productions) {
+        uint32_t parameters = 0;
+        for (const SuccessorModule& module : production.successor) {
+            parameters += static_cast<uint32_t>(module.arguments.size());
+            prepared.mostArguments = std::max(prepared.mostArguments, static_cast<uint32_t>(module.arguments.size()));
+        }
+        const SymbolId symbol = production.strict.symbol;
+        prepared.maxModules[symbol] = std::max<uint32_t>(prepared.maxModules[symbol], static_cast<uint32_t>(production.successor.size()));
+        prepared.maxParameters[symbol] = std::max(prepared.maxParameters[symbol], parameters);
+        prepared.longestSuccessor = std::max(prepared.longestSuccessor, prepared.maxModules[symbol]);
+    }
     prepared.isD0L = !set.contextSensitive && !set.producesParameters;
     for (const Production& production : set.productions)
         prepared.isD0L = prepared.isD0L && !production.condition && !production.stochastic && production.strict.paramCount == 0;
@@ -55,67 +74,102 @@ struct Range {
     size_t begin, end;
 };
 
-// Rewrites in[range] into out (cleared first). Returns false when out grows past budget.
-bool rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const ModuleString& in, const int32_t* partners,
-                  Range range, uint64_t seed, uint64_t pass, size_t budget, ModuleString& out, size_t& applied) {
+// Upper bounds of what a range of the input can become.
+struct Bounds {
+    size_t modules = 0;
+    size_t parameters = 0;
+    uint32_t mostParameters = 0;  // of one input module
+};
+
+Bounds boundsOf(const PreparedSet& prepared, const ModuleString& in, Range range, bool withParameters) {
+    Bounds bounds;
+    for (size_t i = range.begin; i < range.end; ++i) {
+        bounds.modules += prepared.maxModules[in.symbols[i]];
+        if (!withParameters) continue;
+        bounds.parameters += std::max(prepared.maxParameters[in.symbols[i]], in.paramCount(i));
+        bounds.mostParameters = std::max(bounds.mostParameters, in.paramCount(i));
+    }
+    return bounds;
+}
+
+// Where a range writes its output: raw pointers into buffers sized from the
+// bounds, so the loop has no reallocation and no capacity checks. Parameter
+// offsets written to starts are absolute, counted from parameterBase.
+struct Output {
+    SymbolId* symbols;
+    float* params;
+    uint32_t* starts;  // starts[k + 1] is written after the k-th module; null without parameters
+    uint32_t parameterBase;
+};
+
+struct Written {
+    size_t modules = 0;
+    size_t parameters = 0;
+    size_t rewritten = 0;  // modules a production applied to
+    bool withinBudget = true;
+};
+
+Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const ModuleString& in, const int32_t* partners,
+                     Range range, uint64_t seed, uint64_t pass, size_t budget, Output out) {
     const ProductionSet& set = *prepared.set;
-    const bool withParameters = in.hasParameters() || set.producesParameters;
-    out.clear();
-    if (withParameters) out.paramStart.push_back(0);
+    const bool withParameters = out.starts != nullptr;
+    SymbolId* symbols = out.symbols;
+    float* params = out.params;
+    uint32_t* starts = out.starts;
+    size_t written = 0;
+    uint32_t parameterEnd = out.parameterBase;
+    size_t applied = 0;
+
     const ContextView view{in, partners, grammar.ignored.data()};
     double variables[kMaxVariables];
-
-    auto copyModule = [&](size_t i) {
-        out.symbols.push_back(in.symbols[i]);
-        if (withParameters) {
-            const uint32_t count = in.paramCount(i);
-            if (count) out.params.insert(out.params.end(), in.paramData(i), in.paramData(i) + count);
-            out.paramStart.push_back(static_cast<uint32_t>(out.params.size()));
-        }
-    };
-
     for (size_t i = range.begin; i < range.end; ++i) {
-        const std::vector<uint32_t>& candidates = set.bySymbol[in.symbols[i]];
+        const SymbolId symbol = in.symbols[i];
+        const std::vector<uint32_t>& candidates = set.bySymbol[symbol];
+        const uint32_t inputCount = in.paramCount(i);
+        const float* inputParameters = in.paramData(i);
         const Production* chosen = nullptr;
         RandomStream random;
-        if (!candidates.empty()) {
-            const uint32_t paramCount = in.paramCount(i);
-            const float* parameters = in.paramData(i);
-            for (uint32_t index : candidates) {
-                const Production& production = set.productions[index];
-                if (production.strict.paramCount != paramCount) continue;
-                for (uint32_t k = 0; k < paramCount; ++k) variables[production.strict.firstVariable + k] = parameters[k];
-                if (!production.left.empty() && !matchLeft(view, production.left, i, variables)) continue;
-                if (!production.right.empty() && !matchRight(view, production.right, i, variables)) continue;
-                if (production.usesRandom) random = RandomStream::forModule(seed, pass, i);
-                if (production.condition && evaluate(*production.condition, variables, random) == 0.0) continue;
-                chosen = &production;
-                if (production.groupSize > 1) {
-                    // Pick an alternative by cumulative probability; the last absorbs rounding.
-                    double u = random.uniform();
-                    for (uint32_t k = 0; k + 1 < production.groupSize; ++k, ++chosen) {
-                        u -= chosen->probability;
-                        if (u < 0) break;
-                    }
+        for (uint32_t index : candidates) {
+            const Production& production = set.productions[index];
+            if (production.strict.paramCount != inputCount) continue;
+            for (uint32_t k = 0; k < inputCount; ++k) variables[production.strict.firstVariable + k] = inputParameters[k];
+            if (!production.left.empty() && !matchLeft(view, production.left, i, variables)) continue;
+            if (!production.right.empty() && !matchRight(view, production.right, i, variables)) continue;
+            if (production.usesRandom) random = RandomStream::forModule(seed, pass, i);
+            if (production.condition && evaluate(*production.condition, variables, random) == 0.0) continue;
+            chosen = &production;
+            if (production.groupSize > 1) {
+                // Pick an alternative by cumulative probability; the last absorbs rounding.
+                double u = random.uniform();
+                for (uint32_t k = 0; k + 1 < production.groupSize; ++k, ++chosen) {
+                    u -= chosen->probability;
+                    if (u < 0) break;
                 }
-                break;
+            }
+            break;
+        }
+        if (!chosen) {  // no production applies: copy the module
+            symbols[written++] = symbol;
+            if (withParameters) {
+                std::copy(inputParameters, inputParameters + inputCount, params);
+                params += inputCount;
+                parameterEnd += inputCount;
+                starts[written] = parameterEnd;
+            }
+        } else {
+            ++applied;
+            for (const SuccessorModule& module : chosen->successor) {
+                symbols[written++] = module.symbol;
+                if (!withParameters) continue;
+                for (const Expression& argument : module.arguments) *params++ = static_cast<float>(evaluate(argument, variables, random));
+                parameterEnd += static_cast<uint32_t>(module.arguments.size());
+                starts[written] = parameterEnd;
             }
         }
-        if (!chosen) {
-            copyModule(i);
-            continue;
-        }
-        ++applied;
-        for (const SuccessorModule& module : chosen->successor) {
-            out.symbols.push_back(module.symbol);
-            if (!withParameters) continue;
-            for (const Expression& argument : module.arguments)
-                out.params.push_back(static_cast<float>(evaluate(argument, variables, random)));
-            out.paramStart.push_back(static_cast<uint32_t>(out.params.size()));
-        }
-        if (out.symbols.size() > budget) return false;
+        // The output was sized for at most budget + one successor: stop before passing it.
+        if (written > budget) return {written, parameterEnd - out.parameterBase, applied, false};
     }
-    return true;
+    return {written, parameterEnd - out.parameterBase, applied, true};
 }
 
 [[noreturn]] void budgetExceeded(size_t budget, uint64_t pass) {
@@ -153,7 +207,6 @@ struct Rewriter {
     const DeriveOptions& options;
     uint64_t seed;
     std::vector<int32_t> partners;
-    std::vector<ModuleString> chunks;  // per extra thread, reused across passes
 
     std::vector<Range> split(size_t n) const {
         size_t count = (options.threads > 1 && n >= options.parallelThreshold) ? static_cast<size_t>(options.threads) : 1;
@@ -163,27 +216,67 @@ struct Rewriter {
     }
 
     // One pass of set over in, into out. Returns how many modules were rewritten by a production.
+    // Each range writes straight into out at the offset its bounds allow;
+    // the gaps left where a range wrote less than its bound are closed after.
     size_t pass(const PreparedSet& prepared, uint64_t passNumber, const ModuleString& in, ModuleString& out) {
         if (prepared.isD0L && !in.hasParameters()) return passD0L(prepared, passNumber, in, out);
         if (prepared.set->contextSensitive) computeBracketPartners(in, partners);
-        std::vector<Range> ranges = split(in.size());
-        if (chunks.size() < ranges.size()) chunks.resize(ranges.size());
-        std::vector<size_t> applied(ranges.size(), 0);
-        std::vector<char> withinBudget(ranges.size(), 1);
-        runParallel(ranges.size(), [&](size_t t) {
-            ModuleString& target = t == 0 ? out : chunks[t];
-            withinBudget[t] = rewriteRange(grammar, prepared, in, partners.data(), ranges[t], seed, passNumber,
-                                           options.maxModules, target, applied[t]);
-        });
-        size_t total = 0;
-        for (size_t t = 0; t < ranges.size(); ++t) {
-            if (!withinBudget[t]) budgetExceeded(options.maxModules, passNumber);
-            total += t == 0 ? out.size() : chunks[t].size();
-            applied[0] += t == 0 ? 0 : applied[t];
+        const bool withParameters = in.hasParameters() || prepared.set->producesParameters;
+        const std::vector<Range> ranges = split(in.size());
+        const size_t count = ranges.size();
+        const size_t moduleCap = options.maxModules + prepared.longestSuccessor;
+
+        std::vector<Bounds> bounds(count);
+        runParallel(count, [&](size_t t) { bounds[t] = boundsOf(prepared, in, ranges[t], withParameters); });
+        std::vector<size_t> moduleOffset(count + 1, 0), parameterOffset(count + 1, 0);
+        for (size_t t = 0; t < count; ++t) {
+            const size_t modules = std::min(bounds[t].modules, moduleCap);
+            // Near the budget the sum of the per-module bounds can be far more than the
+            // capped modules can hold: bound the parameters by what those modules can carry.
+            const size_t perModule = std::max(prepared.mostArguments, bounds[t].mostParameters);
+            moduleOffset[t + 1] = moduleOffset[t] + modules;
+            parameterOffset[t + 1] = parameterOffset[t] + std::min(bounds[t].parameters, modules * perModule);
         }
-        if (total > options.maxModules) budgetExceeded(options.maxModules, passNumber);
-        for (size_t t = 1; t < ranges.size(); ++t) out.append(chunks[t]);
-        return applied[0];
+        if (parameterOffset.back() > UINT32_MAX) throw DerivationError("too many parameters in one string (over 4 G)");
+        out.symbols.resize(moduleOffset.back());
+        out.params.resize(parameterOffset.back());
+        out.paramStart.resize(withParameters ? moduleOffset.back() + 1 : 0);
+        if (withParameters) out.paramStart[0] = 0;
+
+        std::vector<Written> written(count);
+        runParallel(count, [&](size_t t) {
+            Output target{out.symbols.data() + moduleOffset[t], out.params.data() + parameterOffset[t],
+                          withParameters ? out.paramStart.data() + moduleOffset[t] : nullptr,
+                          static_cast<uint32_t>(parameterOffset[t])};
+            written[t] = rewriteRange(grammar, prepared, in, partners.data(), ranges[t], seed, passNumber, options.maxModules, target);
+        });
+
+        size_t modules = 0, parameters = 0, rewritten = 0;
+        for (size_t t = 0; t < count; ++t) {
+            if (!written[t].withinBudget) budgetExceeded(options.maxModules, passNumber);
+            closeGap(out, withParameters, moduleOffset[t], parameterOffset[t], modules, parameters, written[t]);
+            modules += written[t].modules;
+            parameters += written[t].parameters;
+            rewritten += written[t].rewritten;
+        }
+        if (modules > options.maxModules) budgetExceeded(options.maxModules, passNumber);
+        out.symbols.resize(modules);
+        out.params.resize(parameters);
+        if (withParameters) out.paramStart.resize(modules + 1);
+        return rewritten;
+    }
+
+    // Moves a range's output from where it was written down to where it belongs.
+    static void closeGap(ModuleString& out, bool withParameters, size_t fromModule, size_t fromParameter, size_t toModule,
+                         size_t toParameter, const Written& written) {
+        if (fromModule == toModule && fromParameter == toParameter) return;
+        // Destinations lie before sources, so a forward copy is safe although the ranges overlap.
+        std::copy_n(out.symbols.data() + fromModule, written.modules, out.symbols.data() + toModule);
+        if (!withParameters) return;
+        std::copy_n(out.params.data() + fromParameter, written.parameters, out.params.data() + toParameter);
+        const uint32_t shift = static_cast<uint32_t>(fromParameter - toParameter);
+        uint32_t* starts = out.paramStart.data();
+        for (size_t k = 1; k <= written.modules; ++k) starts[toModule + k] = starts[fromModule + k] - shift;
     }
 
     size_t passD0L(const PreparedSet& prepared, uint64_t passNumber, const ModuleString& in, ModuleString& out) {
@@ -215,8 +308,7 @@ struct Rewriter {
                 if (count == 1) {
                     *write++ = successors[start[symbol]];
                 } else {
-                    std::memcpy(write, successors + start[symbol], count * sizeof(SymbolId));
-                    write += count;
+                    write = std::copy_n(successors + start[symbol], count, write);
                 }
             }
         });
@@ -235,6 +327,35 @@ struct Rewriter {
     }
 };
 
+// lpfg's cut: a '%' and everything after it up to the end of its branch
+// disappear from the string (the closing ']' stays).
+void removeCutBranches(const ModuleString& in, SymbolId cut, ModuleString& out) {
+    out.clear();
+    if (in.hasParameters()) out.addOffsets();
+    for (size_t i = 0; i < in.size(); ++i) {
+        if (in.symbols[i] != cut) {
+            out.push(in.symbols[i], in.parameters(i));
+            continue;
+        }
+        int depth = 0;
+        while (i + 1 < in.size() && !(in.symbols[i + 1] == kPop && depth == 0)) {
+            depth += in.symbols[i + 1] == kPush ? 1 : in.symbols[i + 1] == kPop ? -1 : 0;
+            ++i;
+        }
+    }
+}
+
+// The cut symbol when some production can produce it (so a pass is worth it).
+std::optional<SymbolId> producedCut(const Grammar& grammar) {
+    std::optional<SymbolId> cut = grammar.symbols.find("%");
+    if (!cut) return std::nullopt;
+    for (const ProductionSet* set : {&grammar.rules, &grammar.decomposition})
+        for (const Production& production : set->productions)
+            for (const SuccessorModule& module : production.successor)
+                if (module.symbol == *cut) return cut;
+    return std::nullopt;
+}
+
 }  // namespace
 
 ModuleString axiomString(const Grammar& grammar, uint64_t seed) {
@@ -251,7 +372,19 @@ ModuleString axiomString(const Grammar& grammar, uint64_t seed) {
     return string;
 }
 
-ModuleString derive(const Grammar& grammar, const DeriveOptions& options) {
+namespace {
+
+// Running out of memory below the module budget is reported like the budget itself.
+template <typename Work>
+ModuleString withinMemory(Work work) {
+    try {
+        return work();
+    } catch (const std::bad_alloc&) {
+        throw DerivationError("out of memory while deriving (lower --max-modules or the number of steps)");
+    }
+}
+
+ModuleString deriveUnguarded(const Grammar& grammar, const DeriveOptions& options) {
     const uint64_t seed = options.seed.value_or(grammar.seed);
     const int steps = options.steps.value_or(grammar.derivationLength);
     Rewriter rewriter{grammar, options, seed};
@@ -259,6 +392,7 @@ ModuleString derive(const Grammar& grammar, const DeriveOptions& options) {
     const PreparedSet rules = prepare(grammar.rules, symbolCount);
     const PreparedSet decomposition = prepare(grammar.decomposition, symbolCount);
 
+    const std::optional<SymbolId> cut = producedCut(grammar);
     ModuleString current = axiomString(grammar, seed);
     if (current.size() > options.maxModules) budgetExceeded(options.maxModules, 0);
     ModuleString next;
@@ -270,11 +404,15 @@ ModuleString derive(const Grammar& grammar, const DeriveOptions& options) {
             std::swap(current, next);
         }
         if (!grammar.decomposition.empty()) rewriter.passesToFixpoint(decomposition, passNumber + 1, current, next);
+        if (cut) {
+            removeCutBranches(current, *cut, next);
+            std::swap(current, next);
+        }
     }
     return current;
 }
 
-ModuleString applyInterpretation(const Grammar& grammar, const ModuleString& string, const DeriveOptions& options) {
+ModuleString interpretUnguarded(const Grammar& grammar, const ModuleString& string, const DeriveOptions& options) {
     ModuleString current = string;
     if (grammar.interpretation.empty()) return current;
     Rewriter rewriter{grammar, options, options.seed.value_or(grammar.seed)};
@@ -282,6 +420,16 @@ ModuleString applyInterpretation(const Grammar& grammar, const ModuleString& str
     ModuleString scratch;
     rewriter.passesToFixpoint(interpretation, kInterpretationPass, current, scratch);
     return current;
+}
+
+}  // namespace
+
+ModuleString derive(const Grammar& grammar, const DeriveOptions& options) {
+    return withinMemory([&] { return deriveUnguarded(grammar, options); });
+}
+
+ModuleString applyInterpretation(const Grammar& grammar, const ModuleString& string, const DeriveOptions& options) {
+    return withinMemory([&] { return interpretUnguarded(grammar, string, options); });
 }
 
 }  // namespace lsys

@@ -21,7 +21,8 @@ struct DeriveOptions {
 // The axiom with its parameters evaluated (random draws use the given seed).
 ModuleString axiomString(const Grammar& grammar, uint64_t seed);
 
-// Axiom, then decomposition, then for each step: rules, then decomposition.
+// Axiom, then decomposition, then for each step: rules, decomposition, and
+// the removal of branches cut by '%'.
 // Throws DerivationError when the module budget is exceeded.
 ModuleString derive(const Grammar& grammar, const DeriveOptions& options = {});
 

@@ -14,7 +14,7 @@ namespace {
 
 enum class Action : uint8_t {
     None, Draw, Move, Yaw, YawBack, Pitch, PitchBack, Roll, RollBack, TurnAround, RollHorizontal,
-    Push, Pop, Width, Material, NextMaterial, Cut,
+    Push, Pop, Width, Material, NextMaterial, Cut, ScaleLength, ScaleAngle, ScaleWidth,
 };
 
 Action actionOf(const std::string& name) {
@@ -34,6 +34,9 @@ Action actionOf(const std::string& name) {
     if (name == ";") return Action::Material;
     if (name == "'") return Action::NextMaterial;
     if (name == "%") return Action::Cut;
+    if (name == "@Lm") return Action::ScaleLength;
+    if (name == "@Am") return Action::ScaleAngle;
+    if (name == "@Wm") return Action::ScaleWidth;
     return Action::None;
 }
 
@@ -43,6 +46,8 @@ struct State {
     glm::vec3 left{-1.0f, 0.0f, 0.0f};
     glm::vec3 up{0.0f, 0.0f, 1.0f};
     float width = 1.0f;
+    float length = 1.0f;  // of a bare F or f
+    float angle = 45.0f;  // of a bare turn, degrees
     uint32_t material = 0;
     int32_t lastSegment = -1;
 
@@ -71,6 +76,11 @@ struct State {
     }
 };
 
+// Parameters are arbitrary floats: negative, huge or NaN indices become 0.
+uint32_t materialIndex(float value) {
+    return value >= 0.0f && value < 65536.0f ? static_cast<uint32_t>(value) : 0;
+}
+
 // Index just past the ']' closing the branch that contains position i (or the end).
 size_t endOfBranch(const ModuleString& string, size_t i) {
     int depth = 0;
@@ -96,13 +106,16 @@ std::vector<TurtleSegment> interpretTurtle(const ModuleString& string, const Sym
     std::vector<State> stack;
     State state;
     state.width = settings.width;
+    state.length = settings.step;
+    state.angle = settings.angle;
     for (size_t i = 0; i < string.size(); ++i) {
         const std::span<const float> p = string.parameters(i);
-        const float angle = p.empty() ? settings.angle : p[0];
+        const float angle = p.empty() ? state.angle : p[0];
+        const float factor = p.empty() ? 1.0f : p[0];
         switch (actions[string.symbols[i]]) {
             case Action::None: break;
             case Action::Draw: {
-                const float length = p.empty() ? settings.step : p[0];
+                const float length = p.empty() ? state.length : p[0];
                 const float startWidth = state.width;
                 if (p.size() > 1) state.width = p[1];
                 glm::vec3 end = state.position + state.heading * length;
@@ -111,7 +124,7 @@ std::vector<TurtleSegment> interpretTurtle(const ModuleString& string, const Sym
                 state.position = end;
                 break;
             }
-            case Action::Move: state.position += state.heading * (p.empty() ? settings.step : p[0]); break;
+            case Action::Move: state.position += state.heading * (p.empty() ? state.length : p[0]); break;
             case Action::Yaw: state.rotate(state.up, angle); break;
             case Action::YawBack: state.rotate(state.up, -angle); break;
             case Action::Pitch: state.rotate(state.left, angle); break;
@@ -129,10 +142,13 @@ std::vector<TurtleSegment> interpretTurtle(const ModuleString& string, const Sym
                 break;
             case Action::Width: state.width = p.empty() ? state.width * settings.widthFactor : p[0]; break;
             case Action::Material:
-                state.material = p.empty() ? state.material + 1 : static_cast<uint32_t>(std::max(0.0f, p[0]));
+                state.material = p.empty() ? state.material + 1 : materialIndex(p[0]);
                 break;
             case Action::NextMaterial: ++state.material; break;
             case Action::Cut: i = endOfBranch(string, i + 1) - 1; break;
+            case Action::ScaleLength: state.length *= factor; break;
+            case Action::ScaleAngle: state.angle *= factor; break;
+            case Action::ScaleWidth: state.width *= factor; break;
         }
     }
     return segments;

@@ -12,7 +12,9 @@
 //   $         roll about H until L is horizontal               [ ]  push / pop the whole state
 //   !(w)      set width; bare ! multiplies it by kWidthFactor  ;(i) material index; bare ; or ' adds 1
 //   %         cut: skip the rest of the current branch
-// Angles are in degrees; a parameter overrides the grammar's default angle or step.
+//   @Lm(x) @Am(x) @Wm(x)  multiply the length of bare F/f, the angle of bare
+//             turns, the width by x (the dialects' scaling commands)
+// Angles are in degrees; a parameter overrides the current angle or length.
 // Width is a diameter: radii are width / 2. Other modules are ignored.
 
 #include <cstdint>

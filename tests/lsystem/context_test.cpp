@@ -11,87 +11,87 @@ std::string once(const std::string& header, const std::string& axiom, const std:
     return derived(header + "Axiom: " + axiom + "\n" + rule + "\n", 1);
 }
 
-TEST(RightContext, ImmediateNeighbour) {
+TEST(LsysRightContext, ImmediateNeighbour) {
     EXPECT_EQ(once("", "ABAC", "A > B --> X"), "XBAC");
 }
 
-TEST(RightContext, SkipsALateralBranch) {
+TEST(LsysRightContext, SkipsALateralBranch) {
     EXPECT_EQ(once("", "A[C]B", "A > B --> X"), "X[C]B");
 }
 
-TEST(RightContext, SkipsSeveralLateralBranchesAtOneNode) {
+TEST(LsysRightContext, SkipsSeveralLateralBranchesAtOneNode) {
     EXPECT_EQ(once("", "A[C][D[E]F][G]B", "A > B --> X"), "X[C][D[E]F][G]B");
 }
 
-TEST(RightContext, EndOfBranchStopsTheSearch) {
+TEST(LsysRightContext, EndOfBranchStopsTheSearch) {
     // The A inside the branch has nothing after it on its axis: the B after ']' is on the parent axis.
     EXPECT_EQ(once("", "C[A]B", "A > B --> X"), "C[A]B");
 }
 
-TEST(RightContext, EndOfStringDoesNotMatch) {
+TEST(LsysRightContext, EndOfStringDoesNotMatch) {
     EXPECT_EQ(once("", "BA", "A > B --> X"), "BA");
 }
 
-TEST(RightContext, DoesNotSeeTheNextModuleOfAParentBranch) {
+TEST(LsysRightContext, DoesNotSeeTheNextModuleOfAParentBranch) {
     EXPECT_EQ(once("", "[[A]]B", "A > B --> X"), "[[A]]B");
 }
 
-TEST(RightContext, DescendsIntoALateralBranch) {
+TEST(LsysRightContext, DescendsIntoALateralBranch) {
     EXPECT_EQ(once("", "A[B]C A[C]B", "A > [B] --> X"), "X[B]CA[C]B");
 }
 
-TEST(RightContext, TriesEachLateralBranchAtTheNode) {
+TEST(LsysRightContext, TriesEachLateralBranchAtTheNode) {
     EXPECT_EQ(once("", "A[C][B]", "A > [B] --> X"), "X[C][B]");
 }
 
-TEST(RightContext, ClosingBracketInPatternSkipsRestOfBranch) {
+TEST(LsysRightContext, ClosingBracketInPatternSkipsRestOfBranch) {
     // After matching B inside the branch, ']' skips D and the nested [E], then C must follow A.
     EXPECT_EQ(once("", "A[BD[E]]C A[BD]E", "A > [B]C --> X"), "X[BD[E]]CA[BD]E");
 }
 
-TEST(RightContext, MultiModule) {
+TEST(LsysRightContext, MultiModule) {
     EXPECT_EQ(once("", "AB[D]C ABD", "A > BC --> X"), "XB[D]CABD");
 }
 
-TEST(RightContext, NestedBranchesInsideASkippedBranch) {
+TEST(LsysRightContext, NestedBranchesInsideASkippedBranch) {
     EXPECT_EQ(once("", "A[C[D[E]]F]B", "A > B --> X"), "X[C[D[E]]F]B");
 }
 
-TEST(LeftContext, ImmediateNeighbour) {
+TEST(LsysLeftContext, ImmediateNeighbour) {
     EXPECT_EQ(once("", "BACA", "B < A --> X"), "BXCA");
 }
 
-TEST(LeftContext, ClimbsToTheParentAxisAtABracket) {
+TEST(LsysLeftContext, ClimbsToTheParentAxisAtABracket) {
     EXPECT_EQ(once("", "B[A]C[A]", "B < A --> X"), "B[X]C[A]");
 }
 
-TEST(LeftContext, ClimbsSeveralLevels) {
+TEST(LsysLeftContext, ClimbsSeveralLevels) {
     EXPECT_EQ(once("", "B[[[A]]]", "B < A --> X"), "B[[[X]]]");
 }
 
-TEST(LeftContext, SkipsEarlierBranchesOnTheSameAxis) {
+TEST(LsysLeftContext, SkipsEarlierBranchesOnTheSameAxis) {
     EXPECT_EQ(once("", "B[C][D[E]]A", "B < A --> X"), "B[C][D[E]]X");
 }
 
-TEST(LeftContext, SkipsSiblingBranchesBeforeClimbing) {
+TEST(LsysLeftContext, SkipsSiblingBranchesBeforeClimbing) {
     EXPECT_EQ(once("", "B[C][A]", "B < A --> X"), "B[C][X]");
 }
 
-TEST(LeftContext, DoesNotLookIntoBranches) {
+TEST(LsysLeftContext, DoesNotLookIntoBranches) {
     // The B inside the branch is not on A's path to the root.
     EXPECT_EQ(once("", "C[B]A", "B < A --> X"), "C[B]A");
 }
 
-TEST(LeftContext, MultiModuleAcrossBrackets) {
+TEST(LsysLeftContext, MultiModuleAcrossBrackets) {
     EXPECT_EQ(once("", "B[D]C[A] CB[A]", "BC < A --> X"), "B[D]C[X]CB[A]");
 }
 
-TEST(LeftContext, StartOfStringDoesNotMatch) {
+TEST(LsysLeftContext, StartOfStringDoesNotMatch) {
     EXPECT_EQ(once("", "AB", "B < A --> X"), "AB");
     EXPECT_EQ(once("", "[A]", "B < A --> X"), "[A]");
 }
 
-TEST(LeftContext, UnmatchedBracketsAreHarmless) {
+TEST(LsysLeftContext, UnmatchedBracketsAreHarmless) {
     EXPECT_EQ(once("", "]A", "B < A --> X"), "]A");
     EXPECT_EQ(once("", "B]A", "B < A --> X"), "B]A");
     EXPECT_EQ(once("", "A[B", "A > B --> X"), "A[B");  // the unclosed branch is skipped to the end: nothing follows A
@@ -99,48 +99,48 @@ TEST(LeftContext, UnmatchedBracketsAreHarmless) {
     EXPECT_EQ(once("", "B[A", "B < A --> X"), "B[X");
 }
 
-TEST(BothContexts, MustMatchTogether) {
+TEST(LsysBothContexts, MustMatchTogether) {
     EXPECT_EQ(once("", "BAC BAD EAC", "B < A > C --> X"), "BXCBADEAC");
 }
 
-TEST(IgnoredSymbols, AreSkippedOnBothSides) {
+TEST(LsysIgnoredSymbols, AreSkippedOnBothSides) {
     EXPECT_EQ(once("ignore: + -\n", "B+-A-+C", "B < A > C --> X"), "B+-X-+C");
 }
 
-TEST(IgnoredSymbols, NotIgnoredWithoutTheDeclaration) {
+TEST(LsysIgnoredSymbols, NotIgnoredWithoutTheDeclaration) {
     EXPECT_EQ(once("", "B+A", "B < A --> X"), "B+A");
 }
 
-TEST(IgnoredSymbols, SkippedInsideBranchesAndBeforeBrackets) {
+TEST(LsysIgnoredSymbols, SkippedInsideBranchesAndBeforeBrackets) {
     EXPECT_EQ(once("ignore: F\n", "BF[FA]", "B < A --> X"), "BF[FX]");
     EXPECT_EQ(once("ignore: F\n", "AF[C]FB", "A > B --> X"), "XF[C]FB");
     EXPECT_EQ(once("ignore: F\n", "AF[FB]", "A > [B] --> X"), "XF[FB]");
 }
 
-TEST(IgnoredSymbols, ConsiderListsTheOnlySymbolsThatCount) {
+TEST(LsysIgnoredSymbols, ConsiderListsTheOnlySymbolsThatCount) {
     EXPECT_EQ(once("consider: A B\n", "BCDA", "B < A --> X"), "BCDX");
     EXPECT_EQ(once("consider: A B C\n", "BCDA", "B < A --> X"), "BCDA");
 }
 
-TEST(Parameters, ContextParametersAreBound) {
+TEST(LsysParameters, ContextParametersAreBound) {
     EXPECT_EQ(once("", "B(1)A(2)[E]C(3)", "B(x) < A(y) > C(z) --> A(x*100+y*10+z)"), "B(1)A(123)[E]C(3)");
 }
 
-TEST(Parameters, ParameterCountMustAgree) {
+TEST(LsysParameters, ParameterCountMustAgree) {
     EXPECT_EQ(once("", "B(1,2)A(2)", "B(x) < A(y) --> X"), "B(1,2)A(2)");
     EXPECT_EQ(once("", "BA(1)", "B < A --> X"), "BA(1)");
 }
 
-TEST(Parameters, ConditionSeesContextParameters) {
+TEST(LsysParameters, ConditionSeesContextParameters) {
     EXPECT_EQ(once("", "B(1)A B(5)A", "B(x) < A : x > 2 --> X"), "B(1)AB(5)X");
 }
 
-TEST(Matching, ProductionsAreTriedInFileOrder) {
+TEST(LsysMatching, ProductionsAreTriedInFileOrder) {
     EXPECT_EQ(derived("Axiom: BA CA\nB < A --> X\nA --> Y\n", 1), "BXCY");
     EXPECT_EQ(derived("Axiom: BA CA\nA --> Y\nB < A --> X\n", 1), "BYCY");
 }
 
-TEST(Matching, ContextIsReadFromThePreviousWord) {
+TEST(LsysMatching, ContextIsReadFromThePreviousWord) {
     // Parallel rewriting: every module sees the word before this step.
     EXPECT_EQ(derived("Axiom: BAA\nB < A --> B\n", 1), "BBA");
 }

@@ -12,9 +12,9 @@ struct CountCase {
     size_t f;
 };
 
-class ReferenceCounts : public ::testing::TestWithParam<CountCase> {};
+class LsysReferenceCounts : public ::testing::TestWithParam<CountCase> {};
 
-TEST_P(ReferenceCounts, ModulesAndF) {
+TEST_P(LsysReferenceCounts, ModulesAndF) {
     const CountCase& c = GetParam();
     Grammar grammar = loadOk(c.file);
     ModuleString string = derive(grammar, stepsOf(c.steps));
@@ -23,7 +23,7 @@ TEST_P(ReferenceCounts, ModulesAndF) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Reference, ReferenceCounts,
+    Reference, LsysReferenceCounts,
     ::testing::Values(CountCase{"plants/koch_curve.lsys", 4, 1249, 625},
                       CountCase{"plants/fractal_bush.lsys", 5, 88940, 32768},
                       CountCase{"plants/fractal_tree.lsys", 5, 6263, 1488},
@@ -35,19 +35,19 @@ INSTANTIATE_TEST_SUITE_P(
         return name.substr(0, name.find('.'));
     });
 
-TEST(Reference, AnabaenaGrowsAsFibonacci) {
+TEST(LsysReference, AnabaenaGrowsAsFibonacci) {
     Grammar grammar = loadOk("plants/anabaena.lsys");
     const size_t expected[] = {1, 2, 3, 5, 8, 13};
     for (int steps = 0; steps <= 5; ++steps) EXPECT_EQ(derive(grammar, stepsOf(steps)).size(), expected[steps]) << steps;
     EXPECT_EQ(toString(derive(grammar, stepsOf(3)), grammar.symbols), "alalbralbr");
 }
 
-TEST(Reference, ConditionsAsPrinted) {
+TEST(LsysReference, ConditionsAsPrinted) {
     Grammar grammar = loadOk("plants/conditions.lsys");
     EXPECT_EQ(toString(derive(grammar, stepsOf(5)), grammar.symbols), "A(2)B(4,4)");
 }
 
-TEST(Reference, ConditionsWithGreaterOrEqualGiveTheThesisTrace) {
+TEST(LsysReference, ConditionsWithGreaterOrEqualGiveTheThesisTrace) {
     EXPECT_EQ(derived("Axiom: A(0)B(0,4)\n"
                       "A(x) : x>=2 --> C\n"
                       "A(x) : x<2 --> A(x+1)\n"
@@ -57,24 +57,24 @@ TEST(Reference, ConditionsWithGreaterOrEqualGiveTheThesisTrace) {
               "CD");
 }
 
-TEST(Reference, Parametric) {
+TEST(LsysReference, Parametric) {
     Grammar grammar = loadOk("plants/parametric.lsys");
     EXPECT_EQ(toString(derive(grammar, stepsOf(1)), grammar.symbols), "D(0)C(1,2)D(3)");
 }
 
-TEST(Reference, RobbinsSampleA) {
+TEST(LsysReference, RobbinsSampleA) {
     Grammar grammar = loadOk("plants/robbins_sample_a.lsys");
     const std::pair<int, size_t> expected[] = {{5, 17}, {7, 53}, {9, 161}, {11, 485}};
     for (auto [steps, f] : expected) EXPECT_EQ(countOf(derive(grammar, stepsOf(steps)), grammar, "F"), f) << steps;
 }
 
-TEST(Reference, BracketContextExample) {
+TEST(LsysReference, BracketContextExample) {
     Grammar grammar = loadOk("plants/context_brackets.lsys");
     EXPECT_EQ(toString(derive(grammar, stepsOf(1)), grammar.symbols), "BB[A[AA]A]A[A]AA");
     EXPECT_EQ(toString(derive(grammar, stepsOf(2)), grammar.symbols), "BB[B[AA]A]B[A]AA");
 }
 
-TEST(Reference, StochasticSameSeedSameStringOtherSeedsDiffer) {
+TEST(LsysReference, StochasticSameSeedSameStringOtherSeedsDiffer) {
     Grammar grammar = loadOk("plants/stochastic.lsys");
     DeriveOptions options = stepsOf(5);
     options.seed = 7;
@@ -88,7 +88,7 @@ TEST(Reference, StochasticSameSeedSameStringOtherSeedsDiffer) {
     EXPECT_GE(different, 9);  // two seeds may collide by chance, not nine
 }
 
-TEST(Reference, ContextBenchmarkSize) {
+TEST(LsysReference, ContextBenchmarkSize) {
     Grammar grammar = loadOk("plants/context_benchmark.lsys");
     EXPECT_EQ(derive(grammar, stepsOf(28)).size(), 3206768u);
 }

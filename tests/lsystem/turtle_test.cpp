@@ -1,5 +1,7 @@
 // The 3D turtle: ABOP frame conventions, segments, widths, branching.
 
+#include <cmath>
+
 #include <glm/geometric.hpp>
 
 #include "lsystem/turtle.h"
@@ -17,7 +19,7 @@ void expectNear(glm::vec3 actual, glm::vec3 expected) {
     EXPECT_NEAR(glm::distance(actual, expected), 0.0f, 1e-5f) << actual.x << "," << actual.y << "," << actual.z;
 }
 
-TEST(Turtle, FDrawsAlongTheHeadingWithTheDefaultStep) {
+TEST(LsysTurtle, FDrawsAlongTheHeadingWithTheDefaultStep) {
     auto segments = segmentsOf("step: 2\nwidth: 0.5\nAxiom: FF(3)\n");
     ASSERT_EQ(segments.size(), 2u);
     expectNear(segments[0].start, {0, 0, 0});
@@ -28,13 +30,13 @@ TEST(Turtle, FDrawsAlongTheHeadingWithTheDefaultStep) {
     EXPECT_EQ(segments[1].parent, 0);
 }
 
-TEST(Turtle, SmallFMovesWithoutDrawing) {
+TEST(LsysTurtle, SmallFMovesWithoutDrawing) {
     auto segments = segmentsOf("Axiom: f(2)F\n");
     ASSERT_EQ(segments.size(), 1u);
     expectNear(segments[0].start, {0, 2, 0});
 }
 
-TEST(Turtle, PlusTurnsTowardsLeft) {
+TEST(LsysTurtle, PlusTurnsTowardsLeft) {
     // H = +Y, L = -X: '+' turns the heading towards -X (counter-clockwise seen from +Z).
     auto segments = segmentsOf("angle: 90\nAxiom: +F\n");
     expectNear(segments.at(0).end, {-1, 0, 0});
@@ -42,7 +44,7 @@ TEST(Turtle, PlusTurnsTowardsLeft) {
     expectNear(segments.at(0).end, {1, 0, 0});
 }
 
-TEST(Turtle, PitchAndRoll) {
+TEST(LsysTurtle, PitchAndRoll) {
     // '&' pitches down: the heading turns towards -U (-Z).
     expectNear(segmentsOf("angle: 90\nAxiom: &F\n").at(0).end, {0, 0, -1});
     expectNear(segmentsOf("angle: 90\nAxiom: ^F\n").at(0).end, {0, 0, 1});
@@ -52,12 +54,12 @@ TEST(Turtle, PitchAndRoll) {
     expectNear(segmentsOf("angle: 90\nAxiom: \\(90)+F\n").at(0).end, {0, 0, 1});
 }
 
-TEST(Turtle, TurnAroundAndExplicitAngles) {
+TEST(LsysTurtle, TurnAroundAndExplicitAngles) {
     expectNear(segmentsOf("Axiom: |F\n").at(0).end, {0, -1, 0});
     expectNear(segmentsOf("angle: 10\nAxiom: +(90)F\n").at(0).end, {-1, 0, 0});
 }
 
-TEST(Turtle, BranchesRestoreStateAndRecordParents) {
+TEST(LsysTurtle, BranchesRestoreStateAndRecordParents) {
     auto segments = segmentsOf("angle: 90\nAxiom: F[+F][-F]F\n");
     ASSERT_EQ(segments.size(), 4u);
     expectNear(segments[1].end, {-1, 1, 0});
@@ -69,7 +71,7 @@ TEST(Turtle, BranchesRestoreStateAndRecordParents) {
     EXPECT_EQ(segments[3].parent, 0);
 }
 
-TEST(Turtle, WidthAndTaper) {
+TEST(LsysTurtle, WidthAndTaper) {
     auto segments = segmentsOf("width: 2\nAxiom: F!(1)F!F(1,0.2)\n");
     ASSERT_EQ(segments.size(), 3u);
     EXPECT_FLOAT_EQ(segments[0].startRadius, 1.0f);
@@ -78,7 +80,7 @@ TEST(Turtle, WidthAndTaper) {
     EXPECT_FLOAT_EQ(segments[2].endRadius, 0.1f);
 }
 
-TEST(Turtle, MaterialIndex) {
+TEST(LsysTurtle, MaterialIndex) {
     auto segments = segmentsOf("Axiom: F;(3)F;F'F\n");
     ASSERT_EQ(segments.size(), 4u);
     EXPECT_EQ(segments[0].material, 0u);
@@ -87,7 +89,7 @@ TEST(Turtle, MaterialIndex) {
     EXPECT_EQ(segments[3].material, 5u);
 }
 
-TEST(Turtle, RollToHorizontalKeepsHeading) {
+TEST(LsysTurtle, RollToHorizontalKeepsHeading) {
     auto segments = segmentsOf("angle: 30\nAxiom: &+/(50)$F+(90)F\n");
     ASSERT_EQ(segments.size(), 2u);
     // After $, L is horizontal, so a yaw keeps the height of the end point.
@@ -97,18 +99,29 @@ TEST(Turtle, RollToHorizontalKeepsHeading) {
     EXPECT_NEAR(left.y, 0.0f, 1e-5f);
 }
 
-TEST(Turtle, CutSkipsTheRestOfTheBranch) {
+TEST(LsysTurtle, ScalingModules) {
+    auto segments = segmentsOf("angle: 90\nwidth: 1\nAxiom: @Lm(2)F@Am(0.5)+@Wm(0.5)F[@Lm(3)F]F\n");
+    ASSERT_EQ(segments.size(), 4u);
+    expectNear(segments[0].end, {0, 2, 0});
+    const float d = 2.0f * std::sqrt(0.5f);  // length 2 at 45 degrees
+    expectNear(segments[1].end, {-d, 2 + d, 0});
+    EXPECT_FLOAT_EQ(segments[1].startRadius, 0.25f);
+    EXPECT_NEAR(glm::distance(segments[2].start, segments[2].end), 6.0f, 1e-5f);
+    EXPECT_NEAR(glm::distance(segments[3].start, segments[3].end), 2.0f, 1e-5f);  // the branch's scale was popped
+}
+
+TEST(LsysTurtle, CutSkipsTheRestOfTheBranch) {
     auto segments = segmentsOf("Axiom: F[F%F[F]F]F\n");
     EXPECT_EQ(segments.size(), 3u);
 }
 
-TEST(Turtle, UsesTheInterpretationRules) {
+TEST(LsysTurtle, UsesTheInterpretationRules) {
     auto segments = segmentsOf("Axiom: L(2)\ninterpretation:\nL(s) --> F(s)F(s)\n");
     ASSERT_EQ(segments.size(), 2u);
     expectNear(segments[1].end, {0, 4, 0});
 }
 
-TEST(Turtle, FrameStaysOrthonormalOverManyTurns) {
+TEST(LsysTurtle, FrameStaysOrthonormalOverManyTurns) {
     auto segments = segmentsOf("angle: 13.7\nAxiom: A\nA --> +&\\/F^A\nderivation length: 2000\n");
     ASSERT_EQ(segments.size(), 2000u);
     for (const TurtleSegment& segment : segments) ASSERT_NEAR(glm::distance(segment.start, segment.end), 1.0f, 1e-4f);

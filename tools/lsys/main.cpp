@@ -1,6 +1,6 @@
 // lsys: derive and check .lsys files from the command line.
-//   lsys derive FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--print] [--json] [--max-modules N]
-//   lsys check FILE
+//   lsys derive FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--print] [--json] [--max-modules N]
+//   lsys check FILE [-D NAME=VALUE]... [--dialect D]
 // Exit codes: 0 success, 2 bad input (parse errors, budget exceeded), 1 usage errors.
 
 #include <chrono>
@@ -26,7 +26,7 @@ struct Arguments {
     std::optional<int> steps;
     std::optional<uint64_t> seed;
     std::vector<std::string> defines;
-    std::string dialect = "native";
+    std::string dialect;  // empty: the file's "dialect:" line, else native
     bool print = false;
     bool json = false;
     size_t maxModules = 50'000'000;
@@ -50,12 +50,9 @@ bool parseDefines(const std::vector<std::string>& items, std::unordered_map<std:
 
 // Parses the file; on problems prints them all and returns nullopt.
 std::optional<lsys::Grammar> load(const Arguments& arguments) {
-    if (arguments.dialect != "native") {
-        std::cerr << "lsys: error: dialect '" << arguments.dialect << "' is not supported yet (only 'native')\n";
-        return std::nullopt;
-    }
     lsys::ParseOptions options;
     options.file = arguments.file;
+    if (!arguments.dialect.empty()) options.dialect = lsys::dialectByName(arguments.dialect);
     if (!parseDefines(arguments.defines, options.defines)) return std::nullopt;
     bool readable = false;
     std::string source = lsys::readTextFile(arguments.file, readable);
@@ -128,7 +125,8 @@ int main(int argc, char** argv) {
     deriveCommand->add_option("-n,--steps", arguments.steps, "Derivation steps (default: the file's 'derivation length:')");
     deriveCommand->add_option("--seed", arguments.seed, "Random seed (default: the file's 'seed:')");
     deriveCommand->add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
-    deriveCommand->add_option("--dialect", arguments.dialect, "Input notation")->check(CLI::IsMember({"native"}));
+    deriveCommand->add_option("--dialect", arguments.dialect, "Input notation: native, crankshaw, robbins or plantlang (default: the file's 'dialect:' line, else native)")
+        ->check(CLI::IsMember({"native", "crankshaw", "robbins", "plantlang"}));
     deriveCommand->add_flag("--print", arguments.print, "Print the final string, e.g. F(1,0.5)[+A(2)]");
     deriveCommand->add_flag("--json", arguments.json, "Print {\"modules\", \"steps\", \"counts\", \"seconds\"} as JSON");
     deriveCommand->add_option("--max-modules", arguments.maxModules, "Module budget; exceeding it is an error")
@@ -138,7 +136,8 @@ int main(int argc, char** argv) {
     CLI::App* checkCommand = app.add_subcommand("check", "Parse a file and report every problem without deriving");
     checkCommand->add_option("FILE", arguments.file, ".lsys file")->required();
     checkCommand->add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
-    checkCommand->add_option("--dialect", arguments.dialect, "Input notation")->check(CLI::IsMember({"native"}));
+    checkCommand->add_option("--dialect", arguments.dialect, "Input notation: native, crankshaw, robbins or plantlang")
+        ->check(CLI::IsMember({"native", "crankshaw", "robbins", "plantlang"}));
 
     try {
         app.parse(argc, argv);

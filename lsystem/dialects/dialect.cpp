@@ -1,0 +1,103 @@
+#include "lsystem/dialects/dialect.h"
+
+#include <algorithm>
+#include <cctype>
+#include <numeric>
+
+#include "lsystem/dialects/native_text.h"
+
+namespace lsys::dialects {
+
+namespace {
+
+constexpr const char* kNames[] = {"native", "crankshaw", "robbins", "plantlang"};
+
+// Native text needs no translation; only a header line the native parser would reject is blanked.
+Translation blankHeader(std::string_view source) {
+    Translation out;
+    out.nativeSource = source;
+    if (std::optional<HeaderLine> header = findHeaderLine(source))
+        std::fill(out.nativeSource.begin() + header->begin, out.nativeSource.begin() + header->end, ' ');
+    out.origin.resize(source.size());
+    std::iota(out.origin.begin(), out.origin.end(), 0u);
+    return out;
+}
+
+std::vector<size_t> lineStarts(std::string_view text) {
+    std::vector<size_t> starts{0};
+    for (size_t i = 0; i < text.size(); ++i)
+        if (text[i] == '\n') starts.push_back(i + 1);
+    return starts;
+}
+
+}  // namespace
+
+std::optional<Dialect> dialectFromName(std::string_view name) {
+    for (size_t i = 0; i < std::size(kNames); ++i) {
+        std::string_view candidate = kNames[i];
+        if (candidate.size() == name.size() && std::equal(name.begin(), name.end(), candidate.begin(), [](char a, char b) {
+                return std::tolower(static_cast<unsigned char>(a)) == b;
+            }))
+            return static_cast<Dialect>(i);
+    }
+    return std::nullopt;
+}
+
+const char* dialectName(Dialect dialect) { return kNames[static_cast<size_t>(dialect)]; }
+
+Dialect detectDialect(std::string_view source) {
+    std::optional<HeaderLine> header = findHeaderLine(source);
+    return header ? header->dialect : Dialect::Native;
+}
+
+Translation translateToNative(Dialect dialect, std::string_view source, const std::string& file) {
+    if (dialect == Dialect::Native) return blankHeader(source);
+    std::vector<Diagnostic> commentProblems;
+    Source text(source, file, commentProblems);
+    Translation out = dialect == Dialect::Crankshaw ? translateCrankshaw(text)
+                      : dialect == Dialect::Robbins ? translateRobbins(text)
+                                                    : translatePlantlang(text);
+    out.diagnostics.insert(out.diagnostics.begin(), commentProblems.begin(), commentProblems.end());
+    return out;
+}
+
+Diagnostic sourcePosition(const Translation& translation, std::string_view source, Diagnostic diagnostic) {
+    if (diagnostic.line < 1 || translation.origin.empty()) return diagnostic;
+    std::vector<size_t> nativeLines = lineStarts(translation.nativeSource);
+    if (static_cast<size_t>(diagnostic.line) > nativeLines.size()) return diagnostic;
+    size_t offset = nativeLines[diagnostic.line - 1] + static_cast<size_t>(std::max(diagnostic.column, 1)) - 1;
+    size_t from = translation.origin[std::min(offset, translation.origin.size() - 1)];
+    std::vector<size_t> sourceLines = lineStarts(source);
+    size_t line = std::upper_bound(sourceLines.begin(), sourceLines.end(), from) - sourceLines.begin();
+    diagnostic.line = static_cast<int>(line);
+    diagnostic.column = static_cast<int>(from - sourceLines[line - 1]) + 1;
+    return diagnostic;
+}
+
+ParseResult parseDialect(Dialect dialect, std::string_view source, const ParseOptions& options) {
+    Translation translation = translateToNative(dialect, source, options.file);
+    ParseResult result = parseLsystem(translation.nativeSource, options);
+    for (Diagnostic& diagnostic : result.diagnostics) diagnostic = sourcePosition(translation, source, std::move(diagnostic));
+    // A statement the translation rejected may be the axiom: "no axiom" would only repeat that error.
+    if (!translation.diagnostics.empty())
+        std::erase_if(result.diagnostics, [](const Diagnostic& diagnostic) { return diagnostic.message == "no axiom"; });
+    result.diagnostics.insert(result.diagnostics.end(), translation.diagnostics.begin(), translation.diagnostics.end());
+    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+        return a.line != b.line ? a.line < b.line : a.column < b.column;
+    });
+    return result;
+}
+
+ParseResult loadDialectFile(const std::string& path, std::optional<Dialect> dialect, ParseOptions options) {
+    bool ok = false;
+    std::string source = readTextFile(path, ok);
+    if (options.file == "<input>") options.file = path;
+    if (!ok) {
+        ParseResult result;
+        result.diagnostics.push_back({path, 0, 0, "cannot read file"});
+        return result;
+    }
+    return parseDialect(dialect.value_or(detectDialect(source)), source, options);
+}
+
+}  // namespace lsys::dialects

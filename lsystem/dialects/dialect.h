@@ -1,0 +1,53 @@
+#pragma once
+// The three notations of the source documents (docs/DIALECTS.md), each read by
+// translating it into native .lsys text, which the native parser then reads:
+// every dialect ends in the same Grammar.
+//   crankshaw  seed 004: #n = 6; #define r 20; #w : ...; #p1 : pred : cond : succ;
+//   robbins    seed 003: iterations 10 angle 30 ...  A --> ...
+//   plantlang  seed 002: Axiom = f20t15dX   X => t<dY   d m f u r t T o O c a A l L
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "lsystem/error.h"
+#include "lsystem/parser.h"
+
+// In lsys::dialects, apart from lsystem/dialect.h (another front end being written at the same time).
+namespace lsys::dialects {
+
+enum class Dialect { Native, Crankshaw, Robbins, Plantlang };
+
+// "native", "crankshaw", "robbins", "plantlang" (case-insensitive).
+std::optional<Dialect> dialectFromName(std::string_view name);
+const char* dialectName(Dialect dialect);
+
+// The first non-blank line "dialect: NAME" (also "// dialect: NAME",
+// "/* dialect: NAME */", "# dialect: NAME") selects the dialect; Native otherwise.
+Dialect detectDialect(std::string_view source);
+
+struct Translation {
+    std::string nativeSource;
+    std::vector<Diagnostic> diagnostics;  // dialect-level problems, at positions of the original source
+    // Per byte of nativeSource, the byte of the original source it came from.
+    // Native line N holds what dialect line N said wherever the dialect puts one
+    // statement per line; sourcePosition() maps the rest.
+    std::vector<uint32_t> origin;
+};
+
+Translation translateToNative(Dialect dialect, std::string_view source, const std::string& file);
+
+// Moves a diagnostic about translation.nativeSource to the line and column of
+// the original source the offending text came from.
+Diagnostic sourcePosition(const Translation& translation, std::string_view source, Diagnostic diagnostic);
+
+// Translates, parses the native text and reports every diagnostic (dialect and
+// native) at its position in the original source, in source order.
+ParseResult parseDialect(Dialect dialect, std::string_view source, const ParseOptions& options = {});
+
+// Reads a file in the given dialect, or in the one its header line names.
+ParseResult loadDialectFile(const std::string& path, std::optional<Dialect> dialect, ParseOptions options = {});
+
+}  // namespace lsys::dialects

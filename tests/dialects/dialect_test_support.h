@@ -1,0 +1,47 @@
+#pragma once
+// Helpers shared by the dialect tests: load a dialect or native file, derive,
+// and look at the result as canonical text or symbol counts.
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+#include <string>
+
+#include "lsystem/dialects/dialect.h"
+#include "lsystem/module_string.h"
+#include "lsystem/rewriter.h"
+
+namespace lsys::dialects::test {
+
+inline std::string dataPath(const std::string& relative) { return std::string(PLANTFIELD_DATA_DIR) + "/" + relative; }
+
+// Loads a file of any dialect (named by its header line); fails the test on any diagnostic.
+inline Grammar loadOk(const std::string& relative) {
+    ParseResult result = loadDialectFile(dataPath(relative), std::nullopt);
+    bool readable = false;
+    std::string source = readTextFile(dataPath(relative), readable);
+    EXPECT_TRUE(result.ok()) << relative << ":\n" << formatDiagnostics(result.diagnostics, source);
+    return std::move(result.grammar);
+}
+
+inline Grammar parseOk(Dialect dialect, const std::string& source) {
+    ParseResult result = parseDialect(dialect, source);
+    EXPECT_TRUE(result.ok()) << formatDiagnostics(result.diagnostics, source);
+    return std::move(result.grammar);
+}
+
+inline ModuleString deriveSteps(const Grammar& grammar, int steps, uint64_t seed = 0) {
+    DeriveOptions options;
+    options.steps = steps;
+    options.seed = seed;
+    return derive(grammar, options);
+}
+
+inline std::map<std::string, size_t> countsOf(const ModuleString& string, const Grammar& grammar) {
+    std::map<std::string, size_t> counts;
+    for (size_t i = 0; i < string.size(); ++i) ++counts[grammar.symbols.name(string.symbols[i])];
+    return counts;
+}
+
+}  // namespace lsys::dialects::test

@@ -1,0 +1,58 @@
+#!/bin/sh
+# End-to-end checks of the lsys command line: output formats, exit codes and
+# error messages. Usage: cli_test.sh LSYS DATA_DIR
+set -u
+LSYS=$1
+DATA=$2
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+failures=0
+
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# expect_run NAME EXPECTED_EXIT PATTERN -- command...: runs, checks the exit code and that stdout+stderr match PATTERN.
+expect_run() {
+    name=$1 code=$2 pattern=$3
+    shift 4
+    "$@" > "$WORK/out" 2>&1
+    actual=$?
+    [ "$actual" = "$code" ] || fail "$name: exit code $actual, expected $code: $(cat "$WORK/out")"
+    grep -q -- "$pattern" "$WORK/out" || fail "$name: output does not match '$pattern': $(cat "$WORK/out")"
+}
+
+expect_run json 0 '"modules":1249' -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" -n 4 --json
+expect_run json-counts 0 '"F":625' -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" -n 4 --json
+expect_run json-steps 0 '"steps":4' -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" --json
+expect_run print 0 '^D(0)C(1,2)D(3)$' -- "$LSYS" derive "$DATA/plants/parametric.lsys" --print
+expect_run plain 0 '6263 modules after 5 steps' -- "$LSYS" derive "$DATA/plants/fractal_tree.lsys"
+
+printf '#define N 1\nAxiom: A(N)\nA(x) --> A(x*2)\n' > "$WORK/define.lsys"
+expect_run define 0 '^A(24)$' -- "$LSYS" derive "$WORK/define.lsys" -n 3 -D N=3 --print
+expect_run bad-define 2 'NAME=NUMBER' -- "$LSYS" derive "$WORK/define.lsys" -D N=x
+
+expect_run seed 0 '^F' -- "$LSYS" derive "$DATA/plants/stochastic.lsys" --seed 9 --print
+"$LSYS" derive "$DATA/plants/stochastic.lsys" --seed 9 --print > "$WORK/a"
+"$LSYS" derive "$DATA/plants/stochastic.lsys" --seed 9 --print --threads 1 > "$WORK/b"
+cmp -s "$WORK/a" "$WORK/b" || fail "seed: 2 threads and 1 thread differ"
+
+expect_run dialect-header 0 '"F":1330' -- "$LSYS" derive "$DATA/plants/crankshaw_gravity_tree_2d.lsys" --json
+printf 'FP A\nA --> FP B\nB --> [ & A ]\nFP --> F\n' > "$WORK/robbins.txt"
+expect_run dialect-option 0 '^FF\[&A\]$' -- "$LSYS" derive "$WORK/robbins.txt" --dialect robbins -n 2 --print
+expect_run dialect-unknown 2 'dialect' -- "$LSYS" derive "$WORK/robbins.txt" --dialect klingon
+
+printf 'Axiom: A\nA --> B(1 +)\nC --> D\nnonsense here\n' > "$WORK/bad.lsys"
+expect_run check-bad 2 'bad.lsys:2:12: error:' -- "$LSYS" check "$WORK/bad.lsys"
+expect_run check-caret 2 '^             \^$' -- "$LSYS" check "$WORK/bad.lsys"
+expect_run check-all 2 'bad.lsys:4:1: error: unrecognised line' -- "$LSYS" check "$WORK/bad.lsys"
+expect_run check-count 2 '^2 errors$' -- "$LSYS" check "$WORK/bad.lsys"
+expect_run derive-bad 2 'bad.lsys:2:12' -- "$LSYS" derive "$WORK/bad.lsys"
+expect_run check-good 0 'ok' -- "$LSYS" check "$DATA/plants/monopodial_tree.lsys"
+expect_run missing 2 'cannot read file' -- "$LSYS" derive "$WORK/does-not-exist.lsys"
+expect_run budget 2 'module budget exceeded at derivation step 6' -- "$LSYS" derive "$DATA/plants/fractal_bush.lsys" -n 7 --max-modules 100000
+expect_run help 0 'derive' -- "$LSYS" --help
+expect_run derive-help 0 '--max-modules' -- "$LSYS" derive --help
+expect_run no-command 2 'subcommand' -- "$LSYS"
+expect_run bad-option 2 'steps' -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" -n many
+
+[ "$failures" = 0 ] && echo "all lsys CLI checks passed"
+[ "$failures" = 0 ]
