@@ -1,5 +1,7 @@
 #include "lsystem/error.h"
 
+#include <algorithm>
+
 namespace lsys {
 
 namespace {
@@ -42,6 +44,12 @@ std::string formatDiagnostics(const std::vector<Diagnostic>& diagnostics, std::s
     std::string out;
     for (const Diagnostic& diagnostic : diagnostics) out += formatDiagnostic(diagnostic, source);
     return out;
+}
+
+void sortBySourcePosition(std::vector<Diagnostic>& diagnostics) {
+    std::stable_sort(diagnostics.begin(), diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+        return a.line != b.line ? a.line < b.line : a.column < b.column;
+    });
 }
 
 }  // namespace lsys

@@ -22,6 +22,9 @@ struct Diagnostic {
 std::string formatDiagnostic(const Diagnostic& diagnostic, std::string_view source);
 std::string formatDiagnostics(const std::vector<Diagnostic>& diagnostics, std::string_view source);
 
+// Orders diagnostics by line, then column, keeping the order of equal positions.
+void sortBySourcePosition(std::vector<Diagnostic>& diagnostics);
+
 // Raised by derivation and interpretation: budget exceeded, bad runtime value.
 struct DerivationError : std::runtime_error {
     using std::runtime_error::runtime_error;

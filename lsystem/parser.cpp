@@ -4,8 +4,10 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
+#include "lsystem/dialects/dialect.h"
 #include "lsystem/lexer.h"
 
 namespace lsys {
@@ -118,7 +120,8 @@ struct Parser {
             return;
         }
         if (acceptHeader(cursor, "lsystem")) return;  // lpfg's "lsystem: 1" names the system; nothing to do
-        if (acceptHeader(cursor, "dialect")) return;  // chosen before parsing (parseLsystem)
+        if (Cursor header = cursor; acceptHeader(cursor, "dialect"))  // a valid header line never gets here (parseDialect blanks it)
+            return error(header, "unknown or misplaced dialect line", "'dialect: NAME' as the first non-blank line, NAME one of " + knownDialects());
         if (acceptHeader(cursor, "seed")) return seed(cursor);
         if (acceptHeader(cursor, "derivation length")) return derivationLength(cursor);
         if (acceptHeader(cursor, "angle")) return number(cursor, grammar.angle);
@@ -430,7 +433,9 @@ struct Parser {
     }
 };
 
-ParseResult parseNative(std::string_view source, const ParseOptions& options) {
+}  // namespace
+
+ParseResult parseLsystem(std::string_view source, const ParseOptions& options) {
     ParseResult result;
     result.grammar.file = options.file;
     for (auto& [name, value] : options.defines) result.grammar.constants[name] = value;
@@ -448,52 +453,8 @@ ParseResult parseNative(std::string_view source, const ParseOptions& options) {
     parser.finish();
     if (!parser.sawAxiom && result.diagnostics.empty())
         result.diagnostics.push_back({options.file, 1, 1, "no axiom", "an 'Axiom:' line"});
-    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
-        return a.line != b.line ? a.line < b.line : a.column < b.column;
-    });
+    sortBySourcePosition(result.diagnostics);
     return result;
-}
-
-// Translates, parses the native text, and points diagnostics back at the original statements.
-ParseResult parseTranslated(std::string_view source, Dialect dialect, const ParseOptions& options) {
-    std::string original(source);
-    // The "dialect:" line belongs to no dialect's own syntax: blank it.
-    size_t header = original.find("dialect");
-    if (header != std::string::npos) {
-        size_t end = original.find('\n', header);
-        std::fill(original.begin() + static_cast<ptrdiff_t>(header),
-                  end == std::string::npos ? original.end() : original.begin() + static_cast<ptrdiff_t>(end), ' ');
-    }
-    Translation translation = translate(dialect, original, options.file);
-    ParseResult result = parseNative(translation.native, options);
-    for (Diagnostic& diagnostic : result.diagnostics) {
-        if (diagnostic.line >= 1 && static_cast<size_t>(diagnostic.line) <= translation.origins.size()) {
-            const Translation::Origin& origin = translation.origins[static_cast<size_t>(diagnostic.line) - 1];
-            diagnostic.line = origin.line;
-            diagnostic.column = origin.column;
-        }
-    }
-    result.diagnostics.insert(result.diagnostics.end(), translation.diagnostics.begin(), translation.diagnostics.end());
-    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
-        return a.line != b.line ? a.line < b.line : a.column < b.column;
-    });
-    return result;
-}
-
-}  // namespace
-
-ParseResult parseLsystem(std::string_view source, const ParseOptions& options) {
-    std::optional<Dialect> dialect = options.dialect;
-    if (!dialect) {
-        std::optional<std::string> declared = declaredDialect(source);
-        dialect = declared ? dialectByName(*declared) : Dialect::Native;
-        if (!dialect) {
-            ParseResult result;
-            result.diagnostics.push_back({options.file, 1, 1, "unknown dialect '" + *declared + "'", "native, crankshaw, robbins or plantlang"});
-            return result;
-        }
-    }
-    return *dialect == Dialect::Native ? parseNative(source, options) : parseTranslated(source, *dialect, options);
 }
 
 std::string readTextFile(const std::string& path, bool& ok) {
@@ -502,18 +463,6 @@ std::string readTextFile(const std::string& path, bool& ok) {
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();
-}
-
-ParseResult loadLsystemFile(const std::string& path, ParseOptions options) {
-    bool ok = false;
-    std::string source = readTextFile(path, ok);
-    if (options.file == "<input>") options.file = path;
-    if (!ok) {
-        ParseResult result;
-        result.diagnostics.push_back({path, 0, 0, "cannot read file"});
-        return result;
-    }
-    return parseLsystem(source, options);
 }
 
 }  // namespace lsys

@@ -14,7 +14,8 @@ namespace {
 
 enum class Action : uint8_t {
     None, Draw, Move, Yaw, YawBack, Pitch, PitchBack, Roll, RollBack, TurnAround, RollHorizontal,
-    Push, Pop, Width, Material, NextMaterial, Cut, ScaleLength, ScaleAngle, ScaleWidth,
+    Push, Pop, Width, Material, NextMaterial, Cut,
+    ScaleLength, AddLength, SetLength, ScaleAngle, AddAngle, SetAngle, ScaleWidth, AddWidth, AddMaterial,
 };
 
 Action actionOf(const std::string& name) {
@@ -35,8 +36,14 @@ Action actionOf(const std::string& name) {
     if (name == "'") return Action::NextMaterial;
     if (name == "%") return Action::Cut;
     if (name == "@Lm") return Action::ScaleLength;
+    if (name == "@La") return Action::AddLength;
+    if (name == "@Ls") return Action::SetLength;
     if (name == "@Am") return Action::ScaleAngle;
+    if (name == "@Aa") return Action::AddAngle;
+    if (name == "@As") return Action::SetAngle;
     if (name == "@Wm") return Action::ScaleWidth;
+    if (name == "@Wa") return Action::AddWidth;
+    if (name == "@Ca") return Action::AddMaterial;
     return Action::None;
 }
 
@@ -111,7 +118,9 @@ std::vector<TurtleSegment> interpretTurtle(const ModuleString& string, const Sym
     for (size_t i = 0; i < string.size(); ++i) {
         const std::span<const float> p = string.parameters(i);
         const float angle = p.empty() ? state.angle : p[0];
+        // Of the length, angle, width and material modules: bare ones change nothing.
         const float factor = p.empty() ? 1.0f : p[0];
+        const float amount = p.empty() ? 0.0f : p[0];
         switch (actions[string.symbols[i]]) {
             case Action::None: break;
             case Action::Draw: {
@@ -147,8 +156,14 @@ std::vector<TurtleSegment> interpretTurtle(const ModuleString& string, const Sym
             case Action::NextMaterial: ++state.material; break;
             case Action::Cut: i = endOfBranch(string, i + 1) - 1; break;
             case Action::ScaleLength: state.length *= factor; break;
+            case Action::AddLength: state.length += amount; break;
+            case Action::SetLength: if (!p.empty()) state.length = p[0]; break;
             case Action::ScaleAngle: state.angle *= factor; break;
+            case Action::AddAngle: state.angle += amount; break;
+            case Action::SetAngle: if (!p.empty()) state.angle = p[0]; break;
             case Action::ScaleWidth: state.width *= factor; break;
+            case Action::AddWidth: state.width += amount; break;
+            case Action::AddMaterial: state.material = materialIndex(static_cast<float>(state.material) + amount); break;
         }
     }
     return segments;

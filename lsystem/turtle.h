@@ -12,8 +12,10 @@
 //   $         roll about H until L is horizontal               [ ]  push / pop the whole state
 //   !(w)      set width; bare ! multiplies it by kWidthFactor  ;(i) material index; bare ; or ' adds 1
 //   %         cut: skip the rest of the current branch
-//   @Lm(x) @Am(x) @Wm(x)  multiply the length of bare F/f, the angle of bare
-//             turns, the width by x (the dialects' scaling commands)
+//   @Lm(x) @La(x) @Ls(x)  multiply / add to / set the length of bare F and f
+//   @Am(x) @Aa(x) @As(x)  multiply / add to / set the angle of bare turns
+//   @Wm(x) @Wa(x)         multiply / add to the width      @Ca(x)  add x to the material index
+//             (the dialects' commands, docs/DIALECTS.md); without x they change nothing
 // Angles are in degrees; a parameter overrides the current angle or length.
 // Width is a diameter: radii are width / 2. Other modules are ignored.
 

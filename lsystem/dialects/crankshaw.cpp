@@ -16,7 +16,7 @@
 
 #include "lsystem/dialects/native_text.h"
 
-namespace lsys::dialects {
+namespace lsys {
 
 namespace {
 
@@ -265,4 +265,4 @@ struct Crankshaw {
 
 Translation translateCrankshaw(const Source& source) { return Crankshaw{source}.run(); }
 
-}  // namespace lsys::dialects
+}  // namespace lsys

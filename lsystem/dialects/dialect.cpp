@@ -6,7 +6,7 @@
 
 #include "lsystem/dialects/native_text.h"
 
-namespace lsys::dialects {
+namespace lsys {
 
 namespace {
 
@@ -45,6 +45,12 @@ std::optional<Dialect> dialectFromName(std::string_view name) {
 
 const char* dialectName(Dialect dialect) { return kNames[static_cast<size_t>(dialect)]; }
 
+std::string knownDialects() {
+    std::string list = kNames[0];
+    for (size_t i = 1; i < std::size(kNames); ++i) list += (i + 1 < std::size(kNames) ? ", " : " or ") + std::string(kNames[i]);
+    return list;
+}
+
 Dialect detectDialect(std::string_view source) {
     std::optional<HeaderLine> header = findHeaderLine(source);
     return header ? header->dialect : Dialect::Native;
@@ -74,17 +80,15 @@ Diagnostic sourcePosition(const Translation& translation, std::string_view sourc
     return diagnostic;
 }
 
-ParseResult parseDialect(Dialect dialect, std::string_view source, const ParseOptions& options) {
-    Translation translation = translateToNative(dialect, source, options.file);
+ParseResult parseDialect(std::optional<Dialect> dialect, std::string_view source, const ParseOptions& options) {
+    Translation translation = translateToNative(dialect.value_or(detectDialect(source)), source, options.file);
     ParseResult result = parseLsystem(translation.nativeSource, options);
     for (Diagnostic& diagnostic : result.diagnostics) diagnostic = sourcePosition(translation, source, std::move(diagnostic));
     // A statement the translation rejected may be the axiom: "no axiom" would only repeat that error.
     if (!translation.diagnostics.empty())
         std::erase_if(result.diagnostics, [](const Diagnostic& diagnostic) { return diagnostic.message == "no axiom"; });
     result.diagnostics.insert(result.diagnostics.end(), translation.diagnostics.begin(), translation.diagnostics.end());
-    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
-        return a.line != b.line ? a.line < b.line : a.column < b.column;
-    });
+    sortBySourcePosition(result.diagnostics);
     return result;
 }
 
@@ -97,7 +101,7 @@ ParseResult loadDialectFile(const std::string& path, std::optional<Dialect> dial
         result.diagnostics.push_back({path, 0, 0, "cannot read file"});
         return result;
     }
-    return parseDialect(dialect.value_or(detectDialect(source)), source, options);
+    return parseDialect(dialect, source, options);
 }
 
-}  // namespace lsys::dialects
+}  // namespace lsys

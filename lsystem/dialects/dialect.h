@@ -15,14 +15,14 @@
 #include "lsystem/error.h"
 #include "lsystem/parser.h"
 
-// In lsys::dialects, apart from lsystem/dialect.h (another front end being written at the same time).
-namespace lsys::dialects {
+namespace lsys {
 
 enum class Dialect { Native, Crankshaw, Robbins, Plantlang };
 
 // "native", "crankshaw", "robbins", "plantlang" (case-insensitive).
 std::optional<Dialect> dialectFromName(std::string_view name);
 const char* dialectName(Dialect dialect);
+std::string knownDialects();  // "native, crankshaw, robbins or plantlang", for messages
 
 // The first non-blank line "dialect: NAME" (also "// dialect: NAME",
 // "/* dialect: NAME */", "# dialect: NAME") selects the dialect; Native otherwise.
@@ -43,11 +43,14 @@ Translation translateToNative(Dialect dialect, std::string_view source, const st
 // the original source the offending text came from.
 Diagnostic sourcePosition(const Translation& translation, std::string_view source, Diagnostic diagnostic);
 
-// Translates, parses the native text and reports every diagnostic (dialect and
-// native) at its position in the original source, in source order.
-ParseResult parseDialect(Dialect dialect, std::string_view source, const ParseOptions& options = {});
+// The entry point for plant text in any notation: the given dialect, else the
+// one the header line names, else native. Translates, parses the native text
+// and reports every diagnostic (dialect and native) at its position in the
+// original source, in source order.
+ParseResult parseDialect(std::optional<Dialect> dialect, std::string_view source, const ParseOptions& options = {});
 
-// Reads a file in the given dialect, or in the one its header line names.
-ParseResult loadDialectFile(const std::string& path, std::optional<Dialect> dialect, ParseOptions options = {});
+// Reads a file and parses it with parseDialect; a missing file becomes a
+// diagnostic at line 0.
+ParseResult loadDialectFile(const std::string& path, std::optional<Dialect> dialect = std::nullopt, ParseOptions options = {});
 
-}  // namespace lsys::dialects
+}  // namespace lsys

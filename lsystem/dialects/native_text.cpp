@@ -6,7 +6,7 @@
 
 #include "lsystem/lexer.h"
 
-namespace lsys::dialects {
+namespace lsys {
 
 Source::Source(std::string_view original, std::string file_, std::vector<Diagnostic>& diagnostics)
     : file(std::move(file_)), text(blankComments(original, file, diagnostics)) {
@@ -183,4 +183,4 @@ std::optional<HeaderLine> findHeaderLine(std::string_view source) {
     return std::nullopt;
 }
 
-}  // namespace lsys::dialects
+}  // namespace lsys

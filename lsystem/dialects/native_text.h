@@ -11,7 +11,7 @@
 
 #include "lsystem/dialects/dialect.h"
 
-namespace lsys::dialects {
+namespace lsys {
 
 // The original text with comments and the dialect header line blanked out
 // (same length, so offsets and columns stay those of the original).
@@ -96,4 +96,4 @@ Translation translateCrankshaw(const Source& source);
 Translation translateRobbins(const Source& source);
 Translation translatePlantlang(const Source& source);
 
-}  // namespace lsys::dialects
+}  // namespace lsys

@@ -17,7 +17,7 @@
 
 #include "lsystem/dialects/native_text.h"
 
-namespace lsys::dialects {
+namespace lsys {
 
 namespace {
 
@@ -282,4 +282,4 @@ struct Plantlang {
 
 Translation translatePlantlang(const Source& source) { return Plantlang{source}.run(); }
 
-}  // namespace lsys::dialects
+}  // namespace lsys

@@ -12,7 +12,7 @@
 #include "lsystem/dialects/native_text.h"
 #include "lsystem/lexer.h"
 
-namespace lsys::dialects {
+namespace lsys {
 
 namespace {
 
@@ -150,6 +150,10 @@ struct Robbins {
         while (true) {
             s.skipWhitespace();
             if (s.atEnd() || atProduction(s)) return true;
+            if (size_t at = s.pos; s.accept("-->")) {  // read as the symbols - - > it would hide a typo
+                fail(at, "'-->' without a production name", "NAME --> successor");
+                return false;
+            }
             if (!module(s, into)) return false;
         }
     }
@@ -201,4 +205,4 @@ struct Robbins {
 
 Translation translateRobbins(const Source& source) { return Robbins{source}.run(); }
 
-}  // namespace lsys::dialects
+}  // namespace lsys

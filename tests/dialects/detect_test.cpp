@@ -2,7 +2,7 @@
 
 #include "dialect_test_support.h"
 
-namespace lsys::dialects::test {
+namespace lsys::test {
 namespace {
 
 TEST(DialectNames, KnownNamesInAnyCase) {
@@ -31,10 +31,27 @@ TEST(DetectDialect, NativeWithoutAHeaderOnTheFirstNonBlankLine) {
     EXPECT_EQ(detectDialect("dialect: robbins extra\n"), Dialect::Native);
 }
 
+// parseDialect without a dialect: what lsys and loadDialectFile do with a file.
+TEST(DetectDialect, TheHeaderLineSelectsTheTranslator) {
+    EXPECT_TRUE(parseDialect(std::nullopt, "\n// dialect: crankshaw\n#w : A;\n").ok());
+    EXPECT_FALSE(parseDialect(std::nullopt, "#w : A;\n").ok());  // native without a header: '#w' is no directive
+    EXPECT_TRUE(parseDialect(Dialect::Crankshaw, "#w : A;\n").ok());  // a given dialect needs no header
+}
+
+TEST(DetectDialect, UnknownOrMisplacedHeaderIsAnError) {
+    for (const char* source : {"dialect: klingon\nAxiom: A\n", "Axiom: A\ndialect: crankshaw\n"}) {
+        ParseResult result = parseDialect(std::nullopt, source, {"h.lsys"});
+        ASSERT_EQ(result.diagnostics.size(), 1u) << source;
+        EXPECT_EQ(result.diagnostics[0].column, 1);
+        EXPECT_NE(result.diagnostics[0].message.find("unknown or misplaced dialect line"), std::string::npos);
+        EXPECT_NE(result.diagnostics[0].expected.find(knownDialects()), std::string::npos);
+    }
+}
+
 TEST(DetectDialect, NativeFileWithHeaderParses) {
     Grammar grammar = parseOk(Dialect::Native, "dialect: native\nAxiom: F\nF --> FF\n");
     EXPECT_EQ(deriveSteps(grammar, 2).size(), 4u);
 }
 
 }  // namespace
-}  // namespace lsys::dialects::test
+}  // namespace lsys::test

@@ -12,7 +12,7 @@
 #include "lsystem/module_string.h"
 #include "lsystem/rewriter.h"
 
-namespace lsys::dialects::test {
+namespace lsys::test {
 
 inline std::string dataPath(const std::string& relative) { return std::string(PLANTFIELD_DATA_DIR) + "/" + relative; }
 
@@ -44,4 +44,4 @@ inline std::map<std::string, size_t> countsOf(const ModuleString& string, const 
     return counts;
 }
 
-}  // namespace lsys::dialects::test
+}  // namespace lsys::test

@@ -6,7 +6,7 @@
 
 #include "dialect_test_support.h"
 
-namespace lsys::dialects::test {
+namespace lsys::test {
 namespace {
 
 struct ErrorCase {
@@ -47,7 +47,8 @@ INSTANTIATE_TEST_SUITE_P(
                       // Found by the native parser in the translation, moved back to the dialect text:
                       ErrorCase{Dialect::Crankshaw, "#q : A : ~0.5 : B;\n#w : A;", 1, 6, "sum to 0.5"},
                       ErrorCase{Dialect::Crankshaw, "#n = 2; #define a 1;\n#w : A(a);\n#p1 : A(x) : * : B(x +);", 3, 23, "unexpected ')'"},
-                      ErrorCase{Dialect::Crankshaw, "#w : ab;\n#p1 : ab : * : ab(q);", 2, 19, "q"}));
+                      ErrorCase{Dialect::Crankshaw, "#w : ab;\n#p1 : ab : * : ab(q);", 2, 19, "q"},
+                      ErrorCase{Dialect::Crankshaw, "#n = 2;\n#w : A;\n\n  #p1 : A : x > 1 : B;", 4, 13, "unknown name 'x'"}));
 
 INSTANTIATE_TEST_SUITE_P(
     Robbins, DialectErrors,
@@ -56,7 +57,8 @@ INSTANTIATE_TEST_SUITE_P(
                       ErrorCase{Dialect::Robbins, "X\nA --> |(2)", 2, 8, "'|' takes no value"},
                       ErrorCase{Dialect::Robbins, "X\nA --> F(1", 2, 8, "unclosed '('"},
                       ErrorCase{Dialect::Robbins, "angle 30 X X --> @", 1, 18, "unknown symbol '@'"},
-                      ErrorCase{Dialect::Robbins, "X\n\nA --> F(1 +)", 3, 12, "unexpected ')'"}));
+                      ErrorCase{Dialect::Robbins, "X\n\nA --> F(1 +)", 3, 12, "unexpected ')'"},
+                      ErrorCase{Dialect::Robbins, "A\nA -->  --> B", 2, 8, "production"}));
 
 INSTANTIATE_TEST_SUITE_P(
     Plantlang, DialectErrors,
@@ -70,7 +72,8 @@ INSTANTIATE_TEST_SUITE_P(
                       ErrorCase{Dialect::Plantlang, "Axiom = X\nX = > d", 2, 1, "unknown setting"},
                       ErrorCase{Dialect::Plantlang, "hello", 1, 1, "unrecognised line"},
                       ErrorCase{Dialect::Plantlang, "Axiom = d(-)", 1, 11, "malformed value"},
-                      ErrorCase{Dialect::Plantlang, "Axiom = X\n(0.3) X => d", 2, 7, "sum to 0.3"}));
+                      ErrorCase{Dialect::Plantlang, "Axiom = X\n(0.3) X => d", 2, 7, "sum to 0.3"},
+                      ErrorCase{Dialect::Plantlang, "Axiom = d\nX => d#X\nwhat", 2, 7, "'#'"}));
 
 // Every prefix of every data file, and random corruptions of them, in every
 // dialect: the translators and the parser must return, whatever the input.
@@ -122,4 +125,4 @@ TEST(DialectRobustness, DeeplyNestedRangesAreAnErrorNotAStackOverflow) {
 }
 
 }  // namespace
-}  // namespace lsys::dialects::test
+}  // namespace lsys::test

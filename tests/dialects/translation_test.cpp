@@ -2,7 +2,7 @@
 
 #include "dialect_test_support.h"
 
-namespace lsys::dialects::test {
+namespace lsys::test {
 namespace {
 
 std::string derived(Dialect dialect, const std::string& source, int steps, uint64_t seed = 0) {
@@ -134,4 +134,4 @@ TEST(Plantlang, PredecessorsTranslateLikeSuccessors) {
 }
 
 }  // namespace
-}  // namespace lsys::dialects::test
+}  // namespace lsys::test

@@ -6,7 +6,7 @@
 
 #include "dialect_test_support.h"
 
-namespace lsys::dialects::test {
+namespace lsys::test {
 namespace {
 
 struct Twin {
@@ -134,4 +134,4 @@ TEST(PlantlangReference, Fig38SettingsAndFCount) {
 }
 
 }  // namespace
-}  // namespace lsys::dialects::test
+}  // namespace lsys::test

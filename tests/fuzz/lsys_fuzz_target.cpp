@@ -1,7 +1,7 @@
 #include "lsys_fuzz_target.h"
 
+#include "lsystem/dialects/dialect.h"
 #include "lsystem/error.h"
-#include "lsystem/parser.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/turtle.h"
 
@@ -12,7 +12,8 @@
 namespace pf::fuzz {
 
 void runLsysInput(const uint8_t* data, size_t size) {
-    const lsys::ParseResult parsed = lsys::parseLsystem(std::string_view(reinterpret_cast<const char*>(data), size));
+    // Through the dialect entry point, so a "dialect:" first line fuzzes that translator too.
+    const lsys::ParseResult parsed = lsys::parseDialect(std::nullopt, std::string_view(reinterpret_cast<const char*>(data), size));
     if (!parsed.ok()) return;
     lsys::DeriveOptions options;
     // Bounded work per input: a grammar may ask for a billion steps.

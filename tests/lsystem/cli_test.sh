@@ -35,10 +35,16 @@ expect_run seed 0 '^F' -- "$LSYS" derive "$DATA/plants/stochastic.lsys" --seed 9
 "$LSYS" derive "$DATA/plants/stochastic.lsys" --seed 9 --print --threads 1 > "$WORK/b"
 cmp -s "$WORK/a" "$WORK/b" || fail "seed: 2 threads and 1 thread differ"
 
-expect_run dialect-header 0 '"F":1330' -- "$LSYS" derive "$DATA/plants/crankshaw_gravity_tree_2d.lsys" --json
+expect_run dialect-header 0 '"F":1330' -- "$LSYS" derive "$DATA/plants/dialects/gravity_tree_2d.crankshaw" --json
 printf 'FP A\nA --> FP B\nB --> [ & A ]\nFP --> F\n' > "$WORK/robbins.txt"
 expect_run dialect-option 0 '^FF\[&A\]$' -- "$LSYS" derive "$WORK/robbins.txt" --dialect robbins -n 2 --print
-expect_run dialect-unknown 2 'dialect' -- "$LSYS" derive "$WORK/robbins.txt" --dialect klingon
+expect_run dialect-option-case 0 '^FF\[&A\]$' -- "$LSYS" derive "$WORK/robbins.txt" --dialect Robbins -n 2 --print
+expect_run dialect-native 2 'robbins.txt:1:' -- "$LSYS" check "$WORK/robbins.txt" --dialect native
+expect_run dialect-unknown 2 "unknown dialect 'klingon'" -- "$LSYS" derive "$WORK/robbins.txt" --dialect klingon
+printf 'dialect: klingon\nAxiom: F\n' > "$WORK/klingon.lsys"
+expect_run dialect-unknown-header 2 'klingon.lsys:1:1: error: unknown or misplaced dialect line' -- "$LSYS" check "$WORK/klingon.lsys"
+printf 'dialect: crankshaw\n#w : A;\n\n  #p1 : A : * : B(1 +);\n' > "$WORK/bad.crankshaw"
+expect_run dialect-error-position 2 'bad.crankshaw:4:22: error:' -- "$LSYS" check "$WORK/bad.crankshaw"
 
 printf 'Axiom: A\nA --> B(1 +)\nC --> D\nnonsense here\n' > "$WORK/bad.lsys"
 expect_run check-bad 2 'bad.lsys:2:12: error:' -- "$LSYS" check "$WORK/bad.lsys"

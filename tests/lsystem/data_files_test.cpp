@@ -1,5 +1,6 @@
-// Every file in data/plants parses without diagnostics and derives its
-// derivation length within the default budget.
+// Every file in data/plants (dialect files in data/plants/dialects included)
+// parses without diagnostics and derives its derivation length within the
+// default budget.
 
 #include <filesystem>
 
@@ -9,10 +10,12 @@
 namespace lsys::test {
 namespace {
 
+// Paths relative to data/plants.
 std::vector<std::string> plantFiles() {
+    const std::filesystem::path root = dataPath("plants");
     std::vector<std::string> files;
-    for (const auto& entry : std::filesystem::directory_iterator(dataPath("plants")))
-        if (entry.path().extension() == ".lsys") files.push_back(entry.path().filename().string());
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root))
+        if (entry.is_regular_file()) files.push_back(entry.path().lexically_relative(root).string());
     std::sort(files.begin(), files.end());
     return files;
 }
@@ -22,7 +25,7 @@ TEST(LsysDataFiles, ThereAreEnough) { EXPECT_GE(plantFiles().size(), 20u); }
 TEST(LsysDataFiles, EveryPlantLoadsAndDerives) {
     for (const std::string& file : plantFiles()) {
         SCOPED_TRACE(file);
-        ParseResult result = loadLsystemFile(dataPath("plants/" + file));
+        ParseResult result = loadDialectFile(dataPath("plants/" + file));
         bool readable = false;
         std::string source = readTextFile(dataPath("plants/" + file), readable);
         ASSERT_TRUE(result.ok()) << formatDiagnostics(result.diagnostics, source);

@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "lsystem/dialects/dialect.h"
 #include "lsystem/parser.h"
 #include "lsystem/rewriter.h"
 
@@ -22,7 +23,7 @@ inline Grammar parseOk(const std::string& source, const ParseOptions& options = 
 }
 
 inline Grammar loadOk(const std::string& relative) {
-    ParseResult result = loadLsystemFile(dataPath(relative));
+    ParseResult result = loadDialectFile(dataPath(relative));
     EXPECT_TRUE(result.ok()) << relative << ": " << (result.diagnostics.empty() ? "" : result.diagnostics[0].message);
     return std::move(result.grammar);
 }

@@ -80,14 +80,13 @@ TEST(LsysTurtle, WidthAndTaper) {
     EXPECT_FLOAT_EQ(segments[2].endRadius, 0.1f);
 }
 
-TEST(LsysTurtle, MaterialIndex) {
-    auto segments = segmentsOf("Axiom: F;(3)F;F'F\n");
-    ASSERT_EQ(segments.size(), 4u);
-    EXPECT_EQ(segments[0].material, 0u);
-    EXPECT_EQ(segments[1].material, 3u);
-    EXPECT_EQ(segments[2].material, 4u);
-    EXPECT_EQ(segments[3].material, 5u);
+std::vector<uint32_t> materialsOf(const std::string& source) {
+    std::vector<uint32_t> materials;
+    for (const TurtleSegment& segment : segmentsOf(source)) materials.push_back(segment.material);
+    return materials;
 }
+
+TEST(LsysTurtle, MaterialIndex) { EXPECT_EQ(materialsOf("Axiom: F;(3)F;F'F\n"), (std::vector<uint32_t>{0, 3, 4, 5})); }
 
 TEST(LsysTurtle, RollToHorizontalKeepsHeading) {
     auto segments = segmentsOf("angle: 30\nAxiom: &+/(50)$F+(90)F\n");
@@ -109,6 +108,44 @@ TEST(LsysTurtle, ScalingModules) {
     EXPECT_NEAR(glm::distance(segments[2].start, segments[2].end), 6.0f, 1e-5f);
     EXPECT_NEAR(glm::distance(segments[3].start, segments[3].end), 2.0f, 1e-5f);  // the branch's scale was popped
 }
+
+std::vector<float> lengthsOf(const std::string& source) {
+    std::vector<float> lengths;
+    for (const TurtleSegment& segment : segmentsOf(source)) lengths.push_back(glm::distance(segment.start, segment.end));
+    return lengths;
+}
+
+void expectNear(const std::vector<float>& actual, const std::vector<float>& expected) {
+    ASSERT_EQ(actual.size(), expected.size());
+    for (size_t i = 0; i < actual.size(); ++i) EXPECT_NEAR(actual[i], expected[i], 1e-5f) << i;
+}
+
+// The branch's change is popped; a bare @La changes nothing.
+TEST(LsysTurtle, AddToLength) { expectNear(lengthsOf("step: 2\nAxiom: @La(0.5)F[@La(-1)F]F@La F\n"), {2.5f, 1.5f, 2.5f, 2.5f}); }
+
+TEST(LsysTurtle, SetLength) { expectNear(lengthsOf("step: 2\nAxiom: @Ls(3)F@LsF@Lm(2)F\n"), {3, 3, 6}); }
+
+TEST(LsysTurtle, AddToAngle) {
+    auto segments = segmentsOf("angle: 60\nAxiom: @Aa(30)+F\n");
+    ASSERT_EQ(segments.size(), 1u);
+    expectNear(segments[0].end, {-1, 0, 0});  // 90 degrees towards L = -X
+}
+
+TEST(LsysTurtle, SetAngle) {
+    auto segments = segmentsOf("angle: 10\nAxiom: @As(180)+F@AsF\n");
+    ASSERT_EQ(segments.size(), 2u);
+    expectNear(segments[1].end, {0, -2, 0});
+}
+
+TEST(LsysTurtle, AddToWidth) {
+    auto segments = segmentsOf("width: 1\nAxiom: @Wa(0.5)F@Wa(-1)F\n");
+    ASSERT_EQ(segments.size(), 2u);
+    EXPECT_FLOAT_EQ(segments[0].startRadius, 0.75f);
+    EXPECT_FLOAT_EQ(segments[1].startRadius, 0.25f);
+}
+
+// Never below 0.
+TEST(LsysTurtle, AddToMaterialIndex) { EXPECT_EQ(materialsOf("Axiom: @Ca(2)F@Ca(-1)F@Ca(-5)F\n"), (std::vector<uint32_t>{2, 1, 0})); }
 
 TEST(LsysTurtle, CutSkipsTheRestOfTheBranch) {
     auto segments = segmentsOf("Axiom: F[F%F[F]F]F\n");

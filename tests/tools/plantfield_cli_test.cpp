@@ -69,7 +69,8 @@ struct BadInvocation {
 class PlantfieldBadFlags : public ::testing::TestWithParam<BadInvocation> {};
 
 TEST_P(PlantfieldBadFlags, FailsClearlyWithoutWriting) {
-    const fs::path dir = scratchDir("bad");
+    // One folder per case: ctest runs the cases in parallel.
+    const fs::path dir = scratchDir(std::string("bad-") + GetParam().name);
     const std::string out = (dir / "out.png").string();
     std::string args = GetParam().args;
     if (const size_t at = args.find("OUT"); at != std::string::npos) args.replace(at, 3, out);

@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "lsystem/dialects/dialect.h"
 #include "lsystem/error.h"
 #include "lsystem/parser.h"
 #include "lsystem/rewriter.h"
@@ -26,7 +27,7 @@ struct Arguments {
     std::optional<int> steps;
     std::optional<uint64_t> seed;
     std::vector<std::string> defines;
-    std::string dialect;  // empty: the file's "dialect:" line, else native
+    std::optional<lsys::Dialect> dialect;  // none: the file's "dialect:" line, else native
     bool print = false;
     bool json = false;
     size_t maxModules = 50'000'000;
@@ -52,7 +53,6 @@ bool parseDefines(const std::vector<std::string>& items, std::unordered_map<std:
 std::optional<lsys::Grammar> load(const Arguments& arguments) {
     lsys::ParseOptions options;
     options.file = arguments.file;
-    if (!arguments.dialect.empty()) options.dialect = lsys::dialectByName(arguments.dialect);
     if (!parseDefines(arguments.defines, options.defines)) return std::nullopt;
     bool readable = false;
     std::string source = lsys::readTextFile(arguments.file, readable);
@@ -60,7 +60,7 @@ std::optional<lsys::Grammar> load(const Arguments& arguments) {
         std::cerr << arguments.file << ": error: cannot read file\n";
         return std::nullopt;
     }
-    lsys::ParseResult result = lsys::parseLsystem(source, options);
+    lsys::ParseResult result = lsys::parseDialect(arguments.dialect, source, options);
     if (!result.ok()) {
         std::cerr << lsys::formatDiagnostics(result.diagnostics, source);
         std::cerr << result.diagnostics.size() << (result.diagnostics.size() == 1 ? " error\n" : " errors\n");
@@ -107,6 +107,17 @@ int derive(const Arguments& arguments) {
     return 0;
 }
 
+// --dialect NAME, any case; an unknown name is a usage error (exit code 2).
+void addDialectOption(CLI::App& command, Arguments& arguments) {
+    command
+        .add_option_function<std::string>(
+            "--dialect", [&arguments](const std::string& name) { arguments.dialect = lsys::dialectFromName(name); },
+            "Input notation: " + lsys::knownDialects() + " (default: the file's 'dialect:' line, else native)")
+        ->check([](const std::string& name) {
+            return lsys::dialectFromName(name) ? std::string() : "unknown dialect '" + name + "' (expected " + lsys::knownDialects() + ")";
+        });
+}
+
 int check(const Arguments& arguments) {
     if (!load(arguments)) return kBadInput;
     std::cout << arguments.file << ": ok\n";
@@ -116,7 +127,7 @@ int check(const Arguments& arguments) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"lsys: derive and check L-systems written in the .lsys notation"};
+    CLI::App app{"lsys: derive and check L-systems written in the .lsys notation or a dialect (docs/DIALECTS.md)"};
     app.require_subcommand(1);
     Arguments arguments;
 
@@ -125,8 +136,7 @@ int main(int argc, char** argv) {
     deriveCommand->add_option("-n,--steps", arguments.steps, "Derivation steps (default: the file's 'derivation length:')");
     deriveCommand->add_option("--seed", arguments.seed, "Random seed (default: the file's 'seed:')");
     deriveCommand->add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
-    deriveCommand->add_option("--dialect", arguments.dialect, "Input notation: native, crankshaw, robbins or plantlang (default: the file's 'dialect:' line, else native)")
-        ->check(CLI::IsMember({"native", "crankshaw", "robbins", "plantlang"}));
+    addDialectOption(*deriveCommand, arguments);
     deriveCommand->add_flag("--print", arguments.print, "Print the final string, e.g. F(1,0.5)[+A(2)]");
     deriveCommand->add_flag("--json", arguments.json, "Print {\"modules\", \"steps\", \"counts\", \"seconds\"} as JSON");
     deriveCommand->add_option("--max-modules", arguments.maxModules, "Module budget; exceeding it is an error")
@@ -136,8 +146,7 @@ int main(int argc, char** argv) {
     CLI::App* checkCommand = app.add_subcommand("check", "Parse a file and report every problem without deriving");
     checkCommand->add_option("FILE", arguments.file, ".lsys file")->required();
     checkCommand->add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
-    checkCommand->add_option("--dialect", arguments.dialect, "Input notation: native, crankshaw, robbins or plantlang")
-        ->check(CLI::IsMember({"native", "crankshaw", "robbins", "plantlang"}));
+    addDialectOption(*checkCommand, arguments);
 
     try {
         app.parse(argc, argv);
