@@ -1,0 +1,1 @@
+# The b-grammar / InstanceGraph (seed 000); included by lsystem/CMakeLists.txt.
