@@ -37,17 +37,28 @@ DefaultScene buildDefaultScene() {
     const lsys::ParseResult parsed = lsys::parseLsystem(kDefaultTree, {.file = "<default tree>"});
     if (!parsed.ok()) throw std::runtime_error("the built-in default tree does not parse");
     const lsys::ModuleString derived = lsys::derive(parsed.grammar);
-    const std::vector<lsys::TurtleSegment> segments = lsys::turtleSegments(parsed.grammar, derived);
+    const lsys::PlantAsset plant = lsys::plantFromGrammar(parsed.grammar, derived);
+
+    // The tree is all segments: each runs from its frame along its heading H.
+    struct Span {
+        glm::vec3 start, end;
+        float startRadius, endRadius;
+    };
+    std::vector<Span> spans;
+    for (const lsys::Primitive& p : plant.primitives)
+        if (p.kind == lsys::PrimitiveKind::Segment)
+            spans.push_back({p.frame.position, p.frame.position + p.frame.rotation * glm::vec3(0.0f, p.length, 0.0f),
+                             p.startRadius, p.endRadius});
 
     // The grammar's units are arbitrary: scale the plant to a tree's height.
     float top = 0.0f;
-    for (const lsys::TurtleSegment& s : segments) top = std::max({top, s.start.y, s.end.y});
+    for (const Span& s : spans) top = std::max({top, s.start.y, s.end.y});
     const float scale = top > 0.0f ? kTreeHeightMetres / top : 1.0f;
 
     DefaultScene scene;
     scene.boundsMin = glm::vec3(std::numeric_limits<float>::max());
     scene.boundsMax = glm::vec3(std::numeric_limits<float>::lowest());
-    for (const lsys::TurtleSegment& s : segments) {
+    for (const Span& s : spans) {
         const glm::vec3 start = s.start * scale, end = s.end * scale;
         scene.geometry.segments.push_back({glm::vec4(start, s.startRadius * scale),
                                            glm::vec4(end, s.endRadius * scale), glm::vec4(kBarkAlbedo, 0.0f)});

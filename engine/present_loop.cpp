@@ -36,12 +36,7 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
     swapchain = createSwapchain(ctx, surface, window.framebufferExtent(), swapchain);
     RenderTarget target = createRenderTarget(ctx, swapchain.extent, renderer.samples());
 
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = ctx.commandPool;
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = 1;
-    VkCommandBuffer cmd;
-    VK_CHECK(vkAllocateCommandBuffers(ctx.device, &alloc, &cmd));
+    VkCommandBuffer cmd = allocateCommandBuffer(ctx);
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
     VkSemaphore imageAcquired;
     VK_CHECK(vkCreateSemaphore(ctx.device, &semaphoreInfo, nullptr, &imageAcquired));

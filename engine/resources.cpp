@@ -7,6 +7,19 @@
 
 namespace pf {
 
+namespace {
+
+VkDeviceMemory allocateMemory(const GpuContext& ctx, const VkMemoryRequirements& req, VkMemoryPropertyFlags flags) {
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    alloc.memoryTypeIndex = findMemoryType(ctx, req.memoryTypeBits, flags);
+    VkDeviceMemory memory;
+    VK_CHECK(vkAllocateMemory(ctx.device, &alloc, nullptr, &memory));
+    return memory;
+}
+
+} // namespace
+
 uint32_t findMemoryType(const GpuContext& ctx, uint32_t typeBits, VkMemoryPropertyFlags flags) {
     const VkPhysicalDeviceMemoryProperties& props = ctx.memoryProperties;
     for (uint32_t i = 0; i < props.memoryTypeCount; ++i)
@@ -25,10 +38,7 @@ Buffer createBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags
 
     VkMemoryRequirements req;
     vkGetBufferMemoryRequirements(ctx.device, out.buffer, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = findMemoryType(ctx, req.memoryTypeBits, memoryFlags);
-    VK_CHECK(vkAllocateMemory(ctx.device, &alloc, nullptr, &out.memory));
+    out.memory = allocateMemory(ctx, req, memoryFlags);
     VK_CHECK(vkBindBufferMemory(ctx.device, out.buffer, out.memory, 0));
     if (memoryFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
         VK_CHECK(vkMapMemory(ctx.device, out.memory, 0, VK_WHOLE_SIZE, 0, &out.mapped));
@@ -77,10 +87,7 @@ Image createImage(const GpuContext& ctx, VkExtent2D extent, VkFormat format, VkI
 
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(ctx.device, out.image, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = findMemoryType(ctx, req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    VK_CHECK(vkAllocateMemory(ctx.device, &alloc, nullptr, &out.memory));
+    out.memory = allocateMemory(ctx, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     VK_CHECK(vkBindImageMemory(ctx.device, out.image, out.memory, 0));
 
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
@@ -99,13 +106,18 @@ void destroyImage(const GpuContext& ctx, Image& image) {
     image = {};
 }
 
-void submitAndWait(const GpuContext& ctx, const std::function<void(VkCommandBuffer)>& record) {
+VkCommandBuffer allocateCommandBuffer(const GpuContext& ctx) {
     VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     alloc.commandPool = ctx.commandPool;
     alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     alloc.commandBufferCount = 1;
     VkCommandBuffer cmd;
     VK_CHECK(vkAllocateCommandBuffers(ctx.device, &alloc, &cmd));
+    return cmd;
+}
+
+void submitAndWait(const GpuContext& ctx, const std::function<void(VkCommandBuffer)>& record) {
+    VkCommandBuffer cmd = allocateCommandBuffer(ctx);
 
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;

@@ -36,6 +36,8 @@ Image createImage(const GpuContext& ctx, VkExtent2D extent, VkFormat format, VkI
                   VkSampleCountFlagBits samples, VkImageAspectFlags aspect);
 void destroyImage(const GpuContext& ctx, Image& image);
 
+// A primary command buffer from the context's pool.
+VkCommandBuffer allocateCommandBuffer(const GpuContext& ctx);
 // Records with `record`, submits, and waits for the queue to finish.
 void submitAndWait(const GpuContext& ctx, const std::function<void(VkCommandBuffer)>& record);
 
