@@ -4,18 +4,21 @@
 # run again: when all packages are present it returns at once without apt.
 # Usage: tools/deps.sh [fuzz] [bench]
 #   fuzz:  clang and libFuzzer for tools/fuzz.sh
-#   bench: hyperfine and Node.js for the peer benchmarks in tools/bench/
+#   bench: hyperfine for the peer benchmarks in tools/bench/
+# Node.js and npm are in the default list (tests/export runs the Khronos
+# glTF-Validator with them); a machine that already has node and npm, from
+# Debian or elsewhere, keeps its own.
 set -euo pipefail
 
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglm-dev libglfw3-dev libstb-dev libcli11-dev nlohmann-json3-dev
-  libgtest-dev xvfb xauth
+  libgtest-dev xvfb xauth libtinygltf-dev
 )
+command -v node >/dev/null && command -v npm >/dev/null || PACKAGES+=(nodejs npm)
 FUZZ_PACKAGES=(clang libclang-rt-14-dev)
 BENCH_PACKAGES=(hyperfine)
-command -v node >/dev/null && command -v npm >/dev/null || BENCH_PACKAGES+=(nodejs npm)
 
 for group in "$@"; do
   case "$group" in

@@ -1,0 +1,40 @@
+#pragma once
+// Shared between plant_export.cpp and the per-format writers; not installed
+// as API.
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "lsystem/plant_export.h"
+
+namespace lsys::export_detail {
+
+// A file written under PATH.partial and moved to PATH by commit(); destroyed
+// uncommitted (an exception on the way), it removes the partial file.
+class PartialFile {
+public:
+    explicit PartialFile(std::filesystem::path target);
+    PartialFile(const PartialFile&) = delete;
+    PartialFile& operator=(const PartialFile&) = delete;
+    ~PartialFile();
+
+    std::ostream& stream() { return out_; }
+    void commit();
+
+private:
+    std::filesystem::path target_;
+    std::filesystem::path partial_;
+    std::ofstream out_;
+    bool committed_ = false;
+};
+
+// The material's name, or "material_<index>" where it has none.
+std::string materialName(const PlantAsset& asset, uint32_t index);
+
+void writeGltf(const PlantAsset& asset, std::ostream& out, const ExportOptions& options, bool binary);
+// `mtlFileName` is what the .obj's mtllib line refers to.
+void writeObj(const PlantAsset& asset, std::ostream& obj, std::ostream& mtl, const std::string& mtlFileName,
+              const ExportOptions& options);
+
+}  // namespace lsys::export_detail

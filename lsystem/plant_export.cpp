@@ -1,0 +1,113 @@
+#include "lsystem/plant_export.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "lsystem/export_detail.h"
+
+namespace lsys {
+namespace export_detail {
+
+PartialFile::PartialFile(std::filesystem::path target)
+    : target_(std::move(target)), partial_(target_.string() + ".partial"),
+      out_(partial_, std::ios::binary | std::ios::trunc) {
+    if (!out_) throw std::runtime_error("cannot create " + partial_.string() + ": " + std::strerror(errno));
+}
+
+PartialFile::~PartialFile() {
+    if (committed_) return;
+    out_.close();
+    std::error_code ignored;
+    std::filesystem::remove(partial_, ignored);
+}
+
+void PartialFile::commit() {
+    out_.close();
+    if (!out_) throw std::runtime_error("cannot write " + target_.string() + ": " + std::strerror(errno));
+    std::error_code error;
+    std::filesystem::rename(partial_, target_, error);
+    if (error) throw std::runtime_error("cannot rename " + partial_.string() + " into place: " + error.message());
+    committed_ = true;
+}
+
+std::string materialName(const PlantAsset& asset, uint32_t index) {
+    const std::string& name = asset.materials[index].name;
+    return name.empty() ? "material_" + std::to_string(index) : name;
+}
+
+}  // namespace export_detail
+
+namespace {
+
+// Indices the writers follow without checking; also rules out joint cycles,
+// which would make the glTF node tree a graph.
+void checkAsset(const PlantAsset& asset) {
+    for (size_t i = 0; i < asset.primitives.size(); ++i) {
+        const Primitive& p = asset.primitives[i];
+        const auto fail = [&](const std::string& what) {
+            throw std::runtime_error("primitive " + std::to_string(i) + ": " + what);
+        };
+        if (p.material >= asset.materials.size())
+            fail("material " + std::to_string(p.material) + " of " + std::to_string(asset.materials.size()));
+        if (p.kind == PrimitiveKind::Surface && p.shape >= asset.surfaces.size())
+            fail("surface " + std::to_string(p.shape) + " of " + std::to_string(asset.surfaces.size()));
+        if (p.kind == PrimitiveKind::Polygon && p.shape >= asset.polygons.size())
+            fail("polygon " + std::to_string(p.shape) + " of " + std::to_string(asset.polygons.size()));
+        if (p.joint >= int32_t(asset.joints.size()))
+            fail("joint " + std::to_string(p.joint) + " of " + std::to_string(asset.joints.size()));
+    }
+    // Walk up from each joint until a root or a joint already known to reach
+    // one; meeting the walk's own path again is a cycle. Linear in joints.
+    enum : uint8_t { Unknown, OnPath, ReachesRoot };
+    std::vector<uint8_t> state(asset.joints.size(), Unknown);
+    std::vector<size_t> path;
+    for (size_t i = 0; i < asset.joints.size(); ++i) {
+        path.clear();
+        for (int32_t j = int32_t(i); j >= 0; j = asset.joints[size_t(j)].parent) {
+            if (size_t(j) >= asset.joints.size() || state[size_t(j)] == OnPath)
+                throw std::runtime_error("joint " + std::to_string(i) + ": its parents leave the table or form a cycle");
+            if (state[size_t(j)] == ReachesRoot) break;
+            state[size_t(j)] = OnPath;
+            path.push_back(size_t(j));
+        }
+        for (size_t j : path) state[j] = ReachesRoot;
+    }
+}
+
+std::string lowercaseExtension(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return extension;
+}
+
+}  // namespace
+
+void exportPlant(const PlantAsset& asset, const std::filesystem::path& path, const ExportOptions& options) {
+    using namespace export_detail;
+    try {
+        const std::string extension = lowercaseExtension(path);
+        if (extension != ".gltf" && extension != ".glb" && extension != ".obj")
+            throw std::runtime_error("unknown extension '" + extension + "' (expected .gltf, .glb or .obj)");
+        checkAsset(asset);
+        if (extension == ".obj") {
+            std::filesystem::path mtlPath = path;
+            mtlPath.replace_extension(".mtl");
+            PartialFile mtl(mtlPath), obj(path);
+            writeObj(asset, obj.stream(), mtl.stream(), mtlPath.filename().string(), options);
+            mtl.commit();
+            obj.commit();
+        } else {
+            PartialFile file(path);
+            writeGltf(asset, file.stream(), options, extension == ".glb");
+            file.commit();
+        }
+    } catch (const std::exception& error) {
+        throw std::runtime_error("export " + path.string() + ": " + error.what());
+    }
+}
+
+}  // namespace lsys

@@ -1,0 +1,32 @@
+#pragma once
+// Writes a PlantAsset as glTF 2.0 (.gltf with the buffer embedded as base64,
+// or .glb) or Wavefront OBJ (.obj plus a .mtl beside it), chosen by the
+// file's extension. docs/EXPORT.md describes what each form contains.
+
+#include <filesystem>
+
+#include "lsystem/plant_asset.h"
+#include "lsystem/primitive_mesh.h"
+
+namespace lsys {
+
+enum class ExportForm : uint8_t {
+    Flat,      // one mesh per material, every primitive baked in plant space
+    Instanced, // one mesh per distinct shape, one node per primitive (glTF only; OBJ is always flat)
+};
+
+struct ExportOptions {
+    ExportForm form = ExportForm::Flat;
+    SegmentGeometry segments = SegmentGeometry::Frusta;
+    MeshDetail detail;
+    bool skeleton = true; // glTF: one node per Joint, nested as Joint::parent says
+};
+
+// Throws std::runtime_error naming `path` when the extension is not .gltf,
+// .glb or .obj, when the asset is inconsistent (a material or shape index out
+// of range, a joint cycle), or when a file cannot be written. Each file is
+// written to PATH.partial and renamed into place, so a failure leaves no
+// file behind and never a half-written one.
+void exportPlant(const PlantAsset& asset, const std::filesystem::path& path, const ExportOptions& options = {});
+
+}  // namespace lsys
