@@ -1,0 +1,1 @@
+# The InstanceGraph: b-grammar nodes with turtle status functions, transforms and bounds; included by lsystem/CMakeLists.txt.
