@@ -1,10 +1,11 @@
 #include "lsystem/turtle.h"
 
 #include <cmath>
-#include <string>
+#include <unordered_map>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
 
 #include "lsystem/rewriter.h"
 
@@ -12,83 +13,81 @@ namespace lsys {
 
 namespace {
 
-enum class Action : uint8_t {
-    None, Draw, Move, Yaw, YawBack, Pitch, PitchBack, Roll, RollBack, TurnAround, RollHorizontal,
-    Push, Pop, Width, Material, NextMaterial, Cut,
-    ScaleLength, AddLength, SetLength, ScaleAngle, AddAngle, SetAngle, ScaleWidth, AddWidth, AddMaterial,
-};
-
-Action actionOf(const std::string& name) {
-    if (name == "F") return Action::Draw;
-    if (name == "f") return Action::Move;
-    if (name == "+") return Action::Yaw;
-    if (name == "-") return Action::YawBack;
-    if (name == "&") return Action::Pitch;
-    if (name == "^") return Action::PitchBack;
-    if (name == "\\") return Action::Roll;
-    if (name == "/") return Action::RollBack;
-    if (name == "|") return Action::TurnAround;
-    if (name == "$") return Action::RollHorizontal;
-    if (name == "[") return Action::Push;
-    if (name == "]") return Action::Pop;
-    if (name == "!") return Action::Width;
-    if (name == ";") return Action::Material;
-    if (name == "'") return Action::NextMaterial;
-    if (name == "%") return Action::Cut;
-    if (name == "@Lm") return Action::ScaleLength;
-    if (name == "@La") return Action::AddLength;
-    if (name == "@Ls") return Action::SetLength;
-    if (name == "@Am") return Action::ScaleAngle;
-    if (name == "@Aa") return Action::AddAngle;
-    if (name == "@As") return Action::SetAngle;
-    if (name == "@Wm") return Action::ScaleWidth;
-    if (name == "@Wa") return Action::AddWidth;
-    if (name == "@Ca") return Action::AddMaterial;
-    return Action::None;
+// Rotates the two frame vectors other than axis by degrees about axis, then
+// re-orthonormalises so rounding does not accumulate.
+void rotate(TurtleState& s, glm::vec3 axis, float degrees) {
+    const glm::quat rotation = glm::angleAxis(glm::radians(degrees), axis);
+    s.heading = glm::normalize(rotation * s.heading);
+    const glm::vec3 left = rotation * s.left;
+    s.left = glm::normalize(left - glm::dot(left, s.heading) * s.heading);
+    s.up = glm::cross(s.heading, s.left);
 }
 
-struct State {
-    glm::vec3 position{0.0f};
-    glm::vec3 heading{0.0f, 1.0f, 0.0f};
-    glm::vec3 left{-1.0f, 0.0f, 0.0f};
-    glm::vec3 up{0.0f, 0.0f, 1.0f};
-    float width = 1.0f;
-    float length = 1.0f;  // of a bare F or f
-    float angle = 45.0f;  // of a bare turn, degrees
-    uint32_t material = 0;
-    int32_t lastSegment = -1;
-
-    // Rotates the two frame vectors other than axis by degrees about axis,
-    // then re-orthonormalises so rounding does not accumulate.
-    void rotate(glm::vec3 axis, float degrees) {
-        glm::quat rotation = glm::angleAxis(glm::radians(degrees), axis);
-        heading = rotation * heading;
-        left = rotation * left;
-        up = rotation * up;
-        orthonormalize();
-    }
-
-    void orthonormalize() {
-        heading = glm::normalize(heading);
-        left = glm::normalize(left - glm::dot(left, heading) * heading);
-        up = glm::cross(heading, left);
-    }
-
-    // ABOP's $: L = V x H / |V x H| with V the world up (+Y).
-    void rollHorizontal() {
-        glm::vec3 horizontalLeft = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), heading);
-        if (glm::length(horizontalLeft) < 1e-6f) return;  // heading vertical: any roll is horizontal
-        left = glm::normalize(horizontalLeft);
-        up = glm::cross(heading, left);
-    }
-};
-
-// Parameters are arbitrary floats: negative, huge or NaN indices become 0.
-uint32_t materialIndex(float value) {
-    return value >= 0.0f && value < 65536.0f ? static_cast<uint32_t>(value) : 0;
+// ABOP's $: L = V x H / |V x H| with V the world up (+Y).
+void rollHorizontal(TurtleState& s) {
+    const glm::vec3 horizontalLeft = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), s.heading);
+    if (glm::length(horizontalLeft) < 1e-6f) return;  // heading vertical: any roll is horizontal
+    s.left = glm::normalize(horizontalLeft);
+    s.up = glm::cross(s.heading, s.left);
 }
 
-// Index just past the ']' closing the branch that contains position i (or the end).
+// ABOP §2.4: after a segment, H turns toward T by e * |H x T| about H x T.
+void bendTowardTropism(TurtleState& s) {
+    if (s.elasticity == 0.0f) return;
+    const glm::vec3 axis = glm::cross(s.heading, s.tropism);
+    const float sine = glm::length(axis);
+    if (!(sine > 1e-6f)) return;  // parallel to T (or NaN): no defined bend
+    rotate(s, axis / sine, glm::degrees(s.elasticity * sine));
+}
+
+// cpfg's colour map has 256 entries; parameters are arbitrary floats, and
+// negative, huge or NaN indices become 0.
+uint32_t materialIndex(float value) { return value >= 0.0f && value < 256.0f ? static_cast<uint32_t>(value) : 0; }
+
+// A segment drawn backwards (negative length) faces the other way.
+Frame segmentFrame(const TurtleState& s, float length) {
+    Frame frame = frameOf(s);
+    if (length < 0.0f) frame.rotation = frame.rotation * glm::angleAxis(glm::radians(180.0f), glm::vec3(0, 0, 1));
+    return frame;
+}
+
+// A vertex of the innermost open polygon, if there is one.
+void addVertex(TurtleStack& stack, glm::vec3 position) {
+    if (!stack.polygons.empty()) stack.polygons.back().outline.push_back(position);
+}
+
+// Moves along H; inside a polygon the new position is one of its vertices.
+void move(TurtleState& s, TurtleStack& stack, float length) {
+    s.position += s.heading * length;
+    addVertex(stack, s.position);
+}
+
+void closePolygon(TurtleStack& stack, PlantAssetBuilder& out) {
+    if (stack.polygons.empty()) return;
+    OpenPolygon polygon = std::move(stack.polygons.back());
+    stack.polygons.pop_back();
+    std::vector<glm::vec3> outline;
+    for (const glm::vec3& p : polygon.outline)
+        if (outline.empty() || glm::distance(p, outline.back()) > 1e-6f) outline.push_back(p);
+    if (outline.size() > 1 && glm::distance(outline.front(), outline.back()) <= 1e-6f) outline.pop_back();
+    if (outline.size() >= 3) out.addPolygon(polygon.start, std::move(outline), polygon.material, polygon.joint);
+}
+
+void drawSegment(std::span<const float> p, TurtleState& s, TurtleStack& stack, PlantAssetBuilder& out) {
+    const float length = p.empty() ? s.length : p[0];
+    if (!stack.polygons.empty()) {
+        move(s, stack, length);  // a polygon's outline, not a branch
+        return;
+    }
+    const float startWidth = s.width;
+    if (p.size() > 1) s.width = p[1];
+    s.joint = out.addSegment(segmentFrame(s, length), std::abs(length), startWidth * 0.5f, s.width * 0.5f, s.material,
+                             s.joint, s.stiffness);
+    s.position += s.heading * length;
+    bendTowardTropism(s);
+}
+
+// Index of the ']' closing the branch that contains position i (or the end).
 size_t endOfBranch(const ModuleString& string, size_t i) {
     int depth = 0;
     for (; i < string.size(); ++i) {
@@ -101,78 +100,138 @@ size_t endOfBranch(const ModuleString& string, size_t i) {
 }  // namespace
 
 TurtleSettings turtleSettings(const Grammar& grammar) {
-    return {static_cast<float>(grammar.angle), static_cast<float>(grammar.step), static_cast<float>(grammar.width)};
+    TurtleSettings settings;
+    settings.angle = static_cast<float>(grammar.angle);
+    settings.step = static_cast<float>(grammar.step);
+    settings.width = static_cast<float>(grammar.width);
+    return settings;
 }
 
-std::vector<TurtleSegment> interpretTurtle(const ModuleString& string, const SymbolTable& symbols,
-                                           const TurtleSettings& settings) {
-    std::vector<Action> actions(symbols.size());
-    for (size_t id = 0; id < symbols.size(); ++id) actions[id] = actionOf(symbols.name(static_cast<SymbolId>(id)));
-
-    std::vector<TurtleSegment> segments;
-    std::vector<State> stack;
-    State state;
+TurtleState initialTurtleState(const TurtleSettings& settings) {
+    TurtleState state;
     state.width = settings.width;
     state.length = settings.step;
     state.angle = settings.angle;
-    for (size_t i = 0; i < string.size(); ++i) {
-        const std::span<const float> p = string.parameters(i);
-        const float angle = p.empty() ? state.angle : p[0];
-        // Of the length, angle, width and material modules: bare ones change nothing.
-        const float factor = p.empty() ? 1.0f : p[0];
-        const float amount = p.empty() ? 0.0f : p[0];
-        switch (actions[string.symbols[i]]) {
-            case Action::None: break;
-            case Action::Draw: {
-                const float length = p.empty() ? state.length : p[0];
-                const float startWidth = state.width;
-                if (p.size() > 1) state.width = p[1];
-                glm::vec3 end = state.position + state.heading * length;
-                segments.push_back({state.position, end, startWidth * 0.5f, state.width * 0.5f, state.material, state.lastSegment});
-                state.lastSegment = static_cast<int32_t>(segments.size() - 1);
-                state.position = end;
-                break;
-            }
-            case Action::Move: state.position += state.heading * (p.empty() ? state.length : p[0]); break;
-            case Action::Yaw: state.rotate(state.up, angle); break;
-            case Action::YawBack: state.rotate(state.up, -angle); break;
-            case Action::Pitch: state.rotate(state.left, angle); break;
-            case Action::PitchBack: state.rotate(state.left, -angle); break;
-            case Action::Roll: state.rotate(state.heading, angle); break;
-            case Action::RollBack: state.rotate(state.heading, -angle); break;
-            case Action::TurnAround: state.rotate(state.up, 180.0f); break;
-            case Action::RollHorizontal: state.rollHorizontal(); break;
-            case Action::Push: stack.push_back(state); break;
-            case Action::Pop:
-                if (!stack.empty()) {
-                    state = stack.back();
-                    stack.pop_back();
-                }
-                break;
-            case Action::Width: state.width = p.empty() ? state.width * settings.widthFactor : p[0]; break;
-            case Action::Material:
-                state.material = p.empty() ? state.material + 1 : materialIndex(p[0]);
-                break;
-            case Action::NextMaterial: ++state.material; break;
-            case Action::Cut: i = endOfBranch(string, i + 1) - 1; break;
-            case Action::ScaleLength: state.length *= factor; break;
-            case Action::AddLength: state.length += amount; break;
-            case Action::SetLength: if (!p.empty()) state.length = p[0]; break;
-            case Action::ScaleAngle: state.angle *= factor; break;
-            case Action::AddAngle: state.angle += amount; break;
-            case Action::SetAngle: if (!p.empty()) state.angle = p[0]; break;
-            case Action::ScaleWidth: state.width *= factor; break;
-            case Action::AddWidth: state.width += amount; break;
-            case Action::AddMaterial: state.material = materialIndex(static_cast<float>(state.material) + amount); break;
-        }
-    }
-    return segments;
+    state.tropism = settings.tropism;
+    state.elasticity = settings.elasticity;
+    return state;
 }
 
-std::vector<TurtleSegment> turtleSegments(const Grammar& grammar, const ModuleString& derived) {
-    TurtleSettings settings = turtleSettings(grammar);
-    if (grammar.interpretation.empty()) return interpretTurtle(derived, grammar.symbols, settings);
-    return interpretTurtle(applyInterpretation(grammar, derived), grammar.symbols, settings);
+Frame frameOf(const TurtleState& s) {
+    // Columns are the images of local +X, +Y, +Z: -L, H, U.
+    return {s.position, glm::normalize(glm::quat_cast(glm::mat3(-s.left, s.heading, s.up)))};
+}
+
+TurtleCommand turtleCommand(const std::string& name) {
+    static const std::unordered_map<std::string, TurtleAction> actions = {
+        {"F", TurtleAction::Draw},          {"f", TurtleAction::Move},
+        {"+", TurtleAction::Yaw},           {"-", TurtleAction::YawBack},
+        {"&", TurtleAction::Pitch},         {"^", TurtleAction::PitchBack},
+        {"\\", TurtleAction::Roll},         {"/", TurtleAction::RollBack},
+        {"|", TurtleAction::TurnAround},    {"$", TurtleAction::RollHorizontal},
+        {"[", TurtleAction::Push},          {"]", TurtleAction::Pop},
+        {"!", TurtleAction::Width},         {";", TurtleAction::Material},
+        {"'", TurtleAction::Material},  {"%", TurtleAction::Cut},
+        {"@Lm", TurtleAction::ScaleLength}, {"@La", TurtleAction::AddLength},
+        {"@Ls", TurtleAction::SetLength},   {"@Am", TurtleAction::ScaleAngle},
+        {"@Aa", TurtleAction::AddAngle},    {"@As", TurtleAction::SetAngle},
+        {"@Wm", TurtleAction::ScaleWidth},  {"@Wa", TurtleAction::AddWidth},
+        {"@Ca", TurtleAction::AddMaterial}, {"@K", TurtleAction::Stiffness},
+        {"@Ts", TurtleAction::Elasticity},  {"@Tv", TurtleAction::TropismVector},
+        {"@O", TurtleAction::Sphere},       {"{", TurtleAction::PolygonBegin},
+        {".", TurtleAction::PolygonVertex}, {"}", TurtleAction::PolygonEnd},
+    };
+    if (name.size() > 1 && name[0] == '~') return {TurtleAction::Surface, name.substr(1)};
+    const auto found = actions.find(name);
+    return {found == actions.end() ? TurtleAction::None : found->second, {}};
+}
+
+std::vector<TurtleCommand> turtleCommands(const SymbolTable& symbols) {
+    std::vector<TurtleCommand> commands;
+    commands.reserve(symbols.size());
+    for (const std::string& name : symbols.names) commands.push_back(turtleCommand(name));
+    return commands;
+}
+
+void applyModule(const TurtleCommand& command, std::span<const float> p, const TurtleSettings& settings,
+                 TurtleState& s, TurtleStack& stack, PlantAssetBuilder& out) {
+    const float angle = p.empty() ? s.angle : p[0];
+    // Of the length, angle, width and material modules: bare ones change nothing.
+    const float factor = p.empty() ? 1.0f : p[0];
+    const float amount = p.empty() ? 0.0f : p[0];
+    switch (command.action) {
+        case TurtleAction::None:
+        case TurtleAction::Cut: break;  // interpretModules skips the branch
+        case TurtleAction::Draw: drawSegment(p, s, stack, out); break;
+        case TurtleAction::Move: move(s, stack, p.empty() ? s.length : p[0]); break;
+        case TurtleAction::Yaw: rotate(s, s.up, angle); break;
+        case TurtleAction::YawBack: rotate(s, s.up, -angle); break;
+        case TurtleAction::Pitch: rotate(s, s.left, angle); break;
+        case TurtleAction::PitchBack: rotate(s, s.left, -angle); break;
+        case TurtleAction::Roll: rotate(s, s.heading, angle); break;
+        case TurtleAction::RollBack: rotate(s, s.heading, -angle); break;
+        case TurtleAction::TurnAround: rotate(s, s.up, 180.0f); break;
+        case TurtleAction::RollHorizontal: rollHorizontal(s); break;
+        case TurtleAction::Push: stack.branches.push_back(s); break;
+        case TurtleAction::Pop:
+            if (!stack.branches.empty()) {
+                s = stack.branches.back();
+                stack.branches.pop_back();
+            }
+            break;
+        case TurtleAction::Width: s.width = p.empty() ? s.width * settings.widthFactor : p[0]; break;
+        case TurtleAction::Material:
+            s.material = materialIndex(p.empty() ? static_cast<float>(s.material) + 1.0f : p[0]);
+            break;
+        case TurtleAction::ScaleLength: s.length *= factor; break;
+        case TurtleAction::AddLength: s.length += amount; break;
+        case TurtleAction::SetLength: if (!p.empty()) s.length = p[0]; break;
+        case TurtleAction::ScaleAngle: s.angle *= factor; break;
+        case TurtleAction::AddAngle: s.angle += amount; break;
+        case TurtleAction::SetAngle: if (!p.empty()) s.angle = p[0]; break;
+        case TurtleAction::ScaleWidth: s.width *= factor; break;
+        case TurtleAction::AddWidth: s.width += amount; break;
+        case TurtleAction::AddMaterial: s.material = materialIndex(static_cast<float>(s.material) + amount); break;
+        case TurtleAction::Stiffness: if (!p.empty()) s.stiffness = p[0]; break;
+        case TurtleAction::Elasticity: if (!p.empty()) s.elasticity = p[0]; break;
+        case TurtleAction::TropismVector: if (p.size() >= 3) s.tropism = {p[0], p[1], p[2]}; break;
+        case TurtleAction::Sphere:
+            out.addSphere(frameOf(s), 0.5f * (p.empty() ? s.width : p[0]), s.material, s.joint);
+            break;
+        case TurtleAction::Surface:
+            out.addSurface(command.surface, frameOf(s), p.empty() ? 1.0f : p[0], s.material, s.joint);
+            break;
+        case TurtleAction::PolygonBegin: stack.polygons.push_back({frameOf(s), s.material, s.joint, {}}); break;
+        case TurtleAction::PolygonVertex: addVertex(stack, s.position); break;
+        case TurtleAction::PolygonEnd: closePolygon(stack, out); break;
+    }
+}
+
+void interpretModules(const ModuleString& string, std::span<const TurtleCommand> commands,
+                      const TurtleSettings& settings, TurtleState& state, TurtleStack& stack, PlantAssetBuilder& out) {
+    for (size_t i = 0; i < string.size(); ++i) {
+        const TurtleCommand& command = commands[string.symbols[i]];
+        if (command.action == TurtleAction::Cut)
+            i = endOfBranch(string, i + 1) - 1;
+        else
+            applyModule(command, string.parameters(i), settings, state, stack, out);
+    }
+}
+
+PlantAsset interpretPlant(const ModuleString& string, const SymbolTable& symbols, const TurtleSettings& settings,
+                          const SurfaceLibrary& surfaces) {
+    const std::vector<TurtleCommand> commands = turtleCommands(symbols);
+    PlantAssetBuilder builder(surfaces);
+    TurtleState state = initialTurtleState(settings);
+    TurtleStack stack;
+    interpretModules(string, commands, settings, state, stack, builder);
+    return builder.finish();
+}
+
+PlantAsset plantFromGrammar(const Grammar& grammar, const ModuleString& derived, const SurfaceLibrary& surfaces) {
+    const TurtleSettings settings = turtleSettings(grammar);
+    if (grammar.interpretation.empty()) return interpretPlant(derived, grammar.symbols, settings, surfaces);
+    return interpretPlant(applyInterpretation(grammar, derived), grammar.symbols, settings, surfaces);
 }
 
 }  // namespace lsys

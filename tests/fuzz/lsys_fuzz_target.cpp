@@ -22,9 +22,11 @@ void runLsysInput(const uint8_t* data, size_t size) {
     options.threads = 1;
     try {
         const lsys::ModuleString derived = lsys::derive(parsed.grammar, options);
-        (void)lsys::turtleSegments(parsed.grammar, derived);
+        (void)lsys::plantFromGrammar(parsed.grammar, derived);
     } catch (const lsys::DerivationError&) {
         // A clear error for over-budget or invalid derivations is the right outcome.
+    } catch (const lsys::SurfaceError&) {
+        // So is one for a ~name that is neither built in nor a mesh file.
     }
 }
 

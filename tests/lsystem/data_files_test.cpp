@@ -2,9 +2,9 @@
 // parses without diagnostics and derives its derivation length within the
 // default budget.
 
+#include <algorithm>
 #include <filesystem>
 
-#include "lsystem/turtle.h"
 #include "test_support.h"
 
 namespace lsys::test {
@@ -32,8 +32,7 @@ TEST(LsysDataFiles, EveryPlantLoadsAndDerives) {
         EXPECT_TRUE(source.find("//") != std::string::npos || source.find("/*") != std::string::npos)
             << "each plant file documents where it comes from";
         ModuleString string = derive(result.grammar);
-        EXPECT_GT(string.size(), 0u);
-        if (string.size() < 2'000'000) turtleSegments(result.grammar, string);
+        EXPECT_GT(string.size(), 0u);  // tests/turtle interprets each one
     }
 }
 

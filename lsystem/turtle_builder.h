@@ -1,0 +1,50 @@
+#pragma once
+// Collects what the turtle draws into a PlantAsset: primitives, joints,
+// surfaces and polygons, the bounds of all of them, and the material table.
+//
+// Material palette (index: name, albedo; * two-sided):
+//   0 bark (brown)  1 leaf* (green)  2 petal* (pale pink)  3 pollen (yellow)
+//   4 fruit (red)   5 needle* (dark green)  6 autumn* (orange)  7 deadwood (grey brown)
+// Indices past 7 repeat the palette (8 is "bark 8", ...). The table always
+// holds the whole palette, and up to the largest index a primitive uses.
+// A material used by a surface or a polygon is two-sided.
+
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "lsystem/plant_asset.h"
+
+namespace lsys {
+
+class SurfaceLibrary;
+
+const std::vector<Material>& defaultPalette();
+
+class PlantAssetBuilder {
+public:
+    explicit PlantAssetBuilder(const SurfaceLibrary& surfaces) : surfaces_(surfaces) {}
+
+    // A segment and its joint; returns the joint's index.
+    int32_t addSegment(const Frame& base, float length, float startRadius, float endRadius, uint32_t material,
+                       int32_t parentJoint, float stiffness);
+    void addSphere(const Frame& centre, float radius, uint32_t material, int32_t joint);
+    // Throws SurfaceError when the library has no surface of that name.
+    void addSurface(const std::string& name, const Frame& frame, float scale, uint32_t material, int32_t joint);
+    void addPolygon(const Frame& start, std::vector<glm::vec3> outline, uint32_t material, int32_t joint);
+
+    // The asset with its material table; the builder is left empty.
+    PlantAsset finish();
+
+private:
+    void markTwoSided(uint32_t material);
+
+    const SurfaceLibrary& surfaces_;
+    PlantAsset asset_;
+    std::unordered_map<std::string, uint32_t> surfaceIndex_;  // name -> asset_.surfaces index
+    std::vector<Bounds> surfaceBounds_;                       // local bounds per asset_.surfaces entry
+    std::vector<bool> twoSided_;                              // per material index used by a surface or polygon
+};
+
+}  // namespace lsys

@@ -1,0 +1,140 @@
+// The turtle against ABOP: Koch curves, a 3D branch worked out by hand,
+// turning around, rolling to horizontal and tropism (ABOP §1.5, §2.4).
+
+#include <cmath>
+
+#include "turtle_test_support.h"
+
+namespace lsys::test {
+namespace {
+
+// ABOP Fig 1.9a: the quadratic Koch curve F -> F+F-F-F+F keeps its end
+// 3^n steps straight ahead after n steps, through 5^n segments.
+TEST(LsysTurtleAbop, KochCurveEndsStraightAhead) {
+    ParseResult parsed = parseLsystem("angle: 90\nAxiom: F\nF --> F+F-F-F+F\n");
+    ASSERT_TRUE(parsed.ok());
+    for (int steps = 1; steps <= 4; ++steps) {
+        SCOPED_TRACE(steps);
+        DeriveOptions options;
+        options.steps = steps;
+        const std::vector<Span> spans = spansOf(plantFromGrammar(parsed.grammar, derive(parsed.grammar, options)));
+        ASSERT_EQ(spans.size(), static_cast<size_t>(std::pow(5, steps)));
+        expectNear(spans.back().end, {0, std::pow(3.0f, static_cast<float>(steps)), 0}, 1e-3f);
+        for (const Span& span : spans) ASSERT_NEAR(span.start.z, 0.0f, 1e-5f);  // a plane curve
+    }
+}
+
+// The quadratic Koch island (ABOP Fig 1.7a) closes: its last segment ends at the start.
+TEST(LsysTurtleAbop, KochIslandCloses) {
+    const std::vector<Span> spans = spansOf("angle: 90\nderivation length: 2\nAxiom: F-F-F-F\nF --> F-F+F+FF-F-F+F\n");
+    ASSERT_EQ(spans.size(), 4u * 64u);
+    expectNear(spans.back().end, {0, 0, 0}, 1e-3f);
+}
+
+// Worked out by hand from H = +Y, L = -X, U = +Z:
+//   F(1)   -> (0,1,0)
+//   &(90)  pitch down: H = -U = (0,0,-1), U = (0,1,0)
+//   F(2)   -> (0,1,-2)
+//   /(90)  roll right: L = (0,-1,0), U = (-1,0,0)
+//   +(90)  yaw towards L: H = (0,-1,0)
+//   F(3)   -> (0,-2,-2)
+//   ^(90)  pitch up: H = U = (-1,0,0)
+//   F(4)   -> (-4,-2,-2)
+TEST(LsysTurtleAbop, ThreeDimensionalPathWorkedOutByHand) {
+    const std::vector<Span> spans = spansOf("Axiom: F(1)&(90)F(2)/(90)+(90)F(3)^(90)F(4)\n");
+    ASSERT_EQ(spans.size(), 4u);
+    expectNear(spans[1].end, {0, 1, -2});
+    expectNear(spans[2].end, {0, -2, -2});
+    expectNear(spans[3].end, {-4, -2, -2});
+}
+
+TEST(LsysTurtleAbop, BranchesInThreeDimensions) {
+    const std::vector<Span> spans = spansOf("angle: 90\nAxiom: F[&F][/&F][\\&F]F\n");
+    ASSERT_EQ(spans.size(), 5u);
+    expectNear(spans[1].end, {0, 1, -1});
+    expectNear(spans[2].end, {1, 1, 0});   // rolled right, down points to +X
+    expectNear(spans[3].end, {-1, 1, 0});  // rolled left, down points to -X
+    expectNear(spans[4].end, {0, 2, 0});
+}
+
+TEST(LsysTurtleAbop, TurnAroundReversesHeadingAndLeftKeepsUp) {
+    const PlantAsset plant = plantOf("Axiom: F|F|F\n");
+    const std::vector<Span> spans = spansOf(plant);
+    ASSERT_EQ(spans.size(), 3u);
+    expectNear(spans[1].end, {0, 0, 0});
+    expectNear(spans[2].end, {0, 1, 0});
+    const Frame& turned = plant.primitives[1].frame;
+    expectNear(leftOf(turned), {1, 0, 0});
+    expectNear(turned.rotation * glm::vec3(0, 0, 1), {0, 0, 1});
+}
+
+TEST(LsysTurtleAbop, RollToHorizontalLeavesLHorizontalAndHUnchanged) {
+    for (const char* turns : {"&(30)+(20)/(50)", "^(70)\\(33)-(10)", "+(90)&(45)/(30)"}) {
+        SCOPED_TRACE(turns);
+        const PlantAsset plant = plantOf(std::string("Axiom: ") + turns + "F$F\n");
+        ASSERT_EQ(plant.primitives.size(), 2u);
+        const Frame& before = plant.primitives[0].frame;
+        const Frame& after = plant.primitives[1].frame;
+        expectNear(headingOf(after), headingOf(before));
+        EXPECT_NEAR(leftOf(after).y, 0.0f, 1e-5f);
+        EXPECT_GT(std::abs(leftOf(before).y), 0.01f);  // the roll did something
+        // ABOP: L = V x H / |V x H|, so U points upwards.
+        EXPECT_GE((after.rotation * glm::vec3(0, 0, 1)).y, 0.0f);
+    }
+}
+
+// The angle between the heading of segment i and the tropism vector T.
+float angleToTropism(const Span& span, glm::vec3 tropism) {
+    return std::acos(glm::dot(glm::normalize(span.end - span.start), glm::normalize(tropism)));
+}
+
+TEST(LsysTurtleAbop, TropismTurnsTheHeadingByElasticityTimesSine) {
+    // Horizontal start, T = (0,-1,0): |H x T| = 1, so the second segment dips by e radians.
+    const float e = 0.3f;
+    const std::vector<Span> spans = spansOf("Axiom: +(90)@Ts(0.3)FF\n");
+    ASSERT_EQ(spans.size(), 2u);
+    expectNear(spans[0].end, {-1, 0, 0});
+    expectNear(spans[1].end - spans[1].start, {-std::cos(e), -std::sin(e), 0});
+}
+
+TEST(LsysTurtleAbop, TropismBendsMoreForLargerElasticity) {
+    auto finalAngle = [](const std::string& elasticity) {
+        const std::vector<Span> spans = spansOf("Axiom: +(60)@Ts(" + elasticity + ")FFFFF\n");
+        return angleToTropism(spans.back(), {0, -1, 0});
+    };
+    const float none = finalAngle("0");
+    const float some = finalAngle("0.1");
+    const float more = finalAngle("0.3");
+    EXPECT_NEAR(none, glm::radians(120.0f), 1e-4f);  // H starts 60 degrees from +Y
+    EXPECT_LT(some, none);
+    EXPECT_LT(more, some);
+}
+
+TEST(LsysTurtleAbop, TropismVectorCanBeSetAndOnlySegmentsBend) {
+    const std::vector<Span> spans = spansOf("Axiom: @Tv(1,0,0)@Ts(0.2)ffF[F]f(0)F\n");
+    ASSERT_EQ(spans.size(), 3u);
+    expectNear(spans[0].start, {0, 2, 0});  // f does not bend
+    expectNear(spans[1].end - spans[1].start, {std::sin(0.2f), std::cos(0.2f), 0});
+    expectNear(spans[2].start, spans[1].start);  // the branch was popped
+    expectNear(spans[2].end - spans[2].start, {std::sin(0.2f), std::cos(0.2f), 0});
+}
+
+TEST(LsysTurtleAbop, TropismFromTheSettings) {
+    ParseResult parsed = parseLsystem("Axiom: +(90)FF\n");
+    ASSERT_TRUE(parsed.ok());
+    TurtleSettings settings = turtleSettings(parsed.grammar);
+    settings.elasticity = 0.3f;
+    settings.tropism = {0, 1, 0};
+    const std::vector<Span> spans = spansOf(interpretPlant(derive(parsed.grammar), parsed.grammar.symbols, settings, SurfaceLibrary{}));
+    ASSERT_EQ(spans.size(), 2u);
+    expectNear(spans[1].end - spans[1].start, {-std::cos(0.3f), std::sin(0.3f), 0});
+}
+
+TEST(LsysTurtleAbop, HeadingAlongTropismDoesNotBend) {
+    const std::vector<Span> spans = spansOf("Axiom: |@Ts(0.5)FF\n");
+    ASSERT_EQ(spans.size(), 2u);
+    expectNear(spans[1].end, {0, -2, 0});
+}
+
+}  // namespace
+}  // namespace lsys::test
