@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <exception>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
@@ -109,6 +110,36 @@ struct Written {
     bool withinBudget = true;
 };
 
+// The production that rewrites a module, or null when none applies. The
+// module's parameters are bound to the formal variables; contexts are matched
+// in view (which may be null for a context-free set). random is (re)started
+// from source for every candidate that draws, as derive() always has.
+inline const Production* selectProduction(const ProductionSet& set, const ContextView* view, size_t position, SymbolId symbol,
+                                          std::span<const float> parameters, const RandomSource& source, double* variables,
+                                          RandomStream& random) {
+    const uint32_t inputCount = static_cast<uint32_t>(parameters.size());
+    for (uint32_t index : set.bySymbol[symbol]) {
+        const Production& production = set.productions[index];
+        if (production.strict.paramCount != inputCount) continue;
+        for (uint32_t k = 0; k < inputCount; ++k) variables[production.strict.firstVariable + k] = parameters[k];
+        if (!production.left.empty() && !matchLeft(*view, production.left, position, variables)) continue;
+        if (!production.right.empty() && !matchRight(*view, production.right, position, variables)) continue;
+        if (production.usesRandom) random = RandomStream::forModule(source.seed, source.pass, source.position);
+        if (production.condition && evaluate(*production.condition, variables, random) == 0.0) continue;
+        const Production* chosen = &production;
+        if (production.groupSize > 1) {
+            // Pick an alternative by cumulative probability; the last absorbs rounding.
+            double u = random.uniform();
+            for (uint32_t k = 0; k + 1 < production.groupSize; ++k, ++chosen) {
+                u -= chosen->probability;
+                if (u < 0) break;
+            }
+        }
+        return chosen;
+    }
+    return nullptr;
+}
+
 Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const ModuleString& in, const int32_t* partners,
                      Range range, uint64_t seed, uint64_t pass, size_t budget, Output out) {
     const ProductionSet& set = *prepared.set;
@@ -124,30 +155,10 @@ Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const 
     double variables[kMaxVariables];
     for (size_t i = range.begin; i < range.end; ++i) {
         const SymbolId symbol = in.symbols[i];
-        const std::vector<uint32_t>& candidates = set.bySymbol[symbol];
         const uint32_t inputCount = in.paramCount(i);
         const float* inputParameters = in.paramData(i);
-        const Production* chosen = nullptr;
         RandomStream random;
-        for (uint32_t index : candidates) {
-            const Production& production = set.productions[index];
-            if (production.strict.paramCount != inputCount) continue;
-            for (uint32_t k = 0; k < inputCount; ++k) variables[production.strict.firstVariable + k] = inputParameters[k];
-            if (!production.left.empty() && !matchLeft(view, production.left, i, variables)) continue;
-            if (!production.right.empty() && !matchRight(view, production.right, i, variables)) continue;
-            if (production.usesRandom) random = RandomStream::forModule(seed, pass, i);
-            if (production.condition && evaluate(*production.condition, variables, random) == 0.0) continue;
-            chosen = &production;
-            if (production.groupSize > 1) {
-                // Pick an alternative by cumulative probability; the last absorbs rounding.
-                double u = random.uniform();
-                for (uint32_t k = 0; k + 1 < production.groupSize; ++k, ++chosen) {
-                    u -= chosen->probability;
-                    if (u < 0) break;
-                }
-            }
-            break;
-        }
+        const Production* chosen = selectProduction(set, &view, i, symbol, {inputParameters, inputCount}, {seed, pass, i}, variables, random);
         if (!chosen) {  // no production applies: copy the module
             symbols[written++] = symbol;
             if (withParameters) {
@@ -345,7 +356,8 @@ void removeCutBranches(const ModuleString& in, SymbolId cut, ModuleString& out) 
     }
 }
 
-// The cut symbol when some production can produce it (so a pass is worth it).
+}  // namespace
+
 std::optional<SymbolId> producedCut(const Grammar& grammar) {
     std::optional<SymbolId> cut = grammar.symbols.find("%");
     if (!cut) return std::nullopt;
@@ -356,7 +368,24 @@ std::optional<SymbolId> producedCut(const Grammar& grammar) {
     return std::nullopt;
 }
 
-}  // namespace
+bool rewriteModule(const ProductionSet& set, SymbolId symbol, std::span<const float> parameters, const RandomSource& source,
+                   ModuleString& out) {
+    if (set.contextSensitive) throw std::invalid_argument("rewriteModule: the production set has context-sensitive productions");
+    double variables[kMaxVariables];
+    RandomStream random;
+    const Production* chosen = selectProduction(set, nullptr, 0, symbol, parameters, source, variables, random);
+    if (!chosen) {
+        out.push(symbol, parameters);
+        return false;
+    }
+    std::vector<float> values;
+    for (const SuccessorModule& module : chosen->successor) {
+        values.clear();
+        for (const Expression& argument : module.arguments) values.push_back(static_cast<float>(evaluate(argument, variables, random)));
+        out.push(module.symbol, values);
+    }
+    return true;
+}
 
 ModuleString axiomString(const Grammar& grammar, uint64_t seed) {
     ModuleString string;

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 
 #include "lsystem/grammar.h"
 #include "lsystem/module_string.h"
@@ -17,6 +18,26 @@ struct DeriveOptions {
     int threads = 2;
     size_t parallelThreshold = 65'536;  // strings shorter than this are rewritten on one thread
 };
+
+// Where a module's random draws come from: derive() uses its seed, the pass
+// number and the module's position in the string.
+struct RandomSource {
+    uint64_t seed = 0;
+    uint64_t pass = 0;
+    uint64_t position = 0;
+};
+
+// Rewrites one module by a context-free production set as one pass of
+// derive() does: appends the successor, or the module itself when no
+// production applies, to out, and says whether a production applied. With the
+// source derive() would use at that pass and position the result is the one
+// derive() writes there. Throws std::invalid_argument for a set with contexts.
+bool rewriteModule(const ProductionSet& set, SymbolId symbol, std::span<const float> parameters, const RandomSource& source,
+                   ModuleString& out);
+
+// The cut symbol '%' when a rule or decomposition can produce it: derive()
+// then removes cut branches after every step.
+std::optional<SymbolId> producedCut(const Grammar& grammar);
 
 // The axiom with its parameters evaluated (random draws use the given seed).
 ModuleString axiomString(const Grammar& grammar, uint64_t seed);

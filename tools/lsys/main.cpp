@@ -1,6 +1,7 @@
-// lsys: derive and check .lsys files from the command line.
+// lsys: derive, check and instance (b-grammar statistics of) .lsys files from the command line.
 //   lsys derive FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--print] [--json] [--max-modules N]
 //   lsys check FILE [-D NAME=VALUE]... [--dialect D]
+//   lsys instance FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--randomness K] [--json]
 // Exit codes: 0 success, 2 bad input (parse errors, budget exceeded), 1 usage errors.
 
 #include <chrono>
@@ -13,8 +14,10 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "lsystem/bgrammar.h"
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/error.h"
+#include "lsystem/instance_stats.h"
 #include "lsystem/parser.h"
 #include "lsystem/rewriter.h"
 
@@ -32,6 +35,8 @@ struct Arguments {
     bool json = false;
     size_t maxModules = 50'000'000;
     int threads = 2;
+    int randomness = 0;
+    lsys::BGrammarLimits limits;
 };
 
 // Parses "NAME=VALUE" items of -D into constants; reports malformed ones.
@@ -107,6 +112,51 @@ int derive(const Arguments& arguments) {
     return 0;
 }
 
+const char* methodName(lsys::BGrammarMethod method) {
+    switch (method) {
+        case lsys::BGrammarMethod::Memoised: return "memoised";
+        case lsys::BGrammarMethod::PseudoStochastic: return "pseudo-stochastic";
+        case lsys::BGrammarMethod::Compressed: return "compressed";
+    }
+    return "";
+}
+
+int instance(const Arguments& arguments) {
+    std::optional<lsys::Grammar> grammar = load(arguments);
+    if (!grammar) return kBadInput;
+    lsys::BGrammarOptions options;
+    options.steps = arguments.steps;
+    options.seed = arguments.seed;
+    options.interpreted = true;  // the word the turtle reads
+    options.randomness = arguments.randomness;
+    options.limits = arguments.limits;
+    options.maxModules = arguments.maxModules;
+    auto start = std::chrono::steady_clock::now();
+    lsys::InstanceStats stats;
+    lsys::BGrammarMethod method;
+    try {
+        lsys::BGrammar graph = lsys::buildBGrammar(*grammar, options);
+        stats = lsys::instanceStats(graph, grammar->symbols);
+        method = graph.method;
+    } catch (const lsys::DerivationError& error) {
+        std::cerr << arguments.file << ": error: " << error.what() << '\n';
+        return kBadInput;
+    }
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (arguments.json) {
+        nlohmann::ordered_json out = {{"primitives", stats.primitives}, {"joints", stats.joints},       {"nodes", stats.nodes},
+                              {"instances", stats.instances},   {"compression", stats.compression()},
+                              {"bytes_graph", stats.bytesGraph}, {"bytes_flat", stats.bytesFlat}, {"method", methodName(method)},
+                              {"seconds", seconds}};
+        std::cout << out.dump() << '\n';
+    } else {
+        std::cout << stats.primitives << " primitives (" << stats.joints << " joints) in " << stats.instances << " instances of "
+                  << stats.nodes << " nodes, " << stats.compression() << ":1, " << stats.bytesGraph << " bytes against "
+                  << stats.bytesFlat << " flat (" << methodName(method) << ", " << seconds << " s)\n";
+    }
+    return 0;
+}
+
 // --dialect NAME, any case; an unknown name is a usage error (exit code 2).
 void addDialectOption(CLI::App& command, Arguments& arguments) {
     command
@@ -118,6 +168,15 @@ void addDialectOption(CLI::App& command, Arguments& arguments) {
         });
 }
 
+// FILE, -n, --seed, -D and --dialect: what every command that derives takes.
+void addDerivationOptions(CLI::App& command, Arguments& arguments) {
+    command.add_option("FILE", arguments.file, ".lsys file")->required();
+    command.add_option("-n,--steps", arguments.steps, "Derivation steps (default: the file's 'derivation length:')");
+    command.add_option("--seed", arguments.seed, "Random seed (default: the file's 'seed:')");
+    command.add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
+    addDialectOption(command, arguments);
+}
+
 int check(const Arguments& arguments) {
     if (!load(arguments)) return kBadInput;
     std::cout << arguments.file << ": ok\n";
@@ -127,16 +186,12 @@ int check(const Arguments& arguments) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"lsys: derive and check L-systems written in the .lsys notation or a dialect (docs/DIALECTS.md)"};
+    CLI::App app{"lsys: derive, check and instance L-systems written in the .lsys notation or a dialect (docs/DIALECTS.md)"};
     app.require_subcommand(1);
     Arguments arguments;
 
     CLI::App* deriveCommand = app.add_subcommand("derive", "Derive an L-system and report, print or count the result");
-    deriveCommand->add_option("FILE", arguments.file, ".lsys file")->required();
-    deriveCommand->add_option("-n,--steps", arguments.steps, "Derivation steps (default: the file's 'derivation length:')");
-    deriveCommand->add_option("--seed", arguments.seed, "Random seed (default: the file's 'seed:')");
-    deriveCommand->add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
-    addDialectOption(*deriveCommand, arguments);
+    addDerivationOptions(*deriveCommand, arguments);
     deriveCommand->add_flag("--print", arguments.print, "Print the final string, e.g. F(1,0.5)[+A(2)]");
     deriveCommand->add_flag("--json", arguments.json, "Print {\"modules\", \"steps\", \"counts\", \"seconds\"} as JSON");
     deriveCommand->add_option("--max-modules", arguments.maxModules, "Module budget; exceeding it is an error")
@@ -148,11 +203,35 @@ int main(int argc, char** argv) {
     checkCommand->add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
     addDialectOption(*checkCommand, arguments);
 
+    CLI::App* instanceCommand = app.add_subcommand(
+        "instance",
+        "Build the b-grammar (the InstanceGraph's shared subtrees, seed 000) of the word the turtle reads and count it "
+        "without expanding: primitives = F segments + ~surfaces + @O spheres + { polygons, joints = segments, nodes = "
+        "non-terminals + the axiom, instances = references to nodes in all bodies + primitives placed directly, "
+        "compression = primitives / instances, bytes_graph = the graph's memory, bytes_flat = primitives x one flat "
+        "primitive record. Context-free rules are shared by (module, remaining steps); context-sensitive, cut or random "
+        "ones (without --randomness) are derived and compressed (SEQUITUR).");
+    addDerivationOptions(*instanceCommand, arguments);
+    instanceCommand->add_option("--randomness", arguments.randomness,
+                                "Randomness factor k (seed 000 §5.1): at most k rewrites per module and step for random "
+                                "rules; the plant then differs from derive's (same statistics). 0: exact, derived and compressed")
+        ->check(CLI::Range(0, 1'000'000));
+    instanceCommand->add_flag("--json", arguments.json,
+                              "Print {\"primitives\", \"joints\", \"nodes\", \"instances\", \"compression\", \"bytes_graph\", "
+                              "\"bytes_flat\", \"method\", \"seconds\"} as JSON");
+    instanceCommand->add_option("--max-nodes", arguments.limits.maxNodes, "Node budget of the graph; exceeding it is an error")
+        ->check(CLI::PositiveNumber);
+    instanceCommand->add_option("--max-items", arguments.limits.maxItems, "Budget of body entries of the graph; exceeding it is an error")
+        ->check(CLI::PositiveNumber);
+    instanceCommand->add_option("--max-modules", arguments.maxModules, "Module budget when the word must be derived first")
+        ->check(CLI::PositiveNumber);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
         return app.exit(error) == 0 ? 0 : kBadInput;
     }
     if (deriveCommand->parsed()) return derive(arguments);
+    if (instanceCommand->parsed()) return instance(arguments);
     return check(arguments);
 }
