@@ -70,6 +70,18 @@ expect_run instance-bad 2 'bad.lsys:2:12' -- "$LSYS" instance "$WORK/bad.lsys"
 expect_run instance-missing 2 'cannot read file' -- "$LSYS" instance "$WORK/does-not-exist.lsys"
 expect_run instance-bad-randomness 2 'randomness' -- "$LSYS" instance "$DATA/plants/stochastic.lsys" --randomness -1
 expect_run instance-help 0 'instances = references to nodes' -- "$LSYS" instance --help
+expect_run export 0 '625 primitives, 625 joints' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/koch.glb"
+[ -s "$WORK/koch.glb" ] || fail "export: no .glb written"
+expect_run export-instanced 0 'primitives' -- "$LSYS" export "$DATA/plants/abop_1_24a.lsys" -o "$WORK/a.gltf" --instanced
+expect_run export-obj 0 'primitives' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/koch.obj" --generalized-cylinders
+[ -s "$WORK/koch.mtl" ] || fail "export-obj: no .mtl beside the .obj"
+expect_run export-extension 2 "unknown extension '.stl'" -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/koch.stl"
+[ -e "$WORK/koch.stl" ] && fail "export-extension: a file was written"
+expect_run export-folder 2 'no-such-folder' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/no-such-folder/k.glb"
+echo keep > "$WORK/keep.glb"
+expect_run export-bad-input 2 'bad.lsys:2:12' -- "$LSYS" export "$WORK/bad.lsys" -o "$WORK/keep.glb"
+[ "$(cat "$WORK/keep.glb")" = keep ] || fail "export-bad-input: an existing file was overwritten"
+expect_run export-no-output 2 'output' -- "$LSYS" export "$DATA/plants/koch_curve.lsys"
 expect_run help 0 'derive' -- "$LSYS" --help
 expect_run derive-help 0 '--max-modules' -- "$LSYS" derive --help
 expect_run no-command 2 'subcommand' -- "$LSYS"

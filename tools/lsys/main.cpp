@@ -2,6 +2,7 @@
 //   lsys derive FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--print] [--json] [--max-modules N]
 //   lsys check FILE [-D NAME=VALUE]... [--dialect D]
 //   lsys instance FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--randomness K] [--json]
+//   lsys export FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] -o OUT.gltf|.glb|.obj [--flat|--instanced]
 // Exit codes: 0 success, 2 bad input (parse errors, budget exceeded), 1 usage errors.
 
 #include <chrono>
@@ -19,7 +20,10 @@
 #include "lsystem/error.h"
 #include "lsystem/instance_stats.h"
 #include "lsystem/parser.h"
+#include "lsystem/plant_export.h"
 #include "lsystem/rewriter.h"
+#include "lsystem/surfaces.h"
+#include "lsystem/turtle.h"
 
 namespace {
 
@@ -37,6 +41,8 @@ struct Arguments {
     int threads = 2;
     int randomness = 0;
     lsys::BGrammarLimits limits;
+    std::string output;
+    lsys::ExportOptions exportOptions;
 };
 
 // Parses "NAME=VALUE" items of -D into constants; reports malformed ones.
@@ -74,14 +80,19 @@ std::optional<lsys::Grammar> load(const Arguments& arguments) {
     return std::move(result.grammar);
 }
 
-int derive(const Arguments& arguments) {
-    std::optional<lsys::Grammar> grammar = load(arguments);
-    if (!grammar) return kBadInput;
+lsys::DeriveOptions deriveOptions(const Arguments& arguments) {
     lsys::DeriveOptions options;
     options.steps = arguments.steps;
     options.seed = arguments.seed;
     options.maxModules = arguments.maxModules;
     options.threads = arguments.threads;
+    return options;
+}
+
+int derive(const Arguments& arguments) {
+    std::optional<lsys::Grammar> grammar = load(arguments);
+    if (!grammar) return kBadInput;
+    const lsys::DeriveOptions options = deriveOptions(arguments);
     auto start = std::chrono::steady_clock::now();
     lsys::ModuleString string;
     try {
@@ -157,6 +168,31 @@ int instance(const Arguments& arguments) {
     return 0;
 }
 
+// Derives, interprets (surfaces from data/meshes near the file) and writes the plant.
+int exportCommand(const Arguments& arguments) {
+    std::optional<lsys::Grammar> grammar = load(arguments);
+    if (!grammar) return kBadInput;
+    auto start = std::chrono::steady_clock::now();
+    lsys::PlantAsset plant;
+    try {
+        const lsys::ModuleString string = lsys::derive(*grammar, deriveOptions(arguments));
+        plant = lsys::plantFromGrammar(*grammar, string, lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file)));
+    } catch (const std::runtime_error& error) {  // DerivationError, SurfaceError
+        std::cerr << arguments.file << ": error: " << error.what() << '\n';
+        return kBadInput;
+    }
+    try {
+        lsys::exportPlant(plant, arguments.output, arguments.exportOptions);
+    } catch (const std::runtime_error& error) {
+        std::cerr << "lsys: error: " << error.what() << '\n';
+        return kBadInput;
+    }
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cerr << arguments.output << ": " << plant.primitives.size() << " primitives, " << plant.joints.size()
+              << " joints (" << seconds << " s)\n";
+    return 0;
+}
+
 // --dialect NAME, any case; an unknown name is a usage error (exit code 2).
 void addDialectOption(CLI::App& command, Arguments& arguments) {
     command
@@ -186,7 +222,7 @@ int check(const Arguments& arguments) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"lsys: derive, check and instance L-systems written in the .lsys notation or a dialect (docs/DIALECTS.md)"};
+    CLI::App app{"lsys: derive, check, instance and export L-systems written in the .lsys notation or a dialect (docs/DIALECTS.md)"};
     app.require_subcommand(1);
     Arguments arguments;
 
@@ -226,6 +262,23 @@ int main(int argc, char** argv) {
     instanceCommand->add_option("--max-modules", arguments.maxModules, "Module budget when the word must be derived first")
         ->check(CLI::PositiveNumber);
 
+    CLI::App* exportSubcommand = app.add_subcommand(
+        "export", "Derive and interpret an L-system and write the plant as glTF 2.0 (.gltf, .glb) or OBJ (docs/EXPORT.md)");
+    addDerivationOptions(*exportSubcommand, arguments);
+    exportSubcommand->add_option("-o,--output", arguments.output, "Output file: .gltf, .glb or .obj")->required();
+    exportSubcommand->add_flag_callback(
+        "--flat", [&arguments] { arguments.exportOptions.form = lsys::ExportForm::Flat; },
+        "One mesh per material with every primitive baked in (default)");
+    exportSubcommand->add_flag_callback(
+        "--instanced", [&arguments] { arguments.exportOptions.form = lsys::ExportForm::Instanced; },
+        "One mesh per distinct shape shared by one node per primitive (glTF only)");
+    exportSubcommand->add_flag_callback(
+        "--generalized-cylinders",
+        [&arguments] { arguments.exportOptions.segments = lsys::SegmentGeometry::GeneralizedCylinders; },
+        "Stems as tubes whose rings follow the bend instead of one frustum per segment");
+    exportSubcommand->add_option("--max-modules", arguments.maxModules, "Module budget; exceeding it is an error")
+        ->check(CLI::PositiveNumber);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -233,5 +286,6 @@ int main(int argc, char** argv) {
     }
     if (deriveCommand->parsed()) return derive(arguments);
     if (instanceCommand->parsed()) return instance(arguments);
+    if (exportSubcommand->parsed()) return exportCommand(arguments);
     return check(arguments);
 }
