@@ -1,0 +1,330 @@
+// buildInstanceGraph: every object is the turtle's interpretation of a node's
+// body from a local entry frame (seed 000 §4.2), with the turtle's own
+// applyModule(); references to other nodes become instances of objects
+// looked up by (node, entry values read), built on first use.
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <unordered_map>
+
+#include <glm/mat3x3.hpp>
+
+#include "lsystem/error.h"
+#include "lsystem/instance_graph.h"
+#include "lsystem/instance_key.h"
+#include "lsystem/status_function.h"
+
+namespace lsys {
+
+namespace {
+
+// What a node's whole word does to the two stacks, and whether it cuts.
+struct NodeSummary {
+    int32_t bracketChange = 0;
+    int32_t bracketLowest = 0;
+    int32_t polygonChange = 0;
+    int32_t polygonLowest = 0;
+    bool cut = false;
+
+    // An object needs a status function: the node never pops a branch or
+    // closes a polygon it did not open, leaves no polygon open (the caller
+    // would have to trace it) and holds no '%' (which may cut the caller).
+    // Other nodes are interpreted inline, as part of the body using them.
+    bool object() const { return bracketLowest == 0 && polygonLowest == 0 && polygonChange == 0 && !cut; }
+};
+
+std::vector<NodeSummary> summarise(const BGrammar& bgrammar, std::span<const TurtleCommand> commands) {
+    std::vector<NodeSummary> summaries(bgrammar.nodes.size());
+    for (uint32_t node = 0; node < bgrammar.nodes.size(); ++node) {
+        NodeSummary& summary = summaries[node];
+        for (const BodyItem& item : bgrammar.bodyOf(node)) {
+            if (item.isNode()) {
+                const NodeSummary& child = summaries[item.index];
+                summary.bracketLowest = std::min(summary.bracketLowest, summary.bracketChange + child.bracketLowest);
+                summary.polygonLowest = std::min(summary.polygonLowest, summary.polygonChange + child.polygonLowest);
+                summary.bracketChange += child.bracketChange;
+                summary.polygonChange += child.polygonChange;
+                summary.cut |= child.cut;
+                continue;
+            }
+            switch (commands[bgrammar.modules[item.index].symbol].action) {
+                case TurtleAction::Push: ++summary.bracketChange; break;
+                case TurtleAction::Pop: summary.bracketLowest = std::min(summary.bracketLowest, --summary.bracketChange); break;
+                case TurtleAction::PolygonBegin: ++summary.polygonChange; break;
+                case TurtleAction::PolygonEnd: summary.polygonLowest = std::min(summary.polygonLowest, --summary.polygonChange); break;
+                case TurtleAction::Cut: summary.cut = true; break;
+                default: break;
+            }
+        }
+    }
+    return summaries;
+}
+
+// Per object, what building its parents needs and the graph does not keep.
+struct BuiltObject {
+    uint16_t reads = 0;
+    StatusFunction status;
+};
+
+// Objects of one node already built whose reads were the same mask.
+struct KeyedObjects {
+    uint16_t mask = 0;
+    std::unordered_map<StyleKey, uint32_t, StyleKeyHash> objects;
+};
+
+class GraphBuilder {
+public:
+    GraphBuilder(const BGrammar& bgrammar, const Grammar& grammar, const InstanceGraphOptions& options,
+                 const SurfaceLibrary& surfaces)
+        : bgrammar_(bgrammar), options_(options), surfaces_(surfaces), settings_(turtleSettings(grammar)),
+          commands_(turtleCommands(grammar.symbols)), summaries_(summarise(bgrammar, commands_)),
+          lookup_(bgrammar.nodes.size()) {}
+
+    InstanceGraph build() {
+        graph_.nodes = bgrammar_.nodes.size();
+        if (bgrammar_.nodes.empty()) return std::move(graph_);
+        ObjectEntry start{initialTurtleState(settings_), glm::quat(1.0f, 0.0f, 0.0f, 0.0f), false};
+        graph_.root = buildObject(bgrammar_.axiom(), start);
+        return std::move(graph_);
+    }
+
+    // An object of node for this entry: an existing one whose reads agree, or a new one.
+    uint32_t objectFor(uint32_t node, const ObjectEntry& entry) {
+        for (const KeyedObjects& keyed : lookup_[node]) {
+            auto found = keyed.objects.find(styleKey(entry, keyed.mask, options_.orientationGranularity));
+            if (found != keyed.objects.end()) return found->second;
+        }
+        const uint32_t object = buildObject(node, entry);
+        const uint16_t mask = built_[object].reads;
+        auto keyed = std::find_if(lookup_[node].begin(), lookup_[node].end(), [&](const KeyedObjects& k) { return k.mask == mask; });
+        if (keyed == lookup_[node].end()) keyed = lookup_[node].insert(keyed, KeyedObjects{mask, {}});
+        keyed->objects.emplace(styleKey(entry, mask, options_.orientationGranularity), object);
+        return object;
+    }
+
+    uint32_t buildObject(uint32_t node, const ObjectEntry& entry);
+
+    const BGrammar& bgrammar_;
+    const InstanceGraphOptions& options_;
+    const SurfaceLibrary& surfaces_;
+    const TurtleSettings settings_;
+    const std::vector<TurtleCommand> commands_;
+    const std::vector<NodeSummary> summaries_;
+    std::vector<std::vector<KeyedObjects>> lookup_;  // per node
+    std::vector<BuiltObject> built_;                 // per object
+    std::unordered_map<std::string, uint32_t> surfaceIndex_;
+    InstanceGraph graph_;
+};
+
+// Interprets one object's body (inlining the nodes that cannot be objects)
+// from its local entry frame, and records its items, counts and bounds.
+class ObjectInterpreter {
+public:
+    ObjectInterpreter(GraphBuilder& builder, const ObjectEntry& entry)
+        : b_(builder), entry_(entry), state_(entry.style), provenance_(Provenance::pristine()), chunk_(builder.surfaces_) {
+        state_.position = glm::vec3(0.0f);
+        state_.heading = {0.0f, 1.0f, 0.0f};
+        state_.left = {-1.0f, 0.0f, 0.0f};
+        state_.up = {0.0f, 0.0f, 1.0f};
+        state_.joint = -1;  // the entry joint
+        // A polygon open at the entry: F moves, and vertices go to it (the outer vertices).
+        if (entry.polygonOpen) stack_.polygons.push_back({});
+    }
+
+    void interpretBody(uint32_t node) {
+        for (const BodyItem& item : b_.bgrammar_.bodyOf(node)) {
+            if (!item.isNode()) {
+                const TerminalModule& module = b_.bgrammar_.modules[item.index];
+                applyTerminal(b_.commands_[module.symbol], b_.bgrammar_.parametersOf(module));
+            } else if (b_.summaries_[item.index].object()) {
+                placeInstance(item.index);
+            } else {
+                interpretBody(item.index);
+            }
+        }
+    }
+
+    // Closes the object: appends it to the graph with its status function.
+    uint32_t finish(uint32_t node) {
+        flushChunk();
+        InstanceGraph& graph = b_.graph_;
+        BuiltObject built;
+        built.status.exit = {state_, provenance_, resolve(state_.joint)};
+        for (size_t i = 0; i < stack_.branches.size(); ++i)
+            built.status.pushed.push_back({stack_.branches[i], provenanceStack_[i], resolve(stack_.branches[i].joint)});
+        if (entry_.polygonOpen) built.status.outerVertices = std::move(stack_.polygons.front().outline);
+        built.reads = reads_ | exitReads(built.status);
+
+        const uint32_t object = static_cast<uint32_t>(graph.objects.size());
+        graph.objects.push_back({node, static_cast<uint32_t>(graph.items.size()), static_cast<uint32_t>(items_.size()),
+                                 bounds_, primitives_, static_cast<uint64_t>(joints_)});
+        graph.items.insert(graph.items.end(), items_.begin(), items_.end());
+        b_.built_.push_back(std::move(built));
+        return object;
+    }
+
+private:
+    size_t localPolygons() const { return stack_.polygons.size() - (entry_.polygonOpen ? 1 : 0); }
+
+    // A handle for TurtleState::joint (32 bits) standing for a JointRef (64).
+    int32_t handleFor(JointRef ref) {
+        if (ref == kEntryJoint) return -1;
+        jointRefs_.push_back(ref);
+        return static_cast<int32_t>(jointRefs_.size() - 1);
+    }
+    JointRef resolve(int32_t handle) const { return handle < 0 ? kEntryJoint : jointRefs_[handle]; }
+
+    void applyTerminal(const TurtleCommand& command, std::span<const float> p) {
+        if (skippingCut(command)) return;
+        const size_t open = stack_.polygons.size();
+        reads_ |= readsOf(command, p, state_, provenance_, open, localPolygons());
+        switch (command.action) {
+            case TurtleAction::Cut: cutDepth_ = 0; return;
+            case TurtleAction::RollHorizontal: rollInPlantSpace(command, p); break;
+            case TurtleAction::TropismVector:
+                applyModule(command, p, b_.settings_, state_, stack_, chunk_);
+                if (p.size() >= 3) state_.tropism = glm::conjugate(entry_.orientation) * state_.tropism;  // to the entry frame
+                break;
+            default: applyModule(command, p, b_.settings_, state_, stack_, chunk_); break;
+        }
+        if (command.action == TurtleAction::Push) provenanceStack_.push_back(provenance_);
+        if (command.action == TurtleAction::Pop && !provenanceStack_.empty()) {
+            provenance_ = provenanceStack_.back();
+            provenanceStack_.pop_back();
+        }
+        updateProvenance(command, p, open, provenance_);
+        if (command.action == TurtleAction::Draw && open == 0) {
+            // The builder numbered the joint within the chunk; it is the subtree's next.
+            chunkSegments_.push_back(handleFor(joints_++));
+            state_.joint = chunkSegments_.back();
+        }
+    }
+
+    // '%' skips to the ']' closing its branch (as interpretModules does), which is applied.
+    bool skippingCut(const TurtleCommand& command) {
+        if (cutDepth_ < 0) return false;
+        if (command.action == TurtleAction::Push) ++cutDepth_;
+        if (command.action == TurtleAction::Pop) --cutDepth_;
+        return cutDepth_ >= 0;
+    }
+
+    // `$` levels L against the world's vertical: applied to the first entry's
+    // plant-space frame, which the key's world-up (kSourceWorldUp) stands for.
+    void rollInPlantSpace(const TurtleCommand& command, std::span<const float> p) {
+        const glm::mat3 toPlant = glm::mat3_cast(entry_.orientation);
+        TurtleState plant = state_;
+        plant.heading = toPlant * state_.heading;
+        plant.left = toPlant * state_.left;
+        plant.up = toPlant * state_.up;
+        applyModule(command, p, b_.settings_, plant, stack_, chunk_);
+        const glm::mat3 toLocal = glm::transpose(toPlant);
+        state_.heading = toLocal * plant.heading;
+        state_.left = toLocal * plant.left;
+        state_.up = toLocal * plant.up;
+    }
+
+    void placeInstance(uint32_t node) {
+        if (cutDepth_ >= 0) {
+            cutDepth_ += b_.summaries_[node].bracketChange;  // legal: it cannot close the cut branch
+            return;
+        }
+        flushChunk();
+        const Frame frame = frameOf(state_);
+        const glm::mat3 toParent(-state_.left, state_.heading, state_.up);
+        ObjectEntry entry{state_, entry_.orientation * frame.rotation, !stack_.polygons.empty()};
+        entry.style.tropism = glm::transpose(toParent) * state_.tropism;
+        const uint32_t child = b_.objectFor(node, entry);
+
+        const BuiltObject& built = b_.built_[child];
+        const GraphObject& object = b_.graph_.objects[child];
+        reads_ |= parentReads(built.reads, provenance_, localPolygons());
+        items_.push_back({GraphItem::Kind::Instance, static_cast<uint32_t>(b_.graph_.instances.size())});
+        b_.graph_.instances.push_back({child, frame, resolve(state_.joint)});
+        bounds_.extend(transformed(object.bounds, frame));
+
+        // The child's status function applied to the state where it starts.
+        const JointRef offset = joints_;
+        auto childJoint = [&](JointRef ref) { return ref == kEntryJoint ? state_.joint : handleFor(offset + ref); };
+        for (const LocalState& pushed : built.status.pushed) {
+            auto [state, provenance] = composeState(state_, provenance_, pushed, childJoint(pushed.joint));
+            stack_.branches.push_back(state);
+            provenanceStack_.push_back(provenance);
+        }
+        for (const glm::vec3& vertex : built.status.outerVertices)
+            stack_.polygons.back().outline.push_back(state_.position + toParent * vertex);
+        std::tie(state_, provenance_) = composeState(state_, provenance_, built.status.exit, childJoint(built.status.exit.joint));
+        joints_ += static_cast<JointRef>(object.joints);
+        primitives_ += object.primitives;
+    }
+
+    // Moves what the turtle drew since the last instance into the graph.
+    void flushChunk() {
+        PlantAsset drawn = chunk_.finish();
+        InstanceGraph& graph = b_.graph_;
+        for (const Primitive& p : drawn.primitives) {
+            GraphPrimitive primitive{p.frame, p.kind, p.material, p.shape, p.length, p.startRadius, p.endRadius};
+            if (p.kind == PrimitiveKind::Segment) {
+                const Joint& joint = drawn.joints[p.joint];
+                primitive.joint = resolve(chunkSegments_[p.joint]);
+                primitive.parentJoint = resolve(joint.parent);
+                primitive.stiffness = joint.stiffness;
+            } else {
+                primitive.joint = resolve(p.joint);
+            }
+            if (p.kind == PrimitiveKind::Surface) {
+                const std::string& name = drawn.surfaces[p.shape].name;
+                auto [found, added] = b_.surfaceIndex_.try_emplace(name, static_cast<uint32_t>(graph.surfaceNames.size()));
+                if (added) graph.surfaceNames.push_back(name);
+                primitive.shape = found->second;
+            }
+            if (p.kind == PrimitiveKind::Polygon) {
+                primitive.shape = static_cast<uint32_t>(graph.polygons.size());
+                graph.polygons.push_back(std::move(drawn.polygons[p.shape]));
+            }
+            items_.push_back({GraphItem::Kind::Primitive, static_cast<uint32_t>(graph.primitives.size())});
+            graph.primitives.push_back(primitive);
+        }
+        primitives_ += drawn.primitives.size();
+        bounds_.extend(drawn.bounds);
+        chunkSegments_.clear();
+    }
+
+    GraphBuilder& b_;
+    const ObjectEntry& entry_;
+    TurtleState state_;
+    TurtleStack stack_;
+    Provenance provenance_;
+    std::vector<Provenance> provenanceStack_;  // beside stack_.branches
+    uint16_t reads_ = 0;
+    int cutDepth_ = -1;                        // inside a cut branch: its depth so far
+    std::vector<JointRef> jointRefs_;          // what TurtleState::joint handles stand for
+    JointRef joints_ = 0;                      // the subtree's so far
+    uint64_t primitives_ = 0;
+    PlantAssetBuilder chunk_;                  // primitives drawn since the last instance
+    std::vector<int32_t> chunkSegments_;       // handle of each joint the chunk's segments made
+    std::vector<GraphItem> items_;
+    Bounds bounds_;
+};
+
+uint32_t GraphBuilder::buildObject(uint32_t node, const ObjectEntry& entry) {
+    if (graph_.objects.size() >= options_.maxObjects)
+        throw DerivationError("the instance graph would hold more than " + std::to_string(options_.maxObjects) +
+                              " objects");
+    ObjectInterpreter interpreter(*this, entry);
+    interpreter.interpretBody(node);
+    return interpreter.finish(node);
+}
+
+}  // namespace
+
+InstanceGraph buildInstanceGraph(const BGrammar& bgrammar, const Grammar& grammar, const InstanceGraphOptions& options,
+                                 const SurfaceLibrary& surfaces) {
+    if (!grammar.interpretation.empty() && !bgrammar.interpreted)
+        throw std::invalid_argument("the instance graph needs the b-grammar of the interpreted word "
+                                    "(BGrammarOptions::interpreted)");
+    return GraphBuilder(bgrammar, grammar, options, surfaces).build();
+}
+
+}  // namespace lsys

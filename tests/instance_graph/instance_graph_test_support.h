@@ -1,0 +1,96 @@
+#pragma once
+// Helpers shared by the InstanceGraph tests: the graph of a grammar, and the
+// comparison of a flattened graph with the turtle's plant.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "../instancing/instancing_test_support.h"
+#include "lsystem/instance_graph.h"
+#include "lsystem/turtle.h"
+
+namespace lsys::test {
+
+inline BGrammar interpretedBGrammar(const Grammar& grammar, std::optional<int> steps = std::nullopt) {
+    BGrammarOptions options;
+    options.steps = steps;
+    options.interpreted = true;
+    return buildBGrammar(grammar, options);
+}
+
+inline InstanceGraph graphOf(const Grammar& grammar, std::optional<int> steps = std::nullopt,
+                             const InstanceGraphOptions& options = {}) {
+    return buildInstanceGraph(interpretedBGrammar(grammar, steps), grammar, options);
+}
+
+inline PlantAsset turtlePlant(const Grammar& grammar, std::optional<int> steps = std::nullopt) {
+    DeriveOptions options;
+    options.steps = steps;
+    return plantFromGrammar(grammar, derive(grammar, options));
+}
+
+// The angle between two rotations, in radians (double: 1e-4 is below what
+// acos of a float dot product resolves).
+inline double angleBetween(const glm::quat& a, const glm::quat& b) {
+    const glm::dquat d = glm::inverse(glm::dquat(a)) * glm::dquat(b);
+    return 2.0 * std::atan2(glm::length(glm::dvec3(d.x, d.y, d.z)), std::abs(d.w));
+}
+
+inline double plantSize(const PlantAsset& plant) {
+    return plant.bounds.empty() ? 1.0 : std::max(1.0, static_cast<double>(glm::length(plant.bounds.max - plant.bounds.min)));
+}
+
+// The largest distance between the primitives' positions, relative to the plant's size.
+inline double largestPositionError(const PlantAsset& actual, const PlantAsset& expected) {
+    double error = 0.0;
+    const size_t count = std::min(actual.primitives.size(), expected.primitives.size());
+    for (size_t i = 0; i < count; ++i)
+        error = std::max(error, static_cast<double>(glm::distance(actual.primitives[i].frame.position,
+                                                                  expected.primitives[i].frame.position)));
+    return error / plantSize(expected);
+}
+
+// Same primitives and joints in the same order: frames within tolerance
+// (positions relative to the plant's size), everything else equal.
+inline void expectSamePlant(const PlantAsset& actual, const PlantAsset& expected, double tolerance = 1e-4) {
+    ASSERT_EQ(actual.primitives.size(), expected.primitives.size());
+    ASSERT_EQ(actual.joints.size(), expected.joints.size());
+    ASSERT_EQ(actual.polygons.size(), expected.polygons.size());
+    const double size = plantSize(expected);
+    size_t mismatches = 0;
+    for (size_t i = 0; i < expected.primitives.size() && mismatches < 10; ++i) {
+        const Primitive& a = actual.primitives[i];
+        const Primitive& e = expected.primitives[i];
+        const bool same = a.kind == e.kind && a.material == e.material && a.joint == e.joint && a.shape == e.shape &&
+                          a.length == e.length && a.startRadius == e.startRadius && a.endRadius == e.endRadius &&
+                          glm::distance(a.frame.position, e.frame.position) <= tolerance * size &&
+                          angleBetween(a.frame.rotation, e.frame.rotation) <= tolerance;
+        if (!same) ++mismatches;
+        EXPECT_TRUE(same) << "primitive " << i << ": position error "
+                          << glm::distance(a.frame.position, e.frame.position) / size << ", rotation error "
+                          << angleBetween(a.frame.rotation, e.frame.rotation) << ", joint " << a.joint << " vs " << e.joint;
+    }
+    for (size_t i = 0; i < expected.joints.size(); ++i) {
+        EXPECT_EQ(actual.joints[i].parent, expected.joints[i].parent) << "joint " << i;
+        EXPECT_EQ(actual.joints[i].stiffness, expected.joints[i].stiffness) << "joint " << i;
+        if (actual.joints[i].parent != expected.joints[i].parent) break;
+    }
+    for (size_t i = 0; i < expected.polygons.size(); ++i) {
+        ASSERT_EQ(actual.polygons[i].outline.size(), expected.polygons[i].outline.size()) << "polygon " << i;
+        for (size_t v = 0; v < expected.polygons[i].outline.size(); ++v)
+            EXPECT_LE(glm::distance(actual.polygons[i].outline[v], expected.polygons[i].outline[v]), tolerance * size);
+    }
+    ASSERT_EQ(actual.surfaces.size(), expected.surfaces.size());
+    for (size_t i = 0; i < expected.surfaces.size(); ++i) EXPECT_EQ(actual.surfaces[i].name, expected.surfaces[i].name);
+    ASSERT_EQ(actual.materials.size(), expected.materials.size());
+    for (size_t i = 0; i < expected.materials.size(); ++i)
+        EXPECT_EQ(actual.materials[i].twoSided, expected.materials[i].twoSided) << "material " << i;
+}
+
+}  // namespace lsys::test
