@@ -3,6 +3,5 @@ target_sources(lsystem PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/bgrammar.cpp
   ${CMAKE_CURRENT_LIST_DIR}/bgrammar_draft.cpp
   ${CMAKE_CURRENT_LIST_DIR}/bgrammar_memoised.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/instance_stats.cpp
   ${CMAKE_CURRENT_LIST_DIR}/sequitur.cpp
 )

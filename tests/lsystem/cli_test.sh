@@ -55,9 +55,9 @@ expect_run derive-bad 2 'bad.lsys:2:12' -- "$LSYS" derive "$WORK/bad.lsys"
 expect_run check-good 0 'ok' -- "$LSYS" check "$DATA/plants/monopodial_tree.lsys"
 expect_run missing 2 'cannot read file' -- "$LSYS" derive "$WORK/does-not-exist.lsys"
 expect_run budget 2 'module budget exceeded at derivation step 6' -- "$LSYS" derive "$DATA/plants/fractal_bush.lsys" -n 7 --max-modules 100000
-expect_run instance 0 '"primitives":134217728,"joints":134217728,"nodes":9,"instances":72,' -- "$LSYS" instance "$DATA/plants/fractal_bush.lsys" -n 9 --json
+expect_run instance 0 '"primitives":134217728,"joints":134217728,"nodes":9,"objects":9,"instances":72,' -- "$LSYS" instance "$DATA/plants/fractal_bush.lsys" -n 9 --json
 expect_run instance-bytes 0 '"bytes_flat":[1-9][0-9]*,"method":"memoised","seconds":' -- "$LSYS" instance "$DATA/plants/fractal_bush.lsys" --json
-expect_run instance-plain 0 '^32768 primitives (32768 joints) in 40 instances of 5 nodes' -- "$LSYS" instance "$DATA/plants/fractal_bush.lsys"
+expect_run instance-plain 0 '^32768 primitives (32768 joints) in 40 instances of 5 objects from 5 nodes' -- "$LSYS" instance "$DATA/plants/fractal_bush.lsys"
 expect_run instance-context 0 '"method":"compressed"' -- "$LSYS" instance "$DATA/plants/hogeweg_1_31a.lsys" --json
 expect_run instance-random-exact 0 '"method":"compressed"' -- "$LSYS" instance "$DATA/plants/stochastic.lsys" --json
 expect_run instance-randomness 0 '"method":"pseudo-stochastic"' -- "$LSYS" instance "$DATA/plants/stochastic.lsys" --randomness 3 --json
@@ -69,7 +69,7 @@ expect_run instance-word-budget 2 'module budget exceeded' -- "$LSYS" instance "
 expect_run instance-bad 2 'bad.lsys:2:12' -- "$LSYS" instance "$WORK/bad.lsys"
 expect_run instance-missing 2 'cannot read file' -- "$LSYS" instance "$WORK/does-not-exist.lsys"
 expect_run instance-bad-randomness 2 'randomness' -- "$LSYS" instance "$DATA/plants/stochastic.lsys" --randomness -1
-expect_run instance-help 0 'instances = references to nodes' -- "$LSYS" instance --help
+expect_run instance-help 0 'instances = references to objects' -- "$LSYS" instance --help
 expect_run export 0 '625 primitives, 625 joints' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/koch.glb"
 [ -s "$WORK/koch.glb" ] || fail "export: no .glb written"
 expect_run export-instanced 0 'primitives' -- "$LSYS" export "$DATA/plants/abop_1_24a.lsys" -o "$WORK/a.gltf" --instanced

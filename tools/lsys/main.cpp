@@ -18,7 +18,7 @@
 #include "lsystem/bgrammar.h"
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/error.h"
-#include "lsystem/instance_stats.h"
+#include "lsystem/instance_graph.h"
 #include "lsystem/parser.h"
 #include "lsystem/plant_export.h"
 #include "lsystem/rewriter.h"
@@ -41,6 +41,7 @@ struct Arguments {
     int threads = 2;
     int randomness = 0;
     lsys::BGrammarLimits limits;
+    lsys::InstanceGraphOptions graphOptions;
     std::string output;
     lsys::ExportOptions exportOptions;
 };
@@ -143,26 +144,27 @@ int instance(const Arguments& arguments) {
     options.limits = arguments.limits;
     options.maxModules = arguments.maxModules;
     auto start = std::chrono::steady_clock::now();
-    lsys::InstanceStats stats;
+    lsys::InstanceGraphStats stats;
     lsys::BGrammarMethod method;
     try {
-        lsys::BGrammar graph = lsys::buildBGrammar(*grammar, options);
-        stats = lsys::instanceStats(graph, grammar->symbols);
-        method = graph.method;
-    } catch (const lsys::DerivationError& error) {
+        const lsys::BGrammar bgrammar = lsys::buildBGrammar(*grammar, options);
+        method = bgrammar.method;
+        stats = lsys::instanceGraphStats(lsys::buildInstanceGraph(
+            bgrammar, *grammar, arguments.graphOptions, lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file))));
+    } catch (const std::runtime_error& error) {  // DerivationError, SurfaceError
         std::cerr << arguments.file << ": error: " << error.what() << '\n';
         return kBadInput;
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (arguments.json) {
         nlohmann::ordered_json out = {{"primitives", stats.primitives}, {"joints", stats.joints},       {"nodes", stats.nodes},
-                              {"instances", stats.instances},   {"compression", stats.compression()},
+                              {"objects", stats.objects}, {"instances", stats.instances},   {"compression", stats.compression()},
                               {"bytes_graph", stats.bytesGraph}, {"bytes_flat", stats.bytesFlat}, {"method", methodName(method)},
                               {"seconds", seconds}};
         std::cout << out.dump() << '\n';
     } else {
         std::cout << stats.primitives << " primitives (" << stats.joints << " joints) in " << stats.instances << " instances of "
-                  << stats.nodes << " nodes, " << stats.compression() << ":1, " << stats.bytesGraph << " bytes against "
+                  << stats.objects << " objects from " << stats.nodes << " nodes, " << stats.compression() << ":1, " << stats.bytesGraph << " bytes against "
                   << stats.bytesFlat << " flat (" << methodName(method) << ", " << seconds << " s)\n";
     }
     return 0;
@@ -241,19 +243,24 @@ int main(int argc, char** argv) {
 
     CLI::App* instanceCommand = app.add_subcommand(
         "instance",
-        "Build the b-grammar (the InstanceGraph's shared subtrees, seed 000) of the word the turtle reads and count it "
-        "without expanding: primitives = F segments + ~surfaces + @O spheres + { polygons, joints = segments, nodes = "
-        "non-terminals + the axiom, instances = references to nodes in all bodies + primitives placed directly, "
-        "compression = primitives / instances, bytes_graph = the graph's memory, bytes_flat = primitives x one flat "
-        "primitive record. Context-free rules are shared by (module, remaining steps); context-sensitive, cut or random "
-        "ones (without --randomness) are derived and compressed (SEQUITUR).");
+        "Build the InstanceGraph (seed 000: the b-grammar's shared subtrees placed by the turtle) of the plant and count "
+        "it without expanding: primitives = segments + surfaces + spheres + polygons, joints = segments, nodes = "
+        "b-grammar non-terminals + the axiom, objects = distinct (node, entry turtle values it reads), instances = "
+        "references to objects in all objects + primitives placed directly, compression = primitives / instances, "
+        "bytes_graph = the graph's memory, bytes_flat = primitives x one flat primitive record. Context-free rules are "
+        "shared by (module, remaining steps); context-sensitive, cut or random ones (without --randomness) are derived "
+        "and compressed (SEQUITUR). docs/INSTANCING.md");
     addDerivationOptions(*instanceCommand, arguments);
     instanceCommand->add_option("--randomness", arguments.randomness,
                                 "Randomness factor k (seed 000 §5.1): at most k rewrites per module and step for random "
                                 "rules; the plant then differs from derive's (same statistics). 0: exact, derived and compressed")
         ->check(CLI::Range(0, 1'000'000));
+    instanceCommand->add_option("--granularity", arguments.graphOptions.orientationGranularity,
+                                "G of seed 000 §5.3: share subtrees whose entry orientation relative to the tropism "
+                                "vector falls in the same pi/G cell (approximate); 0: exact sharing only")
+        ->check(CLI::Range(0, 1'000'000));
     instanceCommand->add_flag("--json", arguments.json,
-                              "Print {\"primitives\", \"joints\", \"nodes\", \"instances\", \"compression\", \"bytes_graph\", "
+                              "Print {\"primitives\", \"joints\", \"nodes\", \"objects\", \"instances\", \"compression\", \"bytes_graph\", "
                               "\"bytes_flat\", \"method\", \"seconds\"} as JSON");
     instanceCommand->add_option("--max-nodes", arguments.limits.maxNodes, "Node budget of the graph; exceeding it is an error")
         ->check(CLI::PositiveNumber);
