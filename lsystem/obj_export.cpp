@@ -15,7 +15,7 @@ namespace {
 
 // OBJ and MTL names end at whitespace.
 std::string objName(const PlantAsset& asset, uint32_t material) {
-    std::string name = materialName(asset, material);
+    std::string name = materialName(asset.materials, material);
     std::replace_if(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c); }, '_');
     return name;
 }

@@ -34,9 +34,15 @@ void PartialFile::commit() {
     committed_ = true;
 }
 
-std::string materialName(const PlantAsset& asset, uint32_t index) {
-    const std::string& name = asset.materials[index].name;
+std::string materialName(const std::vector<Material>& materials, uint32_t index) {
+    const std::string& name = materials[index].name;
     return name.empty() ? "material_" + std::to_string(index) : name;
+}
+
+std::string lowercaseExtension(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return extension;
 }
 
 }  // namespace export_detail
@@ -76,12 +82,6 @@ void checkAsset(const PlantAsset& asset) {
         }
         for (size_t j : path) state[j] = ReachesRoot;
     }
-}
-
-std::string lowercaseExtension(const std::filesystem::path& path) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return extension;
 }
 
 }  // namespace

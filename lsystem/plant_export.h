@@ -1,7 +1,9 @@
 #pragma once
 // Writes a PlantAsset as glTF 2.0 (.gltf with the buffer embedded as base64,
 // or .glb) or Wavefront OBJ (.obj plus a .mtl beside it), chosen by the
-// file's extension. docs/EXPORT.md describes what each form contains.
+// file's extension, in the flat form: every primitive baked in plant space.
+// The instanced form, which keeps the InstanceGraph's shared subtrees, is
+// lsystem/graph_export.h. docs/EXPORT.md describes what each form contains.
 
 #include <filesystem>
 
@@ -10,13 +12,7 @@
 
 namespace lsys {
 
-enum class ExportForm : uint8_t {
-    Flat,      // one mesh per material, every primitive baked in plant space
-    Instanced, // one mesh per distinct shape, one node per primitive (glTF only; OBJ is always flat)
-};
-
 struct ExportOptions {
-    ExportForm form = ExportForm::Flat;
     SegmentGeometry segments = SegmentGeometry::Frusta;
     MeshDetail detail;
     bool skeleton = true; // glTF: one node per Joint, nested as Joint::parent says

@@ -1,6 +1,6 @@
 // Writes the glTF files that the GltfValidator ctest hands to the Khronos
-// glTF-Validator: samplePlant() and helixPlant() in every form and geometry
-// as .gltf and .glb, an empty plant, and in broken/ a file the validator must reject (so the
+// glTF-Validator: samplePlant() and helixPlant() flat and sampleGraph()
+// instanced, in both segment geometries as .gltf and .glb, an empty plant, and in broken/ a file the validator must reject (so the
 // test is seen to be able to fail).
 // Usage: export_samples DIR
 #include <cstdio>
@@ -10,6 +10,7 @@
 
 #include <tiny_gltf.h>
 
+#include "lsystem/graph_export.h"
 #include "lsystem/plant_export.h"
 #include "sample_plants.h"
 
@@ -29,18 +30,21 @@ void writeBroken(const fs::path& valid, const fs::path& broken) {
         throw std::runtime_error("cannot write " + broken.string());
 }
 
-// PREFIX_{flat,instanced}_{frusta,tubes}.{gltf,glb}
-void exportEveryForm(const lsys::PlantAsset& plant, const fs::path& prefix) {
-    for (const auto form : {lsys::ExportForm::Flat, lsys::ExportForm::Instanced}) {
-        for (const auto segments : {lsys::SegmentGeometry::Frusta, lsys::SegmentGeometry::GeneralizedCylinders}) {
-            lsys::ExportOptions options;
-            options.form = form;
-            options.segments = segments;
-            const std::string name = prefix.string() + (form == lsys::ExportForm::Flat ? "_flat" : "_instanced") +
-                                     (segments == lsys::SegmentGeometry::Frusta ? "_frusta" : "_tubes");
-            for (const char* extension : {".gltf", ".glb"}) lsys::exportPlant(plant, name + extension, options);
-        }
+// PREFIX_{frusta,tubes}.{gltf,glb}, written by `write(path, segments)`.
+template <typename Write>
+void exportBothGeometries(const fs::path& prefix, Write write) {
+    for (const auto segments : {lsys::SegmentGeometry::Frusta, lsys::SegmentGeometry::GeneralizedCylinders}) {
+        const std::string name = prefix.string() + (segments == lsys::SegmentGeometry::Frusta ? "_frusta" : "_tubes");
+        for (const char* extension : {".gltf", ".glb"}) write(name + extension, segments);
     }
+}
+
+void exportFlat(const lsys::PlantAsset& plant, const fs::path& prefix) {
+    exportBothGeometries(prefix, [&](const fs::path& path, lsys::SegmentGeometry segments) {
+        lsys::ExportOptions options;
+        options.segments = segments;
+        lsys::exportPlant(plant, path, options);
+    });
 }
 
 }  // namespace
@@ -54,8 +58,14 @@ int main(int argc, char** argv) {
         const fs::path dir = argv[1];
         fs::remove_all(dir);
         fs::create_directories(dir / "broken");
-        exportEveryForm(plantfield::test::samplePlant(), dir / "sample");
-        exportEveryForm(plantfield::test::helixPlant(60), dir / "helix");
+        exportFlat(plantfield::test::samplePlant(), dir / "sample_flat");
+        exportFlat(plantfield::test::helixPlant(60), dir / "helix_flat");
+        const lsys::InstanceGraph graph = plantfield::test::sampleGraph();
+        exportBothGeometries(dir / "graph_instanced", [&](const fs::path& path, lsys::SegmentGeometry segments) {
+            lsys::GraphExportOptions options;
+            options.segments = segments;
+            lsys::exportInstanceGraph(graph, lsys::SurfaceLibrary{}, path, options);
+        });
         lsys::exportPlant(lsys::PlantAsset{}, dir / "empty.glb");
         writeBroken(dir / "sample_flat_frusta.gltf", dir / "broken" / "accessor_out_of_bounds.gltf");
     } catch (const std::exception& error) {

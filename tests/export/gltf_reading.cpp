@@ -1,9 +1,11 @@
 #include "gltf_reading.h"
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat4x4.hpp>
@@ -47,6 +49,16 @@ void collect(const tinygltf::Model& model, int nodeIndex, const glm::mat4& paren
 
 }  // namespace
 
+void ExportDirTest::SetUp() {
+    dir = std::filesystem::temp_directory_path() /
+          ("plantfield_export_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->test_suite_name()) + "_" +
+           testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+}
+
+void ExportDirTest::TearDown() { std::filesystem::remove_all(dir); }
+
 tinygltf::Model loadGltf(const std::filesystem::path& path) {
     tinygltf::TinyGLTF loader;
     tinygltf::Model model;
@@ -61,6 +73,10 @@ std::vector<glm::vec3> sceneTriangleCorners(const tinygltf::Model& model) {
     std::vector<glm::vec3> corners;
     for (int root : model.scenes.at(size_t(std::max(model.defaultScene, 0))).nodes) collect(model, root, glm::mat4(1.0f), corners);
     return corners;
+}
+
+bool containsPoint(const std::vector<glm::vec3>& points, glm::vec3 p, float tolerance) {
+    return std::any_of(points.begin(), points.end(), [&](glm::vec3 q) { return glm::distance(p, q) <= tolerance; });
 }
 
 ObjCounts readObj(const std::filesystem::path& path) {

@@ -1,5 +1,5 @@
 #pragma once
-// Reading exported files back for the tests: glTF through tinygltf, OBJ
+// Exporting into a scratch folder and reading the files back for the tests: glTF through tinygltf, OBJ
 // through a reader just big enough to count what the exporter writes.
 
 #include <filesystem>
@@ -7,9 +7,20 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+#include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
 namespace plantfield::test {
+
+// A fixture whose `dir` is a fresh folder named after the running test,
+// removed afterwards, for the files a test exports.
+class ExportDirTest : public testing::Test {
+protected:
+    void SetUp() override;
+    void TearDown() override;
+
+    std::filesystem::path dir;
+};
 
 // Loads .gltf or .glb; fails the calling test (ADD_FAILURE) on any error.
 tinygltf::Model loadGltf(const std::filesystem::path& path);
@@ -17,6 +28,9 @@ tinygltf::Model loadGltf(const std::filesystem::path& path);
 // Every triangle's corners in scene space: node transforms applied from the
 // default scene's roots down.
 std::vector<glm::vec3> sceneTriangleCorners(const tinygltf::Model& model);
+
+// Whether some point of `points` lies within `tolerance` of `p`.
+bool containsPoint(const std::vector<glm::vec3>& points, glm::vec3 p, float tolerance);
 
 struct ObjCounts {
     size_t positions = 0, uvs = 0, normals = 0, triangles = 0;

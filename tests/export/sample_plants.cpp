@@ -1,6 +1,10 @@
 #include "sample_plants.h"
 
+#include <stdexcept>
+
 #include <glm/gtc/quaternion.hpp>
+
+#include "lsystem/parser.h"
 
 namespace plantfield::test {
 namespace {
@@ -56,6 +60,19 @@ lsys::PlantAsset helixPlant(int segments) {
         frame = {segmentTip(asset, size_t(i)), frame.rotation * turn};
     }
     return asset;
+}
+
+lsys::InstanceGraph sampleGraph() {
+    const char* source =
+        "angle: 30\n"
+        "derivation length: 3\n"
+        "Axiom: A(3)\n"
+        "A(n) : n > 0 --> F(1,0.1)[+A(n-1)~leaf(0.5)][-;(2)@O(0.2)~petal(0.3)]F(1,0.08)[;(1){.f.+f.+f.}]/(90)A(n-1)\n";
+    lsys::ParseResult parsed = lsys::parseLsystem(source);
+    if (!parsed.ok()) throw std::runtime_error("sampleGraph: the grammar does not parse");
+    lsys::BGrammarOptions options;
+    options.interpreted = true;
+    return lsys::buildInstanceGraph(lsys::buildBGrammar(parsed.grammar, options), parsed.grammar);
 }
 
 }  // namespace plantfield::test

@@ -2,6 +2,7 @@
 // Plants built by hand for the exporter's tests (the turtle is tested on its
 // own): every primitive kind, a bent stem, a branch, a shared surface.
 
+#include "lsystem/instance_graph.h"
 #include "lsystem/plant_asset.h"
 
 namespace plantfield::test {
@@ -21,5 +22,10 @@ lsys::PlantAsset helixPlant(int segments);
 
 // Where segment `index` of samplePlant() ends.
 glm::vec3 segmentTip(const lsys::PlantAsset& asset, size_t index);
+
+// The InstanceGraph of a small grammar drawing every primitive kind: objects
+// with segments, a leaf and a petal, a sphere, a polygon, and instances of
+// each other three levels deep (exact, from the built-in surfaces).
+lsys::InstanceGraph sampleGraph();
 
 }  // namespace plantfield::test

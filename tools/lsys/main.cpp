@@ -3,6 +3,7 @@
 //   lsys check FILE [-D NAME=VALUE]... [--dialect D]
 //   lsys instance FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--randomness K] [--json]
 //   lsys export FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] -o OUT.gltf|.glb|.obj [--flat|--instanced]
+//               [--randomness K] [--granularity G] [--max-gltf-nodes N] [--generalized-cylinders]
 // Exit codes: 0 success, 2 bad input (parse errors, budget exceeded), 1 usage errors.
 
 #include <chrono>
@@ -18,6 +19,7 @@
 #include "lsystem/bgrammar.h"
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/error.h"
+#include "lsystem/graph_export.h"
 #include "lsystem/instance_graph.h"
 #include "lsystem/parser.h"
 #include "lsystem/plant_export.h"
@@ -43,7 +45,9 @@ struct Arguments {
     lsys::BGrammarLimits limits;
     lsys::InstanceGraphOptions graphOptions;
     std::string output;
+    bool instanced = false;  // export: the InstanceGraph's hierarchy rather than the flat plant
     lsys::ExportOptions exportOptions;
+    lsys::GraphExportOptions graphExportOptions;
 };
 
 // Parses "NAME=VALUE" items of -D into constants; reports malformed ones.
@@ -133,9 +137,8 @@ const char* methodName(lsys::BGrammarMethod method) {
     return "";
 }
 
-int instance(const Arguments& arguments) {
-    std::optional<lsys::Grammar> grammar = load(arguments);
-    if (!grammar) return kBadInput;
+// The b-grammar of the word the turtle reads, as `instance` and `export --instanced` build it.
+lsys::BGrammarOptions bgrammarOptions(const Arguments& arguments) {
     lsys::BGrammarOptions options;
     options.steps = arguments.steps;
     options.seed = arguments.seed;
@@ -143,6 +146,13 @@ int instance(const Arguments& arguments) {
     options.randomness = arguments.randomness;
     options.limits = arguments.limits;
     options.maxModules = arguments.maxModules;
+    return options;
+}
+
+int instance(const Arguments& arguments) {
+    std::optional<lsys::Grammar> grammar = load(arguments);
+    if (!grammar) return kBadInput;
+    const lsys::BGrammarOptions options = bgrammarOptions(arguments);
     auto start = std::chrono::steady_clock::now();
     lsys::InstanceGraphStats stats;
     lsys::BGrammarMethod method;
@@ -170,10 +180,37 @@ int instance(const Arguments& arguments) {
     return 0;
 }
 
+// The InstanceGraph written with its hierarchy (glTF only; OBJ is always flat).
+int exportGraph(const Arguments& arguments, const lsys::Grammar& grammar) {
+    const auto start = std::chrono::steady_clock::now();
+    const lsys::SurfaceLibrary surfaces(lsys::meshDirectoriesFor(arguments.file));
+    lsys::InstanceGraph graph;
+    try {
+        graph = lsys::buildInstanceGraph(lsys::buildBGrammar(grammar, bgrammarOptions(arguments)), grammar,
+                                         arguments.graphOptions, surfaces);
+    } catch (const std::runtime_error& error) {  // DerivationError, SurfaceError
+        std::cerr << arguments.file << ": error: " << error.what() << '\n';
+        return kBadInput;
+    }
+    lsys::GraphExportSummary summary;
+    try {
+        summary = lsys::exportInstanceGraph(graph, surfaces, arguments.output, arguments.graphExportOptions);
+    } catch (const std::runtime_error& error) {
+        std::cerr << "lsys: error: " << error.what() << '\n';
+        return kBadInput;
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const lsys::InstanceGraphStats stats = lsys::instanceGraphStats(graph);
+    std::cerr << arguments.output << ": " << stats.primitives << " primitives in " << stats.objects << " objects, "
+              << summary.meshes << " meshes, " << summary.nodes << " nodes (" << seconds << " s)\n";
+    return 0;
+}
+
 // Derives, interprets (surfaces from data/meshes near the file) and writes the plant.
 int exportCommand(const Arguments& arguments) {
     std::optional<lsys::Grammar> grammar = load(arguments);
     if (!grammar) return kBadInput;
+    if (arguments.instanced) return exportGraph(arguments, *grammar);
     auto start = std::chrono::steady_clock::now();
     lsys::PlantAsset plant;
     try {
@@ -215,6 +252,18 @@ void addDerivationOptions(CLI::App& command, Arguments& arguments) {
     addDialectOption(command, arguments);
 }
 
+// --randomness and --granularity: how the InstanceGraph is built.
+void addGraphOptions(CLI::App& command, Arguments& arguments) {
+    command.add_option("--randomness", arguments.randomness,
+        "Randomness factor k (seed 000 §5.1): at most k rewrites per module and step for random "
+        "rules; the plant then differs from derive's (same statistics). 0: exact, derived and compressed")
+        ->check(CLI::Range(0, 1'000'000));
+    command.add_option("--granularity", arguments.graphOptions.orientationGranularity,
+        "G of seed 000 §5.3: share subtrees whose entry orientation relative to the tropism "
+        "vector falls in the same pi/G cell (approximate); 0: exact sharing only")
+        ->check(CLI::Range(0, 1'000'000));
+}
+
 int check(const Arguments& arguments) {
     if (!load(arguments)) return kBadInput;
     std::cout << arguments.file << ": ok\n";
@@ -251,14 +300,7 @@ int main(int argc, char** argv) {
         "shared by (module, remaining steps); context-sensitive, cut or random ones (without --randomness) are derived "
         "and compressed (SEQUITUR). docs/INSTANCING.md");
     addDerivationOptions(*instanceCommand, arguments);
-    instanceCommand->add_option("--randomness", arguments.randomness,
-                                "Randomness factor k (seed 000 §5.1): at most k rewrites per module and step for random "
-                                "rules; the plant then differs from derive's (same statistics). 0: exact, derived and compressed")
-        ->check(CLI::Range(0, 1'000'000));
-    instanceCommand->add_option("--granularity", arguments.graphOptions.orientationGranularity,
-                                "G of seed 000 §5.3: share subtrees whose entry orientation relative to the tropism "
-                                "vector falls in the same pi/G cell (approximate); 0: exact sharing only")
-        ->check(CLI::Range(0, 1'000'000));
+    addGraphOptions(*instanceCommand, arguments);
     instanceCommand->add_flag("--json", arguments.json,
                               "Print {\"primitives\", \"joints\", \"nodes\", \"objects\", \"instances\", \"compression\", \"bytes_graph\", "
                               "\"bytes_flat\", \"method\", \"seconds\"} as JSON");
@@ -274,14 +316,21 @@ int main(int argc, char** argv) {
     addDerivationOptions(*exportSubcommand, arguments);
     exportSubcommand->add_option("-o,--output", arguments.output, "Output file: .gltf, .glb or .obj")->required();
     exportSubcommand->add_flag_callback(
-        "--flat", [&arguments] { arguments.exportOptions.form = lsys::ExportForm::Flat; },
-        "One mesh per material with every primitive baked in (default)");
+        "--flat", [&arguments] { arguments.instanced = false; }, "One mesh per material with every primitive baked in (default)");
     exportSubcommand->add_flag_callback(
-        "--instanced", [&arguments] { arguments.exportOptions.form = lsys::ExportForm::Instanced; },
-        "One mesh per distinct shape shared by one node per primitive (glTF only)");
+        "--instanced", [&arguments] { arguments.instanced = true; },
+        "Keep the InstanceGraph's hierarchy: one mesh per object shared by all its instances, one node per instance "
+        "(glTF only)");
+    addGraphOptions(*exportSubcommand, arguments);
+    exportSubcommand->add_option("--max-gltf-nodes", arguments.graphExportOptions.maxNodes,
+                                 "With --instanced: node budget (one node per instance path); exceeding it is an error")
+        ->check(CLI::PositiveNumber);
     exportSubcommand->add_flag_callback(
         "--generalized-cylinders",
-        [&arguments] { arguments.exportOptions.segments = lsys::SegmentGeometry::GeneralizedCylinders; },
+        [&arguments] {
+            arguments.exportOptions.segments = lsys::SegmentGeometry::GeneralizedCylinders;
+            arguments.graphExportOptions.segments = lsys::SegmentGeometry::GeneralizedCylinders;
+        },
         "Stems as tubes whose rings follow the bend instead of one frustum per segment");
     exportSubcommand->add_option("--max-modules", arguments.maxModules, "Module budget; exceeding it is an error")
         ->check(CLI::PositiveNumber);
