@@ -1,0 +1,121 @@
+// Malformed scene files: each must fail with a SceneError that names the file,
+// the line and column of the fault and what was expected. None may crash.
+#include "scene_test_support.h"
+
+#include <gtest/gtest.h>
+
+namespace pf {
+namespace {
+
+#define PF_SPECIES(extra) "{ \"name\": \"a\", " PF_BUSH_LSYSTEM extra " }"
+#define PF_SCENE(extra) "{\n  \"species\": [" PF_SPECIES("") "]" extra "\n}"
+
+struct BadScene {
+    const char* name;
+    const char* text;
+    const char* at;      // the text the error must point at (its first occurrence)
+    const char* message; // what the error must say
+};
+
+void PrintTo(const BadScene& bad, std::ostream* out) { *out << bad.name; }
+
+class BadSceneTest : public testing::TestWithParam<BadScene> {};
+
+TEST_P(BadSceneTest, FailsWithFileLineColumnAndMessage) {
+    const BadScene& bad = GetParam();
+    const std::filesystem::path file = test::writeFile("bad.json", bad.text);
+    try {
+        loadScene(file);
+        FAIL() << "loaded without an error";
+    } catch (const SceneError& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(what.rfind(file.string() + ":" + test::lineColumnOf(bad.text, bad.at) + ": ", 0), 0u) << what;
+        EXPECT_NE(what.find(bad.message), std::string::npos) << what;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scene, BadSceneTest,
+    testing::Values(
+        BadScene{"syntax_error", "{\n  \"seed\": 1,\n  \"species\": [ }\n}", "}", "unexpected '}'"},
+        BadScene{"empty_file", "", "", "unexpected end of input"},
+        BadScene{"root_not_object", "[1, 2]", "[", "the scene must be an object (got [1, 2])"},
+        BadScene{"wrong_type", PF_SCENE(",\n  \"seed\": \"one\""), "\"one\"",
+                 "/seed must be an integer ≥ 0 (got \"one\")"},
+        BadScene{"fractional_integer", PF_SCENE(",\n  \"seed\": 1.5"), "1.5", "/seed must be an integer ≥ 0"},
+        BadScene{"negative_density",
+                 "{\n  \"species\": [\n    " PF_SPECIES(", \"placement\": { \"density\": -3 }") "\n  ]\n}", "-3",
+                 "/species/0/placement/density must be a number ≥ 0 (got -3)"},
+        BadScene{"unknown_key_suggestion",
+                 "{\n  \"species\": [\n    " PF_SPECIES(", \"placement\": { \"densty\": 3 }") "\n  ]\n}", "\"densty\"",
+                 "/species/0/placement/densty is an unknown key; did you mean \"density\"?"},
+        BadScene{"unknown_key_list", PF_SCENE(",\n  \"sky\": { \"colour\": [1, 1, 1] }"), "\"colour\"",
+                 "/sky/colour is an unknown key (expected one of \"zenith\", \"horizon\")"},
+        BadScene{"missing_lsystem_file",
+                 "{\n  \"species\": [\n    { \"name\": \"a\", \"lsystem\": \"no_such_plant.lsys\" }\n  ]\n}",
+                 "\"no_such_plant.lsys\"", "/species/0/lsystem names a file that does not exist"},
+        BadScene{"empty_species", "{\n  \"seed\": 2,\n  \"species\": []\n}", "[]",
+                 "/species must list at least one species"},
+        BadScene{"missing_species", "{\n  \"seed\": 2\n}", "{", "the scene needs \"species\""},
+        BadScene{"zero_resolution", PF_SCENE(",\n  \"terrain\": { \"resolution\": 0 }"), "0 }",
+                 "/terrain/resolution must be an integer in [2, 8193] (got 0)"},
+        BadScene{"negative_size", PF_SCENE(",\n  \"terrain\": { \"size\": -1 }"), "-1",
+                 "/terrain/size must be a number > 0 (got -1)"},
+        BadScene{"colour_component_out_of_range", PF_SCENE(",\n  \"terrain\": { \"albedo\": [0.5, 2, 0] }"), "[0.5",
+                 "/terrain/albedo must be an array of 3 numbers in [0, 1] (got [0.5, 2, 0])"},
+        BadScene{"noise_and_image", PF_SCENE(",\n  \"terrain\": { \"noise\": {}, \"image\": { \"path\": \"h.png\" } }"),
+                 "\"image\"", "/terrain/image cannot be given together with \"noise\""},
+        BadScene{"unknown_billboard",
+                 "{\n  \"species\": [\n    " PF_SPECIES(", \"lod\": { \"billboard\": \"tripple\" }") "\n  ]\n}",
+                 "\"tripple\"",
+                 "must be \"single\", \"double\" or \"triple\" (got \"tripple\"); did you mean \"triple\"?"},
+        BadScene{"impostor_above_reduced",
+                 "{\n  \"species\": [\n    " PF_SPECIES(
+                     ", \"lod\": { \"reduced_below_px\": 50, \"impostor_below_px\": 90 }") "\n  ]\n}",
+                 "{ \"reduced", "/species/0/lod needs impostor_below_px ≤ reduced_below_px"},
+        BadScene{"turbulence_out_of_range", PF_SCENE(",\n  \"wind\": { \"turbulence\": 1.5 }"), "1.5",
+                 "/wind/turbulence must be a number in [0, 1] (got 1.5)"},
+        BadScene{"slope_out_of_range", PF_SCENE(",\n  \"placement\": { \"max_slope\": 120 }"), "120",
+                 "/placement/max_slope must be a number in [0, 90] (got 120)"},
+        BadScene{"inverted_height_range", PF_SCENE(",\n  \"placement\": { \"height_range\": [5, 1] }"), "[5, 1]",
+                 "/placement/height_range must be [low, high] with low ≤ high"},
+        BadScene{"density_and_count", PF_SCENE(",\n  \"placement\": { \"density\": 5, \"count\": 9 }"), "\"count\"",
+                 "/placement/count cannot be given together with \"density\": density, min_distance, count and "
+                 "instances are alternatives"},
+        BadScene{"unknown_material",
+                 "{\n  \"species\": [\n    " PF_SPECIES(", \"materials\": { \"leef\": [0, 1, 0] }") "\n  ]\n}",
+                 "\"leef\"",
+                 "/species/0/materials/leef is not a material: use a palette name (bark, leaf, …) or an index 0-255; "
+                 "did you mean \"leaf\"?"},
+        BadScene{"repeated_species_name",
+                 "{\n  \"species\": [\n    " PF_SPECIES("") ",\n    " PF_SPECIES("") "\n  ]\n}",
+                 "\"a\", \"lsystem\": \"" PLANTFIELD_DATA_DIR "/plants/stochastic_bush.lsys\" }\n  ]",
+                 "/species/1/name repeats the name of /species/0"},
+        BadScene{"keyframes_out_of_order",
+                 PF_SCENE(",\n  \"camera\": { \"keyframes\": [\n"
+                          "    { \"time\": 2, \"position\": [0, 1, 0], \"target\": [1, 1, 0] },\n"
+                          "    { \"time\": 1, \"position\": [0, 1, 5], \"target\": [1, 1, 0] } ] }"),
+                 "1, \"position\": [0, 1, 5]",
+                 "/camera/keyframes/1/time must be later than the previous keyframe's time"},
+        BadScene{"fov_out_of_range", PF_SCENE(",\n  \"camera\": { \"fov\": 180 }"), "180",
+                 "/camera/fov must be a number in (0, 180) (got 180)"},
+        BadScene{"number_overflow", PF_SCENE(",\n  \"fog\": { \"density\": 1e999 }"), "1e999",
+                 "a number too large: 1e999"},
+        BadScene{"number_beyond_float", PF_SCENE(",\n  \"fog\": { \"density\": 1e300 }"), "1e300",
+                 "/fog/density must be a number ≥ 0 (got 1e300)"}),
+    [](const testing::TestParamInfo<BadScene>& info) { return std::string(info.param.name); });
+
+TEST(SceneErrors, AMissingFileIsASceneError) {
+    EXPECT_THROW(loadScene(test::testFolder() / "absent.json"), SceneError);
+    EXPECT_THROW(loadScene(test::testFolder()), SceneError); // a folder, not a file
+}
+
+TEST(SceneErrors, DeepNestingAndBinaryInputFailWithoutCrashing) {
+    const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+    EXPECT_THROW(loadScene(test::writeFile("deep.json", deep)), SceneError);
+    const std::string binary("\x00\xff\xfe{\x01\"", 6);
+    EXPECT_THROW(loadScene(test::writeFile("binary.json", binary)), SceneError);
+}
+
+} // namespace
+} // namespace pf
