@@ -55,57 +55,14 @@ INSTANTIATE_TEST_SUITE_P(
         return name;
     });
 
-struct CountCase {
-    const char* file;
-    int steps;
-    size_t modules;
-    size_t f;
-};
-
-class CrankshawReferenceCounts : public ::testing::TestWithParam<CountCase> {};
-
-TEST_P(CrankshawReferenceCounts, ModulesAndF) {
-    const CountCase& c = GetParam();
-    Grammar grammar = loadOk(c.file);
-    ModuleString string = deriveSteps(grammar, c.steps);
-    EXPECT_EQ(string.size(), c.modules);
-    EXPECT_EQ(countsOf(string, grammar)["F"], c.f);
-}
-
-INSTANTIATE_TEST_SUITE_P(Reference, CrankshawReferenceCounts,
-                         ::testing::Values(CountCase{"plants/dialects/koch_curve.crankshaw", 4, 1249, 625},
-                                           CountCase{"plants/dialects/fractal_bush.crankshaw", 5, 88940, 32768},
-                                           CountCase{"plants/dialects/fractal_tree.crankshaw", 5, 6263, 1488},
-                                           CountCase{"plants/dialects/decreasing_tree.crankshaw", 8, 2296, 255},
-                                           CountCase{"plants/dialects/gravity_tree_2d.crankshaw", 6, 4608, 1330}),
-                         [](const auto& info) {
-                             std::string name = info.param.file;
-                             name = name.substr(name.rfind('/') + 1);
-                             return name.substr(0, name.find('.'));
-                         });
-
-TEST(CrankshawReference, AnabaenaGrowsAsFibonacci) {
-    Grammar grammar = loadOk("plants/dialects/anabaena.crankshaw");
-    const size_t expected[] = {1, 2, 3, 5, 8, 13};
-    for (int steps = 0; steps <= 5; ++steps) EXPECT_EQ(deriveSteps(grammar, steps).size(), expected[steps]) << steps << " steps";
-}
-
-TEST(CrankshawReference, ConditionsAsPrinted) {
-    Grammar grammar = loadOk("plants/dialects/conditions.crankshaw");
-    EXPECT_EQ(toString(deriveSteps(grammar, 5), grammar.symbols), "A(2)B(4,4)");
-}
+// The reference counts of ../shared/reference/README.md are checked on the
+// dialect files too, next to their native twins, in tests/lsystem/reference_test.cpp.
 
 TEST(CrankshawReference, StochasticSameSeedSameStringOtherSeedOtherString) {
     Grammar grammar = loadOk("plants/dialects/stochastic.crankshaw");
     std::string first = toString(deriveSteps(grammar, 5, 11), grammar.symbols);
     EXPECT_EQ(toString(deriveSteps(grammar, 5, 11), grammar.symbols), first);
     EXPECT_NE(toString(deriveSteps(grammar, 5, 12), grammar.symbols), first);
-}
-
-TEST(RobbinsReference, SampleAFCounts) {
-    Grammar grammar = loadOk("plants/dialects/robbins_sample_a.robbins");
-    const std::pair<int, size_t> expected[] = {{5, 17}, {7, 53}, {9, 161}, {11, 485}};
-    for (auto [steps, f] : expected) EXPECT_EQ(countsOf(deriveSteps(grammar, steps), grammar)["F"], f) << steps << " steps";
 }
 
 // The native twin in data/plants spells Robbins' symbols differently: compare

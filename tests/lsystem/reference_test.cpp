@@ -1,4 +1,6 @@
-// Every case of ../shared/reference/README.md, from the files in data/plants.
+// Every case of ../shared/reference/README.md, from the files in data/plants:
+// the native file and, where the source document has its own notation, its
+// twin in data/plants/dialects (read through loadDialectFile).
 
 #include "test_support.h"
 
@@ -25,26 +27,39 @@ TEST_P(LsysReferenceCounts, ModulesAndF) {
 INSTANTIATE_TEST_SUITE_P(
     Reference, LsysReferenceCounts,
     ::testing::Values(CountCase{"plants/koch_curve.lsys", 4, 1249, 625},
+                      CountCase{"plants/dialects/koch_curve.crankshaw", 4, 1249, 625},
                       CountCase{"plants/fractal_bush.lsys", 5, 88940, 32768},
+                      CountCase{"plants/dialects/fractal_bush.crankshaw", 5, 88940, 32768},
                       CountCase{"plants/fractal_tree.lsys", 5, 6263, 1488},
+                      CountCase{"plants/dialects/fractal_tree.crankshaw", 5, 6263, 1488},
                       CountCase{"plants/decreasing_tree.lsys", 8, 2296, 255},
-                      CountCase{"plants/gravity_tree_2d.lsys", 6, 4608, 1330}),
+                      CountCase{"plants/dialects/decreasing_tree.crankshaw", 8, 2296, 255},
+                      CountCase{"plants/gravity_tree_2d.lsys", 6, 4608, 1330},
+                      CountCase{"plants/dialects/gravity_tree_2d.crankshaw", 6, 4608, 1330}),
     [](const auto& info) {
         std::string name = info.param.file;
-        name = name.substr(name.find('/') + 1);
-        return name.substr(0, name.find('.'));
+        name = name.substr(name.rfind('/') + 1);
+        for (char& c : name)
+            if (c == '.') c = '_';
+        return name;
     });
 
 TEST(LsysReference, AnabaenaGrowsAsFibonacci) {
+    for (const char* file : {"plants/anabaena.lsys", "plants/dialects/anabaena.crankshaw"}) {
+        SCOPED_TRACE(file);
+        Grammar grammar = loadOk(file);
+        const size_t expected[] = {1, 2, 3, 5, 8, 13};
+        for (int steps = 0; steps <= 5; ++steps) EXPECT_EQ(derive(grammar, stepsOf(steps)).size(), expected[steps]) << steps;
+    }
     Grammar grammar = loadOk("plants/anabaena.lsys");
-    const size_t expected[] = {1, 2, 3, 5, 8, 13};
-    for (int steps = 0; steps <= 5; ++steps) EXPECT_EQ(derive(grammar, stepsOf(steps)).size(), expected[steps]) << steps;
     EXPECT_EQ(toString(derive(grammar, stepsOf(3)), grammar.symbols), "alalbralbr");
 }
 
 TEST(LsysReference, ConditionsAsPrinted) {
-    Grammar grammar = loadOk("plants/conditions.lsys");
-    EXPECT_EQ(toString(derive(grammar, stepsOf(5)), grammar.symbols), "A(2)B(4,4)");
+    for (const char* file : {"plants/conditions.lsys", "plants/dialects/conditions.crankshaw"}) {
+        Grammar grammar = loadOk(file);
+        EXPECT_EQ(toString(derive(grammar, stepsOf(5)), grammar.symbols), "A(2)B(4,4)") << file;
+    }
 }
 
 TEST(LsysReference, ConditionsWithGreaterOrEqualGiveTheThesisTrace) {
@@ -63,9 +78,11 @@ TEST(LsysReference, Parametric) {
 }
 
 TEST(LsysReference, RobbinsSampleA) {
-    Grammar grammar = loadOk("plants/robbins_sample_a.lsys");
-    const std::pair<int, size_t> expected[] = {{5, 17}, {7, 53}, {9, 161}, {11, 485}};
-    for (auto [steps, f] : expected) EXPECT_EQ(countOf(derive(grammar, stepsOf(steps)), grammar, "F"), f) << steps;
+    for (const char* file : {"plants/robbins_sample_a.lsys", "plants/dialects/robbins_sample_a.robbins"}) {
+        Grammar grammar = loadOk(file);
+        const std::pair<int, size_t> expected[] = {{5, 17}, {7, 53}, {9, 161}, {11, 485}};
+        for (auto [steps, f] : expected) EXPECT_EQ(countOf(derive(grammar, stepsOf(steps)), grammar, "F"), f) << file << ", " << steps;
+    }
 }
 
 TEST(LsysReference, BracketContextExample) {
