@@ -4,13 +4,14 @@
 
 namespace pf {
 
-RgbaImage captureFrame(const GpuContext& ctx, const SceneRenderer& renderer, const RenderTarget& target) {
+RgbaImage captureFrame(const GpuContext& ctx, const RenderTarget& target,
+                       const std::function<void(VkCommandBuffer, const RenderTarget&)>& record) {
     const VkExtent2D extent = target.extent;
     const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
     Buffer readback = createHostBuffer(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-        renderer.record(cmd, target);
+        record(cmd, target);
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {extent.width, extent.height, 1};

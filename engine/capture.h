@@ -2,12 +2,15 @@
 #pragma once
 
 #include "engine/image.h"
-#include "engine/scene_renderer.h"
+#include "engine/render_target.h"
+
+#include <functional>
 
 namespace pf {
 
 // Records the frame and a copy of the resolved colour into a host buffer,
 // submits, waits, and returns the pixels (top row first).
-RgbaImage captureFrame(const GpuContext& ctx, const SceneRenderer& renderer, const RenderTarget& target);
+RgbaImage captureFrame(const GpuContext& ctx, const RenderTarget& target,
+                       const std::function<void(VkCommandBuffer, const RenderTarget&)>& record);
 
 } // namespace pf

@@ -217,10 +217,28 @@ void createDevice(GpuContext& ctx, const GpuOptions& options, VkSurfaceKHR surfa
     queueInfo.queueCount = 1;
     queueInfo.pQueuePriorities = &priority;
 
-    VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    // Optional features the field renderer uses when present: the count
+    // variant of indirect draws, and shader-side draw parameters.
+    VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported12};
+    vkGetPhysicalDeviceFeatures2(ctx.physicalDevice, &supported);
+    ctx.drawIndirectCount = supported12.drawIndirectCount == VK_TRUE;
+
+    VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    features12.drawIndirectCount = supported12.drawIndirectCount;
+    features12.hostQueryReset = supported12.hostQueryReset;
+    VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, &features12};
     features13.dynamicRendering = VK_TRUE;
     features13.synchronization2 = VK_TRUE;
+    features13.maintenance4 = VK_TRUE; // compute shaders compiled for SPIR-V 1.6 declare LocalSizeId; core in 1.3
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &features13};
+    // One indirect buffer holds many draws, each starting at its own instance.
+    features.features.multiDrawIndirect = supported.features.multiDrawIndirect;
+    features.features.drawIndirectFirstInstance = supported.features.drawIndirectFirstInstance;
+    features.features.samplerAnisotropy = supported.features.samplerAnisotropy;
+    ctx.multiDrawIndirect = supported.features.multiDrawIndirect == VK_TRUE;
+    if (!supported.features.drawIndirectFirstInstance)
+        throw std::runtime_error(std::string(ctx.properties.deviceName) + " lacks drawIndirectFirstInstance");
 
     std::vector<const char*> extensions;
     ctx.presentation = surface != VK_NULL_HANDLE;

@@ -46,6 +46,8 @@ struct GpuContext {
     VkPhysicalDeviceProperties properties{};
     VkPhysicalDeviceMemoryProperties memoryProperties{};
     bool presentation = false; // VK_KHR_swapchain enabled
+    bool drawIndirectCount = false; // vkCmdDrawIndexedIndirectCount usable
+    bool multiDrawIndirect = false; // indirect draws with drawCount > 1
     std::unique_ptr<ValidationLog> validationLog;
 };
 

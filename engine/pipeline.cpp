@@ -35,11 +35,15 @@ VkPipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& d
     VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
     raster.polygonMode = VK_POLYGON_MODE_FILL;
     raster.cullMode = desc.cullMode;
-    // Meshes are counter-clockwise seen from outside. Vulkan judges winding
-    // in framebuffer coordinates, which the negative-height viewport mirrors,
-    // so those triangles arrive clockwise.
-    raster.frontFace = VK_FRONT_FACE_CLOCKWISE;
+    // Meshes are counter-clockwise seen from outside. The colour passes flip
+    // y with a negative-height viewport, which restores the y-up winding
+    // convention: counter-clockwise is front. An ordinary viewport mirrors
+    // y-up clip space into y-down framebuffer space, so there it is clockwise.
+    raster.frontFace = desc.flippedViewport ? VK_FRONT_FACE_COUNTER_CLOCKWISE : VK_FRONT_FACE_CLOCKWISE;
     raster.lineWidth = 1.0f;
+    raster.depthBiasEnable = desc.depthBiasConstant != 0.0f || desc.depthBiasSlope != 0.0f;
+    raster.depthBiasConstantFactor = desc.depthBiasConstant;
+    raster.depthBiasSlopeFactor = desc.depthBiasSlope;
 
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = desc.samples;
@@ -53,7 +57,8 @@ VkPipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& d
     blendAttachment.colorWriteMask =
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blend.attachmentCount = 1;
+    const bool hasColor = desc.colorFormat != VK_FORMAT_UNDEFINED;
+    blend.attachmentCount = hasColor ? 1 : 0;
     blend.pAttachments = &blendAttachment;
 
     VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
@@ -62,7 +67,7 @@ VkPipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& d
     dynamic.pDynamicStates = dynamicStates;
 
     VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-    rendering.colorAttachmentCount = 1;
+    rendering.colorAttachmentCount = hasColor ? 1 : 0;
     rendering.pColorAttachmentFormats = &desc.colorFormat;
     rendering.depthAttachmentFormat = desc.depthFormat;
 

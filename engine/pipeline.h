@@ -25,6 +25,14 @@ struct GraphicsPipelineDesc {
     VkCullModeFlags cullMode = VK_CULL_MODE_BACK_BIT;
     bool depthTest = true;
     bool depthWrite = true;
+    // Depth-only passes (shadow maps) leave colorFormat UNDEFINED: no colour
+    // attachment. Their slope-scaled bias keeps lit surfaces from shadowing
+    // themselves.
+    float depthBiasConstant = 0.0f;
+    float depthBiasSlope = 0.0f;
+    // Colour passes use a negative-height viewport (y up, counter-clockwise
+    // front faces); passes with an ordinary viewport say false.
+    bool flippedViewport = true;
 };
 
 // Vertices are pulled from storage buffers, so there is no vertex input;

@@ -211,7 +211,7 @@ std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<co
     std::vector<Neighbour> earlier;
     std::vector<const PointGrid*> keptOfRule(rules.size());
     for (size_t ruleIndex : sampling) {
-        kept.push_back(sampleRule(terrain, rules[ruleIndex], earlier, seed, ruleIndex));
+        kept.push_back(sampleRule(terrain, rules[ruleIndex], earlier, seed ^ rules[ruleIndex].seed, ruleIndex));
         earlier.push_back({&kept.back(), rules[ruleIndex].clearance});
         keptOfRule[ruleIndex] = &kept.back();
     }
@@ -220,7 +220,7 @@ std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<co
     for (size_t ruleIndex = 0; ruleIndex < rules.size(); ++ruleIndex) {
         const std::vector<glm::vec2>& points = keptOfRule[ruleIndex]->points;
         for (size_t i = 0; i < points.size(); ++i)
-            instances.push_back(makeInstance(terrain, rules[ruleIndex], points[i], seed, ruleIndex, i));
+            instances.push_back(makeInstance(terrain, rules[ruleIndex], points[i], seed ^ rules[ruleIndex].seed, ruleIndex, i));
     }
     return instances;
 }

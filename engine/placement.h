@@ -34,6 +34,7 @@ struct PlacementRule {
     float maxHeight = std::numeric_limits<float>::max();
     float minScale = 1, maxScale = 1;
     uint32_t variants = 1;
+    uint64_t seed = 0; // mixed into the placement seed for this rule's streams (a scene's per-species seed)
 };
 
 // Bridson's sampling packs about 0.616/r² points per unit area for distance r

@@ -30,11 +30,11 @@ void recordBlitToSwapchain(VkCommandBuffer cmd, const RenderTarget& target, VkIm
 
 } // namespace
 
-PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR surface, SceneRenderer& renderer,
+PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR surface,
                             const PresentLoopOptions& options) {
     Swapchain swapchain;
     swapchain = createSwapchain(ctx, surface, window.framebufferExtent(), swapchain);
-    RenderTarget target = createRenderTarget(ctx, swapchain.extent, renderer.samples());
+    RenderTarget target = createRenderTarget(ctx, swapchain.extent, options.samples);
 
     VkCommandBuffer cmd = allocateCommandBuffer(ctx);
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
@@ -49,7 +49,7 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
         vkDeviceWaitIdle(ctx.device);
         swapchain = createSwapchain(ctx, surface, window.framebufferExtent(), swapchain);
         destroyRenderTarget(ctx, target);
-        target = createRenderTarget(ctx, swapchain.extent, renderer.samples());
+        target = createRenderTarget(ctx, swapchain.extent, options.samples);
     };
 
     using Clock = std::chrono::steady_clock;
@@ -58,6 +58,8 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
     uint32_t titleFrames = 0;
     PresentStats stats;
     double sceneTime = 0.0;
+    double lastFrameMs = 0.0;
+    Clock::time_point lastFrameStart = start;
 
     while (!window.shouldClose() && (options.maxFrames == 0 || stats.frames < options.maxFrames)) {
         window.pollEvents();
@@ -79,15 +81,17 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
         if (acquired != VK_SUBOPTIMAL_KHR) VK_CHECK(acquired);
         VK_CHECK(vkResetFences(ctx.device, 1, &frameDone));
 
+        const double previousTime = sceneTime;
         sceneTime = options.fixedTimeStep > 0 ? stats.frames * options.fixedTimeStep
                                               : std::chrono::duration<double>(Clock::now() - start).count();
-        renderer.setFrameUniforms(options.frameUniforms(sceneTime, target.extent));
+        const Clock::time_point frameStart = Clock::now();
+        options.prepare(sceneTime, stats.frames == 0 ? 0.0 : sceneTime - previousTime, target.extent, lastFrameMs);
 
         VK_CHECK(vkResetCommandBuffer(cmd, 0));
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
         VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
-        renderer.record(cmd, target);
+        options.record(cmd, target);
         recordBlitToSwapchain(cmd, target, swapchain.images[imageIndex], swapchain.extent);
         VK_CHECK(vkEndCommandBuffer(cmd));
 
@@ -124,12 +128,14 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
             VK_CHECK(presented);
 
         const Clock::time_point now = Clock::now();
+        lastFrameMs = 1000.0 * std::chrono::duration<double>(frameStart - lastFrameStart).count();
+        lastFrameStart = frameStart;
         const double sinceTitle = std::chrono::duration<double>(now - titleTime).count();
         if (sinceTitle >= 0.5) {
             char title[128];
-            std::snprintf(title, sizeof(title), "plantfield - %.2f ms (%.1f fps) - %u segments",
-                          1000.0 * sinceTitle / titleFrames, titleFrames / sinceTitle, renderer.segmentCount());
-            window.setTitle(title);
+            std::snprintf(title, sizeof(title), "plantfield - %.2f ms (%.1f fps)", 1000.0 * sinceTitle / titleFrames,
+                          titleFrames / sinceTitle);
+            window.setTitle(std::string(title) + (options.titleSuffix ? options.titleSuffix() : std::string()));
             titleTime = now;
             titleFrames = 0;
         }
@@ -138,7 +144,7 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
     stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
 
     if (!options.screenshotPath.empty() && stats.frames > 0)
-        writePng(options.screenshotPath, captureFrame(ctx, renderer, target));
+        writePng(options.screenshotPath, captureFrame(ctx, target, options.record));
 
     vkDestroyFence(ctx.device, frameDone, nullptr);
     vkDestroySemaphore(ctx.device, imageAcquired, nullptr);

@@ -27,6 +27,7 @@ public:
     void waitEvents() const; // blocks until something happens, e.g. while minimised
     VkExtent2D framebufferExtent() const;
     void setTitle(const std::string& title);
+    GLFWwindow* handle() const { return window_; }
 
 private:
     GLFWwindow* window_ = nullptr;

@@ -1,8 +1,15 @@
 // Shading shared by every pass: one sun, a sky dome, distance fog, tone map.
 #include "layouts.h"
 
+#ifdef FIELD_FRAME
+#include "field_layouts.h"
+#endif
+
 layout(set = 0, binding = BINDING_FRAME_UNIFORMS, std140) uniform FrameBlock {
     FrameUniforms frame;
+#ifdef FIELD_FRAME
+    FieldFrame field; // shadow matrix, billboard axes, viewport, wind
+#endif
 };
 
 vec3 skyRadiance(vec3 dir) {

@@ -2,10 +2,13 @@
 
 #include "engine/device.h"
 #include "engine/image.h"
+#include "shaders/field_layouts.h"
 
 #include <CLI/CLI.hpp>
 
 #include <charconv>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
 
 namespace pf {
@@ -29,21 +32,44 @@ std::optional<ImageSize> parseImageSize(const std::string& text) {
     return size;
 }
 
+std::string defaultScenePath() {
+    const char* data = std::getenv("PLANTFIELD_DATA_DIR");
+    return std::string(data && *data ? data : PLANTFIELD_DATA_DIR) + "/scenes/default.json";
+}
+
 std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, int* exitCode) {
     PlantfieldOptions o;
     o.validation = validationWantedByDefault();
     std::string sizeText = "1280x720";
+    o.scenePath = defaultScenePath();
 
-    CLI::App app{"plantfield: renders a field of L-system plants, in a window or headless to PNG."};
-    app.footer("Examples:\n  plantfield --capture frame.png --size 1280x720\n  plantfield --window\n"
+    CLI::App app{"plantfield: renders a field of L-system plants (a scene file, docs/SCENE_FORMAT.md), in a window\n"
+                 "or headless to PNG."};
+    app.footer("Examples:\n"
+               "  plantfield --capture frame.png                 the default forest at 1280x720\n"
+               "  plantfield data/scenes/default.json --window   fly through it (docs/WINDOW.md)\n"
+               "  plantfield --instances 100000 --stats          one frame of 100 000 plants: JSON statistics\n"
+               "  plantfield --frames 60 --fps 30 --out-dir seq  two seconds of frames\n"
                "Environment: PLANTFIELD_DEVICE picks the device by name, PLANTFIELD_VALIDATION=1 turns on\n"
-               "the Khronos validation layer.");
+               "the Khronos validation layer, PLANTFIELD_DATA_DIR replaces the data folder.");
+    app.add_option("scene", o.scenePath, "Scene file (.json)")->default_str("data/scenes/default.json");
     app.add_option("--capture", o.capturePath, "Render one frame headless and write it to this PNG file");
     app.add_option("--size", sizeText, "Image or window size as WIDTHxHEIGHT (1 to 16384 per side)")
         ->default_str("1280x720");
-    app.add_flag("--window", o.window, "Open a window and render in real time");
-    app.add_option("--frames", o.frames, "With --window: close after this many frames (0: run until closed)");
-    app.add_option("--time", o.time, "Scene time of the frame in seconds")->check(CLI::NonNegativeNumber);
+    app.add_flag("--window", o.window, "Open a window: camera-path playback and free flight");
+    app.add_option("--frames", o.frames,
+                   "Headless: render this many frames into --out-dir; with --window: close after this many");
+    app.add_option("--fps", o.fps, "Frames per scene second of a --frames sequence")->check(CLI::Range(0.1, 1000.0));
+    app.add_option("--out-dir", o.outDir, "Folder of a --frames sequence (frame_0000.png, ...), created if missing");
+    app.add_option("--time", o.time, "Scene time of the (first) frame in seconds")->check(CLI::NonNegativeNumber);
+    app.add_option("--instances", o.instances, "Scale the scene's placement to exactly this many plants")
+        ->check(CLI::Range(uint64_t(1), uint64_t(FIELD_MAX_INSTANCES)));
+    app.add_option("--seed", o.seed, "Replace the scene's seed (terrain, plants and placement change)");
+    app.add_flag("--stats", o.stats,
+                 "Print JSON statistics of the (last) frame: plants per LOD, culled, draws, triangles, GPU ms per pass");
+    app.add_option("--lod", o.forcedLod, "Draw every visible plant at this LOD: 0 full, 1 reduced, 2 impostor")
+        ->check(CLI::Range(0, 2));
+    app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
     app.add_option("--device", o.deviceName, "Use the Vulkan device whose name contains this text");
     app.add_flag("--list-devices", o.listDevices, "List the Vulkan devices and exit");
     app.add_flag("--validation,!--no-validation", o.validation,
@@ -72,8 +98,13 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     if (!size) return fail("invalid --size '" + sizeText + "': expected WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720");
     o.size = *size;
     if (o.listDevices) return o;
-    if (o.capturePath.empty() && !o.window)
-        return fail("nothing to do: pass --capture FILE.png for a headless frame or --window for real time");
+    const bool sequence = !o.window && o.frames > 0;
+    if (o.capturePath.empty() && !o.window && !sequence && !o.stats)
+        return fail("nothing to do: pass --capture FILE.png, --frames N --out-dir DIR, --stats or --window");
+    if (sequence && o.outDir.empty()) return fail("--frames without --window needs --out-dir DIR for the images");
+    if (!o.outDir.empty() && !sequence) return fail("--out-dir needs --frames N (and no --window)");
+    if (!std::filesystem::is_regular_file(o.scenePath))
+        return fail("scene file '" + o.scenePath + "' does not exist or is not a file");
     if (!o.capturePath.empty()) {
         const std::string problem = outputPathProblem(o.capturePath);
         if (!problem.empty()) return fail("cannot write --capture file: " + problem);

@@ -15,12 +15,24 @@ struct ImageSize {
 // "1280x720" → {1280, 720}; nullopt for anything else, zero, or > 16384.
 std::optional<ImageSize> parseImageSize(const std::string& text);
 
+// The scene a tool renders when none is named: data/scenes/default.json of
+// the source tree (PLANTFIELD_DATA_DIR overrides the data folder).
+std::string defaultScenePath();
+
 struct PlantfieldOptions {
+    std::string scenePath;
     std::string capturePath;
     ImageSize size{1280, 720};
     bool window = false;
-    uint32_t frames = 0; // window: stop after this many frames (0 = until closed)
-    double time = 0.0;   // scene time of a capture, seconds
+    uint32_t frames = 0;  // window: stop after this many; headless: capture this many into outDir
+    double fps = 30.0;    // scene seconds per frame of a --frames sequence: 1/fps
+    std::string outDir;   // --frames sequence: DIR/frame_0000.png …
+    double time = 0.0;    // scene time of the (first) frame, seconds
+    std::optional<uint64_t> instances; // scale the placement to exactly this many plants
+    std::optional<uint32_t> seed;      // replaces the scene's seed
+    bool stats = false;   // print the frame's JSON statistics on stdout
+    std::optional<uint32_t> forcedLod; // draw every visible plant at this LOD
+    bool shadows = true;
     std::string deviceName;
     bool listDevices = false;
     bool validation = false;

@@ -1,0 +1,118 @@
+// Bindings and helpers of the field's draw passes (plants, impostors,
+// terrain, shadows): one descriptor set, layouts from field_layouts.h.
+#ifndef FIELD_COMMON_GLSL
+#define FIELD_COMMON_GLSL
+#define FIELD_FRAME
+#include "common.glsl"
+#include "plant_surface.glsl"
+
+layout(set = 0, binding = FIELD_BINDING_INSTANCES, std430) readonly buffer Instances {
+    FieldInstance instances[];
+};
+layout(set = 0, binding = FIELD_BINDING_VISIBLE, std430) readonly buffer Visible {
+    uint visible[];
+};
+layout(set = 0, binding = FIELD_BINDING_VERTICES, std430) readonly buffer Vertices {
+    FieldVertex vertices[];
+};
+layout(set = 0, binding = FIELD_BINDING_MODELS, std430) readonly buffer Models {
+    PlantModel models[];
+};
+layout(set = 0, binding = FIELD_BINDING_ATLAS_COLOR) uniform sampler2DArray atlasColor;
+layout(set = 0, binding = FIELD_BINDING_ATLAS_NORMAL) uniform sampler2DArray atlasNormal;
+layout(set = 0, binding = FIELD_BINDING_SHADOW) uniform sampler2DShadow shadowMap;
+layout(set = 0, binding = FIELD_BINDING_TERRAIN, std430) readonly buffer Terrain {
+    TerrainVertex terrain[];
+};
+
+// The same vertex shaders draw the camera view and the sun's shadow map:
+// the pipeline layout's push constant says which.
+layout(push_constant) uniform FieldPush {
+    uint shadowPass; // 1: depth from the sun
+} fieldPush;
+
+mat4 passViewProj() {
+    return fieldPush.shadowPass != 0u ? field.sunViewProj : frame.viewProj;
+}
+
+// The plant a draw's instance stands for: gl_InstanceIndex already includes
+// the command's firstInstance, i.e. the start of its (model, LOD) list.
+struct VisiblePlant {
+    uint index;     // into instances[]
+    float coverage; // share of pixels drawn, for the LOD cross-fade
+    bool fadeIn;
+};
+
+VisiblePlant visiblePlant(uint entryIndex) {
+    uint entry = visible[entryIndex];
+    VisiblePlant p;
+    p.index = entry & VISIBLE_INDEX_MASK;
+    p.fadeIn = (entry & VISIBLE_FADE_IN_BIT) != 0u;
+    p.coverage = float(entry >> VISIBLE_COVERAGE_SHIFT) / float(VISIBLE_COVERAGE_MAX);
+    return p;
+}
+
+// Packs the fade into one flat varying: coverage·127, +128 when fading in.
+uint packFade(VisiblePlant p) {
+    return uint(round(p.coverage * 127.0)) | (p.fadeIn ? 128u : 0u);
+}
+
+mat3 yawMatrix(float yaw) {
+    float c = cos(yaw), s = sin(yaw);
+    return mat3(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c);
+}
+
+vec3 plantToWorld(FieldInstance inst, vec3 p) {
+    return inst.positionScale.xyz + yawMatrix(inst.orientation.x) * (p * inst.positionScale.w);
+}
+
+vec3 plantNormalToWorld(FieldInstance inst, vec3 n) {
+    return yawMatrix(inst.orientation.x) * n;
+}
+
+// Dithered cross-fade: the outgoing LOD keeps the pixels whose threshold is
+// below its coverage, the incoming LOD exactly the others, so together they
+// cover each pixel once.
+bool fadeDiscards(vec2 fragCoord, uint packedFade) {
+    float coverage = float(packedFade & 127u) / 127.0;
+    if (coverage >= 1.0) return false;
+    const float bayer[16] = float[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
+    ivec2 p = ivec2(fragCoord) & 3;
+    float threshold = (bayer[p.y * 4 + p.x] + 0.5) / 16.0;
+    bool fadeIn = (packedFade & 128u) != 0u;
+    return fadeIn ? threshold < 1.0 - coverage : threshold >= coverage;
+}
+
+// Sun visibility at a world position: 2×2 PCF of the shadow map, fully lit
+// outside it or when shadows are off.
+float sunVisibility(vec3 worldPos, vec3 normal) {
+    if (field.viewport.w < 0.5) return 1.0;
+    vec3 offsetPos = worldPos + normal * field.viewport.z * 1.5;
+    vec4 clip = field.sunViewProj * vec4(offsetPos, 1.0);
+    vec3 ndc = clip.xyz / clip.w;
+    vec2 uv = ndc.xy * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0) return 1.0;
+    vec2 texel = 1.0 / vec2(textureSize(shadowMap, 0));
+    float bias = 0.0015;
+    float lit = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        vec2 o = (vec2(i & 1, i >> 1) - 0.5) * texel;
+        lit += texture(shadowMap, vec3(uv + o, ndc.z - bias));
+    }
+    // Fade the shadow out toward the map's edge so its border never shows.
+    float edge = smoothstep(0.0, 0.08, min(min(uv.x, uv.y), min(1.0 - uv.x, 1.0 - uv.y)));
+    return mix(1.0, lit * 0.25, edge);
+}
+
+// Sun (with shadow and, for thin foliage, light through the back), sky light.
+vec3 shadeField(vec3 albedo, vec3 normal, vec3 worldPos, float occlusion, float transmission) {
+    vec3 l = frame.sunDirection.xyz;
+    float facing = dot(normal, l);
+    float sun = max(facing, 0.0) + transmission * max(-facing, 0.0);
+    float visibility = sunVisibility(worldPos, normal * sign(facing + 1e-4));
+    float skyWeight = 0.5 + 0.5 * normal.y;
+    vec3 ambient = mix(frame.groundAlbedo.rgb * frame.skyHorizon.rgb, frame.skyZenith.rgb, skyWeight);
+    return albedo * (frame.sunRadiance.rgb * sun * visibility + ambient * occlusion);
+}
+
+#endif

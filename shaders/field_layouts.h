@@ -1,0 +1,147 @@
+// GPU data layouts of the plant field (DESIGN.md §5), shared by GLSL and C++.
+// Members are vec4/uvec4 (or plain uints where Vulkan fixes the layout), so
+// std430 and C++ agree without padding rules.
+#ifndef PLANTFIELD_SHADERS_FIELD_LAYOUTS_H
+#define PLANTFIELD_SHADERS_FIELD_LAYOUTS_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+namespace gpu {
+using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+using mat4 = glm::mat4;
+using uint = uint32_t;
+#endif
+
+// Levels of detail: full geometry, reduced geometry, billboard impostor.
+#define LOD_FULL 0
+#define LOD_REDUCED 1
+#define LOD_IMPOSTOR 2
+#define LOD_COUNT 3
+
+// Draw classes: each has its own pipeline and its own indirect command list.
+#define DRAW_BARK 0     // opaque, back faces culled
+#define DRAW_FOLIAGE 1  // alpha-tested, two-sided (leaves, petals, needles, grass)
+#define DRAW_IMPOSTOR 2 // billboards sampling the impostor atlas
+#define DRAW_CLASS_COUNT 3
+
+// FieldVertex::albedo.a: how the fragment shader treats the surface.
+#define SURFACE_BARK 0.0    // opaque, bark streaks
+#define SURFACE_LEAF 1.0    // alpha-tested leaf card: uv in [0,1]², leaf outline cut by the shader
+#define SURFACE_BLADE 2.0   // opaque two-sided thin blade or petal, no cut-out
+
+// A visible-list entry: instance index in the low bits, then one bit that
+// says the entry is fading in (rather than out), then its coverage.
+#define VISIBLE_INDEX_BITS 24
+#define VISIBLE_INDEX_MASK 0xFFFFFFu
+#define VISIBLE_FADE_IN_BIT 0x1000000u
+#define VISIBLE_COVERAGE_SHIFT 25 // 7 bits: 127 = fully drawn
+#define VISIBLE_COVERAGE_MAX 127u
+#define FIELD_MAX_INSTANCES (1u << VISIBLE_INDEX_BITS)
+
+// Per-instance LOD state (FieldInstanceState::x): current LOD in bits 0-1,
+// the LOD it fades from in bits 2-3, fade progress 0..255 in bits 8-15
+// (255: settled, nothing to fade).
+#define LOD_STATE_SETTLED 255u
+
+#define CULL_GROUP_SIZE 64
+
+// Descriptor bindings of the field's draw set (set 0).
+#define FIELD_BINDING_FRAME 0       // FrameUniforms (layouts.h) + FieldFrame
+#define FIELD_BINDING_INSTANCES 1   // FieldInstance[]
+#define FIELD_BINDING_VISIBLE 2     // uint[] visible entries, per (model, LOD) list
+#define FIELD_BINDING_VERTICES 3    // FieldVertex[]
+#define FIELD_BINDING_MODELS 4      // PlantModel[]
+#define FIELD_BINDING_ATLAS_COLOR 5 // sampler2DArray: impostor albedo (rgb) + coverage (a)
+#define FIELD_BINDING_ATLAS_NORMAL 6 // sampler2DArray: impostor normal (rgb·0.5+0.5) + depth (a)
+#define FIELD_BINDING_SHADOW 7      // sampler2DShadow: the sun's shadow map
+#define FIELD_BINDING_TERRAIN 8     // TerrainVertex[]
+
+// Descriptor bindings of the cull pass (its own set 0).
+#define CULL_BINDING_UNIFORMS 0  // CullUniforms
+#define CULL_BINDING_INSTANCES 1 // FieldInstance[]
+#define CULL_BINDING_MODELS 2    // PlantModel[]
+#define CULL_BINDING_STATE 3     // uint[] per-instance LOD state
+#define CULL_BINDING_COUNTS 4    // uint[] per (model, LOD): entries written this frame
+#define CULL_BINDING_VISIBLE 5   // uint[] visible entries
+#define CULL_BINDING_TEMPLATES 6 // DrawTemplate[]
+#define CULL_BINDING_COMMANDS 7  // DrawCommand[] compacted, DRAW_CLASS_COUNT regions
+#define CULL_BINDING_DRAW_COUNTS 8 // uint[DRAW_CLASS_COUNT]
+#define CULL_BINDING_ALL_COMMANDS 9 // DrawCommand[] one per template, for the no-count fallback
+
+// One plant of the field: 48 bytes, so a million fit in 48 MB.
+struct FieldInstance {
+    vec4 positionScale; // xyz base on the terrain (m), w uniform scale
+    vec4 orientation;   // x yaw about +y (radians), y wind phase (radians), zw 0
+    uvec4 ids;          // x model (PlantModel index), y species, z variant, w 0
+};
+
+// One species variant: its meshes, bounds and LOD settings.
+struct PlantModel {
+    vec4 sphere;       // bounding sphere in plant space: xyz centre, w radius (m, before instance scale)
+    vec4 boxMin;       // plant-space bounds, w 0
+    vec4 boxMax;
+    vec4 lod;          // x: LOD0→1 below this many pixels of projected height, y: LOD1→2 below, z: hysteresis fraction, w: fade seconds
+    uvec4 lists;       // x, y, z: first visible-list entry of LOD 0, 1, 2; w: instances of this model (each list's capacity)
+    uvec4 impostor;    // x: first atlas layer, y: frames around the plant, z: quads per billboard (1, 2, 3), w: 0
+    vec4 impostorQuad; // x: half width (m), y: bottom, z: top (plant space), w: half depth of the baked box
+};
+
+// One mesh vertex in plant space: 64 bytes.
+struct FieldVertex {
+    vec4 position; // xyz plant space (m), w texture u
+    vec4 normal;   // xyz unit normal, w texture v
+    vec4 albedo;   // rgb linear albedo, a SURFACE_* kind
+    uvec4 joint;   // x joint index in the model's skeleton (issue 6), yzw 0
+};
+
+struct TerrainVertex {
+    vec4 position; // xyz world (m), w 0
+    vec4 normal;   // xyz unit, w 0
+};
+
+// The draw the build-draws pass turns into a command for each (model, LOD,
+// class) that has a mesh.
+struct DrawTemplate {
+    uvec4 mesh; // x index count, y first index, z vertex offset, w draw class
+    uvec4 list; // x counter slot = model·LOD_COUNT + LOD, y first visible entry, zw 0
+};
+
+// VkDrawIndexedIndirectCommand, as the GPU writes it (20 bytes, std430).
+struct DrawCommand {
+    uint indexCount;
+    uint instanceCount;
+    uint firstIndex;
+    uint vertexOffset; // int in Vulkan; only ever non-negative here
+    uint firstInstance;
+};
+
+struct CullUniforms {
+    vec4 frustum[6];    // world-space planes, xyz inward normal, w offset: inside when dot(n,p)+w >= 0
+    vec4 camera;        // xyz position, w pixels per metre at one metre of distance (viewport height / (2 tan(fov/2)))
+    uvec4 counts;       // x instances, y templates, z forced LOD (0xFFFFFFFF: none), w 1 on the first frame (state is reset)
+    vec4 timing;        // x seconds since the previous frame, yzw 0
+};
+
+// Field additions to the frame uniforms (after FrameUniforms in the same block).
+struct FieldFrame {
+    mat4 sunViewProj;   // world → shadow map clip space
+    vec4 cameraRight;   // xyz unit, w 0
+    vec4 cameraUp;      // xyz unit, w 0
+    vec4 viewport;      // x width, y height (pixels), z shadow map texel size (m), w 1 when shadows are on
+    vec4 wind;          // xz direction × speed (m/s), y gust strength, w time (s)
+};
+
+#ifdef __cplusplus
+} // namespace gpu
+static_assert(sizeof(gpu::FieldInstance) == 48);
+static_assert(sizeof(gpu::PlantModel) == 7 * 16);
+static_assert(sizeof(gpu::FieldVertex) == 64);
+static_assert(sizeof(gpu::DrawTemplate) == 32);
+static_assert(sizeof(gpu::DrawCommand) == 20);
+static_assert(sizeof(gpu::CullUniforms) == 9 * 16);
+static_assert(sizeof(gpu::FieldFrame) == 64 + 4 * 16);
+#endif
+
+#endif

@@ -1,0 +1,32 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "field_common.glsl"
+
+// LOD2 billboards: atlas albedo and plant-space normal (both premultiplied by
+// coverage), alpha-tested, cross-faded, shaded like LOD0 (plant.frag).
+layout(location = 0) in vec3 inWorldPos;
+layout(location = 1) in vec2 inUv;
+layout(location = 2) flat in uvec2 inLayers;
+layout(location = 3) flat in float inBlend;
+layout(location = 4) flat in uint inFade;
+layout(location = 5) flat in float inYaw;
+layout(location = 0) out vec4 outColor;
+
+// Smaller mips average thin leaves below the 0.5 test; raising alpha with
+// the mip level keeps their coverage (impostor_shadow.frag uses the same).
+const float kMipAlphaBoost = 0.35;
+
+void main() {
+    float lod = max(textureQueryLod(atlasColor, inUv).y, 0.0);
+    vec4 color = mix(texture(atlasColor, vec3(inUv, inLayers.x)), texture(atlasColor, vec3(inUv, inLayers.y)), inBlend);
+    if (color.a * (1.0 + kMipAlphaBoost * lod) < 0.5) discard;
+    if (fadeDiscards(gl_FragCoord.xy, inFade)) discard;
+    vec4 normalDepth = mix(texture(atlasNormal, vec3(inUv, inLayers.x)), texture(atlasNormal, vec3(inUv, inLayers.y)), inBlend);
+
+    vec3 albedo = color.rgb / color.a;
+    vec3 n = normalize(normalDepth.rgb / color.a * 2.0 - 1.0);
+    n = yawMatrix(inYaw) * n;
+    // Impostors are mostly crown: foliage's occlusion and transmission.
+    vec3 shaded = shadeField(albedo, n, inWorldPos, 0.75, kFoliageTransmission);
+    outColor = vec4(toneMap(applyFog(shaded, inWorldPos)), 1.0);
+}

@@ -1,0 +1,62 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "field_common.glsl"
+
+// LOD2 billboards (docs/IMPOSTORS.md): the quads of appendBillboardMesh
+// expanded around each visible plant and textured with its atlas frames
+// (engine/impostor_atlas.h: frame f views from azimuth 2π·f/frames along
+// d = (sin a, 0, cos a), right axis (cos a, 0, -sin a)). One quad turns to
+// the view about the vertical axis and blends the two frames nearest the
+// view azimuth; two or three crossed quads stay fixed in plant space, each
+// showing the frame baked along its normal (or its opposite, mirrored, when
+// seen from behind). Also the vertex stage of the shadow pass, where the sun
+// is the view.
+layout(location = 0) out vec3 outWorldPos;
+layout(location = 1) out vec2 outUv;
+layout(location = 2) flat out uvec2 outLayers; // the two frames blended
+layout(location = 3) flat out float outBlend;  // weight of outLayers.y
+layout(location = 4) flat out uint outFade;
+layout(location = 5) flat out float outYaw;
+
+const float kTau = 6.28318531;
+
+void main() {
+    VisiblePlant p = visiblePlant(gl_InstanceIndex);
+    FieldInstance inst = instances[p.index];
+    PlantModel m = models[inst.ids.x];
+    FieldVertex v = vertices[gl_VertexIndex];
+
+    uint frames = m.impostor.y;
+    uint quads = m.impostor.z;
+    // Where the view comes from, in plant space (the instance's yaw undone).
+    vec3 toView = fieldPush.shadowPass != 0u ? frame.sunDirection.xyz : frame.cameraPosition.xyz - inst.positionScale.xyz;
+    vec3 local = transpose(yawMatrix(inst.orientation.x)) * toView;
+    float viewAzimuth = dot(local.xz, local.xz) > 1e-12 ? atan(local.x, local.z) : 0.0;
+
+    float quadAzimuth;
+    float u = v.position.w;
+    if (quads == 1u) {
+        float t = mod(viewAzimuth / kTau * float(frames), float(frames));
+        float f0 = floor(t);
+        outLayers = m.impostor.x + uvec2(uint(f0) % frames, (uint(f0) + 1u) % frames);
+        outBlend = t - f0;
+        quadAzimuth = viewAzimuth;
+    } else {
+        quadAzimuth = v.position.z * 0.5 * kTau / float(quads);
+        bool back = dot(local.xz, vec2(sin(quadAzimuth), cos(quadAzimuth))) < 0.0;
+        float shown = quadAzimuth + (back ? 0.5 * kTau : 0.0);
+        uint f = uint(round(shown / kTau * float(frames))) % frames;
+        outLayers = uvec2(m.impostor.x + f);
+        outBlend = 0.0;
+        // The opposite frame's right axis is this quad's left.
+        if (back) u = 1.0 - u;
+    }
+    vec3 right = vec3(cos(quadAzimuth), 0.0, -sin(quadAzimuth));
+    vec3 plantPos = right * (v.position.x * m.impostorQuad.x) + vec3(0.0, mix(m.impostorQuad.y, m.impostorQuad.z, v.position.y), 0.0);
+
+    outWorldPos = plantToWorld(inst, plantPos);
+    outUv = vec2(u, v.normal.w);
+    outFade = packFade(p);
+    outYaw = inst.orientation.x;
+    gl_Position = passViewProj() * vec4(outWorldPos, 1.0);
+}

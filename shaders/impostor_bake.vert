@@ -1,0 +1,34 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "plant_surface.glsl"
+
+// One frame of the impostor bake (engine/impostor_atlas.h): a model's LOD0
+// mesh seen orthographically from azimuth a, fitted to the model's box.
+layout(set = 0, binding = 0, std430) readonly buffer Vertices {
+    FieldVertex vertices[];
+};
+
+layout(push_constant) uniform BakePush {
+    vec4 right;  // xyz (cos a, 0, -sin a) / half width
+    vec4 toView; // xyz (sin a, 0, cos a) / half depth
+    vec4 height; // x bottom, y 1 / (top - bottom)
+} bake;
+
+layout(location = 0) out vec3 outNormal;
+layout(location = 1) out vec3 outAlbedo;
+layout(location = 2) out vec2 outUv;
+layout(location = 3) flat out float outKind;
+
+void main() {
+    FieldVertex v = vertices[gl_VertexIndex];
+    vec3 p = v.position.xyz;
+    // Row 0 of the frame is the box's top; depth 0 its front, 1 its back.
+    float x = dot(p, bake.right.xyz);
+    float y = 1.0 - 2.0 * (p.y - bake.height.x) * bake.height.y;
+    float depth = 0.5 - 0.5 * dot(p, bake.toView.xyz);
+    gl_Position = vec4(x, y, depth, 1.0);
+    outNormal = v.normal.xyz;
+    outAlbedo = v.albedo.rgb;
+    outUv = vec2(v.position.w, v.normal.w);
+    outKind = v.albedo.a;
+}

@@ -1,0 +1,14 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "field_common.glsl"
+
+// The terrain mesh, pulled from the TerrainVertex buffer by index.
+layout(location = 0) out vec3 outWorldPos;
+layout(location = 1) out vec3 outNormal;
+
+void main() {
+    TerrainVertex v = terrain[gl_VertexIndex];
+    outWorldPos = v.position.xyz;
+    outNormal = v.normal.xyz;
+    gl_Position = passViewProj() * vec4(outWorldPos, 1.0);
+}

@@ -1,0 +1,30 @@
+#version 460
+// The text overlay's rectangles (stb_easy_font quads), pulled from a storage
+// buffer: six vertices, two triangles, a rectangle. Positions are pixels with
+// y down, as in the C++ OverlayRect of engine/text_overlay.cpp.
+struct OverlayRect {
+    vec4 bounds; // x0, y0, x1, y1 in pixels
+    vec4 color;  // linear rgba
+};
+
+layout(std430, set = 0, binding = 0) readonly buffer OverlayRects {
+    OverlayRect rects[];
+};
+
+layout(push_constant) uniform OverlayPush {
+    vec2 framebufferSize;
+};
+
+layout(location = 0) flat out vec4 outColor;
+
+const int kCorner[6] = int[6](0, 1, 2, 2, 1, 3); // bit 0: right, bit 1: bottom
+
+void main() {
+    OverlayRect rect = rects[gl_VertexIndex / 6];
+    int corner = kCorner[gl_VertexIndex % 6];
+    vec2 pixel = vec2((corner & 1) != 0 ? rect.bounds.z : rect.bounds.x,
+                      (corner & 2) != 0 ? rect.bounds.w : rect.bounds.y);
+    // Vulkan's clip space already has y down, so pixels map without a flip.
+    gl_Position = vec4(pixel / framebufferSize * 2.0 - 1.0, 0.0, 1.0);
+    outColor = rect.color;
+}

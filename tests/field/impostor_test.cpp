@@ -1,0 +1,347 @@
+// The impostor atlas bake (engine/impostor_atlas.h) on a hand-built model: a
+// vertical bark cylinder and a leaf card sticking out along +x, so frames
+// differ with azimuth; read back and checked pixel by pixel.
+#include "engine/image.h"
+#include "engine/impostor_atlas.h"
+#include "engine/vk_check.h"
+#include "gpu_test.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+namespace {
+
+using namespace pf;
+
+constexpr float kRadius = 0.1f;     // cylinder around the y axis, y 0 … 2
+constexpr float kHeight = 2.0f;
+constexpr uint32_t kSides = 64;
+constexpr float kLeafX0 = 0.1f, kLeafX1 = 0.6f; // leaf card in the plane z = 0, petiole at x0
+constexpr float kLeafY0 = 1.2f, kLeafY1 = 1.6f;
+constexpr uint32_t kSize = 128;
+constexpr uint32_t kFrames = 12;
+
+gpu::FieldVertex vertex(glm::vec3 p, glm::vec3 n, glm::vec2 uv, glm::vec3 albedo, float kind) {
+    return {glm::vec4(p, uv.x), glm::vec4(n, uv.y), glm::vec4(albedo, kind), glm::uvec4(0)};
+}
+
+// Two models of the same geometry: a Triple and a Single billboard.
+PlantModelPool testPool() {
+    PlantModelPool pool;
+    const glm::vec3 bark(0.40f, 0.25f, 0.10f);
+    for (uint32_t i = 0; i <= kSides; ++i) {
+        float a = glm::two_pi<float>() * float(i) / float(kSides);
+        glm::vec3 n(std::cos(a), 0.0f, std::sin(a));
+        for (float y : {0.0f, kHeight})
+            pool.vertices.push_back(vertex(n * kRadius + glm::vec3(0, y, 0), n, {float(i) / kSides, y / kHeight}, bark,
+                                           SURFACE_BARK));
+    }
+    for (uint32_t i = 0; i < kSides; ++i) {
+        uint32_t a = 2 * i, b = 2 * i + 1, c = 2 * i + 2, d = 2 * i + 3;
+        // Counter-clockwise seen from outside, as every mesh of the pool.
+        glm::vec3 pa = pool.vertices[a].position, pb = pool.vertices[c].position, pc = pool.vertices[b].position;
+        bool ccw = glm::dot(glm::cross(pb - pa, pc - pa), glm::vec3(pool.vertices[a].normal)) > 0.0f;
+        for (uint32_t index : ccw ? std::vector<uint32_t>{a, c, b, b, c, d} : std::vector<uint32_t>{a, b, c, b, d, c})
+            pool.indices.push_back(index);
+    }
+    MeshRange barkRange{0, uint32_t(pool.indices.size()), 0};
+
+    const glm::vec3 leaf(0.15f, 0.50f, 0.10f);
+    MeshRange leafRange{uint32_t(pool.indices.size()), 6, uint32_t(pool.vertices.size())};
+    // uv: u across the card (y), v from the petiole (x0) to the tip (x1).
+    for (glm::vec2 c : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 1)})
+        pool.vertices.push_back(vertex({kLeafX0 + c.y * (kLeafX1 - kLeafX0), kLeafY0 + c.x * (kLeafY1 - kLeafY0), 0.0f},
+                                       {0, 0, 1}, c, leaf, SURFACE_LEAF));
+    // Counter-clockwise seen from +z, the side its normal faces.
+    for (uint32_t i : {0u, 2u, 1u, 0u, 3u, 2u}) pool.indices.push_back(i);
+
+    for (BillboardKind kind : {BillboardKind::Triple, BillboardKind::Single}) {
+        PlantModelInfo model;
+        model.name = "test#" + std::to_string(pool.models.size());
+        model.meshes[LOD_FULL] = {barkRange, leafRange};
+        model.meshes[LOD_REDUCED] = {barkRange, leafRange};
+        model.gpu.boxMin = {-kRadius, 0.0f, -kRadius, 0.0f};
+        model.gpu.boxMax = {kLeafX1, kHeight, kRadius, 0.0f};
+        model.billboard = kind;
+        pool.models.push_back(model);
+    }
+    pool.firstModel = {0};
+    return pool;
+}
+
+// Mip `level` of every layer, tightly packed, 4 bytes a texel.
+std::vector<uint8_t> readLayers(const GpuContext& ctx, const Image& image, uint32_t layers, uint32_t level) {
+    const uint32_t size = std::max(image.extent.width >> level, 1u);
+    Buffer readback = createHostBuffer(ctx, VkDeviceSize(size) * size * 4 * layers, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+        auto barrier = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 src, VkAccessFlags2 srcAccess,
+                           VkPipelineStageFlags2 dst, VkAccessFlags2 dstAccess) {
+            VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+            b.srcStageMask = src;
+            b.srcAccessMask = srcAccess;
+            b.dstStageMask = dst;
+            b.dstAccessMask = dstAccess;
+            b.oldLayout = from;
+            b.newLayout = to;
+            b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            b.image = image.image;
+            b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, layers};
+            VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+            dep.imageMemoryBarrierCount = 1;
+            dep.pImageMemoryBarriers = &b;
+            vkCmdPipelineBarrier2(cmd, &dep);
+        };
+        // The bake left the atlas for fragment shaders; copy, then give it back.
+        barrier(VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
+                VK_ACCESS_2_TRANSFER_READ_BIT);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, layers};
+        region.imageExtent = {size, size, 1};
+        vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &region);
+        barrier(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    });
+    std::vector<uint8_t> out(readback.size);
+    std::memcpy(out.data(), readback.mapped, out.size());
+    destroyBuffer(ctx, readback);
+    return out;
+}
+
+struct Frame {
+    const uint8_t* texels; // kSize² RGBA
+    const uint8_t* at(uint32_t x, uint32_t y) const { return texels + (size_t(y) * kSize + x) * 4; }
+    uint8_t alpha(uint32_t x, uint32_t y) const { return at(x, y)[3]; }
+    bool covered(uint32_t x, uint32_t y) const { return alpha(x, y) >= 128; }
+};
+
+class ImpostorTest : public pf::test::GpuTest {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        pool = testPool();
+        vertices = createDeviceBufferWithData(ctx, pool.vertices.data(), pool.vertices.size() * sizeof(gpu::FieldVertex),
+                                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        indices = createDeviceBufferWithData(ctx, pool.indices.data(), pool.indices.size() * sizeof(uint32_t),
+                                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    }
+    void TearDown() override {
+        destroyImpostorAtlas(ctx, atlas);
+        destroyBuffer(ctx, vertices);
+        destroyBuffer(ctx, indices);
+        GpuTest::TearDown();
+    }
+    void bake() {
+        auto start = std::chrono::steady_clock::now();
+        atlas = bakeImpostorAtlas(ctx, pool, vertices, indices, {kSize, kFrames});
+        bakeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        color = readLayers(ctx, atlas.color, atlas.layers, 0);
+        normal = readLayers(ctx, atlas.normalDepth, atlas.layers, 0);
+    }
+    Frame colorFrame(uint32_t layer) const { return {color.data() + size_t(layer) * kSize * kSize * 4}; }
+    Frame normalFrame(uint32_t layer) const { return {normal.data() + size_t(layer) * kSize * kSize * 4}; }
+
+    // Column of plant-space point p in frame f, row of height y.
+    float column(glm::vec3 p, uint32_t f) const {
+        float halfWidth = pool.models[0].gpu.impostorQuad.x;
+        return (glm::dot(p, impostorRightAxis(f, kFrames)) / halfWidth * 0.5f + 0.5f) * kSize;
+    }
+    static float row(float y) { return (1.0f - y / kHeight) * kSize; }
+
+    PlantModelPool pool;
+    Buffer vertices, indices;
+    ImpostorAtlas atlas;
+    std::vector<uint8_t> color, normal;
+    double bakeSeconds = 0.0;
+};
+
+TEST_F(ImpostorTest, WritesImpostorAndQuadFieldsOfEveryModel) {
+    bake();
+    EXPECT_EQ(atlas.layers, 2 * kFrames);
+    EXPECT_EQ(atlas.mipLevels, 8u);
+    EXPECT_EQ(pool.models[0].gpu.impostor, glm::uvec4(0, kFrames, 3, 0));
+    EXPECT_EQ(pool.models[1].gpu.impostor, glm::uvec4(kFrames, kFrames, 1, 0));
+    const float radius = std::sqrt(kLeafX1 * kLeafX1 + kRadius * kRadius);
+    for (const PlantModelInfo& model : pool.models) {
+        EXPECT_NEAR(model.gpu.impostorQuad.x, radius, 1e-6f);
+        EXPECT_EQ(model.gpu.impostorQuad.y, 0.0f);
+        EXPECT_EQ(model.gpu.impostorQuad.z, kHeight);
+        EXPECT_NEAR(model.gpu.impostorQuad.w, radius, 1e-6f);
+    }
+    std::printf("bake of %u layers of %upx: %.3f s\n", atlas.layers, kSize, bakeSeconds);
+}
+
+TEST_F(ImpostorTest, CoverageIsNonEmptyAndInsideTheProjectedBox) {
+    bake();
+    for (uint32_t f = 0; f < kFrames; ++f) {
+        Frame frame = colorFrame(f);
+        // The box's extent along this frame's right axis, in columns.
+        float lo = kSize, hi = 0.0f;
+        for (float x : {-kRadius, kLeafX1})
+            for (float z : {-kRadius, kRadius}) {
+                lo = std::min(lo, column({x, 0, z}, f));
+                hi = std::max(hi, column({x, 0, z}, f));
+            }
+        uint32_t covered = 0, top = kSize, bottom = 0;
+        for (uint32_t y = 0; y < kSize; ++y)
+            for (uint32_t x = 0; x < kSize; ++x) {
+                if (frame.alpha(x, y) == 0) continue;
+                EXPECT_GE(float(x) + 1.0f, lo - 1.0f) << "frame " << f << " texel " << x << "," << y;
+                EXPECT_LE(float(x), hi + 1.0f) << "frame " << f << " texel " << x << "," << y;
+                if (!frame.covered(x, y)) continue;
+                ++covered;
+                top = std::min(top, y);
+                bottom = std::max(bottom, y);
+            }
+        EXPECT_GT(covered, 0u) << "frame " << f;
+        // The cylinder spans the box's full height.
+        EXPECT_LE(top, 1u) << "frame " << f;
+        EXPECT_GE(bottom, kSize - 2) << "frame " << f;
+    }
+}
+
+TEST_F(ImpostorTest, FrameFrom90DegreesDiffersFrom0) {
+    bake();
+    Frame front = colorFrame(0), side = colorFrame(kFrames / 4);
+    uint32_t covered = 0, differing = 0;
+    for (uint32_t y = 0; y < kSize; ++y)
+        for (uint32_t x = 0; x < kSize; ++x) {
+            covered += front.covered(x, y);
+            differing += front.covered(x, y) != side.covered(x, y);
+        }
+    // The leaf card, seen face on at 0°, is edge-on at 90°.
+    EXPECT_GT(differing, covered / 10) << covered << " covered at 0°";
+}
+
+TEST_F(ImpostorTest, LeafShowsLeafColourFromBothSidesWithNormalsFacingTheView) {
+    bake();
+    const glm::vec3 leafCentre(0.5f * (kLeafX0 + kLeafX1), 0.5f * (kLeafY0 + kLeafY1), 0.0f);
+    for (uint32_t f : {0u, kFrames / 2}) {
+        uint32_t x = uint32_t(column(leafCentre, f)), y = uint32_t(row(leafCentre.y));
+        const uint8_t* c = colorFrame(f).at(x, y);
+        EXPECT_EQ(c[3], 255) << "frame " << f;
+        EXPECT_GT(c[1], c[0] + 40) << "frame " << f;
+        EXPECT_GT(c[1], c[2] + 40) << "frame " << f;
+        // Plant-space normal +z seen from the front, -z from behind.
+        const uint8_t* n = normalFrame(f).at(x, y);
+        EXPECT_NEAR(n[0], 128, 2) << "frame " << f;
+        EXPECT_NEAR(n[1], 128, 2) << "frame " << f;
+        EXPECT_NEAR(n[2], f == 0 ? 255 : 0, 2) << "frame " << f;
+        // Depth: the card lies in the plane through the axis, mid-box.
+        EXPECT_NEAR(n[3], 128, 2) << "frame " << f;
+    }
+    // Bark below the leaf: brown, red above blue.
+    const uint8_t* bark = colorFrame(0).at(kSize / 2, uint32_t(row(0.5f)));
+    EXPECT_EQ(bark[3], 255);
+    EXPECT_GT(bark[0], bark[2] + 40);
+}
+
+TEST_F(ImpostorTest, CylinderSilhouetteHasTheExpectedWidth) {
+    bake();
+    const float expected = 2.0f * kRadius / (2.0f * pool.models[0].gpu.impostorQuad.x) * kSize;
+    for (uint32_t f = 0; f < kFrames; ++f) {
+        Frame frame = colorFrame(f);
+        uint32_t y = uint32_t(row(0.5f)), width = 0;
+        for (uint32_t x = 0; x < kSize; ++x) width += frame.covered(x, y);
+        EXPECT_NEAR(float(width), expected, 2.0f) << "frame " << f;
+    }
+}
+
+TEST_F(ImpostorTest, MipsKeepTheCoverage) {
+    bake();
+    const uint32_t level = 3, side = kSize >> level;
+    std::vector<uint8_t> mip = readLayers(ctx, atlas.color, atlas.layers, level);
+    for (uint32_t f = 0; f < kFrames; ++f) {
+        double full = 0.0, small = 0.0;
+        for (size_t i = 0; i < size_t(kSize) * kSize; ++i) full += colorFrame(f).texels[i * 4 + 3];
+        for (size_t i = 0; i < size_t(side) * side; ++i) small += mip[(size_t(f) * side * side + i) * 4 + 3];
+        EXPECT_NEAR(small * 64.0 / full, 1.0, 0.05) << "frame " << f;
+    }
+}
+
+TEST_F(ImpostorTest, TwoBakesAreIdentical) {
+    bake();
+    std::vector<uint8_t> firstColor = color, firstNormal = normal;
+    destroyImpostorAtlas(ctx, atlas);
+    bake();
+    EXPECT_TRUE(firstColor == color);
+    EXPECT_TRUE(firstNormal == normal);
+}
+
+// The frames of the test model side by side for a person to look at: albedo
+// over grey, normals, depth.
+TEST_F(ImpostorTest, WritesTheAtlasOfATestModelToPng) {
+    bake();
+    RgbaImage png{kSize * kFrames, kSize * 3, {}};
+    png.pixels.resize(size_t(png.width) * png.height * 4);
+    for (uint32_t f = 0; f < kFrames; ++f)
+        for (uint32_t y = 0; y < kSize; ++y)
+            for (uint32_t x = 0; x < kSize; ++x) {
+                const uint8_t* c = colorFrame(f).at(x, y);
+                const uint8_t* n = normalFrame(f).at(x, y);
+                const uint8_t background = uint8_t(96 * (255 - c[3]) / 255);
+                const uint8_t rows[3][3] = {{uint8_t(c[0] + background), uint8_t(c[1] + background),
+                                             uint8_t(c[2] + background)},
+                                            {n[0], n[1], n[2]},
+                                            {n[3], n[3], n[3]}};
+                for (uint32_t r = 0; r < 3; ++r) {
+                    uint8_t* out = &png.pixels[((size_t(r) * kSize + y) * png.width + f * kSize + x) * 4];
+                    std::memcpy(out, rows[r], 3);
+                    out[3] = 255;
+                }
+            }
+    const std::filesystem::path dir = std::filesystem::path(PLANTFIELD_TEST_OUTPUT_DIR) / "impostor_test";
+    std::filesystem::create_directories(dir);
+    writePng((dir / "test_model_atlas.png").string(), png);
+    std::printf("wrote %s\n", (dir / "test_model_atlas.png").string().c_str());
+}
+
+TEST(BillboardMesh, AppendsOneToThreeQuadsWithCornersAndUv) {
+    PlantModelPool pool;
+    pool.vertices.resize(5);
+    pool.indices.resize(7);
+    for (uint32_t quads = 1; quads <= 3; ++quads) {
+        const size_t verticesBefore = pool.vertices.size(), indicesBefore = pool.indices.size();
+        MeshRange range = appendBillboardMesh(pool, quads);
+        EXPECT_EQ(range.firstIndex, indicesBefore);
+        EXPECT_EQ(range.vertexOffset, verticesBefore);
+        EXPECT_EQ(range.indexCount, 6 * quads);
+        ASSERT_EQ(pool.vertices.size(), verticesBefore + 4 * quads);
+        ASSERT_EQ(pool.indices.size(), indicesBefore + 6 * quads);
+        for (uint32_t i = 0; i < range.indexCount; ++i) {
+            uint32_t index = pool.indices[range.firstIndex + i];
+            ASSERT_LT(index, 4 * quads);
+            // Each triangle stays within its quad.
+            EXPECT_EQ(index / 4, i / 6);
+        }
+        for (uint32_t v = 0; v < 4 * quads; ++v) {
+            const gpu::FieldVertex& vertex = pool.vertices[verticesBefore + v];
+            EXPECT_EQ(vertex.position.z, float(v / 4));
+            EXPECT_TRUE(vertex.position.x == -1.0f || vertex.position.x == 1.0f);
+            EXPECT_TRUE(vertex.position.y == 0.0f || vertex.position.y == 1.0f);
+            EXPECT_EQ(vertex.position.w, 0.5f * (vertex.position.x + 1.0f)); // u
+            EXPECT_EQ(vertex.normal.w, 1.0f - vertex.position.y);           // v: 0 at the top
+        }
+    }
+    EXPECT_THROW(appendBillboardMesh(pool, 0), std::runtime_error);
+    EXPECT_THROW(appendBillboardMesh(pool, 4), std::runtime_error);
+}
+
+TEST(ImpostorFrames, Frame0LooksAlongMinusZWithPlusXRight) {
+    EXPECT_NEAR(glm::distance(impostorViewDirection(0, 12), glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::distance(impostorRightAxis(0, 12), glm::vec3(1, 0, 0)), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::distance(impostorViewDirection(3, 12), glm::vec3(1, 0, 0)), 0.0f, 1e-6f);
+    EXPECT_NEAR(glm::distance(impostorRightAxis(3, 12), glm::vec3(0, 0, -1)), 0.0f, 1e-6f);
+    // right × up = toward the viewer: a right-handed view.
+    for (uint32_t f = 0; f < 12; ++f)
+        EXPECT_NEAR(glm::distance(glm::cross(impostorRightAxis(f, 12), glm::vec3(0, 1, 0)), impostorViewDirection(f, 12)),
+                    0.0f, 1e-6f);
+}
+
+} // namespace

@@ -1,0 +1,25 @@
+#include "field_render.h"
+
+namespace pf::test {
+
+FieldShotResult renderField(const GpuContext& ctx, const FieldShot& shot) {
+    const Scene scene = loadScene(std::string(PLANTFIELD_DATA_DIR) + "/scenes/" + shot.scene);
+    FieldRenderSettings settings;
+    settings.shadows = shot.shadows;
+    FieldShotResult result;
+    {
+        FieldRenderer renderer(ctx, buildFieldContent(scene), settings);
+        RenderTarget target = createRenderTarget(ctx, shot.size, renderer.samples());
+        FieldView view;
+        view.camera = shot.camera.value_or(cameraAt(scene.camera, shot.time));
+        view.time = float(shot.time);
+        view.forcedLod = shot.forcedLod;
+        renderer.setView(view, shot.size);
+        result.image = captureFrame(ctx, target, [&](VkCommandBuffer cmd, const RenderTarget& t) { renderer.record(cmd, t); });
+        result.stats = renderer.readStats();
+        destroyRenderTarget(ctx, target);
+    }
+    return result;
+}
+
+} // namespace pf::test

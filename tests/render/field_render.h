@@ -1,0 +1,28 @@
+// Renders scene files headless through the FieldRenderer for the render tests.
+#pragma once
+
+#include "engine/capture.h"
+#include "engine/field_renderer.h"
+
+#include <optional>
+#include <string>
+
+namespace pf::test {
+
+struct FieldShot {
+    std::string scene;             // file name in data/scenes
+    VkExtent2D size{640, 360};
+    double time = 0.0;
+    std::optional<Camera> camera;  // replaces the scene's camera path
+    std::optional<uint32_t> forcedLod;
+    bool shadows = true;
+};
+
+struct FieldShotResult {
+    RgbaImage image;
+    FieldFrameStats stats;
+};
+
+FieldShotResult renderField(const GpuContext& ctx, const FieldShot& shot);
+
+} // namespace pf::test

@@ -1,0 +1,54 @@
+#include "field_setup.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include <unistd.h>
+
+namespace pf {
+
+GpuOptions gpuOptions(const PlantfieldOptions& o) {
+    GpuOptions g;
+    g.validation = o.validation;
+    g.deviceName = o.deviceName;
+    return g;
+}
+
+FieldContent loadFieldContent(const PlantfieldOptions& o) {
+    const auto start = std::chrono::steady_clock::now();
+    Scene scene = loadScene(o.scenePath);
+    if (o.seed) scene.seed = *o.seed;
+    std::optional<size_t> count;
+    if (o.instances) count = size_t(*o.instances);
+    // Progress on a terminal only; logs get the summary line below.
+    const bool terminal = isatty(fileno(stderr));
+    FieldContent content = buildFieldContent(scene, count, [&](size_t done, size_t all, const std::string& name) {
+        if (!terminal) return;
+        std::fprintf(stderr, "\rplantfield: plant models %zu/%zu (%s)\x1b[K", done, all, name.c_str());
+        if (done == all) std::fprintf(stderr, "\r\x1b[K");
+    });
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "plantfield: %s: %zu plants of %zu species, %zu models, built in %.1f s\n",
+                 o.scenePath.c_str(), content.plants.size(), content.scene.species.size(),
+                 content.models.models.size(), seconds);
+    return content;
+}
+
+FieldRenderSettings renderSettings(const PlantfieldOptions& o) {
+    FieldRenderSettings s;
+    s.samples = VkSampleCountFlagBits(o.samples);
+    s.shadows = o.shadows;
+    return s;
+}
+
+FieldView pathView(const PlantfieldOptions& o, const Scene& scene, double t, double dt, bool firstFrame) {
+    FieldView view;
+    view.camera = cameraAt(scene.camera, t);
+    view.time = float(t);
+    view.deltaTime = float(dt);
+    view.firstFrame = firstFrame;
+    view.forcedLod = o.forcedLod;
+    return view;
+}
+
+} // namespace pf

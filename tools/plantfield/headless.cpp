@@ -1,0 +1,109 @@
+// Headless frames: one --capture, a --frames sequence, and --stats.
+#include "field_setup.h"
+#include "modes.h"
+
+#include "engine/capture.h"
+#include "engine/gpu_timer.h"
+#include "engine/image.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include <unistd.h>
+
+namespace pf {
+namespace {
+
+nlohmann::json statsJson(const PlantfieldOptions& o, const GpuContext& ctx, const FieldRenderer& renderer,
+                         const FieldFrameStats& stats, const std::vector<ScopeTime>& gpu, double time,
+                         double wallMs) {
+    const uint32_t drawn = stats.plantsPerLod[0] + stats.plantsPerLod[1] + stats.plantsPerLod[2];
+    nlohmann::json j;
+    j["scene"] = o.scenePath;
+    j["device"] = ctx.properties.deviceName;
+    j["size"] = {o.size.width, o.size.height};
+    j["time"] = time;
+    j["instances"] = stats.instances;
+    j["models"] = renderer.content().models.models.size();
+    j["plants_per_lod"] = {{"full", stats.plantsPerLod[LOD_FULL]},
+                           {"reduced", stats.plantsPerLod[LOD_REDUCED]},
+                           {"impostor", stats.plantsPerLod[LOD_IMPOSTOR]}};
+    // A fading plant is in two lists; the culled count is of plants in none.
+    j["visible_entries"] = drawn;
+    j["culled"] = stats.instances > drawn ? stats.instances - drawn : 0;
+    j["draws"] = {{"bark", stats.draws[DRAW_BARK]},
+                  {"foliage", stats.draws[DRAW_FOLIAGE]},
+                  {"impostor", stats.draws[DRAW_IMPOSTOR]}};
+    j["triangles"] = stats.triangles;
+    j["indirect_count"] = ctx.drawIndirectCount;
+    nlohmann::json ms = nlohmann::json::object();
+    double total = 0;
+    for (const ScopeTime& s : gpu) {
+        ms[s.name] = s.milliseconds;
+        // The draw scopes are nested inside "colour" (kFieldPasses).
+        if (s.name == "cull" || s.name == "shadow" || s.name == "colour") total += s.milliseconds;
+    }
+    ms["total"] = total;
+    j["gpu_ms"] = ms;
+    j["frame_wall_ms"] = wallMs;
+    j["gpu_bytes"] = renderer.gpuBytes();
+    return j;
+}
+
+std::string framePath(const std::string& dir, uint32_t index) {
+    char name[32];
+    std::snprintf(name, sizeof(name), "frame_%04u.png", index);
+    return (std::filesystem::path(dir) / name).string();
+}
+
+} // namespace
+
+int runHeadless(const PlantfieldOptions& o) {
+    FieldContent content = loadFieldContent(o);
+    const Scene scene = content.scene;
+    GpuContext ctx;
+    createHeadlessContext(ctx, gpuOptions(o));
+    const VkExtent2D extent{o.size.width, o.size.height};
+    {
+        FieldRenderer renderer(ctx, std::move(content), renderSettings(o));
+        RenderTarget target = createRenderTarget(ctx, extent, renderer.samples());
+        GpuTimer timer = createGpuTimer(ctx, 16);
+        if (!o.outDir.empty()) std::filesystem::create_directories(o.outDir);
+
+        const uint32_t frames = o.outDir.empty() ? 1 : o.frames;
+        const double step = 1.0 / o.fps;
+        double wallMs = 0, time = o.time;
+        for (uint32_t i = 0; i < frames; ++i) {
+            time = o.time + i * step;
+            renderer.setView(pathView(o, scene, time, i == 0 ? 0.0 : step, i == 0), extent);
+            const auto start = std::chrono::steady_clock::now();
+            const RgbaImage image = captureFrame(ctx, target, [&](VkCommandBuffer cmd, const RenderTarget& t) {
+                renderer.record(cmd, t, &timer);
+            });
+            wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            if (!o.outDir.empty()) {
+                writePng(framePath(o.outDir, i), image);
+                if (isatty(fileno(stderr))) std::fprintf(stderr, "\rplantfield: frame %u/%u", i + 1, frames);
+            }
+            if (!o.capturePath.empty() && i + 1 == frames) writePng(o.capturePath, image);
+        }
+        if (!o.outDir.empty()) std::fprintf(stderr, "\rplantfield: %u frames -> %s\n", frames, o.outDir.c_str());
+        const FieldFrameStats stats = renderer.readStats();
+        if (o.stats)
+            std::cout << statsJson(o, ctx, renderer, stats, readGpuTimer(ctx, timer), time, wallMs).dump(2) << "\n";
+        std::fprintf(stderr, "plantfield: %ux%u on %s: %u plants, %u full, %u reduced, %u impostors, %.1f M triangles%s%s\n",
+                     o.size.width, o.size.height, ctx.properties.deviceName, stats.instances, stats.plantsPerLod[0],
+                     stats.plantsPerLod[1], stats.plantsPerLod[2], double(stats.triangles) / 1e6,
+                     o.capturePath.empty() ? "" : " -> ", o.capturePath.c_str());
+        destroyGpuTimer(ctx, timer);
+        destroyRenderTarget(ctx, target);
+    }
+    destroyContext(ctx);
+    return 0;
+}
+
+} // namespace pf
