@@ -294,8 +294,9 @@ CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span
         const uint32_t m = inst.ids.x;
         const gpu::PlantModel& model = models[m];
         const glm::vec4 sphere = gpu::instanceSphere(inst, model);
-        const bool inside = gpu::sphereInFrustum(sphere, f[0], f[1], f[2], f[3], f[4], f[5]);
         const float pixels = gpu::projectedPixels(sphere, uniforms.camera);
+        const bool inside = gpu::sphereInFrustum(sphere, f[0], f[1], f[2], f[3], f[4], f[5]) &&
+                            gpu::largeEnoughToDraw(pixels, model, uniforms.counts.z);
         const uint32_t next = gpu::nextLodState(state[i], inside, pixels, model.lod, uniforms.counts.z,
                                                 uniforms.counts.w == 1u, uniforms.timing.x);
         state[i] = next;

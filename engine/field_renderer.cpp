@@ -50,6 +50,23 @@ Buffer uploadVector(const GpuContext& ctx, const std::vector<T>& data, VkBufferU
     return createDeviceBufferWithData(ctx, data.data(), data.size() * sizeof(T), usage);
 }
 
+// The drawn terrain keeps at most this many samples a side: far cells of a
+// finer grid are a pixel or two wide, and a CPU rasteriser pays per triangle.
+constexpr uint32_t kTerrainDrawSamples = 129;
+
+// Every k-th sample (k the smallest step that fits), edges kept.
+Heightfield decimated(const Heightfield& terrain, uint32_t maxSamples) {
+    const uint32_t step = (terrain.resolution - 1 + maxSamples - 2) / (maxSamples - 1);
+    if (step <= 1 || (terrain.resolution - 1) % step != 0) return terrain;
+    Heightfield coarse;
+    coarse.resolution = (terrain.resolution - 1) / step + 1;
+    coarse.size = terrain.size;
+    coarse.heights.reserve(size_t(coarse.resolution) * coarse.resolution);
+    for (uint32_t z = 0; z < coarse.resolution; ++z)
+        for (uint32_t x = 0; x < coarse.resolution; ++x) coarse.heights.push_back(terrain.height(x * step, z * step));
+    return coarse;
+}
+
 } // namespace
 
 FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const FieldRenderSettings& settings)
@@ -91,7 +108,7 @@ void FieldRenderer::uploadGeometry() {
     indices_ = uploadVector(ctx_, pool.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     atlas_ = bakeImpostorAtlas(ctx_, pool, vertices_, indices_, settings_.impostors);
 
-    const TerrainMesh mesh = makeTerrainMesh(content_.terrain);
+    const TerrainMesh mesh = makeTerrainMesh(decimated(content_.terrain, kTerrainDrawSamples));
     std::vector<gpu::TerrainVertex> terrain(mesh.positions.size());
     for (size_t i = 0; i < terrain.size(); ++i)
         terrain[i] = {glm::vec4(mesh.positions[i], 0.0f), glm::vec4(mesh.normals[i], 0.0f)};
@@ -251,10 +268,11 @@ void FieldRenderer::createPipelines() {
         desc.cullMode = cull;
         return createGraphicsPipeline(device, desc);
     };
-    // The sky covers the screen behind everything: no depth test or write.
-    desc.depthTest = desc.depthWrite = false;
+    // The sky lies on the far plane (depth 1, the clear value): drawn last,
+    // it fills what nothing else covered, and writes no depth.
+    desc.depthWrite = false;
     pipelines_.sky = make(sky, VK_CULL_MODE_NONE);
-    desc.depthTest = desc.depthWrite = true;
+    desc.depthWrite = true;
     pipelines_.terrain = make(terrain, VK_CULL_MODE_BACK_BIT);
     pipelines_.bark = make(plant, VK_CULL_MODE_BACK_BIT);
     pipelines_.foliage = make(plant, VK_CULL_MODE_NONE); // leaves are seen from both sides
@@ -333,14 +351,6 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
     const uint32_t colourPass = 0;
     vkCmdPushConstants(cmd, pipelineLayout_, kDrawStages, 0, sizeof(colourPass), &colourPass);
     {
-        Timed scope(cmd, timer, "terrain_sky");
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sky);
-        vkCmdDraw(cmd, 3, 1, 0, 0);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.terrain);
-        vkCmdBindIndexBuffer(cmd, terrainIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexed(cmd, terrainIndexCount_, 1, 0, 0, 0);
-    }
-    {
         Timed scope(cmd, timer, "plants");
         vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.bark);
@@ -356,6 +366,16 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.impostor);
             drawClassIndirect(cmd, ctx_, cull_, DRAW_IMPOSTOR);
         }
+    }
+    {
+        Timed scope(cmd, timer, "terrain_sky");
+        // Last, behind everything: only pixels no plant covers are shaded
+        // (the depth test runs before these shaders, which never discard).
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.terrain);
+        vkCmdBindIndexBuffer(cmd, terrainIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
+        vkCmdDrawIndexed(cmd, terrainIndexCount_, 1, 0, 0, 0);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sky);
+        vkCmdDraw(cmd, 3, 1, 0, 0);
     }
     endTargetPass(cmd, target);
 }

@@ -46,7 +46,7 @@ struct FieldFrameStats {
 
 // GPU timer scope names, in recording order. "colour" is the whole colour
 // pass; the three after it are nested inside it.
-inline constexpr const char* kFieldPasses[] = {"cull", "shadow", "colour", "terrain_sky", "plants", "impostors"};
+inline constexpr const char* kFieldPasses[] = {"cull", "shadow", "colour", "plants", "impostors", "terrain_sky"};
 
 class FieldRenderer {
 public:

@@ -12,18 +12,25 @@
 
 namespace pf {
 
+std::string partialPathOf(const std::string& path) { return path + ".partial"; }
+
+void finishPartialFile(const std::string& path) {
+    const std::string temporary = partialPathOf(path);
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        const std::string reason = std::strerror(errno);
+        std::remove(temporary.c_str());
+        throw std::runtime_error("cannot write '" + path + "': " + reason);
+    }
+}
+
 void writePng(const std::string& path, const RgbaImage& image) {
-    const std::string temporary = path + ".partial";
+    const std::string temporary = partialPathOf(path);
     const int stride = int(image.width * 4);
     if (!stbi_write_png(temporary.c_str(), int(image.width), int(image.height), 4, image.pixels.data(), stride)) {
         std::remove(temporary.c_str());
         throw std::runtime_error("cannot write PNG '" + path + "'");
     }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        const std::string reason = std::strerror(errno);
-        std::remove(temporary.c_str());
-        throw std::runtime_error("cannot write PNG '" + path + "': " + reason);
-    }
+    finishPartialFile(path);
 }
 
 RgbaImage readPng(const std::string& path) {

@@ -15,6 +15,12 @@ struct RgbaImage {
 
 // Writes through a temporary file renamed into place, so a failed write never
 // leaves a truncated PNG behind. Throws with the path on failure.
+// Output files are written to PATH.partial, then renamed onto PATH, so a
+// failure never leaves half a file and never clobbers an existing one.
+std::string partialPathOf(const std::string& path);
+// Renames PATH.partial onto PATH; on failure removes it and throws, naming PATH.
+void finishPartialFile(const std::string& path);
+
 void writePng(const std::string& path, const RgbaImage& image);
 // Throws with the path and stb's reason when the file cannot be read.
 RgbaImage readPng(const std::string& path);

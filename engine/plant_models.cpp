@@ -387,6 +387,7 @@ PlantModelInfo buildModel(PlantModelPool& pool, const Scene& scene, uint32_t spe
             info.meshes[lod][drawClass] = appendToPool(pool, lods[lod][drawClass]);
     fillBounds(info.gpu, lods);
     info.gpu.lod = glm::vec4(species.lod.reducedBelowPixels, species.lod.impostorBelowPixels, 0.1f, 0.25f);
+    info.gpu.boxMax.w = species.lod.hiddenBelowPixels;
     return info;
 }
 

@@ -90,6 +90,7 @@ struct LodHints {
     BillboardKind billboard = BillboardKind::Double;
     float reducedBelowPixels = 300.0f; // LOD0 → LOD1
     float impostorBelowPixels = 80.0f; // LOD1 → LOD2; never above reducedBelowPixels
+    float hiddenBelowPixels = 0.0f;    // not drawn at all when smaller; never above impostorBelowPixels
     bool operator==(const LodHints&) const = default;
 };
 

@@ -115,7 +115,7 @@ Placement readPlacement(const JsonNode& node, Placement inherited) {
 const char* const kBillboardNames[] = {"single", "double", "triple"};
 
 LodHints readLod(const JsonNode& node) {
-    requireObject(node, {"billboard", "reduced_below_px", "impostor_below_px"});
+    requireObject(node, {"billboard", "reduced_below_px", "impostor_below_px", "hidden_below_px"});
     LodHints lod;
     if (const std::optional<JsonNode> billboard = member(node, "billboard")) {
         const std::string name = readString(*billboard);
@@ -128,8 +128,11 @@ LodHints readLod(const JsonNode& node) {
     }
     readField(node, "reduced_below_px", lod.reducedBelowPixels, above(0.0));
     readField(node, "impostor_below_px", lod.impostorBelowPixels, above(0.0));
+    readField(node, "hidden_below_px", lod.hiddenBelowPixels, atLeast(0.0));
     if (lod.impostorBelowPixels > lod.reducedBelowPixels)
         failAt(node, "needs impostor_below_px ≤ reduced_below_px (impostors are the farthest level)");
+    if (lod.hiddenBelowPixels > lod.impostorBelowPixels)
+        failAt(node, "needs hidden_below_px ≤ impostor_below_px (hidden plants are farther than impostors)");
     return lod;
 }
 

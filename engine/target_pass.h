@@ -8,7 +8,7 @@
 namespace pf {
 
 // Begins dynamic rendering and sets a viewport with negative height, so
-// world and clip space stay y-up (pipeline.h: front faces are clockwise).
+// world and clip space stay y-up (pipeline.h: front faces are counter-clockwise).
 void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target);
 void endTargetPass(VkCommandBuffer cmd, const RenderTarget& target);
 

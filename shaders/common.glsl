@@ -31,13 +31,6 @@ vec3 shadeDiffuse(vec3 albedo, vec3 normal, float occlusion) {
     return albedo * (frame.sunRadiance.rgb * sun + ambient * occlusion);
 }
 
-vec3 applyFog(vec3 color, vec3 worldPos) {
-    vec3 toPoint = worldPos - frame.cameraPosition.xyz;
-    float dist = length(toPoint);
-    float amount = 1.0 - exp(-dist * frame.fog.x);
-    return mix(color, skyRadiance(normalize(vec3(toPoint.x, max(toPoint.y, 0.0), toPoint.z))), amount);
-}
-
 // Narkowicz's fit of the ACES filmic curve; the sRGB attachment encodes gamma.
 vec3 toneMap(vec3 x) {
     return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);

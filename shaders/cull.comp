@@ -44,6 +44,7 @@ void main() {
     bool inside = sphereInFrustum(sphere, cull.frustum[0], cull.frustum[1], cull.frustum[2], cull.frustum[3],
                                   cull.frustum[4], cull.frustum[5]);
     float pixels = projectedPixels(sphere, cull.camera);
+    inside = inside && largeEnoughToDraw(pixels, model, cull.counts.z);
     uint next = nextLodState(state[index], inside, pixels, model.lod, cull.counts.z, cull.counts.w == 1u,
                              cull.timing.x);
     state[index] = next;

@@ -70,17 +70,36 @@ vec3 plantNormalToWorld(FieldInstance inst, vec3 n) {
     return yawMatrix(inst.orientation.x) * n;
 }
 
+// A 4×4 Bayer threshold in (0, 1) per pixel: ordered dithering for the LOD
+// cross-fade and the impostor frame blend.
+float bayerThreshold(vec2 fragCoord) {
+    const float bayer[16] = float[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
+    ivec2 p = ivec2(fragCoord) & 3;
+    return (bayer[p.y * 4 + p.x] + 0.5) / 16.0;
+}
+
 // Dithered cross-fade: the outgoing LOD keeps the pixels whose threshold is
 // below its coverage, the incoming LOD exactly the others, so together they
 // cover each pixel once.
 bool fadeDiscards(vec2 fragCoord, uint packedFade) {
     float coverage = float(packedFade & 127u) / 127.0;
     if (coverage >= 1.0) return false;
-    const float bayer[16] = float[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
-    ivec2 p = ivec2(fragCoord) & 3;
-    float threshold = (bayer[p.y * 4 + p.x] + 0.5) / 16.0;
+    float threshold = bayerThreshold(fragCoord);
     bool fadeIn = (packedFade & 128u) != 0u;
     return fadeIn ? threshold < 1.0 - coverage : threshold >= coverage;
+}
+
+// Fog per vertex (rgb: the sky seen along the view ray, a: amount): it
+// changes slowly across a plant or a terrain cell, and the sky term is the
+// most expensive part of shading a far, small plant.
+vec4 vertexFog(vec3 worldPos) {
+    vec3 toPoint = worldPos - frame.cameraPosition.xyz;
+    float amount = 1.0 - exp(-length(toPoint) * frame.fog.x);
+    return vec4(skyRadiance(normalize(vec3(toPoint.x, max(toPoint.y, 0.0), toPoint.z))), amount);
+}
+
+vec3 applyVertexFog(vec3 color, vec4 fog) {
+    return mix(color, fog.rgb, fog.a);
 }
 
 // Sun visibility at a world position: 2×2 PCF of the shadow map, fully lit
@@ -92,16 +111,11 @@ float sunVisibility(vec3 worldPos, vec3 normal) {
     vec3 ndc = clip.xyz / clip.w;
     vec2 uv = ndc.xy * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0) return 1.0;
-    vec2 texel = 1.0 / vec2(textureSize(shadowMap, 0));
-    float bias = 0.0015;
-    float lit = 0.0;
-    for (int i = 0; i < 4; ++i) {
-        vec2 o = (vec2(i & 1, i >> 1) - 0.5) * texel;
-        lit += texture(shadowMap, vec3(uv + o, ndc.z - bias));
-    }
+    // One tap: the comparison sampler filters linearly, a 2×2 PCF.
+    float lit = texture(shadowMap, vec3(uv, ndc.z - 0.0015));
     // Fade the shadow out toward the map's edge so its border never shows.
     float edge = smoothstep(0.0, 0.08, min(min(uv.x, uv.y), min(1.0 - uv.x, 1.0 - uv.y)));
-    return mix(1.0, lit * 0.25, edge);
+    return mix(1.0, lit, edge);
 }
 
 // Sun (with shadow and, for thin foliage, light through the back), sky light.

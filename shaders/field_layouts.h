@@ -81,7 +81,7 @@ struct FieldInstance {
 struct PlantModel {
     vec4 sphere;       // bounding sphere in plant space: xyz centre, w radius (m, before instance scale)
     vec4 boxMin;       // plant-space bounds, w 0
-    vec4 boxMax;
+    vec4 boxMax;       // w: not drawn at all below this many pixels of projected height (0: always drawn)
     vec4 lod;          // x: LOD0→1 below this many pixels of projected height, y: LOD1→2 below, z: hysteresis fraction, w: fade seconds
     uvec4 lists;       // x, y, z: first visible-list entry of LOD 0, 1, 2; w: instances of this model (each list's capacity)
     uvec4 impostor;    // x: first atlas layer, y: frames around the plant, z: quads per billboard (1, 2, 3), w: 0

@@ -10,6 +10,7 @@ layout(location = 2) flat in uvec2 inLayers;
 layout(location = 3) flat in float inBlend;
 layout(location = 4) flat in uint inFade;
 layout(location = 5) flat in float inYaw;
+layout(location = 6) in vec4 inFog;
 layout(location = 0) out vec4 outColor;
 
 // Smaller mips average thin leaves below the 0.5 test; raising alpha with
@@ -18,15 +19,18 @@ const float kMipAlphaBoost = 0.35;
 
 void main() {
     float lod = max(textureQueryLod(atlasColor, inUv).y, 0.0);
-    vec4 color = mix(texture(atlasColor, vec3(inUv, inLayers.x)), texture(atlasColor, vec3(inUv, inLayers.y)), inBlend);
+    // Between two frames, each pixel shows one of them, dithered by the blend
+    // weight: half the texture fetches of a blend, and no ghosting.
+    float layer = float(bayerThreshold(gl_FragCoord.xy) < inBlend ? inLayers.y : inLayers.x);
+    vec4 color = texture(atlasColor, vec3(inUv, layer));
     if (color.a * (1.0 + kMipAlphaBoost * lod) < 0.5) discard;
     if (fadeDiscards(gl_FragCoord.xy, inFade)) discard;
-    vec4 normalDepth = mix(texture(atlasNormal, vec3(inUv, inLayers.x)), texture(atlasNormal, vec3(inUv, inLayers.y)), inBlend);
+    vec4 normalDepth = texture(atlasNormal, vec3(inUv, layer));
 
     vec3 albedo = color.rgb / color.a;
     vec3 n = normalize(normalDepth.rgb / color.a * 2.0 - 1.0);
     n = yawMatrix(inYaw) * n;
     // Impostors are mostly crown: foliage's occlusion and transmission.
     vec3 shaded = shadeField(albedo, n, inWorldPos, 0.75, kFoliageTransmission);
-    outColor = vec4(toneMap(applyFog(shaded, inWorldPos)), 1.0);
+    outColor = vec4(toneMap(applyVertexFog(shaded, inFog)), 1.0);
 }

@@ -17,6 +17,7 @@ layout(location = 2) flat out uvec2 outLayers; // the two frames blended
 layout(location = 3) flat out float outBlend;  // weight of outLayers.y
 layout(location = 4) flat out uint outFade;
 layout(location = 5) flat out float outYaw;
+layout(location = 6) out vec4 outFog;
 
 const float kTau = 6.28318531;
 
@@ -58,5 +59,6 @@ void main() {
     outUv = vec2(u, v.normal.w);
     outFade = packFade(p);
     outYaw = inst.orientation.x;
+    outFog = fieldPush.shadowPass != 0u ? vec4(0.0) : vertexFog(outWorldPos);
     gl_Position = passViewProj() * vec4(outWorldPos, 1.0);
 }

@@ -14,7 +14,8 @@ const float kMipAlphaBoost = 0.35; // as impostor.frag
 
 void main() {
     float lod = max(textureQueryLod(atlasColor, inUv).y, 0.0);
-    float alpha = mix(texture(atlasColor, vec3(inUv, inLayers.x)).a, texture(atlasColor, vec3(inUv, inLayers.y)).a, inBlend);
+    float layer = float(bayerThreshold(gl_FragCoord.xy) < inBlend ? inLayers.y : inLayers.x); // as impostor.frag
+    float alpha = texture(atlasColor, vec3(inUv, layer)).a;
     if (alpha * (1.0 + kMipAlphaBoost * lod) < 0.5) discard;
     if (fadeDiscards(gl_FragCoord.xy, inFade)) discard;
 }

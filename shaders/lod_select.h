@@ -61,6 +61,13 @@ LOD_SELECT_FN float projectedPixels(vec4 sphere, vec4 camera) {
     return 2.0f * sphere.w * camera.w / max(distance(vec3(camera), vec3(sphere)), 0.001f);
 }
 
+// Contribution culling: a plant smaller on screen than model.boxMax.w pixels
+// adds nothing but triangles (far grass), so it is treated as outside the
+// view. A forced LOD draws everything in view.
+LOD_SELECT_FN bool largeEnoughToDraw(float pixels, PlantModel model, uint forcedLod) {
+    return forcedLod != LOD_NOT_FORCED || pixels >= model.boxMax.w;
+}
+
 // LOD for a projected height against two thresholds (between 0|1 and 1|2).
 LOD_SELECT_FN uint lodForPixels(float pixels, float threshold01, float threshold12) {
     return pixels >= threshold01 ? 0u : (pixels >= threshold12 ? 1u : 2u);

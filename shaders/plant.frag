@@ -10,6 +10,7 @@ layout(location = 2) in vec3 inAlbedo;
 layout(location = 3) in vec2 inUv;
 layout(location = 4) flat in uint inFade;
 layout(location = 5) flat in float inKind;
+layout(location = 6) in vec4 inFog;
 layout(location = 0) out vec4 outColor;
 
 void main() {
@@ -23,5 +24,5 @@ void main() {
     // Foliage inside a crown sees less sky; bark near the ground too.
     float occlusion = foliage ? 0.75 : 0.85;
     vec3 color = shadeField(albedo, n, inWorldPos, occlusion, foliage ? kFoliageTransmission : 0.0);
-    outColor = vec4(toneMap(applyFog(color, inWorldPos)), 1.0);
+    outColor = vec4(toneMap(applyVertexFog(color, inFog)), 1.0);
 }

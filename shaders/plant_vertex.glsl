@@ -10,6 +10,7 @@ layout(location = 2) out vec3 outAlbedo;
 layout(location = 3) out vec2 outUv;
 layout(location = 4) flat out uint outFade;
 layout(location = 5) flat out float outKind;
+layout(location = 6) out vec4 outFog;
 
 void main() {
     VisiblePlant p = visiblePlant(gl_InstanceIndex);
@@ -22,5 +23,6 @@ void main() {
     outUv = vec2(v.position.w, v.normal.w);
     outFade = packFade(p);
     outKind = v.albedo.a;
+    outFog = fieldPush.shadowPass != 0u ? vec4(0.0) : vertexFog(outWorldPos);
     gl_Position = passViewProj() * vec4(outWorldPos, 1.0);
 }

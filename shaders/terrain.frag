@@ -6,6 +6,7 @@
 // steep slopes, lit by the sun (with the plants' shadows) and the sky.
 layout(location = 0) in vec3 inWorldPos;
 layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec4 inFog;
 layout(location = 0) out vec4 outColor;
 
 void main() {
@@ -17,5 +18,5 @@ void main() {
     float slope = 1.0 - n.y;
     vec3 albedo = mix(grass, earth, smoothstep(0.18, 0.35, slope + 0.1 * (patches - 0.5)));
     vec3 color = shadeField(albedo, n, inWorldPos, 1.0, 0.0);
-    outColor = vec4(toneMap(applyFog(color, inWorldPos)), 1.0);
+    outColor = vec4(toneMap(applyVertexFog(color, inFog)), 1.0);
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The main job: install, build, and render the built-in default scene to
+# The main job: install, build, and render the default forest (data/scenes/default.json) to
 # out/default.png (1280x720). Extra arguments go to plantfield, e.g.
 #   tools/run.sh --window        real-time view (also saves the last frame)
 set -euo pipefail

@@ -1,4 +1,5 @@
 // plantfield as a user runs it: captures, bad flags, the window under Xvfb.
+#include "bad_invocation.h"
 #include "golden.h"
 #include "run_command.h"
 
@@ -60,25 +61,11 @@ TEST(PlantfieldCli, SameInputsGiveBitIdenticalPng) {
     EXPECT_TRUE(a == b) << "two captures of the same frame differ";
 }
 
-struct BadInvocation {
-    const char* name;
-    const char* args;
-    const char* expectedInMessage;
-};
-
 class PlantfieldBadFlags : public ::testing::TestWithParam<BadInvocation> {};
 
 TEST_P(PlantfieldBadFlags, FailsClearlyWithoutWriting) {
     // One folder per case: ctest runs the cases in parallel.
-    const fs::path dir = scratchDir(std::string("bad-") + GetParam().name);
-    const std::string out = (dir / "out.png").string();
-    std::string args = GetParam().args;
-    if (const size_t at = args.find("OUT"); at != std::string::npos) args.replace(at, 3, out);
-    const CommandResult r = runCommand(kPlantfield + " " + args);
-    EXPECT_EQ(r.exitCode, 2) << r.output;
-    EXPECT_NE(r.output.find("error"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find(GetParam().expectedInMessage), std::string::npos) << r.output;
-    EXPECT_TRUE(fs::is_empty(dir)) << "a failed run left files behind";
+    expectFailsClearlyWithoutWriting(kPlantfield, GetParam(), scratchDir(std::string("bad-") + GetParam().name), "out.png");
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -89,8 +76,24 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"HugeSize", "--capture OUT --size 99999x10", "--size"},
                       BadInvocation{"MissingOutputFolder", "--capture /nonexistent-dir/x.png", "does not exist"},
                       BadInvocation{"UnsupportedSamples", "--capture OUT --samples 3", "samples"},
-                      BadInvocation{"NoOutputChosen", "--size 640x360", "nothing to do"}),
-    [](const ::testing::TestParamInfo<BadInvocation>& info) { return std::string(info.param.name); });
+                      BadInvocation{"NoOutputChosen", "--size 640x360", "nothing to do"},
+                      BadInvocation{"ZeroInstances", "--capture OUT --instances 0", "--instances"},
+                      BadInvocation{"TooManyInstances", "--capture OUT --instances 16777217", "--instances"},
+                      BadInvocation{"LodOutOfRange", "--capture OUT --lod 3", "--lod"},
+                      BadInvocation{"FramesWithoutOutDir", "--frames 5", "--out-dir"},
+                      BadInvocation{"UnknownScene", "/nonexistent/scene.json --capture OUT", "does not exist"}),
+    invocationName);
+
+TEST(PlantfieldCli, MalformedSceneNamesFileLineAndColumn) {
+    const fs::path dir = scratchDir("bad-scene");
+    const fs::path scene = dir / "broken.json";
+    { std::ofstream(scene) << "{\n  \"seed\": 1,\n  \"species\": [ { \"name\": \"x\", } ]\n}\n"; }
+    const fs::path out = dir / "out.png";
+    const CommandResult r = runCommand(kPlantfield + " " + scene.string() + " --capture " + out.string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("broken.json:3:"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+}
 
 TEST(PlantfieldCli, UnwritableOutputLeavesExistingFileUntouched) {
     const fs::path dir = scratchDir("readonly");

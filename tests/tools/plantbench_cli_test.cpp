@@ -1,0 +1,232 @@
+// plantbench as a user runs it: small sweeps with JSON, CSV and a plot, and
+// requests it must refuse clearly (bad flags, unknown scenes, huge counts).
+#include "bad_invocation.h"
+#include "run_command.h"
+
+#include "engine/field_renderer.h"
+#include "engine/image.h"
+#include "engine/scene.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace pf::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kPlantbench = PLANTBENCH_BIN;
+const std::string kSmallScene = std::string(PLANTFIELD_DATA_DIR) + "/scenes/test_small.json";
+const std::string kDefaultScene = std::string(PLANTFIELD_DATA_DIR) + "/scenes/default.json";
+
+fs::path scratchDir(const std::string& name) {
+    const fs::path dir = fs::path(PLANTFIELD_TEST_OUTPUT_DIR) / "plantbench" / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// Plants the scene places by hand: added on top of every requested count.
+size_t explicitPlants(const std::string& scenePath) {
+    size_t plants = 0;
+    for (const Species& s : loadScene(scenePath).species)
+        if (s.placement.mode == PlacementMode::Explicit) plants += s.placement.instances.size();
+    return plants;
+}
+
+void expectSpread(const nlohmann::json& spread, const std::string& what) {
+    ASSERT_TRUE(spread.is_object()) << what << ": " << spread;
+    ASSERT_TRUE(spread["median"].is_number()) << what;
+    ASSERT_TRUE(spread["p95"].is_number()) << what;
+    EXPECT_GE(spread["median"].get<double>(), 0.0) << what;
+    EXPECT_GE(spread["p95"].get<double>(), spread["median"].get<double>()) << what;
+}
+
+// Every pass of kFieldPasses timed, plant counts those asked for plus the
+// scene's hand-placed plants, naive present with its ratio when asked for.
+void expectWellFormedSweep(const nlohmann::json& j, const std::string& scene, const std::vector<uint64_t>& counts,
+                           bool naive) {
+    EXPECT_EQ(j["scene"], scene);
+    EXPECT_TRUE(j["device"].is_string());
+    EXPECT_TRUE(j["memory_source"] == "VK_EXT_memory_budget" || j["memory_source"] == "renderer accounting")
+        << j["memory_source"];
+    ASSERT_EQ(j["results"].size(), counts.size());
+    const size_t byHand = explicitPlants(scene);
+    for (size_t i = 0; i < counts.size(); ++i) {
+        const nlohmann::json& r = j["results"][i];
+        const std::string at = std::to_string(counts[i]) + " plants";
+        EXPECT_EQ(r["count"], counts[i]) << at;
+        EXPECT_EQ(r["instances"], counts[i] + byHand) << at;
+        expectSpread(r["frame_ms"], at + " frame_ms");
+        expectSpread(r["cpu_ms"], at + " cpu_ms");
+        for (const char* pass : kFieldPasses) expectSpread(r["gpu_ms"][pass], at + " gpu_ms." + pass);
+        uint64_t drawn = 0;
+        for (const char* lod : {"full", "reduced", "impostor"}) drawn += r["plants_per_lod"][lod].get<uint64_t>();
+        EXPECT_GT(drawn, 0u) << at;
+        EXPECT_LE(r["culled"].get<uint64_t>(), counts[i] + byHand) << at;
+        EXPECT_GT(r["triangles"].get<uint64_t>(), 0u) << at;
+        EXPECT_GT(r["gpu_memory_bytes"].get<uint64_t>(), 0u) << at;
+        if (naive) {
+            ASSERT_TRUE(r["naive"].is_object()) << at;
+            expectSpread(r["naive"]["frame_ms"], at + " naive frame_ms");
+            EXPECT_GE(r["naive"]["triangles"].get<uint64_t>(), r["triangles"].get<uint64_t>()) << at;
+            EXPECT_NEAR(r["ratio"].get<double>(),
+                        r["naive"]["frame_ms"]["median"].get<double>() / r["frame_ms"]["median"].get<double>(), 1e-9);
+        } else {
+            EXPECT_TRUE(r["naive"].is_null()) << at;
+            EXPECT_TRUE(r["ratio"].is_null()) << at;
+        }
+    }
+}
+
+std::vector<std::vector<std::string>> csvRows(const std::string& text) {
+    std::vector<std::vector<std::string>> rows;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+        std::vector<std::string> cells;
+        std::istringstream fields(line);
+        for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+        if (!line.empty() && line.back() == ',') cells.push_back("");
+        rows.push_back(cells);
+    }
+    return rows;
+}
+
+TEST(PlantbenchCli, SmallSweepWritesJsonAndCsvWithEveryPass) {
+    const fs::path dir = scratchDir("small");
+    const fs::path json = dir / "sweep.json", csv = dir / "sweep.csv";
+    const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
+                                       " --validation --counts 50,200 --frames 2 --warmup 1 --size 160x90"
+                                       " --compare naive --json " + json.string() + " --csv " + csv.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("ratio"), std::string::npos) << "no summary table:\n" << r.output;
+
+    const nlohmann::json j = nlohmann::json::parse(readText(json));
+    EXPECT_EQ(j["frames"], 2);
+    EXPECT_EQ(j["warmup"], 1);
+    EXPECT_EQ(j["size"], nlohmann::json({160, 90}));
+    expectWellFormedSweep(j, kSmallScene, {50, 200}, true);
+
+    const auto rows = csvRows(readText(csv));
+    ASSERT_EQ(rows.size(), 3u) << "a header and one row per count";
+    EXPECT_EQ(rows[0][0], "count");
+    for (const char* pass : kFieldPasses)
+        EXPECT_NE(std::find(rows[0].begin(), rows[0].end(), std::string("gpu_") + pass + "_ms_median"), rows[0].end())
+            << pass;
+    for (size_t i = 1; i < rows.size(); ++i) ASSERT_EQ(rows[i].size(), rows[0].size()) << "row " << i;
+    EXPECT_EQ(rows[1][0], "50");
+    EXPECT_EQ(rows[2][0], "200");
+    EXPECT_EQ(rows[2][1], std::to_string(200 + explicitPlants(kSmallScene)));
+}
+
+TEST(PlantbenchCli, DefaultSceneSweepMatchesCounts) {
+    const fs::path json = scratchDir("default") / "sweep.json";
+    const CommandResult r = runCommand(kPlantbench + " --counts 100,300 --frames 2 --warmup 1 --size 160x90 --json " +
+                                       json.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    expectWellFormedSweep(nlohmann::json::parse(readText(json)), kDefaultScene, {100, 300}, false);
+}
+
+TEST(PlantbenchCli, NaiveAboveNaiveMaxIsSkippedWithANote) {
+    const fs::path json = scratchDir("naive-max") / "sweep.json";
+    const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
+                                       " --counts 30,60 --frames 1 --warmup 0 --size 64x64 --compare naive"
+                                       " --naive-max 40 --json " + json.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json j = nlohmann::json::parse(readText(json));
+    EXPECT_TRUE(j["results"][0]["naive"].is_object());
+    EXPECT_TRUE(j["results"][1]["naive"].is_null());
+    EXPECT_TRUE(j["results"][1]["ratio"].is_null());
+    EXPECT_NE(j["results"][1]["note"].get<std::string>().find("--naive-max"), std::string::npos);
+}
+
+TEST(PlantbenchCli, PlotWritesReadablePng) {
+    ASSERT_EQ(runCommand("command -v gnuplot").exitCode, 0) << "gnuplot is missing: run tools/deps.sh";
+    const fs::path dir = scratchDir("plot");
+    const fs::path png = dir / "sweep.png";
+    const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
+                                       " --counts 20,40 --frames 1 --warmup 0 --size 64x64 --compare naive --plot " +
+                                       png.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const RgbaImage image = readPng(png.string());
+    EXPECT_GE(image.width, 800u);
+    EXPECT_GE(image.height, 800u);
+    // Drawn, not blank: some pixels are far from the white background.
+    size_t dark = 0;
+    for (size_t p = 0; p < image.pixels.size(); p += 4) dark += image.pixels[p] + image.pixels[p + 1] < 200;
+    EXPECT_GT(dark, 1000u);
+    for (const auto& entry : fs::directory_iterator(dir))
+        EXPECT_EQ(entry.path(), png) << "left behind: " << entry.path();
+}
+
+class PlantbenchBadFlags : public ::testing::TestWithParam<BadInvocation> {};
+
+TEST_P(PlantbenchBadFlags, ExitTwoWithoutWriting) {
+    expectFailsClearlyWithoutWriting(kPlantbench, GetParam(), scratchDir(std::string("bad-") + GetParam().name), "out");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Flags, PlantbenchBadFlags,
+    ::testing::Values(BadInvocation{"UnknownOption", "--counts 10 --json OUT.json --frobnicate", "frobnicate"},
+                      BadInvocation{"NoCounts", "--json OUT.json", "--counts"},
+                      BadInvocation{"EmptyCounts", "--counts '' --json OUT.json", "--counts"},
+                      BadInvocation{"ZeroCount", "--counts 10,0 --json OUT.json", "at least 1"},
+                      BadInvocation{"MalformedCounts", "--counts 10,x5 --json OUT.json", "x5"},
+                      BadInvocation{"DoubleComma", "--counts 10,,20 --csv OUT.csv", "--counts"},
+                      BadInvocation{"CountAboveFieldMaximum", "--counts 16777217 --json OUT.json", "16777216"},
+                      BadInvocation{"ZeroFrames", "--counts 10 --frames 0 --json OUT.json", "--frames"},
+                      BadInvocation{"MalformedSize", "--counts 10 --size 640by360 --json OUT.json", "--size"},
+                      BadInvocation{"UnknownCompare", "--counts 10 --compare fancy --json OUT.json", "--compare"},
+                      BadInvocation{"MissingOutputFolder", "--counts 10 --json OUT/missing/x.json", "does not exist"},
+                      BadInvocation{"UnknownScene", "OUT/nosuch.json --counts 10", "does not exist"}),
+    invocationName);
+
+TEST(PlantbenchCli, MalformedSceneFailsClearlyWithoutWriting) {
+    const fs::path dir = scratchDir("bad-scene");
+    const fs::path scene = dir / "broken.json";
+    std::ofstream(scene) << "{\n  \"species\": [ { \"name\": 3 } ]\n}\n";
+    const CommandResult r = runCommand(kPlantbench + " " + scene.string() + " --counts 10 --json " +
+                                       (dir / "out.json").string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("broken.json:"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "out.json"));
+}
+
+TEST(PlantbenchCli, UnwritableOutputLeavesExistingFileUntouched) {
+    const fs::path dir = scratchDir("readonly");
+    const fs::path out = dir / "keep.json";
+    { std::ofstream(out) << "precious"; }
+    fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec);
+    fs::permissions(out, fs::perms::owner_read);
+    const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
+                                       " --counts 10 --frames 1 --warmup 0 --size 32x32 --json " + out.string());
+    fs::permissions(dir, fs::perms::owner_all);
+    // Root may write anywhere; then the file must have been replaced whole.
+    if (r.exitCode != 0) {
+        EXPECT_EQ(r.exitCode, 2) << r.output;
+        EXPECT_EQ(readText(out), "precious");
+    } else {
+        EXPECT_NO_THROW(nlohmann::json::parse(readText(out)));
+    }
+}
+
+TEST(PlantbenchCli, HelpListsEveryOption) {
+    const CommandResult r = runCommand(kPlantbench + " --help");
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* flag : {"--counts", "--frames", "--warmup", "--size", "--samples", "--no-shadows", "--compare",
+                             "--naive-max", "--json", "--csv", "--plot", "--seed", "--device", "--validation"})
+        EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
+}
+
+} // namespace
+} // namespace pf::test

@@ -1,0 +1,148 @@
+#include "plantbench_options.h"
+
+#include "tools/plantfield/options.h"
+
+#include "engine/device.h"
+#include "engine/image.h"
+#include "shaders/field_layouts.h"
+
+#include <CLI/CLI.hpp>
+
+#include <charconv>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <unistd.h>
+
+namespace pf {
+
+std::optional<std::vector<uint64_t>> parseCounts(const std::string& text, uint64_t maxCount, std::string* problem) {
+    if (text.empty()) {
+        *problem = "expected a comma-separated list of plant counts, e.g. 1000,10000";
+        return std::nullopt;
+    }
+    std::vector<uint64_t> counts;
+    size_t start = 0;
+    while (true) {
+        const size_t comma = std::min(text.find(',', start), text.size());
+        const char* first = text.data() + start;
+        const char* last = text.data() + comma;
+        uint64_t count = 0;
+        auto [end, ec] = std::from_chars(first, last, count);
+        if (first == last || ec != std::errc() || end != last) {
+            *problem = "'" + std::string(first, last) + "' is not a whole number";
+            return std::nullopt;
+        }
+        if (count == 0) {
+            *problem = "a count must be at least 1";
+            return std::nullopt;
+        }
+        if (count > maxCount) {
+            *problem = std::to_string(count) + " is above the most plants a field can hold (" +
+                       std::to_string(maxCount) + ")";
+            return std::nullopt;
+        }
+        counts.push_back(count);
+        if (comma == text.size()) return counts;
+        start = comma + 1;
+    }
+}
+
+namespace {
+
+bool onPath(const std::string& program) {
+    const char* path = std::getenv("PATH");
+    if (!path) return false;
+    std::string dirs = path;
+    size_t start = 0;
+    while (start <= dirs.size()) {
+        const size_t colon = std::min(dirs.find(':', start), dirs.size());
+        const std::filesystem::path candidate = std::filesystem::path(dirs.substr(start, colon - start)) / program;
+        if (access(candidate.c_str(), X_OK) == 0) return true;
+        start = colon + 1;
+    }
+    return false;
+}
+
+} // namespace
+
+std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, int* exitCode) {
+    PlantbenchOptions o;
+    o.validation = validationWantedByDefault();
+    o.scenePath = defaultScenePath();
+    std::string countsText, sizeText = "1280x720";
+
+    CLI::App app{"plantbench: measures how the GPU-driven field frame's cost grows with the number of plants\n"
+                 "(docs/PLANTBENCH.md). For each count it builds the scene's field with that many plants, renders\n"
+                 "warm-up frames, then times the measured frames: GPU ms per pass, frame wall time, plants per LOD."};
+    app.footer("Examples:\n"
+               "  plantbench --counts 1000,10000,100000 --compare naive\n"
+               "  plantbench data/scenes/default.json --counts 1000,10000 --json sweep.json --csv sweep.csv "
+               "--plot sweep.png\n"
+               "Environment: PLANTFIELD_DEVICE picks the device by name, PLANTFIELD_VALIDATION=1 turns on\n"
+               "the Khronos validation layer, PLANTFIELD_DATA_DIR replaces the data folder.");
+    app.add_option("scene", o.scenePath, "Scene file (.json)")->default_str("data/scenes/default.json");
+    app.add_option("--counts", countsText, "Plant counts to measure, comma-separated, e.g. 1000,10000,100000")
+        ->required();
+    app.add_option("--frames", o.frames, "Measured frames per count")->check(CLI::Range(1u, 100000u))
+        ->default_val(o.frames);
+    app.add_option("--warmup", o.warmup, "Frames rendered before measuring (shaders compile on the first)")
+        ->check(CLI::Range(0u, 100000u))->default_val(o.warmup);
+    app.add_option("--size", sizeText, "Render size as WIDTHxHEIGHT (1 to 16384 per side)")->default_str(sizeText);
+    app.add_option("--samples", o.samples, "Multisample anti-aliasing samples")->check(CLI::IsMember({1, 2, 4, 8}))
+        ->default_val(o.samples);
+    app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
+    app.add_option("--time", o.time, "Scene time of the camera on the scene's camera path, seconds")
+        ->check(CLI::NonNegativeNumber)->default_val(o.time);
+    std::string compare;
+    app.add_option("--compare", compare, "Also render every count the naive way (full detail, one draw per plant)")
+        ->check(CLI::IsMember({"naive"}));
+    app.add_option("--naive-max", o.naiveMax, "Skip the naive path above this many plants")
+        ->check(CLI::PositiveNumber)->default_val(o.naiveMax);
+    app.add_option("--json", o.jsonPath, "Write the results as JSON to this file");
+    app.add_option("--csv", o.csvPath, "Write one row per count as CSV to this file");
+    app.add_option("--plot", o.plotPath, "Draw ms per pass against plants (log-log) to this PNG with gnuplot");
+    app.add_option("--seed", o.seed, "Replace the scene's seed (terrain, plants and placement change)");
+    app.add_option("--device", o.deviceName, "Use the Vulkan device whose name contains this text");
+    app.add_flag("--validation,!--no-validation", o.validation,
+                 "Enable the Khronos validation layer (default: on in debug builds)");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) {
+            *exitCode = app.exit(e);
+            return std::nullopt;
+        }
+        std::cerr << "plantbench: error: " << e.what() << "\nRun 'plantbench --help' for usage.\n";
+        *exitCode = 2;
+        return std::nullopt;
+    }
+
+    auto fail = [&](const std::string& message) {
+        std::cerr << "plantbench: error: " << message << "\n";
+        *exitCode = 2;
+        return std::nullopt;
+    };
+    std::string problem;
+    const auto counts = parseCounts(countsText, FIELD_MAX_INSTANCES, &problem);
+    if (!counts) return fail("invalid --counts '" + countsText + "': " + problem);
+    o.counts = *counts;
+    const std::optional<ImageSize> size = parseImageSize(sizeText);
+    if (!size) return fail("invalid --size '" + sizeText + "': expected WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720");
+    o.width = size->width;
+    o.height = size->height;
+    o.compareNaive = compare == "naive";
+    if (!std::filesystem::is_regular_file(o.scenePath))
+        return fail("scene file '" + o.scenePath + "' does not exist or is not a file");
+    for (auto [flag, path] : {std::pair{"--json", &o.jsonPath}, {"--csv", &o.csvPath}, {"--plot", &o.plotPath}}) {
+        if (path->empty()) continue;
+        const std::string pathProblem = outputPathProblem(*path);
+        if (!pathProblem.empty()) return fail(std::string("cannot write ") + flag + " file: " + pathProblem);
+    }
+    if (!o.plotPath.empty() && !onPath("gnuplot"))
+        return fail("--plot needs gnuplot, which is not on PATH: install Debian's gnuplot-nox (tools/deps.sh)");
+    return o;
+}
+
+} // namespace pf

@@ -1,0 +1,37 @@
+// Command-line options of plantbench, parsed and checked before any GPU work.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pf {
+
+// "1000,10000" → {1000, 10000}; nullopt when empty, malformed, zero, or a
+// count above `maxCount`. `problem` says which.
+std::optional<std::vector<uint64_t>> parseCounts(const std::string& text, uint64_t maxCount, std::string* problem);
+
+struct PlantbenchOptions {
+    std::string scenePath;
+    std::vector<uint64_t> counts; // plants per sweep step, in the order given
+    uint32_t frames = 10;         // measured frames per count (and per path)
+    uint32_t warmup = 2;          // frames rendered first and not measured
+    uint32_t width = 1280, height = 720;
+    uint32_t samples = 4;
+    bool shadows = true;
+    double time = 0.0;            // scene time of the camera on its path
+    bool compareNaive = false;
+    uint64_t naiveMax = 100000;   // counts above this skip the naive path
+    std::string jsonPath, csvPath, plotPath;
+    std::optional<uint32_t> seed;
+    std::string deviceName;
+    bool validation = false;
+};
+
+// Parses argv. On --help prints usage and sets *exitCode to 0; on a bad flag
+// prints a clear error and sets *exitCode to 2. Returns nullopt whenever the
+// program should exit with *exitCode.
+std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, int* exitCode);
+
+} // namespace pf

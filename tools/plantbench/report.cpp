@@ -1,0 +1,184 @@
+#include "report.h"
+
+#include "engine/image.h"
+
+#include "gpu_memory.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace pf {
+
+std::optional<double> naiveRatio(const CountResult& r) {
+    if (!r.naive || r.driven.frameMs.median <= 0.0) return std::nullopt;
+    return r.naive->frameMs.median / r.driven.frameMs.median;
+}
+
+namespace {
+
+const char* const kLodNames[LOD_COUNT] = {"full", "reduced", "impostor"};
+const char* const kDrawClassNames[DRAW_CLASS_COUNT] = {"bark", "foliage", "impostor"};
+
+uint32_t drawnEntries(const FieldFrameStats& s) { return s.plantsPerLod[0] + s.plantsPerLod[1] + s.plantsPerLod[2]; }
+// A fading plant is in two lists; culled counts the plants in none.
+uint32_t culled(const FieldFrameStats& s) { return s.instances > drawnEntries(s) ? s.instances - drawnEntries(s) : 0; }
+
+std::string fixed(double value, int decimals) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.*f", decimals, value);
+    return text;
+}
+
+std::string cell(const std::optional<double>& value, int decimals) { return value ? fixed(*value, decimals) : "-"; }
+
+std::optional<double> medianOf(const std::optional<Spread>& s) {
+    return s ? std::optional<double>(s->median) : std::nullopt;
+}
+
+std::optional<double> p95Of(const std::optional<Spread>& s) {
+    return s ? std::optional<double>(s->p95) : std::nullopt;
+}
+
+nlohmann::json spreadJson(const std::optional<Spread>& s) {
+    if (!s) return nullptr;
+    return {{"median", s->median}, {"p95", s->p95}};
+}
+
+nlohmann::json gpuJson(const PathTimes& t) {
+    nlohmann::json j = nlohmann::json::object();
+    for (size_t p = 0; p < kPassCount; ++p) j[kFieldPasses[p]] = spreadJson(t.gpuMs[p]);
+    return j;
+}
+
+nlohmann::json countJson(const CountResult& r) {
+    nlohmann::json j;
+    j["count"] = r.count;
+    j["instances"] = r.stats.instances;
+    j["frame_ms"] = spreadJson(r.driven.frameMs);
+    j["cpu_ms"] = spreadJson(r.driven.cpuMs);
+    j["gpu_ms"] = gpuJson(r.driven);
+    j["plants_per_lod"] = nlohmann::json::object();
+    for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) j["plants_per_lod"][kLodNames[lod]] = r.stats.plantsPerLod[lod];
+    j["culled"] = culled(r.stats);
+    j["triangles"] = r.stats.triangles;
+    j["draws"] = nlohmann::json::object();
+    for (uint32_t c = 0; c < DRAW_CLASS_COUNT; ++c) j["draws"][kDrawClassNames[c]] = r.stats.draws[c];
+    j["gpu_memory_bytes"] = r.gpuMemoryBytes;
+    j["renderer_bytes"] = r.rendererBytes;
+    j["build_s"] = r.buildSeconds;
+    if (r.naive)
+        j["naive"] = {{"frame_ms", spreadJson(r.naive->frameMs)},
+                      {"cpu_ms", spreadJson(r.naive->cpuMs)},
+                      {"gpu_ms", gpuJson(*r.naive)},
+                      {"triangles", r.naiveTriangles}};
+    else
+        j["naive"] = nullptr;
+    const std::optional<double> ratio = naiveRatio(r);
+    j["ratio"] = ratio ? nlohmann::json(*ratio) : nlohmann::json(nullptr);
+    j["note"] = r.note.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.note);
+    return j;
+}
+
+} // namespace
+
+void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const SweepResult& result) {
+    std::vector<std::string> headers = {"count", "frame ms", "p95", "cpu ms"};
+    for (const char* pass : kFieldPasses) headers.push_back(std::string(pass) + " ms");
+    for (const char* lod : kLodNames) headers.push_back(lod);
+    for (const char* h : {"triangles", "memory", "naive ms", "ratio"}) headers.push_back(h);
+
+    std::vector<std::vector<std::string>> rows;
+    for (const CountResult& r : result.counts) {
+        std::vector<std::string> row = {std::to_string(r.count), fixed(r.driven.frameMs.median, 2),
+                                        fixed(r.driven.frameMs.p95, 2), fixed(r.driven.cpuMs.median, 2)};
+        for (const std::optional<Spread>& pass : r.driven.gpuMs) row.push_back(cell(medianOf(pass), 3));
+        for (uint32_t plants : r.stats.plantsPerLod) row.push_back(std::to_string(plants));
+        row.push_back(std::to_string(r.stats.triangles));
+        row.push_back(formatBytes(r.gpuMemoryBytes));
+        row.push_back(r.naive ? fixed(r.naive->frameMs.median, 2) : "-");
+        row.push_back(cell(naiveRatio(r), 1));
+        rows.push_back(row);
+    }
+    std::vector<size_t> widths(headers.size());
+    for (size_t c = 0; c < headers.size(); ++c) {
+        widths[c] = headers[c].size();
+        for (const auto& row : rows) widths[c] = std::max(widths[c], row[c].size());
+    }
+    auto printRow = [&](const std::vector<std::string>& row) {
+        for (size_t c = 0; c < row.size(); ++c)
+            out << (c ? "  " : "") << std::string(widths[c] - row[c].size(), ' ') << row[c];
+        out << "\n";
+    };
+    out << "plantbench: " << result.scenePath << " on " << result.device << ", " << o.width << "x" << o.height << ", "
+        << o.samples << "x MSAA, shadows " << (o.shadows ? "on" : "off") << ", median of " << o.frames
+        << " frames after " << o.warmup << " warm-up\n";
+    printRow(headers);
+    for (const auto& row : rows) printRow(row);
+    out << "frame ms, p95: wall time per frame (median, 95th percentile); cpu ms: host time to record it; "
+           "pass columns: GPU ms (median); memory: "
+        << result.memorySource << "; ratio: naive frame ms / GPU-driven frame ms\n";
+    for (const CountResult& r : result.counts)
+        if (!r.note.empty()) out << r.count << " plants: " << r.note << "\n";
+}
+
+nlohmann::json sweepJson(const PlantbenchOptions& o, const SweepResult& result) {
+    nlohmann::json j;
+    j["scene"] = result.scenePath;
+    j["device"] = result.device;
+    j["size"] = {o.width, o.height};
+    j["samples"] = o.samples;
+    j["shadows"] = o.shadows;
+    j["time"] = o.time;
+    j["frames"] = o.frames;
+    j["warmup"] = o.warmup;
+    j["memory_source"] = result.memorySource;
+    j["results"] = nlohmann::json::array();
+    for (const CountResult& r : result.counts) j["results"].push_back(countJson(r));
+    return j;
+}
+
+std::string sweepCsv(const SweepResult& result) {
+    std::ostringstream csv;
+    csv << "count,instances,frame_ms_median,frame_ms_p95,cpu_ms_median,cpu_ms_p95";
+    for (const char* pass : kFieldPasses) csv << ",gpu_" << pass << "_ms_median,gpu_" << pass << "_ms_p95";
+    csv << ",plants_full,plants_reduced,plants_impostor,culled,triangles,draws_bark,draws_foliage,draws_impostor"
+           ",gpu_memory_bytes,naive_frame_ms_median,naive_frame_ms_p95,naive_triangles,ratio\n";
+    auto ms = [](const std::optional<double>& v) { return v ? fixed(*v, 4) : std::string(); };
+    for (const CountResult& r : result.counts) {
+        csv << r.count << "," << r.stats.instances << "," << ms(r.driven.frameMs.median) << ","
+            << ms(r.driven.frameMs.p95) << "," << ms(r.driven.cpuMs.median) << "," << ms(r.driven.cpuMs.p95);
+        for (const std::optional<Spread>& pass : r.driven.gpuMs)
+            csv << "," << ms(medianOf(pass)) << "," << ms(p95Of(pass));
+        for (uint32_t plants : r.stats.plantsPerLod) csv << "," << plants;
+        csv << "," << culled(r.stats) << "," << r.stats.triangles;
+        for (uint32_t draws : r.stats.draws) csv << "," << draws;
+        csv << "," << r.gpuMemoryBytes;
+        if (r.naive)
+            csv << "," << ms(r.naive->frameMs.median) << "," << ms(r.naive->frameMs.p95) << "," << r.naiveTriangles;
+        else
+            csv << ",,,";
+        csv << "," << ms(naiveRatio(r)) << "\n";
+    }
+    return csv.str();
+}
+
+void writeTextFile(const std::string& path, const std::string& text) {
+    const std::string temporary = partialPathOf(path);
+    {
+        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+        file << text;
+        file.flush();
+        if (!file) {
+            std::remove(temporary.c_str());
+            throw std::runtime_error("cannot write '" + path + "'");
+        }
+    }
+    finishPartialFile(path);
+}
+
+} // namespace pf

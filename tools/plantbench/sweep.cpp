@@ -1,0 +1,170 @@
+#include "sweep.h"
+
+#include "gpu_memory.h"
+#include "progress.h"
+
+#include "engine/gpu_timer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <new>
+#include <stdexcept>
+
+namespace pf {
+
+std::optional<Spread> spreadOf(std::vector<double> samples) {
+    if (samples.empty()) return std::nullopt;
+    std::sort(samples.begin(), samples.end());
+    const size_t n = samples.size();
+    Spread s;
+    s.median = n % 2 ? samples[n / 2] : 0.5 * (samples[n / 2 - 1] + samples[n / 2]);
+    s.p95 = samples[size_t(std::ceil(0.95 * double(n))) - 1];
+    return s;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// The render target and timer of one count, released however the count ends.
+struct FrameResources {
+    const GpuContext& ctx;
+    RenderTarget target;
+    GpuTimer timer;
+    ~FrameResources() {
+        destroyGpuTimer(ctx, timer);
+        destroyRenderTarget(ctx, target);
+    }
+};
+
+enum class Path { Driven, Naive };
+
+// Warm-up then measured frames of one path, every frame from the same camera.
+PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRenderer& renderer,
+                      FrameResources& frame, const FieldView& view, Path path, const SweepProgress& progress,
+                      double progressStart, double progressSpan) {
+    std::vector<double> frameMs, cpuMs;
+    std::array<std::vector<double>, kPassCount> gpuMs;
+    const uint32_t all = o.warmup + o.frames;
+    const char* name = path == Path::Driven ? "GPU-driven" : "naive";
+    for (uint32_t i = 0; i < all; ++i) {
+        const bool warm = i < o.warmup;
+        showProgress(progress, progressStart + progressSpan * double(i) / all,
+                     std::string(name) + (warm ? " warm-up " : " frame ") +
+                         std::to_string(warm ? i + 1 : i - o.warmup + 1) + "/" +
+                         std::to_string(warm ? o.warmup : o.frames));
+        FieldView v = view;
+        v.firstFrame = i == 0;
+        const Clock::time_point start = Clock::now();
+        renderer.setView(v, frame.target.extent);
+        double recordMs = 0.0;
+        submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+            if (path == Path::Driven)
+                renderer.record(cmd, frame.target, &frame.timer);
+            else
+                renderer.recordNaive(cmd, frame.target, &frame.timer);
+            recordMs = msSince(start);
+        });
+        const double wallMs = msSince(start);
+        if (warm) continue;
+        frameMs.push_back(wallMs);
+        cpuMs.push_back(recordMs);
+        for (const ScopeTime& scope : readGpuTimer(ctx, frame.timer))
+            for (size_t p = 0; p < kPassCount; ++p)
+                if (scope.name == kFieldPasses[p]) gpuMs[p].push_back(scope.milliseconds);
+    }
+    PathTimes times;
+    times.frameMs = *spreadOf(frameMs);
+    times.cpuMs = *spreadOf(cpuMs);
+    for (size_t p = 0; p < kPassCount; ++p) times.gpuMs[p] = spreadOf(gpuMs[p]);
+    return times;
+}
+
+void refuseIfTooBig(uint64_t count, uint64_t bytes, const HeapCapacity& heap, const GpuContext& ctx) {
+    if (bytes <= heap.bytes) return;
+    throw std::runtime_error(std::to_string(count) + " plants need about " + formatBytes(bytes) +
+                             " of GPU memory, but the largest device-local heap of " + ctx.properties.deviceName +
+                             (heap.fromBudget ? " has a budget of " : " holds ") + formatBytes(heap.bytes) +
+                             ": measure fewer plants");
+}
+
+CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scene& scene, uint64_t count,
+                         bool budget, const HeapCapacity& heap, const SweepProgress& progress) {
+    CountResult r;
+    r.count = count;
+    const Clock::time_point buildStart = Clock::now();
+    FieldContent content = buildFieldContent(scene, size_t(count), [&](size_t done, size_t all, const std::string& name) {
+        showProgress(progress, 0.0, "building plant models " + std::to_string(done) + "/" + std::to_string(all) +
+                                        " (" + name + ")");
+    });
+    r.buildSeconds = std::chrono::duration<double>(Clock::now() - buildStart).count();
+    refuseIfTooBig(count, estimatedFieldBytes(count, &content.models, o.width, o.height, o.samples), heap, ctx);
+
+    FieldRenderSettings settings;
+    settings.samples = VkSampleCountFlagBits(o.samples);
+    settings.shadows = o.shadows;
+    showProgress(progress, 0.0, "uploading the field and baking impostors");
+    FieldRenderer renderer(ctx, std::move(content), settings);
+    FrameResources frame{ctx, createRenderTarget(ctx, {o.width, o.height}, renderer.samples()),
+                         createGpuTimer(ctx, 16)};
+
+    FieldView view;
+    view.camera = cameraAt(scene.camera, o.time);
+    view.time = float(o.time);
+    const bool naive = o.compareNaive && count <= o.naiveMax;
+    const double drivenSpan = naive ? 0.5 : 1.0;
+    r.driven = measurePath(o, ctx, renderer, frame, view, Path::Driven, progress, 0.0, drivenSpan);
+    r.stats = renderer.readStats();
+    r.rendererBytes = renderer.gpuBytes();
+    r.gpuMemoryBytes = budget ? deviceLocalUsage(ctx) : r.rendererBytes;
+    if (naive) {
+        r.naive = measurePath(o, ctx, renderer, frame, view, Path::Naive, progress, drivenSpan, 1.0 - drivenSpan);
+        r.naiveTriangles = renderer.naiveTriangles();
+    } else if (o.compareNaive) {
+        r.note = "naive skipped: " + std::to_string(count) + " plants is above --naive-max " +
+                 std::to_string(o.naiveMax);
+    }
+    return r;
+}
+
+} // namespace
+
+void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, SweepResult& result) {
+    const bool budget = hasMemoryBudget(ctx);
+    result.scenePath = o.scenePath;
+    result.device = ctx.properties.deviceName;
+    result.memorySource = budget ? "VK_EXT_memory_budget" : "renderer accounting";
+    const HeapCapacity heap = largestDeviceLocalHeap(ctx, budget);
+    // Refuse the whole sweep up front rather than after hours of smaller counts.
+    for (uint64_t count : o.counts)
+        refuseIfTooBig(count, estimatedFieldBytes(count, nullptr, o.width, o.height, o.samples), heap, ctx);
+
+    SweepProgress progress = startProgress(o.counts.size());
+    for (size_t i = 0; i < o.counts.size(); ++i) {
+        progress.countIndex = i;
+        progress.plants = o.counts[i];
+        try {
+            result.counts.push_back(measureCount(o, ctx, scene, o.counts[i], budget, heap, progress));
+        } catch (const SceneError&) {
+            throw;
+        } catch (const std::bad_alloc&) {
+            throw std::runtime_error("at " + std::to_string(o.counts[i]) +
+                                     " plants the host ran out of memory: measure fewer plants");
+        } catch (const std::runtime_error& e) {
+            const bool outOfGpuMemory = std::strstr(e.what(), "VK_ERROR_OUT_OF_DEVICE_MEMORY") != nullptr;
+            throw std::runtime_error("at " + std::to_string(o.counts[i]) + " plants " +
+                                     (outOfGpuMemory ? "the device ran out of GPU memory (measure fewer plants): "
+                                                     : "the frame failed: ") +
+                                     e.what());
+        }
+        finishCount(progress, result.counts.back());
+    }
+}
+
+} // namespace pf

@@ -1,0 +1,62 @@
+// The measurement: for each count, the scene's field with that many plants,
+// warm-up frames, then measured frames of the GPU-driven path (and, with
+// --compare naive, of the naive path), each submitted and waited for.
+#pragma once
+
+#include "plantbench_options.h"
+
+#include "engine/device.h"
+#include "engine/field_renderer.h"
+#include "engine/scene.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pf {
+
+inline constexpr size_t kPassCount = std::size(kFieldPasses);
+
+// Median and 95th percentile of one quantity over the measured frames;
+// nullopt when no frame reported it (no timestamps on the device). p95 is
+// the nearest-rank percentile.
+struct Spread {
+    double median = 0.0;
+    double p95 = 0.0;
+};
+std::optional<Spread> spreadOf(std::vector<double> samples);
+
+// What one path (GPU-driven or naive) measured over its frames.
+struct PathTimes {
+    Spread frameMs; // wall time of a frame: set the view, record, submit, wait
+    Spread cpuMs;   // host time to set the view and record the command buffer
+    std::array<std::optional<Spread>, kPassCount> gpuMs; // per kFieldPasses entry
+};
+
+struct CountResult {
+    uint64_t count = 0;              // requested
+    PathTimes driven;                // the GPU-driven frame (FieldRenderer::record)
+    FieldFrameStats stats;           // of the last measured GPU-driven frame
+    uint64_t gpuMemoryBytes = 0;     // after the frames, from the sweep's memory source
+    uint64_t rendererBytes = 0;      // FieldRenderer::gpuBytes()
+    std::optional<PathTimes> naive;  // with --compare naive, unless skipped
+    uint64_t naiveTriangles = 0;
+    std::string note;                // why naive was skipped, or empty
+    double buildSeconds = 0.0;       // CPU build of the field (not part of any frame)
+};
+
+struct SweepResult {
+    std::string scenePath;
+    std::string device;
+    std::string memorySource; // "VK_EXT_memory_budget" or "renderer accounting"
+    std::vector<CountResult> counts;
+};
+
+// Fills `result` count by count (so a failure keeps what was measured).
+// `scene` is o.scenePath loaded, with --seed applied. Throws SceneError for a
+// plant the scene cannot grow, runtime_error for a request the device cannot
+// hold or a failed Vulkan call.
+void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, SweepResult& result);
+
+} // namespace pf
