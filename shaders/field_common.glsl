@@ -71,7 +71,7 @@ vec3 plantNormalToWorld(FieldInstance inst, vec3 n) {
 }
 
 // A 4×4 Bayer threshold in (0, 1) per pixel: ordered dithering for the LOD
-// cross-fade and the impostor frame blend.
+// cross-fade.
 float bayerThreshold(vec2 fragCoord) {
     const float bayer[16] = float[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
     ivec2 p = ivec2(fragCoord) & 3;

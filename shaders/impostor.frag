@@ -6,8 +6,7 @@
 // coverage), alpha-tested, cross-faded, shaded like LOD0 (plant.frag).
 layout(location = 0) in vec3 inWorldPos;
 layout(location = 1) in vec2 inUv;
-layout(location = 2) flat in uvec2 inLayers;
-layout(location = 3) flat in float inBlend;
+layout(location = 2) flat in uint inLayer;
 layout(location = 4) flat in uint inFade;
 layout(location = 5) flat in float inYaw;
 layout(location = 6) in vec4 inFog;
@@ -19,9 +18,7 @@ const float kMipAlphaBoost = 0.35;
 
 void main() {
     float lod = max(textureQueryLod(atlasColor, inUv).y, 0.0);
-    // Between two frames, each pixel shows one of them, dithered by the blend
-    // weight: half the texture fetches of a blend, and no ghosting.
-    float layer = float(bayerThreshold(gl_FragCoord.xy) < inBlend ? inLayers.y : inLayers.x);
+    float layer = float(inLayer);
     vec4 color = texture(atlasColor, vec3(inUv, layer));
     if (color.a * (1.0 + kMipAlphaBoost * lod) < 0.5) discard;
     if (fadeDiscards(gl_FragCoord.xy, inFade)) discard;

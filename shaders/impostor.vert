@@ -6,15 +6,14 @@
 // expanded around each visible plant and textured with its atlas frames
 // (engine/impostor_atlas.h: frame f views from azimuth 2π·f/frames along
 // d = (sin a, 0, cos a), right axis (cos a, 0, -sin a)). One quad turns to
-// the view about the vertical axis and blends the two frames nearest the
-// view azimuth; two or three crossed quads stay fixed in plant space, each
+// the view about the vertical axis and shows the frame nearest the view
+// azimuth; two or three crossed quads stay fixed in plant space, each
 // showing the frame baked along its normal (or its opposite, mirrored, when
 // seen from behind). Also the vertex stage of the shadow pass, where the sun
 // is the view.
 layout(location = 0) out vec3 outWorldPos;
 layout(location = 1) out vec2 outUv;
-layout(location = 2) flat out uvec2 outLayers; // the two frames blended
-layout(location = 3) flat out float outBlend;  // weight of outLayers.y
+layout(location = 2) flat out uint outLayer; // the atlas frame shown
 layout(location = 4) flat out uint outFade;
 layout(location = 5) flat out float outYaw;
 layout(location = 6) out vec4 outFog;
@@ -38,17 +37,17 @@ void main() {
     float u = v.position.w;
     if (quads == 1u) {
         float t = mod(viewAzimuth / kTau * float(frames), float(frames));
-        float f0 = floor(t);
-        outLayers = m.impostor.x + uvec2(uint(f0) % frames, (uint(f0) + 1u) % frames);
-        outBlend = t - f0;
+        // The nearest frame, not a blend: frames are 30° apart and far
+        // plants small, so the switch is not seen, and one texture fetch
+        // per pixel is what a CPU rasteriser can afford.
+        outLayer = m.impostor.x + uint(round(t)) % frames;
         quadAzimuth = viewAzimuth;
     } else {
         quadAzimuth = v.position.z * 0.5 * kTau / float(quads);
         bool back = dot(local.xz, vec2(sin(quadAzimuth), cos(quadAzimuth))) < 0.0;
         float shown = quadAzimuth + (back ? 0.5 * kTau : 0.0);
         uint f = uint(round(shown / kTau * float(frames))) % frames;
-        outLayers = uvec2(m.impostor.x + f);
-        outBlend = 0.0;
+        outLayer = m.impostor.x + f;
         // The opposite frame's right axis is this quad's left.
         if (back) u = 1.0 - u;
     }

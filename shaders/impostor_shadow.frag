@@ -6,16 +6,14 @@
 // same alpha test as impostor.frag, and fading plants the same dithered
 // share as plant_shadow.frag casts.
 layout(location = 1) in vec2 inUv;
-layout(location = 2) flat in uvec2 inLayers;
-layout(location = 3) flat in float inBlend;
+layout(location = 2) flat in uint inLayer;
 layout(location = 4) flat in uint inFade;
 
 const float kMipAlphaBoost = 0.35; // as impostor.frag
 
 void main() {
     float lod = max(textureQueryLod(atlasColor, inUv).y, 0.0);
-    float layer = float(bayerThreshold(gl_FragCoord.xy) < inBlend ? inLayers.y : inLayers.x); // as impostor.frag
-    float alpha = texture(atlasColor, vec3(inUv, layer)).a;
+    float alpha = texture(atlasColor, vec3(inUv, float(inLayer))).a;
     if (alpha * (1.0 + kMipAlphaBoost * lod) < 0.5) discard;
     if (fadeDiscards(gl_FragCoord.xy, inFade)) discard;
 }
