@@ -19,32 +19,6 @@ namespace {
 
 constexpr uint32_t kBindingCount = 10;
 
-void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
-                   VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {
-    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    barrier.srcStageMask = srcStage;
-    barrier.srcAccessMask = srcAccess;
-    barrier.dstStageMask = dstStage;
-    barrier.dstAccessMask = dstAccess;
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.memoryBarrierCount = 1;
-    dep.pMemoryBarriers = &barrier;
-    vkCmdPipelineBarrier2(cmd, &dep);
-}
-
-VkPipeline createComputePipeline(VkDevice device, VkPipelineLayout layout, VkShaderModule module) {
-    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    info.stage.module = module;
-    info.stage.pName = "main";
-    info.layout = layout;
-    VkPipeline pipeline;
-    VK_CHECK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-    vkDestroyShaderModule(device, module, nullptr);
-    return pipeline;
-}
-
 // Buffers of zero size are invalid; an empty field still gets valid ones.
 VkDeviceSize atLeastOneWord(VkDeviceSize bytes) { return std::max<VkDeviceSize>(bytes, 4); }
 
@@ -129,62 +103,22 @@ CullPass createCullPass(const GpuContext& ctx, const CullPassInputs& inputs) {
                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     });
 
-    VkDescriptorSetLayoutBinding bindings[kBindingCount];
-    for (uint32_t b = 0; b < kBindingCount; ++b)
-        bindings[b] = {b, b == CULL_BINDING_UNIFORMS ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                       1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-    VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    layoutInfo.bindingCount = kBindingCount;
-    layoutInfo.pBindings = bindings;
-    VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &layoutInfo, nullptr, &pass.setLayout));
-
-    VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    pipelineLayoutInfo.setLayoutCount = 1;
-    pipelineLayoutInfo.pSetLayouts = &pass.setLayout;
-    VK_CHECK(vkCreatePipelineLayout(ctx.device, &pipelineLayoutInfo, nullptr, &pass.pipelineLayout));
-    pass.cullPipeline =
-        createComputePipeline(ctx.device, pass.pipelineLayout, createShaderModule(ctx.device, spirv_cull_comp));
-    pass.buildDrawsPipeline =
-        createComputePipeline(ctx.device, pass.pipelineLayout, createShaderModule(ctx.device, spirv_build_draws_comp));
-
-    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kBindingCount - 1}};
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 2;
-    poolInfo.pPoolSizes = sizes;
-    VK_CHECK(vkCreateDescriptorPool(ctx.device, &poolInfo, nullptr, &pass.descriptorPool));
-    VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocInfo.descriptorPool = pass.descriptorPool;
-    allocInfo.descriptorSetCount = 1;
-    allocInfo.pSetLayouts = &pass.setLayout;
-    VK_CHECK(vkAllocateDescriptorSets(ctx.device, &allocInfo, &pass.descriptorSet));
-
     const VkBuffer buffers[kBindingCount] = {
         pass.uniforms.buffer, inputs.instances->buffer, inputs.models->buffer, pass.state.buffer,
         pass.counts.buffer,   pass.visible.buffer,      pass.templates.buffer, pass.commands.buffer,
         pass.drawCounts.buffer, pass.allCommands.buffer};
-    VkDescriptorBufferInfo infos[kBindingCount];
-    VkWriteDescriptorSet writes[kBindingCount];
-    for (uint32_t b = 0; b < kBindingCount; ++b) {
-        infos[b] = {buffers[b], 0, VK_WHOLE_SIZE};
-        writes[b] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        writes[b].dstSet = pass.descriptorSet;
-        writes[b].dstBinding = b;
-        writes[b].descriptorCount = 1;
-        writes[b].descriptorType = bindings[b].descriptorType;
-        writes[b].pBufferInfo = &infos[b];
-    }
-    vkUpdateDescriptorSets(ctx.device, kBindingCount, writes, 0, nullptr);
+    pass.set = createComputeSet(ctx, buffers);
+    pass.cullPipeline =
+        createComputePipeline(ctx.device, pass.set.pipelineLayout, createShaderModule(ctx.device, spirv_cull_comp));
+    pass.buildDrawsPipeline =
+        createComputePipeline(ctx.device, pass.set.pipelineLayout, createShaderModule(ctx.device, spirv_build_draws_comp));
     return pass;
 }
 
 void destroyCullPass(const GpuContext& ctx, CullPass& pass) {
     vkDestroyPipeline(ctx.device, pass.cullPipeline, nullptr);
     vkDestroyPipeline(ctx.device, pass.buildDrawsPipeline, nullptr);
-    vkDestroyPipelineLayout(ctx.device, pass.pipelineLayout, nullptr);
-    vkDestroyDescriptorPool(ctx.device, pass.descriptorPool, nullptr);
-    vkDestroyDescriptorSetLayout(ctx.device, pass.setLayout, nullptr);
+    destroyComputeSet(ctx, pass.set);
     for (Buffer* b : {&pass.uniforms, &pass.templates, &pass.state, &pass.counts, &pass.visible, &pass.commands,
                       &pass.drawCounts, &pass.allCommands, &pass.readback})
         destroyBuffer(ctx, *b);
@@ -229,8 +163,7 @@ void recordCullPass(VkCommandBuffer cmd, const CullPass& pass) {
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.cullPipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipelineLayout, 0, 1, &pass.descriptorSet, 0,
-                            nullptr);
+    bindComputeSet(cmd, pass.set);
     vkCmdDispatch(cmd, pass.cullGroups.x, pass.cullGroups.y, 1);
     // build_draws reads the final per-list counts.
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

@@ -9,6 +9,7 @@
 // work per frame.
 #pragma once
 
+#include "engine/compute_set.h"
 #include "engine/resources.h"
 #include "shaders/field_layouts.h"
 
@@ -40,12 +41,9 @@ struct CullPassInputs {
 };
 
 struct CullPass {
-    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
+    ComputeSet set; // uniforms, then the storage buffers below
     VkPipeline cullPipeline = VK_NULL_HANDLE;
     VkPipeline buildDrawsPipeline = VK_NULL_HANDLE;
-    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
-    VkDescriptorSet descriptorSet = VK_NULL_HANDLE;
 
     Buffer uniforms;     // host-visible CullUniforms
     Buffer templates;    // DrawTemplate[]

@@ -77,6 +77,7 @@ FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const 
     uniforms_ = createHostBuffer(ctx_, sizeof(FieldUniformBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     uploadGeometry();
     uploadInstances();
+    motion_ = createFieldMotion(ctx_, content_);
     shadow_ = createShadowMap(ctx_, settings_.shadowMapSize);
     createDescriptors();
     createPipelines();
@@ -92,6 +93,7 @@ FieldRenderer::~FieldRenderer() {
     vkDestroyDescriptorPool(device, descriptorPool_, nullptr);
     vkDestroyDescriptorSetLayout(device, setLayout_, nullptr);
     destroyCullPass(ctx_, cull_);
+    destroyFieldMotion(ctx_, motion_);
     destroyShadowMap(ctx_, shadow_);
     destroyImpostorAtlas(ctx_, atlas_);
     for (Buffer* b : {&uniforms_, &vertices_, &indices_, &models_, &instances_, &terrainVertices_, &terrainIndices_,
@@ -181,6 +183,9 @@ void FieldRenderer::createDescriptors() {
         {FIELD_BINDING_ATLAS_NORMAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, kDrawStages, nullptr},
         {FIELD_BINDING_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, kDrawStages, nullptr},
         {FIELD_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_SKELETONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_POSES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_INSTANCE_SKELETON, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kDrawStages, nullptr},
     };
     constexpr uint32_t kBindings = uint32_t(std::size(bindings));
     VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -189,7 +194,7 @@ void FieldRenderer::createDescriptors() {
     VK_CHECK(vkCreateDescriptorSetLayout(ctx_.device, &layoutInfo, nullptr, &setLayout_));
 
     const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 10},
+                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 16},
                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 6}};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 2;
@@ -219,9 +224,12 @@ void FieldRenderer::createDescriptors() {
                                                   {vertices_.buffer, 0, VK_WHOLE_SIZE},
                                                   {models_.buffer, 0, VK_WHOLE_SIZE},
                                                   {}, {}, {},
-                                                  {terrainVertices_.buffer, 0, VK_WHOLE_SIZE}};
-        const VkDescriptorImageInfo* images[] = {nullptr, nullptr, nullptr, nullptr, nullptr,
-                                                 &atlasColor, &atlasNormal, &shadow, nullptr};
+                                                  {terrainVertices_.buffer, 0, VK_WHOLE_SIZE},
+                                                  {motion_.pass.skeletons.buffer, 0, VK_WHOLE_SIZE},
+                                                  {motion_.pass.poses.buffer, 0, VK_WHOLE_SIZE},
+                                                  {motion_.instanceSkeleton.buffer, 0, VK_WHOLE_SIZE}};
+        const VkDescriptorImageInfo* images[] = {nullptr, nullptr, nullptr, nullptr, nullptr, &atlasColor,
+                                                 &atlasNormal, &shadow, nullptr, nullptr, nullptr, nullptr};
         VkWriteDescriptorSet writes[kBindings];
         for (uint32_t i = 0; i < kBindings; ++i) {
             writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -314,9 +322,12 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     block.field.sunViewProj = sunViewProjection(sunDirection(env), focus, radius, 250.0f, shadow_.size);
     block.field.viewport = glm::vec4(float(extent.width), float(extent.height), 2.0f * radius / float(shadow_.size),
                                      settings_.shadows ? 1.0f : 0.0f);
-    const float windAngle = glm::radians(content_.scene.wind.directionDegrees);
-    block.field.wind = glm::vec4(std::sin(windAngle) * content_.scene.wind.speed, content_.scene.wind.gustStrength,
-                                 -std::cos(windAngle) * content_.scene.wind.speed, view.time);
+    // The physics pass's wind field, for the shaders that sway without a skeleton.
+    advanceFieldMotion(ctx_, motion_, view.time, view.firstFrame);
+    const gpu::PhysicsUniforms wind =
+        makePhysicsUniforms(motion_.wind, motion_.settings, view.time, motion_.settings.subStep, 0, 0, 0);
+    block.field.wind = glm::vec4(wind.wind.x, wind.wind.y, wind.wind.z, view.time);
+    block.field.windDetail = glm::vec4(wind.windDetail.x, wind.windDetail.y, wind.wind.w, settings_.impostorSway);
     std::memcpy(uniforms_.mapped, &block, sizeof(block));
 
     setCullUniforms(cull_, makeCullUniforms(block.frame.viewProj, view.camera.position,
@@ -384,6 +395,10 @@ void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuT
     if (timer) resetGpuTimer(cmd, *timer);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &drawSet_, 0, nullptr);
     {
+        Timed scope(cmd, timer, "physics");
+        recordFieldMotion(cmd, motion_);
+    }
+    {
         Timed scope(cmd, timer, "cull");
         recordCullPass(cmd, cull_);
     }
@@ -397,6 +412,10 @@ void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuT
 void FieldRenderer::recordNaive(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const {
     if (timer) resetGpuTimer(cmd, *timer);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &naiveSet_, 0, nullptr);
+    {
+        Timed scope(cmd, timer, "physics");
+        recordFieldMotion(cmd, motion_);
+    }
     { Timed scope(cmd, timer, "cull"); }
     {
         Timed scope(cmd, timer, "shadow");
@@ -449,7 +468,9 @@ VkDeviceSize FieldRenderer::gpuBytes() const {
     for (const Buffer* b : {&uniforms_, &vertices_, &indices_, &models_, &instances_, &terrainVertices_,
                             &terrainIndices_, &naiveVisible_, &cull_.uniforms, &cull_.templates, &cull_.state,
                             &cull_.counts, &cull_.visible, &cull_.commands, &cull_.drawCounts, &cull_.allCommands,
-                            &cull_.readback})
+                            &cull_.readback, &motion_.pass.uniforms, &motion_.pass.params, &motion_.pass.skeletons,
+                            &motion_.pass.states, &motion_.pass.poses, &motion_.pass.jointSkeleton,
+                            &motion_.instanceSkeleton, &motion_.restStates, &motion_.restPoses})
         bytes += b->size;
     auto imageBytes = [](const Image& image, uint32_t layers, uint32_t bytesPerTexel, double mipFactor) {
         return VkDeviceSize(double(image.extent.width) * image.extent.height * layers * bytesPerTexel * mipFactor);

@@ -8,6 +8,7 @@
 
 #include "engine/camera.h"
 #include "engine/cull_pass.h"
+#include "engine/field_motion.h"
 #include "engine/field.h"
 #include "engine/impostor_atlas.h"
 #include "engine/render_target.h"
@@ -25,6 +26,7 @@ struct FieldRenderSettings {
     bool shadows = true;
     uint32_t shadowMapSize = 1024;
     float shadowRadius = 60.0f; // metres: half the side of the shadowed square ahead of the camera
+    float impostorSway = 0.04f;  // metres an impostor's top leans per m/s of gust (times the plant's scale)
     ImpostorSettings impostors;
 };
 
@@ -44,9 +46,10 @@ struct FieldFrameStats {
     uint64_t triangles = 0;                           // colour pass, plants only
 };
 
-// GPU timer scope names, in recording order. "colour" is the whole colour
-// pass; the three after it are nested inside it.
-inline constexpr const char* kFieldPasses[] = {"cull", "shadow", "colour", "plants", "impostors", "terrain_sky"};
+// GPU timer scope names, in recording order. "physics" holds the physics and
+// pose passes; "colour" is the whole colour pass and the three after it are
+// nested inside it.
+inline constexpr const char* kFieldPasses[] = {"physics", "cull", "shadow", "colour", "plants", "impostors", "terrain_sky"};
 
 class FieldRenderer {
 public:
@@ -90,6 +93,7 @@ private:
     ImpostorAtlas atlas_;
     ShadowMap shadow_;
     CullPass cull_;
+    FieldMotion motion_;
 
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
     VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;

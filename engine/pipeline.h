@@ -35,6 +35,9 @@ struct GraphicsPipelineDesc {
     bool flippedViewport = true;
 };
 
+// A compute pipeline of `module`'s main; destroys the module.
+VkPipeline createComputePipeline(VkDevice device, VkPipelineLayout layout, VkShaderModule module);
+
 // Vertices are pulled from storage buffers, so there is no vertex input;
 // viewport and scissor are dynamic.
 VkPipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& desc);

@@ -2,6 +2,8 @@
 // per draw class (docs/FIELD.md "Plant models (meshes and LODs)").
 #include "engine/plant_models.h"
 
+#include "engine/plant_physics.h"
+
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/error.h"
 #include "lsystem/parser.h"
@@ -290,14 +292,16 @@ float topOf(const ClassMeshes& meshes) {
 }
 
 // Uniform scale about the base (the origin) so the top reaches `height`; a
-// plant with no height above its base keeps its own units.
-void scaleToHeight(std::array<ClassMeshes, kMeshLodCount>& lods, float height) {
+// plant with no height above its base keeps its own units. Returns the
+// scale, which the skeleton gets too.
+float scaleToHeight(std::array<ClassMeshes, kMeshLodCount>& lods, float height) {
     const float top = topOf(lods[LOD_FULL]);
-    if (!(top > 0.0f)) return;
+    if (!(top > 0.0f)) return 1.0f;
     const float scale = height / top;
     for (ClassMeshes& lod : lods)
         for (BakedMesh& mesh : lod)
             for (BakeVertex& v : mesh.vertices) v.position *= scale;
+    return scale;
 }
 
 lsys::Grammar parseSpecies(const Species& species) {
@@ -374,13 +378,17 @@ PlantModelInfo buildModel(PlantModelPool& pool, const Scene& scene, uint32_t spe
     lsys::PlantAsset asset = derivePlant(species, grammar, surfaces, seed);
     applyMaterialOverrides(asset, species.materials);
     std::array<ClassMeshes, kMeshLodCount> lods = bakeLods(asset);
-    if (species.height) scaleToHeight(lods, *species.height);
+    const float scale = species.height ? scaleToHeight(lods, *species.height) : 1.0f;
 
     PlantModelInfo info;
     info.species = speciesIndex;
     info.variant = variant;
     info.name = species.name + "#" + std::to_string(variant);
     info.joints = uint32_t(asset.joints.size());
+    // Joint j of the asset is params[firstJoint + j]: the vertices' joint.x numbering.
+    info.firstJoint = uint32_t(pool.joints.size());
+    const std::vector<gpu::JointParams> skeleton = buildJointParams(asset, scale, scene.physics);
+    pool.joints.insert(pool.joints.end(), skeleton.begin(), skeleton.end());
     info.billboard = species.lod.billboard;
     for (uint32_t lod = 0; lod < kMeshLodCount; ++lod)
         for (uint32_t drawClass = 0; drawClass < kMeshClassCount; ++drawClass)

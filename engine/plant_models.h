@@ -5,6 +5,7 @@
 #pragma once
 
 #include "engine/scene.h"
+#include "shaders/physics_layouts.h"
 #include "shaders/field_layouts.h"
 
 #include <array>
@@ -34,6 +35,7 @@ struct PlantModelInfo {
     std::string name;     // "<species name>#<variant>"
     std::array<std::array<MeshRange, kMeshClassCount>, kMeshLodCount> meshes; // [lod][class]
     uint32_t joints = 0;  // joints of the skeleton (segments)
+    uint32_t firstJoint = 0; // its JointParams in PlantModelPool::joints (vertices' joint.x index from here)
     // sphere, boxMin, boxMax and lod filled from the mesh and the species'
     // LodHints (lod.z hysteresis 0.1, lod.w fade 0.25 s); lists and impostor
     // are left for the renderer and the impostor baker.
@@ -48,6 +50,8 @@ struct PlantModelInfo {
 struct PlantModelPool {
     std::vector<gpu::FieldVertex> vertices;
     std::vector<uint32_t> indices;
+    // Every model's skeleton (buildJointParams at the model's height scale), model after model.
+    std::vector<gpu::JointParams> joints;
     std::vector<PlantModelInfo> models;  // species by species, variants in order
     std::vector<uint32_t> firstModel;    // per species: index of its variant 0 in models
     uint32_t modelOf(uint32_t species, uint32_t variant) const { return firstModel[species] + variant; }

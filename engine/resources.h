@@ -50,5 +50,8 @@ struct ImageTransition {
     VkImageLayout newLayout;
 };
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, const ImageTransition& t);
+// A global memory dependency (synchronization2).
+void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
+                   VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
 
 } // namespace pf

@@ -242,6 +242,25 @@ Wind readWind(const JsonNode& node) {
     return wind;
 }
 
+PhysicsSettings readPhysics(const JsonNode& node) {
+    requireObject(node, {"wood_density", "youngs_modulus", "stiffness_scale", "damping_ratio", "gravity", "air_density",
+                         "drag_coefficient", "leaf_drag", "sub_step", "joint_budget", "shared_phases"});
+    PhysicsSettings physics;
+    readField(node, "wood_density", physics.woodDensity, above(0.0));
+    readField(node, "youngs_modulus", physics.youngsModulus, above(0.0));
+    readField(node, "stiffness_scale", physics.stiffnessScale, above(0.0));
+    readField(node, "damping_ratio", physics.dampingRatio, between(0.0, 10.0));
+    readField(node, "gravity", physics.gravity, atLeast(0.0));
+    readField(node, "air_density", physics.airDensity, atLeast(0.0));
+    readField(node, "drag_coefficient", physics.dragCoefficient, atLeast(0.0));
+    readField(node, "leaf_drag", physics.leafDrag, atLeast(0.0));
+    // Above 1/30 s a frame would need less than one step; below 1/10000 s a frame costs hundreds.
+    readField(node, "sub_step", physics.subStep, between(1.0 / 10000.0, 1.0 / 30.0));
+    readField(node, "joint_budget", physics.jointBudget, anyNumber());
+    readField(node, "shared_phases", physics.sharedPhases, between(1, 64));
+    return physics;
+}
+
 const Range kFov = {.min = 0.0, .max = 180.0, .minOpen = true, .maxOpen = true};
 
 CameraKeyframe readKeyframe(const JsonNode& node) {
@@ -285,7 +304,7 @@ Scene loadScene(const std::filesystem::path& file) {
     const JsonSource source = readJsonFile(file);
     const JsonNode root = rootNode(source);
     requireObject(root,
-                  {"description", "seed", "terrain", "species", "placement", "sun", "sky", "fog", "wind", "camera"});
+                  {"description", "seed", "terrain", "species", "placement", "sun", "sky", "fog", "wind", "physics", "camera"});
     const std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
 
     Scene scene;
@@ -306,6 +325,7 @@ Scene loadScene(const std::filesystem::path& file) {
     if (auto sky = member(root, "sky")) scene.sky = readSky(*sky);
     if (auto fog = member(root, "fog")) scene.fog = readFog(*fog);
     if (auto wind = member(root, "wind")) scene.wind = readWind(*wind);
+    if (auto physics = member(root, "physics")) scene.physics = readPhysics(*physics);
     if (auto camera = member(root, "camera")) scene.camera = readCamera(*camera);
     return scene;
 }

@@ -5,6 +5,7 @@
 #define FIELD_FRAME
 #include "common.glsl"
 #include "plant_surface.glsl"
+#include "joint_physics.h"
 
 layout(set = 0, binding = FIELD_BINDING_INSTANCES, std430) readonly buffer Instances {
     FieldInstance instances[];
@@ -24,6 +25,36 @@ layout(set = 0, binding = FIELD_BINDING_SHADOW) uniform sampler2DShadow shadowMa
 layout(set = 0, binding = FIELD_BINDING_TERRAIN, std430) readonly buffer Terrain {
     TerrainVertex terrain[];
 };
+
+layout(set = 0, binding = FIELD_BINDING_SKELETONS, std430) readonly buffer Skeletons {
+    Skeleton skeletons[];
+};
+layout(set = 0, binding = FIELD_BINDING_POSES, std430) readonly buffer Poses {
+    JointPose poses[];
+};
+layout(set = 0, binding = FIELD_BINDING_INSTANCE_SKELETON, std430) readonly buffer InstanceSkeletons {
+    uint instanceSkeleton[];
+};
+
+// Where the physics has moved joint `joint` of plant `instance` (plant
+// space, before the instance transform); the identity for plants without
+// a simulated skeleton.
+JointPose plantJointPose(uint instance, uint joint) {
+    uint skeleton = instanceSkeleton[instance];
+    if (skeleton == NO_SKELETON) return JointPose(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0));
+    return poses[skeletons[skeleton].ids.w + joint];
+}
+
+// The wind field of the physics pass (joint_physics.h windAt), for shaders
+// that sway without a skeleton (impostors).
+vec3 fieldWindAt(vec3 worldPos) {
+    PhysicsUniforms u;
+    u.gravity = vec4(0.0);
+    u.wind = vec4(field.wind.x, field.wind.y, field.wind.z, field.windDetail.z);
+    u.windDetail = vec4(field.windDetail.x, field.windDetail.y, 0.0, 0.0);
+    u.counts = uvec4(0u);
+    return windAt(worldPos, field.wind.w, u);
+}
 
 // The same vertex shaders draw the camera view and the sun's shadow map:
 // the pipeline layout's push constant says which.

@@ -57,6 +57,9 @@ using uint = uint32_t;
 #define FIELD_BINDING_ATLAS_NORMAL 6 // sampler2DArray: impostor normal (rgb·0.5+0.5) + depth (a)
 #define FIELD_BINDING_SHADOW 7      // sampler2DShadow: the sun's shadow map
 #define FIELD_BINDING_TERRAIN 8     // TerrainVertex[]
+#define FIELD_BINDING_SKELETONS 9   // Skeleton[] (physics_layouts.h)
+#define FIELD_BINDING_POSES 10      // JointPose[] of every simulated joint
+#define FIELD_BINDING_INSTANCE_SKELETON 11 // uint per instance: the Skeleton its vertices follow
 
 // Descriptor bindings of the cull pass (its own set 0).
 #define CULL_BINDING_UNIFORMS 0  // CullUniforms
@@ -131,6 +134,7 @@ struct FieldFrame {
     vec4 cameraUp;      // xyz unit, w 0
     vec4 viewport;      // x width, y height (pixels), z shadow map texel size (m), w 1 when shadows are on
     vec4 wind;          // xz direction × speed (m/s), y gust strength, w time (s)
+    vec4 windDetail;    // x turbulence, y gust wavelength (m), z gust front speed (m/s), w impostor sway (m per m/s of gust, at the top)
 };
 
 #ifdef __cplusplus
@@ -141,7 +145,7 @@ static_assert(sizeof(gpu::FieldVertex) == 64);
 static_assert(sizeof(gpu::DrawTemplate) == 32);
 static_assert(sizeof(gpu::DrawCommand) == 20);
 static_assert(sizeof(gpu::CullUniforms) == 9 * 16);
-static_assert(sizeof(gpu::FieldFrame) == 64 + 4 * 16);
+static_assert(sizeof(gpu::FieldFrame) == 64 + 5 * 16);
 #endif
 
 #endif

@@ -55,6 +55,13 @@ void main() {
     vec3 plantPos = right * (v.position.x * m.impostorQuad.x) + vec3(0.0, mix(m.impostorQuad.y, m.impostorQuad.z, v.position.y), 0.0);
 
     outWorldPos = plantToWorld(inst, plantPos);
+    // Far plants have no skeleton: the quad's top leans with the gusts and
+    // turbulence (the wind beyond its mean), growing with height squared.
+    // Like the skeletons, which start at rest at time 0, the lean rises over
+    // the first second.
+    vec3 gust = fieldWindAt(inst.positionScale.xyz) - vec3(field.wind.x, 0.0, field.wind.z);
+    float lean = v.position.y * v.position.y * min(field.wind.w, 1.0);
+    outWorldPos += vec3(gust.x, 0.0, gust.z) * (field.windDetail.w * lean * inst.positionScale.w);
     outUv = vec2(u, v.normal.w);
     outFade = packFade(p);
     outYaw = inst.orientation.x;

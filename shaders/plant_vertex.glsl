@@ -17,8 +17,10 @@ void main() {
     FieldInstance inst = instances[p.index];
     FieldVertex v = vertices[gl_VertexIndex];
 
-    outWorldPos = plantToWorld(inst, v.position.xyz);
-    outNormal = plantNormalToWorld(inst, v.normal.xyz);
+    // Skinning: every vertex follows its joint's pose.
+    JointPose pose = plantJointPose(p.index, v.joint.x);
+    outWorldPos = plantToWorld(inst, posePoint(pose, v.position.xyz));
+    outNormal = plantNormalToWorld(inst, quatRotate(pose.rotation, v.normal.xyz));
     outAlbedo = v.albedo.rgb;
     outUv = vec2(v.position.w, v.normal.w);
     outFade = packFade(p);

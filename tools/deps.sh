@@ -14,7 +14,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglm-dev libglfw3-dev libstb-dev libcli11-dev nlohmann-json3-dev
-  libgtest-dev xvfb xauth libtinygltf-dev gnuplot-nox
+  libgtest-dev libbenchmark-dev xvfb xauth libtinygltf-dev gnuplot-nox
 )
 command -v node >/dev/null && command -v npm >/dev/null || PACKAGES+=(nodejs npm)
 FUZZ_PACKAGES=(clang libclang-rt-14-dev)

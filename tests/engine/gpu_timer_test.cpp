@@ -30,13 +30,8 @@ TEST_F(GpuTimerTest, TwoScopesAroundFillsReportTimesInOrder) {
         vkCmdFillBuffer(cmd, buffer.buffer, 0, VK_WHOLE_SIZE, 0x01010101u);
         endScope(cmd, timer);
         // The second fill overwrites the first: write-after-write.
-        VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        barrier.srcStageMask = barrier.dstStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-        barrier.srcAccessMask = barrier.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dependency.memoryBarrierCount = 1;
-        dependency.pMemoryBarriers = &barrier;
-        vkCmdPipelineBarrier2(cmd, &dependency);
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
         beginScope(cmd, timer, "second fill");
         vkCmdFillBuffer(cmd, buffer.buffer, 0, VK_WHOLE_SIZE, 0x02020202u);
         endScope(cmd, timer);

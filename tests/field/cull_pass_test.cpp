@@ -206,15 +206,8 @@ protected:
             vkCmdCopyBuffer(cmd, pass.commands.buffer, host.buffer, 1, &commandsRegion);
             vkCmdCopyBuffer(cmd, pass.allCommands.buffer, host.buffer, 1, &allRegion);
             vkCmdCopyBuffer(cmd, pass.state.buffer, host.buffer, 1, &stateRegion);
-            VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-            toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-            toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-            toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-            toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-            VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-            dep.memoryBarrierCount = 1;
-            dep.pMemoryBarriers = &toHost;
-            vkCmdPipelineBarrier2(cmd, &dep);
+            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
         });
 
         GpuFrame out;

@@ -6,6 +6,7 @@
 #include "options.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -137,6 +138,21 @@ TEST(PlantfieldCli, WindowUnderXvfbRendersFrames) {
     for (size_t p = 0; p < image.pixels.size(); p += 4)
         colours.insert(image.pixels[p] | image.pixels[p + 1] << 8 | image.pixels[p + 2] << 16);
     EXPECT_GT(colours.size(), 100u);
+}
+
+TEST(PlantfieldCli, PhysicsCheckMatchesCpuReference) {
+    const CommandResult r = runCommand(kPlantfield + " --physics-check --validation");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+    // The JSON line among the progress lines of stderr.
+    const size_t start = r.output.find("{\"joints\"");
+    ASSERT_NE(start, std::string::npos) << r.output;
+    const nlohmann::json j = nlohmann::json::parse(r.output.substr(start, r.output.find('\n', start) - start));
+    EXPECT_GT(j.at("joints").get<uint32_t>(), 0u);
+    EXPECT_EQ(j.at("steps").get<uint32_t>(), 600u);
+    EXPECT_LT(j.at("max_deviation_rad").get<double>(), 1e-3);
+    EXPECT_GE(j.at("gpu_ms").get<double>(), 0.0);
+    EXPECT_GE(j.at("cpu_ms").get<double>(), 0.0);
 }
 
 } // namespace

@@ -76,11 +76,11 @@ std::string plotCommand(const std::string& data, bool perThousand, bool naive) {
     const size_t colour = size_t(std::find_if(std::begin(kFieldPasses), std::end(kFieldPasses),
                                               [](const char* pass) { return std::string_view(pass) == "colour"; }) -
                                  std::begin(kFieldPasses));
-    const char* colours[] = {"#1f77b4", "#ff7f0e", "#d62728", "#2ca02c", "#9467bd", "#8c564b"};
+    const char* colours[] = {"#17becf", "#1f77b4", "#ff7f0e", "#d62728", "#2ca02c", "#9467bd", "#8c564b", "#e377c2"};
     for (size_t p = 0; p < kPassCount; ++p) {
         const bool nested = p > colour; // kFieldPasses: the draw scopes after "colour" are inside it
         plot << ", '' using 1:" << y(4 + int(p)) << " with linespoints lw 2" << (nested ? " dt 3" : "")
-             << " pt " << 4 + 2 * p << " lc rgb '" << colours[p] << "' title '" << kFieldPasses[p]
+             << " pt " << 4 + 2 * p << " lc rgb '" << colours[p % std::size(colours)] << "' title '" << kFieldPasses[p]
              << (nested ? " (inside colour)" : " (GPU)") << "'";
     }
     return plot.str() + "\n";

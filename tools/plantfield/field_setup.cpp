@@ -14,10 +14,17 @@ GpuOptions gpuOptions(const PlantfieldOptions& o) {
     return g;
 }
 
-FieldContent loadFieldContent(const PlantfieldOptions& o) {
-    const auto start = std::chrono::steady_clock::now();
+Scene loadSceneOf(const PlantfieldOptions& o) {
     Scene scene = loadScene(o.scenePath);
     if (o.seed) scene.seed = *o.seed;
+    if (o.windSpeed) scene.wind.speed = *o.windSpeed;
+    if (o.windDirectionDegrees) scene.wind.directionDegrees = *o.windDirectionDegrees;
+    return scene;
+}
+
+FieldContent loadFieldContent(const PlantfieldOptions& o) {
+    const auto start = std::chrono::steady_clock::now();
+    const Scene scene = loadSceneOf(o);
     std::optional<size_t> count;
     if (o.instances) count = size_t(*o.instances);
     // Progress on a terminal only; logs get the summary line below.

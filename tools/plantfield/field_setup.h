@@ -14,6 +14,10 @@ namespace pf {
 
 GpuOptions gpuOptions(const PlantfieldOptions& o);
 
+// The scene file with --seed and --wind applied. Throws SceneError
+// (file:line:column) with a clear message.
+Scene loadSceneOf(const PlantfieldOptions& o);
+
 // Throws SceneError (file:line:column) or runtime_error with a clear message.
 FieldContent loadFieldContent(const PlantfieldOptions& o);
 

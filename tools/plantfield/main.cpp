@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
     if (!options) return exitCode;
     try {
         if (options->listDevices) return pf::listDevices(*options);
+        if (options->physicsCheck) return pf::runPhysicsCheck(*options);
         return options->window ? pf::runWindow(*options) : pf::runHeadless(*options);
     } catch (const pf::SceneError& e) { // bad input, like a bad flag
         std::cerr << "plantfield: error: " << e.what() << "\n";

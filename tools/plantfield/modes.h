@@ -8,5 +8,7 @@ namespace pf {
 
 int runHeadless(const PlantfieldOptions& o);
 int runWindow(const PlantfieldOptions& o);
+// --physics-check: GPU physics against the CPU reference (tools/plantfield/physics_check.cpp).
+int runPhysicsCheck(const PlantfieldOptions& o);
 
 } // namespace pf

@@ -7,6 +7,8 @@
 #include <CLI/CLI.hpp>
 
 #include <charconv>
+#include <cmath>
+#include <string_view>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -30,6 +32,19 @@ std::optional<ImageSize> parseImageSize(const std::string& text) {
     const char* s = text.data();
     if (!parseSide(s, s + x, size.width) || !parseSide(s + x + 1, s + text.size(), size.height)) return std::nullopt;
     return size;
+}
+
+std::optional<Wind> parseWind(const std::string& text) {
+    const size_t comma = text.find(',');
+    Wind wind;
+    auto number = [](std::string_view s, float& out) {
+        auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+        return ec == std::errc() && end == s.data() + s.size() && std::isfinite(out);
+    };
+    const std::string_view all(text);
+    if (!number(all.substr(0, comma), wind.speed) || wind.speed < 0.0f || wind.speed > 100.0f) return std::nullopt;
+    if (comma != std::string::npos && !number(all.substr(comma + 1), wind.directionDegrees)) return std::nullopt;
+    return wind;
 }
 
 std::string defaultScenePath() {
@@ -67,6 +82,11 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_option("--seed", o.seed, "Replace the scene's seed (terrain, plants and placement change)");
     app.add_flag("--stats", o.stats,
                  "Print JSON statistics of the (last) frame: plants per LOD, culled, draws, triangles, GPU ms per pass");
+    app.add_flag("--physics-check", o.physicsCheck,
+                 "Simulate one skeleton of every plant model for 600 sub-steps on the GPU and the CPU and print\n"
+                 "JSON: joints, steps, max_deviation_rad (exit 1 when 1e-3 rad or more), gpu_ms, cpu_ms");
+    std::string windText;
+    app.add_option("--wind", windText, "Replace the scene's wind: SPEED[,DIRECTION] in m/s and degrees clockwise from north");
     app.add_option("--lod", o.forcedLod, "Draw every visible plant at this LOD: 0 full, 1 reduced, 2 impostor")
         ->check(CLI::Range(0, 2));
     app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
@@ -97,10 +117,18 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     const std::optional<ImageSize> size = parseImageSize(sizeText);
     if (!size) return fail("invalid --size '" + sizeText + "': expected WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720");
     o.size = *size;
+    if (!windText.empty()) {
+        const std::optional<Wind> wind = parseWind(windText);
+        if (!wind) return fail("invalid --wind '" + windText + "': expected SPEED[,DIRECTION], e.g. 12 or 12,270, speed 0 to 100 m/s");
+        o.windSpeed = wind->speed;
+        if (windText.find(',') != std::string::npos) o.windDirectionDegrees = wind->directionDegrees;
+    }
     if (o.listDevices) return o;
     const bool sequence = !o.window && o.frames > 0;
-    if (o.capturePath.empty() && !o.window && !sequence && !o.stats)
-        return fail("nothing to do: pass --capture FILE.png, --frames N --out-dir DIR, --stats or --window");
+    if (o.physicsCheck && (!o.capturePath.empty() || o.window || o.frames > 0 || o.stats))
+        return fail("--physics-check is a mode of its own: no --capture, --frames, --stats or --window");
+    if (o.capturePath.empty() && !o.window && !sequence && !o.stats && !o.physicsCheck)
+        return fail("nothing to do: pass --capture FILE.png, --frames N --out-dir DIR, --stats, --physics-check or --window");
     if (sequence && o.outDir.empty()) return fail("--frames without --window needs --out-dir DIR for the images");
     if (!o.outDir.empty() && !sequence) return fail("--out-dir needs --frames N (and no --window)");
     if (!std::filesystem::is_regular_file(o.scenePath))

@@ -1,6 +1,8 @@
 // Command-line options of plantfield, parsed and checked before any GPU work.
 #pragma once
 
+#include "engine/scene.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -14,6 +16,10 @@ struct ImageSize {
 
 // "1280x720" → {1280, 720}; nullopt for anything else, zero, or > 16384.
 std::optional<ImageSize> parseImageSize(const std::string& text);
+
+// "SPEED[,DIRECTION]" of --wind; nullopt when malformed or the speed is
+// outside 0–100 m/s (the direction is left at its default when absent).
+std::optional<Wind> parseWind(const std::string& text);
 
 // The scene a tool renders when none is named: data/scenes/default.json of
 // the source tree (PLANTFIELD_DATA_DIR overrides the data folder).
@@ -31,7 +37,10 @@ struct PlantfieldOptions {
     std::optional<uint64_t> instances; // scale the placement to exactly this many plants
     std::optional<uint32_t> seed;      // replaces the scene's seed
     bool stats = false;   // print the frame's JSON statistics on stdout
+    bool physicsCheck = false; // run GPU and CPU physics side by side, print their deviation as JSON
     std::optional<uint32_t> forcedLod; // draw every visible plant at this LOD
+    std::optional<float> windSpeed;          // replaces the scene's wind speed (m/s)
+    std::optional<float> windDirectionDegrees; // and direction, clockwise from north (-z) toward +x
     bool shadows = true;
     std::string deviceName;
     bool listDevices = false;

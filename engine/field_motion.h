@@ -1,0 +1,46 @@
+// The field's moving plants (issue 6): which simulated skeleton each plant
+// follows, and when the physics pass steps. Farther plants share a model's
+// skeletons, simulated in a few copies placed a fraction of a gust
+// wavelength apart along the wind, so neighbours sway out of phase; each
+// plant follows the copy its wind phase picks. Impostors sway in their
+// vertex shader instead.
+#pragma once
+
+#include "engine/field.h"
+#include "engine/physics_pass.h"
+
+namespace pf {
+
+// Steps recorded in the frame itself; more (a jump in time) run before it.
+inline constexpr uint32_t kFrameSubSteps = 8;
+// A capture at time T starts from rest at T − this (plants settle in ~5 s),
+// so it costs the same at any T and depends on T alone.
+inline constexpr double kSettleSeconds = 5.0;
+
+struct FieldMotion {
+    PhysicsPass pass;
+    Buffer instanceSkeleton; // uint per plant: the skeleton its vertices follow
+    Buffer restStates;       // copied over the states to restart at rest
+    Buffer restPoses;
+    Wind wind;
+    PhysicsSettings settings;
+    uint64_t simulatedStep = 0;  // sub-steps from time 0 the states will be at after the recorded ones
+    uint32_t frameSubSteps = 0;  // steps the next recordFieldMotion takes
+};
+
+FieldMotion createFieldMotion(const GpuContext& ctx, const FieldContent& content);
+void destroyFieldMotion(const GpuContext& ctx, FieldMotion& motion);
+
+// Brings the simulation to `time`: from rest at max(0, time − kSettleSeconds)
+// when `restart` or when time went backwards; steps beyond the last
+// kFrameSubSteps run now (the GPU must be idle); the rest are left for the
+// frame. Call while no frame is in flight.
+void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart);
+// The physics and pose passes of the frame.
+void recordFieldMotion(VkCommandBuffer cmd, const FieldMotion& motion);
+
+// The shared skeleton copies of a model follow each other along the wind
+// this far apart (m): the gust wavelength over the number of copies.
+float sharedPhaseSpacing(const PhysicsSettings& settings);
+
+} // namespace pf

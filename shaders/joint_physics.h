@@ -1,0 +1,177 @@
+// The physics of one joint and the pose of a skeleton (DESIGN.md §6 with the
+// errata of seeds/NOTES.md), written once for shaders/physics.comp,
+// shaders/pose.comp and the CPU reference (engine/plant_physics.h), so both
+// make the same float operations. GLSL and C++ (namespace gpu, glm) read
+// this file; float literals carry an f suffix so C++ does not widen them.
+//
+// Model, per joint j with rest frame R (plant space, local +Y along the
+// segment) and rotation q away from rest (local frame):
+// - its current frame is L = Dp·R·q, Dp the parent's pose rotation at the
+//   start of the frame (identity for a root);
+// - external torque about its base, plant space: the wind's drag on the
+//   segment and its leaves, F = ½·ρ·CdA·|v|·v at the centre of pressure c
+//   (v = wind − the point's own velocity), plus the weight of the subtree it
+//   carries, M·g at its centre of mass (rest shape, carried along by L);
+// - spring −k·θa (θa the axis-angle of q) and damping −c·ω, local frame;
+// - semi-implicit step with the spring and damping taken implicitly, which
+//   is stable for any stiffness:
+//     ω ← (ω + dt/I·(τ − k·θa)) / (1 + dt·c/I + dt²·k/I),  q ← normalize(q·exp(ω·dt));
+// - no twist: the component of ω along the segment is dropped.
+// Instance scale s scales lengths by s, masses by s³, inertia by s⁵,
+// stiffness by s³ (r⁴/l), damping by s⁴ and areas by s².
+#ifndef PLANTFIELD_SHADERS_JOINT_PHYSICS_H
+#define PLANTFIELD_SHADERS_JOINT_PHYSICS_H
+
+#include "physics_layouts.h"
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+namespace gpu {
+using vec3 = glm::vec3;
+using glm::atan;
+using glm::cos;
+using glm::cross;
+using glm::dot;
+using glm::length;
+using glm::max;
+using glm::normalize;
+using glm::sin;
+using glm::sqrt;
+#define JOINT_PHYSICS_FN inline
+#else
+#define JOINT_PHYSICS_FN
+#endif
+
+// Quaternions are vec4 (x, y, z, w).
+JOINT_PHYSICS_FN vec4 quatMultiply(vec4 a, vec4 b) {
+    vec3 av = vec3(a.x, a.y, a.z), bv = vec3(b.x, b.y, b.z);
+    vec3 v = a.w * bv + b.w * av + cross(av, bv);
+    return vec4(v.x, v.y, v.z, a.w * b.w - dot(av, bv));
+}
+
+JOINT_PHYSICS_FN vec4 quatConjugate(vec4 q) { return vec4(-q.x, -q.y, -q.z, q.w); }
+
+JOINT_PHYSICS_FN vec3 quatRotate(vec4 q, vec3 v) {
+    vec3 u = vec3(q.x, q.y, q.z);
+    return v + 2.0f * cross(u, cross(u, v) + q.w * v);
+}
+
+// exp of a rotation vector (axis · angle) as a unit quaternion.
+JOINT_PHYSICS_FN vec4 quatFromRotationVector(vec3 r) {
+    float angle = length(r);
+    if (angle < 1e-8f) return normalize(vec4(0.5f * r.x, 0.5f * r.y, 0.5f * r.z, 1.0f));
+    vec3 axis = r * (sin(0.5f * angle) / angle);
+    return vec4(axis.x, axis.y, axis.z, cos(0.5f * angle));
+}
+
+// log: the rotation vector (axis · angle, angle in [0, π]) of a unit quaternion.
+JOINT_PHYSICS_FN vec3 rotationVectorOf(vec4 q) {
+    if (q.w < 0.0f) q = -q; // the shorter way round
+    vec3 u = vec3(q.x, q.y, q.z);
+    float s = length(u);
+    if (s < 1e-8f) return 2.0f * u;
+    return u * (2.0f * atan(s, q.w) / s);
+}
+
+// Yaw about +y by the plant's rotation (field_common.glsl yawMatrix).
+JOINT_PHYSICS_FN vec3 yawRotate(float yaw, vec3 v) {
+    float c = cos(yaw), s = sin(yaw);
+    return vec3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z);
+}
+
+// The wind at a world position and time: the mean wind, gust fronts that
+// travel with it (a raised sine along the wind direction, one wavelength
+// apart), and turbulence of a few incommensurate sines.
+JOINT_PHYSICS_FN vec3 windAt(vec3 p, float t, PhysicsUniforms u) {
+    vec3 mean = vec3(u.wind.x, 0.0f, u.wind.z);
+    float speed = length(mean);
+    if (speed <= 0.0f) return vec3(0.0f);
+    vec3 along = mean / speed;
+    float front = (dot(p, along) - u.wind.w * t) / u.windDetail.y;
+    float wave = 0.5f + 0.5f * sin(6.2831853f * front);
+    float gust = u.wind.y * wave * wave;
+    vec3 turbulence = vec3(sin(1.7f * p.x + 2.3f * t + 1.3f * sin(0.61f * p.z + 1.1f * t)),
+                           0.3f * sin(2.9f * p.y + 3.1f * t + 0.7f * p.x),
+                           sin(1.3f * p.z + 1.9f * t + 1.7f * sin(0.53f * p.x + 0.9f * t)));
+    return mean * (1.0f + gust) + turbulence * (u.windDetail.x * speed);
+}
+
+// One sub-step of one joint. `parentRotation`: the parent's pose rotation at
+// the start of the frame (identity for roots); `base`: the joint's base now,
+// plant space before scale (its own pose applied to restBase).
+JOINT_PHYSICS_FN JointState stepJoint(JointParams jp, JointState s, vec4 parentRotation, vec3 base, Skeleton sk,
+                                      PhysicsUniforms u, float time, float dt) {
+    float scale = sk.scale.x;
+    float s2 = scale * scale, s3 = s2 * scale;
+    float inertia = jp.dynamics.y * s3 * s2;
+    float stiffness = jp.dynamics.z * s3;
+    float damping = jp.dynamics.w * s2 * s2;
+
+    vec4 restRotation = jp.restRotation;
+    vec4 frame = quatMultiply(parentRotation, quatMultiply(restRotation, s.rotation));
+    vec3 omega = vec3(s.angularVelocity.x, s.angularVelocity.y, s.angularVelocity.z);
+
+    vec3 arm = quatRotate(frame, vec3(0.0f, jp.aero.y * scale, 0.0f));
+    vec3 worldPoint = vec3(sk.placement.x, sk.placement.y, sk.placement.z) + yawRotate(sk.placement.w, base * scale + arm);
+    vec3 wind = yawRotate(-sk.placement.w, windAt(worldPoint, time, u));
+    vec3 relative = wind - cross(quatRotate(frame, omega), arm);
+    vec3 drag = (0.5f * u.gravity.w * jp.aero.x * s2 * length(relative)) * relative;
+    vec3 centreOfMass = quatRotate(frame, vec3(jp.load.x, jp.load.y, jp.load.z) * scale);
+    vec3 gravity = vec3(u.gravity.x, u.gravity.y, u.gravity.z); // yaw leaves it unchanged
+    vec3 torque = cross(arm, drag) + cross(centreOfMass, (jp.load.w * s3) * gravity);
+
+    vec3 localTorque = quatRotate(quatConjugate(frame), torque);
+    vec3 spring = stiffness * rotationVectorOf(s.rotation);
+    omega = (omega + (dt / inertia) * (localTorque - spring)) /
+            (1.0f + dt * damping / inertia + dt * dt * stiffness / inertia);
+    omega.y = 0.0f; // segments bend, they do not twist
+
+    JointState next;
+    next.rotation = normalize(quatMultiply(s.rotation, quatFromRotationVector(omega * dt)));
+    next.angularVelocity = vec4(omega.x, omega.y, omega.z, 0.0f);
+    return next;
+}
+
+// The joint's rotation about its own base in rest plant space: R·q·R⁻¹.
+JOINT_PHYSICS_FN vec4 jointLocalRotation(JointParams jp, JointState s) {
+    return quatMultiply(jp.restRotation, quatMultiply(s.rotation, quatConjugate(jp.restRotation)));
+}
+
+// The pose pass composes, for joint j, the maps x ↦ o + M·(x − o) of j and
+// of each ancestor (o its rest base, M its jointLocalRotation), walking up
+// from j to the root:
+//   JointPose p = jointLocalMap(params[j], states[j]);
+//   for (k = parent of j; k != JOINT_NO_PARENT; k = parent of k)
+//       p = underParent(params[k], states[k], p);
+// At rest every M is the identity, so every pose is the identity map.
+JOINT_PHYSICS_FN JointPose jointLocalMap(JointParams jp, JointState s) {
+    vec4 m = jointLocalRotation(jp, s);
+    vec3 o = vec3(jp.restBase.x, jp.restBase.y, jp.restBase.z);
+    vec3 t = o - quatRotate(m, o);
+    JointPose p;
+    p.rotation = m;
+    p.translation = vec4(t.x, t.y, t.z, 0.0f);
+    return p;
+}
+
+// The parent's map applied after the child's: parent ∘ child.
+JOINT_PHYSICS_FN JointPose underParent(JointParams parent, JointState parentState, JointPose child) {
+    JointPose local = jointLocalMap(parent, parentState);
+    vec3 t = quatRotate(local.rotation, vec3(child.translation.x, child.translation.y, child.translation.z)) +
+             vec3(local.translation.x, local.translation.y, local.translation.z);
+    JointPose p;
+    p.rotation = quatMultiply(local.rotation, child.rotation);
+    p.translation = vec4(t.x, t.y, t.z, 0.0f);
+    return p;
+}
+
+// Where a pose puts a rest point (the vertex shaders' skinning).
+JOINT_PHYSICS_FN vec3 posePoint(JointPose p, vec3 x) {
+    return quatRotate(p.rotation, x) + vec3(p.translation.x, p.translation.y, p.translation.z);
+}
+
+#ifdef __cplusplus
+} // namespace gpu
+#endif
+#undef JOINT_PHYSICS_FN
+#endif

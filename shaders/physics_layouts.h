@@ -1,0 +1,76 @@
+// GPU data of the plant physics (DESIGN.md §6, issue 6), shared by GLSL and
+// C++ like field_layouts.h: vec4/uvec4 members only.
+//
+// A model's skeleton is its joints (one per segment). A simulated copy of a
+// skeleton (a Skeleton) has one JointState and one JointPose per joint. The
+// physics pass advances every simulated joint in parallel; the pose pass
+// then turns the local rotations into one affine map per joint, which the
+// vertex shaders apply to the joint's vertices (skinning).
+#ifndef PLANTFIELD_SHADERS_PHYSICS_LAYOUTS_H
+#define PLANTFIELD_SHADERS_PHYSICS_LAYOUTS_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+namespace gpu {
+using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+using uint = uint32_t;
+#endif
+
+#define PHYSICS_GROUP_SIZE 64
+#define JOINT_NO_PARENT 0xFFFFFFFFu
+// Skeleton::ids.w of a plant without a simulated skeleton: its vertices stay at rest.
+#define NO_SKELETON 0xFFFFFFFFu
+
+// One joint of a model's skeleton, in plant space before instance scale.
+// Quaternions are xyzw. The segment's rest frame R has local +Y along the
+// segment (lsystem/plant_asset.h Frame).
+struct JointParams {
+    vec4 restBase;     // xyz base of the segment, w length (m)
+    vec4 restRotation; // quaternion R: the segment's rest frame in plant space
+    vec4 dynamics;     // x mass m (kg), y inertia about the base I (kg·m²), z stiffness k (N·m/rad), w damping c (N·m·s/rad)
+    vec4 load;         // xyz centre of mass of the joint's subtree (itself and all it carries) relative to its base, in its rest local frame (m); w subtree mass (kg)
+    vec4 aero;         // x drag area Cd·A (m², the segment's and its leaves'), y distance from the base to the centre of pressure (m), zw 0
+    uvec4 links;       // x parent joint index in the model or JOINT_NO_PARENT, y depth (roots 0), zw 0
+};
+
+// One simulated joint: its rotation away from rest, in its local frame, and
+// its angular velocity. Identity and zero at rest.
+struct JointState {
+    vec4 rotation;        // quaternion q: the joint's current local frame is R·q (times its parent's motion)
+    vec4 angularVelocity; // xyz rad/s in the joint's local frame, w 0
+};
+
+// The pose of one simulated joint: the affine map taking rest plant-space
+// points of the segment (and everything attached to it) to where they are
+// now: x' = rotate(rotation, x) + translation.
+struct JointPose {
+    vec4 rotation;    // quaternion
+    vec4 translation; // xyz, w 0
+};
+
+// One simulated copy of a model's skeleton.
+struct Skeleton {
+    uvec4 ids;       // x model, y first JointParams of the model, z joints, w first JointState/JointPose
+    vec4 placement;  // xyz world position where the plant stands (the wind is sampled around it), w yaw (radians)
+    vec4 scale;      // x instance scale, yzw 0
+};
+
+struct PhysicsUniforms {
+    vec4 gravity;    // xyz m/s² (world), w air density (kg/m³)
+    vec4 wind;       // x, z: mean wind velocity (m/s, world); y gust strength (fraction of the speed); w gust front speed (m/s)
+    vec4 windDetail; // x turbulence (fraction of the speed), y gust wavelength (m), z time (s) at the start of this dispatch, w sub-step (s)
+    uvec4 counts;    // x skeletons, y simulated joints, z sub-steps this dispatch, w 0
+};
+
+#ifdef __cplusplus
+} // namespace gpu
+static_assert(sizeof(gpu::JointParams) == 6 * 16);
+static_assert(sizeof(gpu::JointState) == 32);
+static_assert(sizeof(gpu::JointPose) == 32);
+static_assert(sizeof(gpu::Skeleton) == 48);
+static_assert(sizeof(gpu::PhysicsUniforms) == 64);
+#endif
+
+#endif
