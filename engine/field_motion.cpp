@@ -46,6 +46,29 @@ void copyWhole(VkCommandBuffer cmd, const Buffer& from, const Buffer& to) {
     vkCmdCopyBuffer(cmd, from.buffer, to.buffer, 1, &region);
 }
 
+
+// The near-plant changes of a frame: plants repointed (host-visible), own
+// skeletons started from their shared copy's states and poses.
+void applyNearChanges(const GpuContext& ctx, FieldMotion& motion, const NearChanges& changes) {
+    auto* skeletonOf = static_cast<uint32_t*>(motion.instanceSkeleton.mapped);
+    for (const auto& [plant, skeleton] : changes.plantSkeleton) skeletonOf[plant] = skeleton;
+    if (changes.startFrom.empty()) return;
+    const auto* skeletons = static_cast<const gpu::Skeleton*>(motion.pass.skeletons.mapped);
+    std::vector<VkBufferCopy> states, poses;
+    for (const auto& [own, shared] : changes.startFrom) {
+        const uint32_t joints = skeletons[own].ids.z;
+        states.push_back({skeletons[shared].ids.w * sizeof(gpu::JointState), skeletons[own].ids.w * sizeof(gpu::JointState),
+                          joints * sizeof(gpu::JointState)});
+        poses.push_back({skeletons[shared].ids.w * sizeof(gpu::JointPose), skeletons[own].ids.w * sizeof(gpu::JointPose),
+                         joints * sizeof(gpu::JointPose)});
+    }
+    // Within one buffer: source and destination ranges never overlap (different skeletons).
+    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+        vkCmdCopyBuffer(cmd, motion.pass.states.buffer, motion.pass.states.buffer, uint32_t(states.size()), states.data());
+        vkCmdCopyBuffer(cmd, motion.pass.poses.buffer, motion.pass.poses.buffer, uint32_t(poses.size()), poses.data());
+    });
+}
+
 } // namespace
 
 float sharedPhaseSpacing(const PhysicsSettings& settings) {
@@ -54,11 +77,17 @@ float sharedPhaseSpacing(const PhysicsSettings& settings) {
 
 FieldMotion createFieldMotion(const GpuContext& ctx, const FieldContent& content) {
     FieldMotion motion;
+    motion.content = &content;
     motion.wind = content.scene.wind;
     motion.settings = content.scene.physics;
-    const SkeletonSet set = sharedSkeletons(content);
+    SkeletonSet set = sharedSkeletons(content);
+    motion.near = reserveNearSkeletons(set, content.models, content.plants, motion.settings.jointBudget);
+    motion.grid = makePlantGrid(content.plants, content.scene.terrain.size, 16.0f);
     motion.pass = createPhysicsPass(ctx, set);
-    motion.instanceSkeleton = deviceCopyOf(ctx, skeletonPerPlant(content), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    motion.sharedOf = skeletonPerPlant(content);
+    motion.instanceSkeleton = createHostBuffer(ctx, std::max<size_t>(1, motion.sharedOf.size()) * sizeof(uint32_t),
+                                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    std::copy(motion.sharedOf.begin(), motion.sharedOf.end(), static_cast<uint32_t*>(motion.instanceSkeleton.mapped));
     motion.restStates = deviceCopyOf(ctx, set.states, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     motion.restPoses = deviceCopyOf(ctx, set.poses, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     return motion;
@@ -69,7 +98,8 @@ void destroyFieldMotion(const GpuContext& ctx, FieldMotion& motion) {
     for (Buffer* b : {&motion.instanceSkeleton, &motion.restStates, &motion.restPoses}) destroyBuffer(ctx, *b);
 }
 
-void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart) {
+void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart,
+                        const glm::vec3& camera) {
     const double dt = motion.settings.subStep;
     // Whole sub-steps from time 0, so a time is reached the same way from anywhere.
     const uint64_t target = subStepsUntil(time, motion.settings);
@@ -80,7 +110,13 @@ void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time,
             copyWhole(cmd, motion.restPoses, motion.pass.poses);
         });
         motion.simulatedStep = subStepsUntil(std::max(0.0, time - kSettleSeconds), motion.settings);
+        applyNearChanges(ctx, motion,
+                         releaseAllNearSkeletons(motion.near, motion.sharedOf,
+                                                 static_cast<const gpu::Skeleton*>(motion.pass.skeletons.mapped)));
     }
+    applyNearChanges(ctx, motion,
+                     updateNearSkeletons(motion.near, motion.grid, motion.content->plants, motion.content->models,
+                                         motion.sharedOf, camera, static_cast<gpu::Skeleton*>(motion.pass.skeletons.mapped)));
     uint64_t steps = target - motion.simulatedStep;
     auto uniformsFor = [&](uint32_t count) {
         return makePhysicsUniforms(motion.wind, motion.settings, float(double(motion.simulatedStep) * dt), float(dt),

@@ -2,11 +2,13 @@
 // follows, and when the physics pass steps. Farther plants share a model's
 // skeletons, simulated in a few copies placed a fraction of a gust
 // wavelength apart along the wind, so neighbours sway out of phase; each
-// plant follows the copy its wind phase picks. Impostors sway in their
-// vertex shader instead.
+// plant follows the copy its wind phase picks. Plants near the camera get
+// skeletons of their own within the joint budget (near_skeletons.h).
+// Impostors sway in their vertex shader instead.
 #pragma once
 
 #include "engine/field.h"
+#include "engine/near_skeletons.h"
 #include "engine/physics_pass.h"
 
 namespace pf {
@@ -18,8 +20,12 @@ inline constexpr uint32_t kFrameSubSteps = 8;
 inline constexpr double kSettleSeconds = 5.0;
 
 struct FieldMotion {
+    const FieldContent* content = nullptr; // outlives the motion (the renderer owns both)
     PhysicsPass pass;
-    Buffer instanceSkeleton; // uint per plant: the skeleton its vertices follow
+    Buffer instanceSkeleton; // host-visible uint per plant: the skeleton its vertices follow
+    std::vector<uint32_t> sharedOf; // per plant: the shared copy it follows when it has no own skeleton
+    PlantGrid grid;
+    NearSkeletons near;
     Buffer restStates;       // copied over the states to restart at rest
     Buffer restPoses;
     Wind wind;
@@ -35,7 +41,9 @@ void destroyFieldMotion(const GpuContext& ctx, FieldMotion& motion);
 // when `restart` or when time went backwards; steps beyond the last
 // kFrameSubSteps run now (the GPU must be idle); the rest are left for the
 // frame. Call while no frame is in flight.
-void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart);
+// Near plants are those around `camera`.
+void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart,
+                        const glm::vec3& camera);
 // The physics and pose passes of the frame.
 void recordFieldMotion(VkCommandBuffer cmd, const FieldMotion& motion);
 

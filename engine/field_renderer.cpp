@@ -323,7 +323,7 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     block.field.viewport = glm::vec4(float(extent.width), float(extent.height), 2.0f * radius / float(shadow_.size),
                                      settings_.shadows ? 1.0f : 0.0f);
     // The physics pass's wind field, for the shaders that sway without a skeleton.
-    advanceFieldMotion(ctx_, motion_, view.time, view.firstFrame);
+    advanceFieldMotion(ctx_, motion_, view.time, view.firstFrame, view.camera.position);
     const gpu::PhysicsUniforms wind =
         makePhysicsUniforms(motion_.wind, motion_.settings, view.time, motion_.settings.subStep, 0, 0, 0);
     block.field.wind = glm::vec4(wind.wind.x, wind.wind.y, wind.wind.z, view.time);

@@ -80,3 +80,26 @@ TEST_F(FieldRenderTest, TooLargeImageIsRejected) {
 
 } // namespace
 } // namespace pf::test
+
+namespace pf::test {
+namespace {
+
+// gust.json: full-detail plants in a strong gusty wind. At t = 0 they stand
+// at rest; at t = 3 s they have moved, the same way on every run.
+TEST_F(FieldRenderTest, MovingForestIsDeterministicAndMoves) {
+    const FieldShot rest{.scene = "gust.json", .size = {320, 240}, .time = 0.0};
+    FieldShot windy = rest;
+    windy.time = 3.0;
+    const FieldShotResult a = renderField(ctx, windy);
+    const FieldShotResult b = renderField(ctx, windy);
+    const FieldShotResult still = renderField(ctx, rest);
+    ASSERT_GT(a.stats.plantsPerLod[LOD_FULL], 0u) << "the gust scene is meant to be seen at full detail";
+    EXPECT_TRUE(a.image.pixels == b.image.pixels) << "two captures of the moving forest at t = 3 s differ";
+    size_t moved = 0;
+    for (size_t i = 0; i < a.image.pixels.size(); i += 4)
+        moved += std::abs(a.image.pixels[i + 1] - still.image.pixels[i + 1]) > 24;
+    EXPECT_GT(moved, 200u) << "the wind should have moved leaves and twigs by t = 3 s";
+}
+
+} // namespace
+} // namespace pf::test
