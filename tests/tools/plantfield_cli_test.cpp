@@ -82,6 +82,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"TooManyInstances", "--capture OUT --instances 16777217", "--instances"},
                       BadInvocation{"LodOutOfRange", "--capture OUT --lod 3", "--lod"},
                       BadInvocation{"FramesWithoutOutDir", "--frames 5", "--out-dir"},
+                      BadInvocation{"MalformedWind", "--capture OUT --wind fast", "--wind"},
+                      BadInvocation{"WindTooStrong", "--capture OUT --wind 500,90", "--wind"},
+                      BadInvocation{"WindDirectionNotANumber", "--capture OUT --wind 10,east", "--wind"},
                       BadInvocation{"UnknownScene", "/nonexistent/scene.json --capture OUT", "does not exist"}),
     invocationName);
 
