@@ -99,7 +99,7 @@ void destroyFieldMotion(const GpuContext& ctx, FieldMotion& motion) {
 }
 
 void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart,
-                        const glm::vec3& camera) {
+                        const glm::vec3& camera, bool realTime) {
     const double dt = motion.settings.subStep;
     // Whole sub-steps from time 0, so a time is reached the same way from anywhere.
     const uint64_t target = subStepsUntil(time, motion.settings);
@@ -117,6 +117,8 @@ void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time,
     applyNearChanges(ctx, motion,
                      updateNearSkeletons(motion.near, motion.grid, motion.content->plants, motion.content->models,
                                          motion.sharedOf, camera, static_cast<gpu::Skeleton*>(motion.pass.skeletons.mapped)));
+    if (realTime && !restart && target - motion.simulatedStep > kMaxFrameGapSubSteps)
+        motion.simulatedStep = target - kMaxFrameGapSubSteps;
     uint64_t steps = target - motion.simulatedStep;
     auto uniformsFor = [&](uint32_t count) {
         return makePhysicsUniforms(motion.wind, motion.settings, float(double(motion.simulatedStep) * dt), float(dt),
@@ -135,8 +137,8 @@ void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time,
     motion.simulatedStep += steps;
 }
 
-void recordFieldMotion(VkCommandBuffer cmd, const FieldMotion& motion) {
-    recordPhysicsPass(cmd, motion.pass);
+void recordFieldMotion(VkCommandBuffer cmd, const FieldMotion& motion, GpuTimer* timer) {
+    recordPhysicsPass(cmd, motion.pass, timer);
 }
 
 } // namespace pf

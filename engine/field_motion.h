@@ -18,6 +18,10 @@ inline constexpr uint32_t kFrameSubSteps = 8;
 // A capture at time T starts from rest at T − this (plants settle in ~5 s),
 // so it costs the same at any T and depends on T alone.
 inline constexpr double kSettleSeconds = 5.0;
+// In real time, at most this many steps between two frames: a slow frame
+// (a window on a CPU device) must not make the next one slower still. Time
+// beyond it passes without being simulated.
+inline constexpr uint32_t kMaxFrameGapSubSteps = 4 * kFrameSubSteps;
 
 struct FieldMotion {
     const FieldContent* content = nullptr; // outlives the motion (the renderer owns both)
@@ -41,11 +45,12 @@ void destroyFieldMotion(const GpuContext& ctx, FieldMotion& motion);
 // when `restart` or when time went backwards; steps beyond the last
 // kFrameSubSteps run now (the GPU must be idle); the rest are left for the
 // frame. Call while no frame is in flight.
-// Near plants are those around `camera`.
+// Near plants are those around `camera`. `realTime` caps the steps between
+// frames (kMaxFrameGapSubSteps); captures and sequences simulate every step.
 void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart,
-                        const glm::vec3& camera);
-// The physics and pose passes of the frame.
-void recordFieldMotion(VkCommandBuffer cmd, const FieldMotion& motion);
+                        const glm::vec3& camera, bool realTime);
+// The physics and pose passes of the frame (timer scopes "physics", "pose").
+void recordFieldMotion(VkCommandBuffer cmd, const FieldMotion& motion, GpuTimer* timer = nullptr);
 
 // The shared skeleton copies of a model follow each other along the wind
 // this far apart (m): the gust wavelength over the number of copies.

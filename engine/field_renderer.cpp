@@ -323,7 +323,7 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     block.field.viewport = glm::vec4(float(extent.width), float(extent.height), 2.0f * radius / float(shadow_.size),
                                      settings_.shadows ? 1.0f : 0.0f);
     // The physics pass's wind field, for the shaders that sway without a skeleton.
-    advanceFieldMotion(ctx_, motion_, view.time, view.firstFrame, view.camera.position);
+    advanceFieldMotion(ctx_, motion_, view.time, view.firstFrame, view.camera.position, view.realTime);
     const gpu::PhysicsUniforms wind =
         makePhysicsUniforms(motion_.wind, motion_.settings, view.time, motion_.settings.subStep, 0, 0, 0);
     block.field.wind = glm::vec4(wind.wind.x, wind.wind.y, wind.wind.z, view.time);
@@ -394,10 +394,7 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
 void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const {
     if (timer) resetGpuTimer(cmd, *timer);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &drawSet_, 0, nullptr);
-    {
-        Timed scope(cmd, timer, "physics");
-        recordFieldMotion(cmd, motion_);
-    }
+    recordFieldMotion(cmd, motion_, timer);
     {
         Timed scope(cmd, timer, "cull");
         recordCullPass(cmd, cull_);
@@ -412,10 +409,7 @@ void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuT
 void FieldRenderer::recordNaive(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const {
     if (timer) resetGpuTimer(cmd, *timer);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &naiveSet_, 0, nullptr);
-    {
-        Timed scope(cmd, timer, "physics");
-        recordFieldMotion(cmd, motion_);
-    }
+    recordFieldMotion(cmd, motion_, timer);
     { Timed scope(cmd, timer, "cull"); }
     {
         Timed scope(cmd, timer, "shadow");

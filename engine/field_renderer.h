@@ -36,6 +36,7 @@ struct FieldView {
     float deltaTime = 0.0f; // seconds since the previous frame (LOD fades advance by it)
     bool firstFrame = true; // LOD state starts settled at each plant's target LOD
     std::optional<uint32_t> forcedLod; // every visible plant at this LOD (tests, debugging)
+    bool realTime = false;   // a window: physics skips what it cannot catch up (field_motion.h)
 };
 
 // What the last recorded frame drew, from the cull pass's counters.
@@ -46,10 +47,10 @@ struct FieldFrameStats {
     uint64_t triangles = 0;                           // colour pass, plants only
 };
 
-// GPU timer scope names, in recording order. "physics" holds the physics and
-// pose passes; "colour" is the whole colour pass and the three after it are
-// nested inside it.
-inline constexpr const char* kFieldPasses[] = {"physics", "cull", "shadow", "colour", "plants", "impostors", "terrain_sky"};
+// GPU timer scope names, in recording order. "colour" is the whole colour
+// pass and the three after it are nested inside it.
+inline constexpr const char* kFieldPasses[] = {"physics", "pose",      "cull",       "shadow",
+                                               "colour",  "plants",    "impostors",  "terrain_sky"};
 
 class FieldRenderer {
 public:
@@ -71,6 +72,7 @@ public:
     const FieldContent& content() const { return content_; }
     VkSampleCountFlagBits samples() const { return settings_.samples; }
     uint64_t naiveTriangles() const; // what recordNaive draws in its colour pass
+    uint32_t simulatedJoints() const { return motion_.pass.jointCount; } // shared copies and near plants' own
     VkDeviceSize gpuBytes() const;   // buffers and images this renderer allocated
 
 private:

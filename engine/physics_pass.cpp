@@ -21,6 +21,7 @@ enum Binding : uint32_t {
     kBindingStates,
     kBindingPoses,
     kBindingJointSkeleton,
+    kBindingJointOrder,
     kBindingCount
 };
 
@@ -31,10 +32,30 @@ VkDeviceSize bytesOf(const std::vector<T>& v) {
 }
 
 // Past maxComputeWorkGroupCount[0] groups a dispatch wraps into rows.
-glm::uvec2 dispatchGroups(const PhysicsPass& pass, const GpuContext& ctx) {
-    const uint32_t groups = (pass.jointCount + PHYSICS_GROUP_SIZE - 1) / PHYSICS_GROUP_SIZE;
-    const uint32_t x = std::min(groups, ctx.properties.limits.maxComputeWorkGroupCount[0]);
-    return {x, x ? (groups + x - 1) / x : 0};
+void dispatchJoints(VkCommandBuffer cmd, const PhysicsPass& pass, uint32_t joints) {
+    const uint32_t groups = (joints + PHYSICS_GROUP_SIZE - 1) / PHYSICS_GROUP_SIZE;
+    const uint32_t x = std::min(groups, pass.maxGroupsX);
+    vkCmdDispatch(cmd, x, (groups + x - 1) / x, 1);
+}
+
+// The simulated joints grouped by depth (a counting sort on links.y), and
+// each depth's run of them: what the pose levels dispatch over.
+std::vector<uint32_t> jointsByDepth(const SkeletonSet& set, std::vector<glm::uvec2>& levels) {
+    const size_t n = set.states.size();
+    std::vector<uint32_t> depth(n);
+    levels.clear();
+    for (size_t i = 0; i < n; ++i) {
+        const gpu::Skeleton& skeleton = set.skeletons[set.jointSkeleton[i]];
+        depth[i] = set.params[skeleton.ids.y + (uint32_t(i) - skeleton.ids.w)].links.y;
+        if (depth[i] >= levels.size()) levels.resize(depth[i] + 1, glm::uvec2(0));
+        ++levels[depth[i]].y;
+    }
+    for (size_t d = 1; d < levels.size(); ++d) levels[d].x = levels[d - 1].x + levels[d - 1].y;
+    std::vector<uint32_t> order(n);
+    std::vector<uint32_t> next(levels.size());
+    for (size_t d = 0; d < levels.size(); ++d) next[d] = levels[d].x;
+    for (size_t i = 0; i < n; ++i) order[next[depth[i]]++] = uint32_t(i);
+    return order;
 }
 
 } // namespace
@@ -43,7 +64,8 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
     PhysicsPass pass;
     pass.skeletonCount = uint32_t(set.skeletons.size());
     pass.jointCount = uint32_t(set.states.size());
-    pass.groups = dispatchGroups(pass, ctx);
+    pass.maxGroupsX = ctx.properties.limits.maxComputeWorkGroupCount[0];
+    const std::vector<uint32_t> order = jointsByDepth(set, pass.levels);
 
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags uploaded = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
@@ -59,8 +81,9 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
     pass.poses = createBuffer(ctx, bytesOf(set.poses), uploaded | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                               VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     pass.jointSkeleton = createBuffer(ctx, bytesOf(set.jointSkeleton), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    pass.jointOrder = createBuffer(ctx, bytesOf(order), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
 
-    // One staging buffer holds the four device-local arrays back to back.
+    // One staging buffer holds the five device-local arrays back to back.
     struct Upload {
         const void* data;
         VkDeviceSize bytes;
@@ -70,7 +93,8 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
         {set.params.data(), set.params.size() * sizeof(gpu::JointParams), &pass.params},
         {set.states.data(), set.states.size() * sizeof(gpu::JointState), &pass.states},
         {set.poses.data(), set.poses.size() * sizeof(gpu::JointPose), &pass.poses},
-        {set.jointSkeleton.data(), set.jointSkeleton.size() * sizeof(uint32_t), &pass.jointSkeleton}};
+        {set.jointSkeleton.data(), set.jointSkeleton.size() * sizeof(uint32_t), &pass.jointSkeleton},
+        {order.data(), order.size() * sizeof(uint32_t), &pass.jointOrder}};
     VkDeviceSize stagingBytes = 0;
     for (const Upload& u : uploads) stagingBytes += u.bytes;
     if (stagingBytes > 0) {
@@ -93,21 +117,30 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
         destroyBuffer(ctx, staging);
     }
 
-    const VkBuffer buffers[kBindingCount] = {pass.uniforms.buffer, pass.params.buffer, pass.skeletons.buffer,
-                                             pass.states.buffer,   pass.poses.buffer,  pass.jointSkeleton.buffer};
+    const VkBuffer buffers[kBindingCount] = {pass.uniforms.buffer,      pass.params.buffer, pass.skeletons.buffer,
+                                             pass.states.buffer,        pass.poses.buffer,  pass.jointSkeleton.buffer,
+                                             pass.jointOrder.buffer};
     pass.set = createComputeSet(ctx, buffers);
-    pass.physicsPipeline =
-        createComputePipeline(ctx.device, pass.set.pipelineLayout, createShaderModule(ctx.device, spirv_physics_comp));
-    pass.posePipeline =
-        createComputePipeline(ctx.device, pass.set.pipelineLayout, createShaderModule(ctx.device, spirv_pose_comp));
+    // The set's layout plus the pose level (uvec2 push constants; physics.comp declares none).
+    const VkPushConstantRange levelRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(glm::uvec2)};
+    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layoutInfo.setLayoutCount = 1;
+    layoutInfo.pSetLayouts = &pass.set.setLayout;
+    layoutInfo.pushConstantRangeCount = 1;
+    layoutInfo.pPushConstantRanges = &levelRange;
+    VK_CHECK(vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &pass.layout));
+    pass.physicsPipeline = createComputePipeline(ctx.device, pass.layout, createShaderModule(ctx.device, spirv_physics_comp));
+    pass.posePipeline = createComputePipeline(ctx.device, pass.layout, createShaderModule(ctx.device, spirv_pose_comp));
     return pass;
 }
 
 void destroyPhysicsPass(const GpuContext& ctx, PhysicsPass& pass) {
     vkDestroyPipeline(ctx.device, pass.physicsPipeline, nullptr);
     vkDestroyPipeline(ctx.device, pass.posePipeline, nullptr);
+    vkDestroyPipelineLayout(ctx.device, pass.layout, nullptr);
     destroyComputeSet(ctx, pass.set);
-    for (Buffer* b : {&pass.uniforms, &pass.params, &pass.skeletons, &pass.states, &pass.poses, &pass.jointSkeleton})
+    for (Buffer* b : {&pass.uniforms, &pass.params, &pass.skeletons, &pass.states, &pass.poses, &pass.jointSkeleton,
+                      &pass.jointOrder})
         destroyBuffer(ctx, *b);
     pass = {};
 }
@@ -120,7 +153,7 @@ void setPhysicsUniforms(const PhysicsPass& pass, const gpu::PhysicsUniforms& uni
     std::memcpy(pass.uniforms.mapped, &u, sizeof(u));
 }
 
-void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass) {
+void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, GpuTimer* timer) {
     // The previous frame's vertex shaders may still read the poses the pose
     // dispatch overwrites (write-after-read: execution only), and the
     // previous physics and pose dispatches wrote the states and poses read
@@ -130,22 +163,36 @@ void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass) {
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     if (pass.jointCount == 0) return;
 
-    bindComputeSet(cmd, pass.set);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout, 0, 1, &pass.set.descriptorSet, 0,
+                            nullptr);
+    if (timer) beginScope(cmd, *timer, "physics");
     // The sub-step count is what setPhysicsUniforms wrote for this frame.
     const uint32_t subSteps = static_cast<const gpu::PhysicsUniforms*>(pass.uniforms.mapped)->counts.z;
     if (subSteps > 0) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.physicsPipeline);
-        vkCmdDispatch(cmd, pass.groups.x, pass.groups.y, 1);
-        // The pose dispatch reads the new states, and overwrites the poses
+        dispatchJoints(cmd, pass, pass.jointCount);
+        // The pose dispatches read the new states, and overwrite the poses
         // the physics dispatch read (write-after-read, covered by the same
         // execution dependency).
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     }
+    if (timer) endScope(cmd, *timer);
 
+    if (timer) beginScope(cmd, *timer, "pose");
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.posePipeline);
-    vkCmdDispatch(cmd, pass.groups.x, pass.groups.y, 1);
+    for (size_t d = 0; d < pass.levels.size(); ++d) {
+        if (d > 0) {
+            // This level reads the poses of its parents, which the previous level wrote.
+            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+        }
+        const glm::uvec2 level = pass.levels[d]; // never empty: a joint at depth d > 0 has a parent at d − 1
+        vkCmdPushConstants(cmd, pass.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(level), &level);
+        dispatchJoints(cmd, pass, level.y);
+    }
+    if (timer) endScope(cmd, *timer);
     // The vertex shaders skin plant vertices with the new poses.
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);

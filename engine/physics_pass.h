@@ -1,19 +1,21 @@
 // The physics and pose passes on the GPU (DESIGN.md §5 passes 1 and 2):
 // one compute invocation per simulated joint takes the frame's sub-steps
-// (shaders/physics.comp), then one per joint composes its pose from its
-// ancestors' rotations (shaders/pose.comp). The poses are what the vertex
+// (shaders/physics.comp), then the poses are composed level by level from
+// the roots, one dispatch per depth (shaders/pose.comp). The poses are what the vertex
 // shaders skin plant vertices with. engine/plant_physics.h is the CPU
 // reference of both.
 #pragma once
 
 #include "engine/plant_physics.h"
 #include "engine/compute_set.h"
+#include "engine/gpu_timer.h"
 #include "engine/resources.h"
 
 namespace pf {
 
 struct PhysicsPass {
     ComputeSet set; // uniforms, then the storage buffers below
+    VkPipelineLayout layout = VK_NULL_HANDLE; // set's descriptor set and the pose level's push constants
     VkPipeline physicsPipeline = VK_NULL_HANDLE;
     VkPipeline posePipeline = VK_NULL_HANDLE;
 
@@ -23,10 +25,12 @@ struct PhysicsPass {
     Buffer states;        // JointState[]
     Buffer poses;         // JointPose[] (read by the vertex shaders)
     Buffer jointSkeleton; // uint per simulated joint
+    Buffer jointOrder;    // uint per simulated joint: the joints level after level (depth 0 first)
 
     uint32_t skeletonCount = 0;
     uint32_t jointCount = 0;
-    glm::uvec2 groups{}; // physics and pose dispatches: rows of at most maxComputeWorkGroupCount[0] groups
+    uint32_t maxGroupsX = 0;        // maxComputeWorkGroupCount[0]: longer dispatches wrap into rows
+    std::vector<glm::uvec2> levels; // per depth: x first entry of jointOrder, y joints
 };
 
 // Uploads the set (its states and poses as they are, normally at rest).
@@ -38,8 +42,11 @@ void setPhysicsUniforms(const PhysicsPass& pass, const gpu::PhysicsUniforms& uni
 
 // Records physics (u.counts.z sub-steps; none when 0) then pose, with the
 // barriers that order them after the previous frame's vertex reads of the
-// poses and make the new poses visible to vertex shaders.
-void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass);
+// poses and make the new poses visible to vertex shaders. With a timer, the
+// physics dispatch is timed as scope "physics" and the pose levels as
+// "pose" (both recorded unless the set is empty; "physics" times nothing
+// when there are no sub-steps). Compute only: record it outside rendering.
+void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, GpuTimer* timer = nullptr);
 
 // Copies states and poses back (tests, --physics-check).
 void readPhysicsState(const GpuContext& ctx, const PhysicsPass& pass, std::vector<gpu::JointState>& states,

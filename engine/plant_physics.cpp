@@ -241,23 +241,39 @@ void stepSkeletonsOnCpu(SkeletonSet& set, const gpu::PhysicsUniforms& u) {
         const uint32_t parent = p.links.x;
         const gpu::vec4 parentRotation = parent == JOINT_NO_PARENT ? kIdentityRotation : entry[skeleton.ids.w + parent].rotation;
         const glm::vec3 base = gpu::posePoint(entry[i], xyz(p.restBase));
+        const float dt = u.windDetail.w;
+        const gpu::JointStep c = gpu::prepareJointStep(p, parentRotation, base, skeleton, u, dt);
         gpu::JointState state = set.states[i];
         for (uint32_t step = 0; step < u.counts.z; ++step)
-            state = gpu::stepJoint(p, state, parentRotation, base, skeleton, u,
-                                   u.windDetail.z + float(step) * u.windDetail.w, u.windDetail.w);
+            state = gpu::stepJoint(c, state, u, u.windDetail.z + float(step) * dt, dt);
         set.states[i] = state;
     }
 }
 
 void poseSkeletonsOnCpu(SkeletonSet& set) {
-    for (size_t i = 0; i < set.states.size(); ++i) {
+    // Like the GPU's pose levels: every joint after its parent (a counting
+    // sort by depth), each composed onto its parent's new pose.
+    const size_t n = set.states.size();
+    auto paramsOf = [&](size_t i) -> const gpu::JointParams& {
         const gpu::Skeleton& skeleton = set.skeletons[set.jointSkeleton[i]];
-        const uint32_t first = skeleton.ids.y, firstState = skeleton.ids.w;
-        const uint32_t joint = uint32_t(i) - firstState;
-        gpu::JointPose pose = gpu::jointLocalMap(set.params[first + joint], set.states[i]);
-        for (uint32_t k = set.params[first + joint].links.x; k != JOINT_NO_PARENT; k = set.params[first + k].links.x)
-            pose = gpu::underParent(set.params[first + k], set.states[firstState + k], pose);
-        set.poses[i] = pose;
+        return set.params[skeleton.ids.y + (uint32_t(i) - skeleton.ids.w)];
+    };
+    std::vector<uint32_t> start;
+    for (size_t i = 0; i < n; ++i) {
+        const uint32_t depth = paramsOf(i).links.y;
+        if (depth + 2 > start.size()) start.resize(depth + 2, 0);
+        ++start[depth + 1];
+    }
+    for (size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
+    std::vector<uint32_t> order(n);
+    for (size_t i = 0; i < n; ++i) order[start[paramsOf(i).links.y]++] = uint32_t(i);
+
+    const gpu::JointPose identity{kIdentityRotation, gpu::vec4(0.0f)};
+    for (const uint32_t i : order) {
+        const gpu::JointParams& p = paramsOf(i);
+        const uint32_t firstState = set.skeletons[set.jointSkeleton[i]].ids.w;
+        const gpu::JointPose parent = p.links.x == JOINT_NO_PARENT ? identity : set.poses[firstState + p.links.x];
+        set.poses[i] = gpu::composeWithParent(parent, p, set.states[i]);
     }
 }
 

@@ -17,6 +17,9 @@
 //   is stable for any stiffness:
 //     ω ← (ω + dt/I·(τ − k·θa)) / (1 + dt·c/I + dt²·k/I),  q ← normalize(q·exp(ω·dt));
 // - no twist: the component of ω along the segment is dropped.
+// A frame's sub-steps all see the poses at entry, so what does not change
+// between them is computed once per joint (prepareJointStep) and the torque
+// is evaluated in the joint's local frame (fewer rotations per step).
 // Instance scale s scales lengths by s, masses by s³, inertia by s⁵,
 // stiffness by s³ (r⁴/l), damping by s⁴ and areas by s².
 #ifndef PLANTFIELD_SHADERS_JOINT_PHYSICS_H
@@ -27,6 +30,7 @@
 #ifdef __cplusplus
 #include <glm/glm.hpp>
 namespace gpu {
+using vec2 = glm::vec2;
 using vec3 = glm::vec3;
 using glm::atan;
 using glm::cos;
@@ -56,10 +60,17 @@ JOINT_PHYSICS_FN vec3 quatRotate(vec4 q, vec3 v) {
     return v + 2.0f * cross(u, cross(u, v) + q.w * v);
 }
 
-// exp of a rotation vector (axis · angle) as a unit quaternion.
+// exp of a rotation vector (axis · angle) as a unit quaternion. Below
+// 0.1 rad (a sub-step's turn, normally) the Taylor series of sin(a/2)/a and
+// cos(a/2) in a² replace sin, cos and the square root: the first terms left
+// out are a⁶/322560 and a⁸/10321920, below 4e-12, far under float precision.
 JOINT_PHYSICS_FN vec4 quatFromRotationVector(vec3 r) {
-    float angle = length(r);
-    if (angle < 1e-8f) return normalize(vec4(0.5f * r.x, 0.5f * r.y, 0.5f * r.z, 1.0f));
+    float a2 = dot(r, r);
+    if (a2 < 0.01f) {
+        vec3 v = r * (0.5f - a2 * (1.0f / 48.0f - a2 * (1.0f / 3840.0f)));
+        return vec4(v.x, v.y, v.z, 1.0f - a2 * (0.125f - a2 * (1.0f / 384.0f - a2 * (1.0f / 46080.0f))));
+    }
+    float angle = sqrt(a2);
     vec3 axis = r * (sin(0.5f * angle) / angle);
     return vec4(axis.x, axis.y, axis.z, cos(0.5f * angle));
 }
@@ -73,10 +84,10 @@ JOINT_PHYSICS_FN vec3 rotationVectorOf(vec4 q) {
     return u * (2.0f * atan(s, q.w) / s);
 }
 
-// Yaw about +y by the plant's rotation (field_common.glsl yawMatrix).
-JOINT_PHYSICS_FN vec3 yawRotate(float yaw, vec3 v) {
-    float c = cos(yaw), s = sin(yaw);
-    return vec3(c * v.x + s * v.z, v.y, -s * v.x + c * v.z);
+// Yaw about +y by the plant's rotation (field_common.glsl yawMatrix), given
+// as (cos, sin) of the angle; (cos, −sin) turns back.
+JOINT_PHYSICS_FN vec3 yawRotate(vec2 cs, vec3 v) {
+    return vec3(cs.x * v.x + cs.y * v.z, v.y, -cs.y * v.x + cs.x * v.z);
 }
 
 // The wind at a world position and time: the mean wind, gust fronts that
@@ -96,34 +107,64 @@ JOINT_PHYSICS_FN vec3 windAt(vec3 p, float t, PhysicsUniforms u) {
     return mean * (1.0f + gust) + turbulence * (u.windDetail.x * speed);
 }
 
-// One sub-step of one joint. `parentRotation`: the parent's pose rotation at
-// the start of the frame (identity for roots); `base`: the joint's base now,
-// plant space before scale (its own pose applied to restBase).
-JOINT_PHYSICS_FN JointState stepJoint(JointParams jp, JointState s, vec4 parentRotation, vec3 base, Skeleton sk,
-                                      PhysicsUniforms u, float time, float dt) {
+// What a joint's sub-steps of one frame share: its parent's pose at entry
+// and its own base do not change between them, nor do its scaled constants.
+struct JointStep {
+    vec4 restFrame;     // Dp·R: the joint's frame is restFrame·q
+    vec3 base;          // the joint's base now, plant space after scale
+    vec3 placement;     // where the plant stands (world)
+    vec2 yaw;           // cos, sin of the plant's yaw
+    float arm;          // base to centre of pressure, after scale (m, local +Y)
+    vec3 centreOfMass;  // of the subtree, rest local frame, after scale (m)
+    vec3 weight;        // subtree mass × gravity (N, plant space: yaw leaves it unchanged)
+    float dragFactor;   // ½·ρ·CdA (kg/m)
+    float stiffness;    // k after scale
+    float stepOverInertia; // dt/I
+    float implicitScale;   // 1/(1 + dt·c/I + dt²·k/I)
+};
+
+// `parentRotation`: the parent's pose rotation at the start of the frame
+// (identity for roots); `base`: the joint's base now, plant space before
+// scale (its own pose applied to restBase); dt the sub-step.
+JOINT_PHYSICS_FN JointStep prepareJointStep(JointParams jp, vec4 parentRotation, vec3 base, Skeleton sk,
+                                            PhysicsUniforms u, float dt) {
     float scale = sk.scale.x;
     float s2 = scale * scale, s3 = s2 * scale;
     float inertia = jp.dynamics.y * s3 * s2;
     float stiffness = jp.dynamics.z * s3;
     float damping = jp.dynamics.w * s2 * s2;
+    JointStep c;
+    c.restFrame = quatMultiply(parentRotation, jp.restRotation);
+    c.base = base * scale;
+    c.placement = vec3(sk.placement.x, sk.placement.y, sk.placement.z);
+    c.yaw = vec2(cos(sk.placement.w), sin(sk.placement.w));
+    c.arm = jp.aero.y * scale;
+    c.centreOfMass = vec3(jp.load.x, jp.load.y, jp.load.z) * scale;
+    c.weight = (jp.load.w * s3) * vec3(u.gravity.x, u.gravity.y, u.gravity.z);
+    c.dragFactor = 0.5f * u.gravity.w * jp.aero.x * s2;
+    c.stiffness = stiffness;
+    c.stepOverInertia = dt / inertia;
+    c.implicitScale = 1.0f / (1.0f + dt * damping / inertia + dt * dt * stiffness / inertia);
+    return c;
+}
 
-    vec4 restRotation = jp.restRotation;
-    vec4 frame = quatMultiply(parentRotation, quatMultiply(restRotation, s.rotation));
+// One sub-step of one joint at `time`. The torque about the base is taken in
+// the joint's local frame L (where the arm is (0, arm, 0)): the wind and the
+// weight are turned into it, and the point's velocity there is ω × arm.
+JOINT_PHYSICS_FN JointState stepJoint(JointStep c, JointState s, PhysicsUniforms u, float time, float dt) {
+    vec4 frame = quatMultiply(c.restFrame, s.rotation);
+    vec4 toLocal = quatConjugate(frame);
     vec3 omega = vec3(s.angularVelocity.x, s.angularVelocity.y, s.angularVelocity.z);
 
-    vec3 arm = quatRotate(frame, vec3(0.0f, jp.aero.y * scale, 0.0f));
-    vec3 worldPoint = vec3(sk.placement.x, sk.placement.y, sk.placement.z) + yawRotate(sk.placement.w, base * scale + arm);
-    vec3 wind = yawRotate(-sk.placement.w, windAt(worldPoint, time, u));
-    vec3 relative = wind - cross(quatRotate(frame, omega), arm);
-    vec3 drag = (0.5f * u.gravity.w * jp.aero.x * s2 * length(relative)) * relative;
-    vec3 centreOfMass = quatRotate(frame, vec3(jp.load.x, jp.load.y, jp.load.z) * scale);
-    vec3 gravity = vec3(u.gravity.x, u.gravity.y, u.gravity.z); // yaw leaves it unchanged
-    vec3 torque = cross(arm, drag) + cross(centreOfMass, (jp.load.w * s3) * gravity);
+    vec3 armLocal = vec3(0.0f, c.arm, 0.0f);
+    vec3 worldPoint = c.placement + yawRotate(c.yaw, c.base + quatRotate(frame, armLocal));
+    vec3 wind = yawRotate(vec2(c.yaw.x, -c.yaw.y), windAt(worldPoint, time, u));
+    vec3 relative = quatRotate(toLocal, wind) - cross(omega, armLocal);
+    vec3 drag = (c.dragFactor * length(relative)) * relative;
+    vec3 localTorque = cross(armLocal, drag) + cross(c.centreOfMass, quatRotate(toLocal, c.weight));
 
-    vec3 localTorque = quatRotate(quatConjugate(frame), torque);
-    vec3 spring = stiffness * rotationVectorOf(s.rotation);
-    omega = (omega + (dt / inertia) * (localTorque - spring)) /
-            (1.0f + dt * damping / inertia + dt * dt * stiffness / inertia);
+    vec3 spring = c.stiffness * rotationVectorOf(s.rotation);
+    omega = (omega + c.stepOverInertia * (localTorque - spring)) * c.implicitScale;
     omega.y = 0.0f; // segments bend, they do not twist
 
     JointState next;
@@ -137,12 +178,11 @@ JOINT_PHYSICS_FN vec4 jointLocalRotation(JointParams jp, JointState s) {
     return quatMultiply(jp.restRotation, quatMultiply(s.rotation, quatConjugate(jp.restRotation)));
 }
 
-// The pose pass composes, for joint j, the maps x ↦ o + M·(x − o) of j and
-// of each ancestor (o its rest base, M its jointLocalRotation), walking up
-// from j to the root:
-//   JointPose p = jointLocalMap(params[j], states[j]);
-//   for (k = parent of j; k != JOINT_NO_PARENT; k = parent of k)
-//       p = underParent(params[k], states[k], p);
+// The pose of joint j composes the maps x ↦ o + M·(x − o) of j and of each
+// ancestor (o its rest base, M its jointLocalRotation), the root's applied
+// last. The pose pass goes level by level from the roots, so the parent's
+// pose is there when its children are composed:
+//   poses[j] = composeWithParent(parent of j's pose, or identity for a root, params[j], states[j]).
 // At rest every M is the identity, so every pose is the identity map.
 JOINT_PHYSICS_FN JointPose jointLocalMap(JointParams jp, JointState s) {
     vec4 m = jointLocalRotation(jp, s);
@@ -154,13 +194,13 @@ JOINT_PHYSICS_FN JointPose jointLocalMap(JointParams jp, JointState s) {
     return p;
 }
 
-// The parent's map applied after the child's: parent ∘ child.
-JOINT_PHYSICS_FN JointPose underParent(JointParams parent, JointState parentState, JointPose child) {
-    JointPose local = jointLocalMap(parent, parentState);
-    vec3 t = quatRotate(local.rotation, vec3(child.translation.x, child.translation.y, child.translation.z)) +
-             vec3(local.translation.x, local.translation.y, local.translation.z);
+// The parent's pose applied after the joint's own local map: parent ∘ local.
+JOINT_PHYSICS_FN JointPose composeWithParent(JointPose parent, JointParams jp, JointState s) {
+    JointPose local = jointLocalMap(jp, s);
+    vec3 t = quatRotate(parent.rotation, vec3(local.translation.x, local.translation.y, local.translation.z)) +
+             vec3(parent.translation.x, parent.translation.y, parent.translation.z);
     JointPose p;
-    p.rotation = quatMultiply(local.rotation, child.rotation);
+    p.rotation = quatMultiply(parent.rotation, local.rotation);
     p.translation = vec4(t.x, t.y, t.z, 0.0f);
     return p;
 }

@@ -3,7 +3,8 @@
 #include "joint_physics.h"
 
 // Physics (DESIGN.md §5 pass 1, §6): one invocation per simulated joint
-// takes the frame's counts.z sub-steps of stepJoint. Every joint reads its
+// takes the frame's counts.z sub-steps of stepJoint, its state held in
+// registers between them (prepareJointStep once per joint). Every joint reads its
 // parent's rotation and its own base from the poses at entry (written by the
 // previous pose pass) and writes only its own state, so the joints of a
 // dispatch are independent. engine/plant_physics.h stepSkeletonsOnCpu is the
@@ -41,9 +42,10 @@ void main() {
     vec4 parentRotation = parent == JOINT_NO_PARENT ? vec4(0.0f, 0.0f, 0.0f, 1.0f) : poses[sk.ids.w + parent].rotation;
     vec3 base = posePoint(poses[index], jp.restBase.xyz);
 
+    float dt = physics.windDetail.w;
+    JointStep c = prepareJointStep(jp, parentRotation, base, sk, physics, dt);
     JointState s = states[index];
     for (uint step = 0u; step < physics.counts.z; ++step)
-        s = stepJoint(jp, s, parentRotation, base, sk, physics, physics.windDetail.z + float(step) * physics.windDetail.w,
-                      physics.windDetail.w);
+        s = stepJoint(c, s, physics, physics.windDetail.z + float(step) * dt, dt);
     states[index] = s;
 }

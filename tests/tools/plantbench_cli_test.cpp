@@ -5,13 +5,16 @@
 
 #include "engine/field_renderer.h"
 #include "engine/image.h"
+#include "engine/plant_models.h"
 #include "engine/scene.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace pf::test {
@@ -43,6 +46,31 @@ size_t explicitPlants(const std::string& scenePath) {
     return plants;
 }
 
+// The joints the renderer simulates lie between its shared skeletons alone
+// (every model in physics.sharedPhases copies, engine/field_motion.cpp) and
+// those plus the near plants' own skeletons, at most physics.jointBudget.
+struct JointRange {
+    uint64_t shared = 0, most = 0;
+};
+JointRange expectedJoints(const std::string& scenePath) {
+    static std::map<std::string, JointRange> ranges;
+    if (!ranges.contains(scenePath)) {
+        const Scene scene = loadScene(scenePath);
+        uint64_t joints = 0;
+        for (const PlantModelInfo& model : buildPlantModels(scene).models) joints += model.joints;
+        const uint64_t shared = joints * std::max(1u, scene.physics.sharedPhases);
+        ranges[scenePath] = {shared, shared + scene.physics.jointBudget};
+    }
+    return ranges[scenePath];
+}
+
+// kFieldPasses and plantbench's own "capture" after them.
+std::vector<std::string> timedPasses() {
+    std::vector<std::string> passes(std::begin(kFieldPasses), std::end(kFieldPasses));
+    passes.push_back("capture");
+    return passes;
+}
+
 void expectSpread(const nlohmann::json& spread, const std::string& what) {
     ASSERT_TRUE(spread.is_object()) << what << ": " << spread;
     ASSERT_TRUE(spread["median"].is_number()) << what;
@@ -51,8 +79,9 @@ void expectSpread(const nlohmann::json& spread, const std::string& what) {
     EXPECT_GE(spread["p95"].get<double>(), spread["median"].get<double>()) << what;
 }
 
-// Every pass of kFieldPasses timed, plant counts those asked for plus the
-// scene's hand-placed plants, naive present with its ratio when asked for.
+// Every pass of kFieldPasses and the capture timed, plant counts those asked
+// for plus the scene's hand-placed plants, simulated joints in their range,
+// naive present with its ratio when asked for.
 void expectWellFormedSweep(const nlohmann::json& j, const std::string& scene, const std::vector<uint64_t>& counts,
                            bool naive) {
     EXPECT_EQ(j["scene"], scene);
@@ -68,7 +97,12 @@ void expectWellFormedSweep(const nlohmann::json& j, const std::string& scene, co
         EXPECT_EQ(r["instances"], counts[i] + byHand) << at;
         expectSpread(r["frame_ms"], at + " frame_ms");
         expectSpread(r["cpu_ms"], at + " cpu_ms");
-        for (const char* pass : kFieldPasses) expectSpread(r["gpu_ms"][pass], at + " gpu_ms." + pass);
+        for (const std::string& pass : timedPasses()) expectSpread(r["gpu_ms"][pass], at + " gpu_ms." + pass);
+        EXPECT_EQ(r["gpu_ms"].size(), timedPasses().size()) << at << ": " << r["gpu_ms"];
+        const uint64_t joints = r["joints_simulated"].get<uint64_t>();
+        EXPECT_GT(joints, 0u) << at;
+        EXPECT_GE(joints, expectedJoints(scene).shared) << at;
+        EXPECT_LE(joints, expectedJoints(scene).most) << at;
         uint64_t drawn = 0;
         for (const char* lod : {"full", "reduced", "impostor"}) drawn += r["plants_per_lod"][lod].get<uint64_t>();
         EXPECT_GT(drawn, 0u) << at;
@@ -78,6 +112,8 @@ void expectWellFormedSweep(const nlohmann::json& j, const std::string& scene, co
         if (naive) {
             ASSERT_TRUE(r["naive"].is_object()) << at;
             expectSpread(r["naive"]["frame_ms"], at + " naive frame_ms");
+            for (const std::string& pass : timedPasses())
+                expectSpread(r["naive"]["gpu_ms"][pass], at + " naive gpu_ms." + pass);
             EXPECT_GE(r["naive"]["triangles"].get<uint64_t>(), r["triangles"].get<uint64_t>()) << at;
             EXPECT_NEAR(r["ratio"].get<double>(),
                         r["naive"]["frame_ms"]["median"].get<double>() / r["frame_ms"]["median"].get<double>(), 1e-9);
@@ -120,13 +156,25 @@ TEST(PlantbenchCli, SmallSweepWritesJsonAndCsvWithEveryPass) {
     const auto rows = csvRows(readText(csv));
     ASSERT_EQ(rows.size(), 3u) << "a header and one row per count";
     EXPECT_EQ(rows[0][0], "count");
-    for (const char* pass : kFieldPasses)
-        EXPECT_NE(std::find(rows[0].begin(), rows[0].end(), std::string("gpu_") + pass + "_ms_median"), rows[0].end())
-            << pass;
     for (size_t i = 1; i < rows.size(); ++i) ASSERT_EQ(rows[i].size(), rows[0].size()) << "row " << i;
+    auto column = [&](const std::string& name) {
+        return size_t(std::find(rows[0].begin(), rows[0].end(), name) - rows[0].begin());
+    };
+    for (const std::string& pass : timedPasses())
+        for (const char* statistic : {"median", "p95"}) {
+            const std::string name = "gpu_" + pass + "_ms_" + statistic;
+            ASSERT_LT(column(name), rows[0].size()) << name;
+            for (size_t i = 1; i < rows.size(); ++i) EXPECT_FALSE(rows[i][column(name)].empty()) << name << " row " << i;
+        }
+    ASSERT_LT(column("joints_simulated"), rows[0].size());
     EXPECT_EQ(rows[1][0], "50");
     EXPECT_EQ(rows[2][0], "200");
     EXPECT_EQ(rows[2][1], std::to_string(200 + explicitPlants(kSmallScene)));
+    for (size_t i = 1; i < rows.size(); ++i)
+        EXPECT_EQ(rows[i][column("joints_simulated")], j["results"][i - 1]["joints_simulated"].dump()) << "row " << i;
+    // The table carries the capture and the joints too.
+    EXPECT_NE(r.output.find("capture ms"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("joints"), std::string::npos) << r.output;
 }
 
 TEST(PlantbenchCli, DefaultSceneSweepMatchesCounts) {

@@ -1,8 +1,5 @@
 #include "gpu_memory.h"
 
-#include "shaders/field_layouts.h"
-
-#include <cstdio>
 #include <cstring>
 #include <vector>
 
@@ -54,28 +51,6 @@ HeapCapacity largestDeviceLocalHeap(const GpuContext& ctx, bool budget) {
         if (bytes > largest.bytes) largest = {bytes, reported};
     }
     return largest;
-}
-
-uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_t width, uint32_t height,
-                             uint32_t samples) {
-    constexpr uint64_t kPerPlant = sizeof(gpu::FieldInstance) + LOD_COUNT * 4 + 4 + 4;
-    constexpr uint64_t kShadowMap = 2048ull * 2048 * 4;
-    const uint64_t pixels = uint64_t(width) * height;
-    const uint64_t target = pixels * 4 + pixels * samples * (samples > 1 ? 8 : 4);
-    uint64_t bytes = count * kPerPlant + target + kShadowMap;
-    if (pool) bytes += pool->vertices.size() * sizeof(gpu::FieldVertex) + pool->indices.size() * 4;
-    return bytes;
-}
-
-std::string formatBytes(uint64_t bytes) {
-    char text[32];
-    if (bytes >= (1ull << 30))
-        std::snprintf(text, sizeof(text), "%.1f GiB", double(bytes) / double(1ull << 30));
-    else if (bytes >= (1ull << 20))
-        std::snprintf(text, sizeof(text), "%.1f MiB", double(bytes) / double(1ull << 20));
-    else
-        std::snprintf(text, sizeof(text), "%llu B", static_cast<unsigned long long>(bytes));
-    return text;
 }
 
 } // namespace pf

@@ -5,8 +5,9 @@
 // one model after another over a 1 km square in the scene's wind.
 //
 // GPU time is the timestamp queries around the recorded passes
-// (engine/gpu_timer.h, the benchmark's manual time); wall_ms adds the submit
-// and the wait. The counter joint_steps_per_ms is joints × sub-steps per
+// (engine/gpu_timer.h, the benchmark's manual time), with physics_ms and
+// pose_ms the passes' own scopes (recordPhysicsPass); wall_ms adds the
+// submit and the wait. The counter joint_steps_per_ms is joints × sub-steps per
 // millisecond of that time (GPU: timestamps; CPU: wall time of one thread).
 #include "options.h"
 
@@ -84,26 +85,31 @@ void BM_GpuPhysicsPose(benchmark::State& state) {
     const GpuContext& ctx = benchContext();
     const SkeletonSet set = cloneForest(models.pool, uint32_t(state.range(0)));
     PhysicsPass pass = createPhysicsPass(ctx, set);
-    GpuTimer timer = createGpuTimer(ctx, 1);
+    GpuTimer timer = createGpuTimer(ctx, 3); // physics+pose, and inside it physics and pose
     if (!timer.supported) state.SkipWithError("the queue writes no timestamps");
     uint64_t frame = 0;
-    double totalMs = 0.0, wallMs = 0.0;
+    double totalMs = 0.0, wallMs = 0.0, physicsMs = 0.0, poseMs = 0.0;
     for (auto _ : state) {
         setPhysicsUniforms(pass, frameUniforms(models.scene, set, frame++));
         const auto start = std::chrono::steady_clock::now();
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
             resetGpuTimer(cmd, timer);
             beginScope(cmd, timer, "physics+pose");
-            recordPhysicsPass(cmd, pass);
+            recordPhysicsPass(cmd, pass, &timer);
             endScope(cmd, timer);
         });
         wallMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        const double ms = readGpuTimer(ctx, timer).at(0).milliseconds;
+        const std::vector<ScopeTime> scopes = readGpuTimer(ctx, timer);
+        const double ms = scopes.at(0).milliseconds;
+        physicsMs += scopes.at(1).milliseconds;
+        poseMs += scopes.at(2).milliseconds;
         state.SetIterationTime(ms / 1000.0);
         totalMs += ms;
     }
     setCounters(state, set.states.size(), totalMs);
     state.counters["wall_ms"] = benchmark::Counter(wallMs, benchmark::Counter::kAvgIterations);
+    state.counters["physics_ms"] = benchmark::Counter(physicsMs, benchmark::Counter::kAvgIterations);
+    state.counters["pose_ms"] = benchmark::Counter(poseMs, benchmark::Counter::kAvgIterations);
     destroyGpuTimer(ctx, timer);
     destroyPhysicsPass(ctx, pass);
 }

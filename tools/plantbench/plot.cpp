@@ -2,7 +2,6 @@
 
 #include "engine/image.h"
 
-
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -40,11 +39,11 @@ std::string value(const std::optional<double>& v) {
     return text;
 }
 
-// Columns: 1 plants, 2 frame wall ms, 3 naive frame wall ms, then one per kFieldPasses entry.
+// Columns: 1 plants, 2 frame wall ms, 3 naive frame wall ms, then one per kBenchPasses entry.
 std::string dataFile(const SweepResult& result) {
     std::ostringstream data;
     data << "# plants frame_ms naive_frame_ms";
-    for (const char* pass : kFieldPasses) data << " " << pass << "_ms";
+    for (const char* pass : kBenchPasses) data << " " << pass << "_ms";
     data << "\n";
     for (const CountResult& r : result.counts) {
         data << r.count << " " << value(r.driven.frameMs.median) << " "
@@ -73,15 +72,22 @@ std::string plotCommand(const std::string& data, bool perThousand, bool naive) {
     if (naive)
         plot << ", '' using 1:" << y(3)
              << " with linespoints lw 2 dt 2 lc rgb '#000000' pt 6 ps 1.2 title 'naive frame wall time'";
-    const size_t colour = size_t(std::find_if(std::begin(kFieldPasses), std::end(kFieldPasses),
-                                              [](const char* pass) { return std::string_view(pass) == "colour"; }) -
-                                 std::begin(kFieldPasses));
-    const char* colours[] = {"#17becf", "#1f77b4", "#ff7f0e", "#d62728", "#2ca02c", "#9467bd", "#8c564b", "#e377c2"};
+    // Top-level passes solid with filled points, the draw scopes inside
+    // "colour" thin and dotted with open ones; a colour of its own each.
+    const char* colours[] = {"#17becf", "#1f77b4", "#ff7f0e", "#d62728", "#2ca02c",
+                             "#9467bd", "#8c564b", "#e377c2", "#bcbd22", "#7f7f7f"};
+    const int filledPoints[] = {5, 7, 9, 11, 13, 15};
+    const int openPoints[] = {4, 6, 8, 10, 12, 14};
+    size_t topLevel = 0, nestedCount = 0;
     for (size_t p = 0; p < kPassCount; ++p) {
-        const bool nested = p > colour; // kFieldPasses: the draw scopes after "colour" are inside it
-        plot << ", '' using 1:" << y(4 + int(p)) << " with linespoints lw 2" << (nested ? " dt 3" : "")
-             << " pt " << 4 + 2 * p << " lc rgb '" << colours[p % std::size(colours)] << "' title '" << kFieldPasses[p]
-             << (nested ? " (inside colour)" : " (GPU)") << "'";
+        const bool nested = nestedInColour(p);
+        const int point = nested ? openPoints[nestedCount++ % std::size(openPoints)]
+                                 : filledPoints[topLevel++ % std::size(filledPoints)];
+        const bool capture = kBenchPasses[p] == std::string_view(kCapturePass);
+        const char* label = nested ? " (inside colour)" : capture ? " (GPU, image to host)" : " (GPU)";
+        plot << ", '' using 1:" << y(4 + int(p)) << " with linespoints" << (nested ? " lw 1.5 dt 3" : " lw 2")
+             << " pt " << point << " lc rgb '" << colours[p % std::size(colours)] << "' title '" << kBenchPasses[p]
+             << label << "'";
     }
     return plot.str() + "\n";
 }

@@ -51,7 +51,7 @@ nlohmann::json spreadJson(const std::optional<Spread>& s) {
 
 nlohmann::json gpuJson(const PathTimes& t) {
     nlohmann::json j = nlohmann::json::object();
-    for (size_t p = 0; p < kPassCount; ++p) j[kFieldPasses[p]] = spreadJson(t.gpuMs[p]);
+    for (size_t p = 0; p < kPassCount; ++p) j[kBenchPasses[p]] = spreadJson(t.gpuMs[p]);
     return j;
 }
 
@@ -66,6 +66,7 @@ nlohmann::json countJson(const CountResult& r) {
     for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) j["plants_per_lod"][kLodNames[lod]] = r.stats.plantsPerLod[lod];
     j["culled"] = culled(r.stats);
     j["triangles"] = r.stats.triangles;
+    j["joints_simulated"] = r.jointsSimulated;
     j["draws"] = nlohmann::json::object();
     for (uint32_t c = 0; c < DRAW_CLASS_COUNT; ++c) j["draws"][kDrawClassNames[c]] = r.stats.draws[c];
     j["gpu_memory_bytes"] = r.gpuMemoryBytes;
@@ -88,9 +89,9 @@ nlohmann::json countJson(const CountResult& r) {
 
 void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const SweepResult& result) {
     std::vector<std::string> headers = {"count", "frame ms", "p95", "cpu ms"};
-    for (const char* pass : kFieldPasses) headers.push_back(std::string(pass) + " ms");
+    for (const char* pass : kBenchPasses) headers.push_back(std::string(pass) + " ms");
     for (const char* lod : kLodNames) headers.push_back(lod);
-    for (const char* h : {"triangles", "memory", "naive ms", "ratio"}) headers.push_back(h);
+    for (const char* h : {"triangles", "joints", "memory", "naive ms", "ratio"}) headers.push_back(h);
 
     std::vector<std::vector<std::string>> rows;
     for (const CountResult& r : result.counts) {
@@ -99,6 +100,7 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
         for (const std::optional<Spread>& pass : r.driven.gpuMs) row.push_back(cell(medianOf(pass), 3));
         for (uint32_t plants : r.stats.plantsPerLod) row.push_back(std::to_string(plants));
         row.push_back(std::to_string(r.stats.triangles));
+        row.push_back(std::to_string(r.jointsSimulated));
         row.push_back(formatBytes(r.gpuMemoryBytes));
         row.push_back(r.naive ? fixed(r.naive->frameMs.median, 2) : "-");
         row.push_back(cell(naiveRatio(r), 1));
@@ -120,7 +122,7 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
     printRow(headers);
     for (const auto& row : rows) printRow(row);
     out << "frame ms, p95: wall time per frame (median, 95th percentile); cpu ms: host time to record it; "
-           "pass columns: GPU ms (median); memory: "
+           "pass columns: GPU ms (median), capture: copying the image to the host; joints: simulated; memory: "
         << result.memorySource << "; ratio: naive frame ms / GPU-driven frame ms\n";
     for (const CountResult& r : result.counts)
         if (!r.note.empty()) out << r.count << " plants: " << r.note << "\n";
@@ -145,8 +147,8 @@ nlohmann::json sweepJson(const PlantbenchOptions& o, const SweepResult& result) 
 std::string sweepCsv(const SweepResult& result) {
     std::ostringstream csv;
     csv << "count,instances,frame_ms_median,frame_ms_p95,cpu_ms_median,cpu_ms_p95";
-    for (const char* pass : kFieldPasses) csv << ",gpu_" << pass << "_ms_median,gpu_" << pass << "_ms_p95";
-    csv << ",plants_full,plants_reduced,plants_impostor,culled,triangles,draws_bark,draws_foliage,draws_impostor"
+    for (const char* pass : kBenchPasses) csv << ",gpu_" << pass << "_ms_median,gpu_" << pass << "_ms_p95";
+    csv << ",plants_full,plants_reduced,plants_impostor,culled,triangles,joints_simulated,draws_bark,draws_foliage,draws_impostor"
            ",gpu_memory_bytes,naive_frame_ms_median,naive_frame_ms_p95,naive_triangles,ratio\n";
     auto ms = [](const std::optional<double>& v) { return v ? fixed(*v, 4) : std::string(); };
     for (const CountResult& r : result.counts) {
@@ -155,7 +157,7 @@ std::string sweepCsv(const SweepResult& result) {
         for (const std::optional<Spread>& pass : r.driven.gpuMs)
             csv << "," << ms(medianOf(pass)) << "," << ms(p95Of(pass));
         for (uint32_t plants : r.stats.plantsPerLod) csv << "," << plants;
-        csv << "," << culled(r.stats) << "," << r.stats.triangles;
+        csv << "," << culled(r.stats) << "," << r.stats.triangles << "," << r.jointsSimulated;
         for (uint32_t draws : r.stats.draws) csv << "," << draws;
         csv << "," << r.gpuMemoryBytes;
         if (r.naive)

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <new>
 #include <stdexcept>
+#include <string_view>
 
 namespace pf {
 
@@ -24,6 +25,13 @@ std::optional<Spread> spreadOf(std::vector<double> samples) {
     return s;
 }
 
+bool nestedInColour(size_t pass) {
+    const auto colour = std::find_if(std::begin(kFieldPasses), std::end(kFieldPasses),
+                                     [](const char* p) { return std::string_view(p) == "colour"; });
+    return pass < std::size(kFieldPasses) && colour != std::end(kFieldPasses) &&
+           pass > size_t(colour - std::begin(kFieldPasses));
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -32,20 +40,47 @@ double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The render target and timer of one count, released however the count ends.
+// The render target, the host buffer its captures go to and the timer of
+// one count, released however the count ends.
 struct FrameResources {
     const GpuContext& ctx;
     RenderTarget target;
+    Buffer capture;
     GpuTimer timer;
     ~FrameResources() {
         destroyGpuTimer(ctx, timer);
+        destroyBuffer(ctx, capture);
         destroyRenderTarget(ctx, target);
     }
 };
 
+Buffer createCaptureBuffer(const GpuContext& ctx, VkExtent2D extent) {
+    return createHostBuffer(ctx, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+}
+
+// What engine/capture.cpp records after a frame: the resolved image (left in
+// TRANSFER_SRC_OPTIMAL by the renderer) copied to a host buffer and made
+// visible to the host, timed as the "capture" scope.
+void recordCapture(VkCommandBuffer cmd, FrameResources& frame) {
+    beginScope(cmd, frame.timer, kCapturePass);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {frame.target.extent.width, frame.target.extent.height, 1};
+    vkCmdCopyImageToBuffer(cmd, frame.target.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, frame.capture.buffer, 1,
+                           &region);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    endScope(cmd, frame.timer);
+}
+
 enum class Path { Driven, Naive };
 
-// Warm-up then measured frames of one path, every frame from the same camera.
+// Scene time between two frames: the wind physics takes this frame's
+// sub-steps (subStep 1/240 s: 4), as it would at 60 frames a second.
+constexpr double kFrameSeconds = 1.0 / 60.0;
+
+// Warm-up then measured frames of one path, every frame from the same camera
+// while the scene time runs on from `view.time`, so the physics has steps to take.
 PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRenderer& renderer,
                       FrameResources& frame, const FieldView& view, Path path, const SweepProgress& progress,
                       double progressStart, double progressSpan) {
@@ -61,6 +96,8 @@ PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRe
                          std::to_string(warm ? o.warmup : o.frames));
         FieldView v = view;
         v.firstFrame = i == 0;
+        v.time = float(double(view.time) + i * kFrameSeconds);
+        v.deltaTime = i == 0 ? 0.0f : float(kFrameSeconds);
         const Clock::time_point start = Clock::now();
         renderer.setView(v, frame.target.extent);
         double recordMs = 0.0;
@@ -69,6 +106,7 @@ PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRe
                 renderer.record(cmd, frame.target, &frame.timer);
             else
                 renderer.recordNaive(cmd, frame.target, &frame.timer);
+            recordCapture(cmd, frame);
             recordMs = msSince(start);
         });
         const double wallMs = msSince(start);
@@ -77,7 +115,7 @@ PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRe
         cpuMs.push_back(recordMs);
         for (const ScopeTime& scope : readGpuTimer(ctx, frame.timer))
             for (size_t p = 0; p < kPassCount; ++p)
-                if (scope.name == kFieldPasses[p]) gpuMs[p].push_back(scope.milliseconds);
+                if (scope.name == kBenchPasses[p]) gpuMs[p].push_back(scope.milliseconds);
     }
     PathTimes times;
     times.frameMs = *spreadOf(frameMs);
@@ -86,12 +124,8 @@ PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRe
     return times;
 }
 
-void refuseIfTooBig(uint64_t count, uint64_t bytes, const HeapCapacity& heap, const GpuContext& ctx) {
-    if (bytes <= heap.bytes) return;
-    throw std::runtime_error(std::to_string(count) + " plants need about " + formatBytes(bytes) +
-                             " of GPU memory, but the largest device-local heap of " + ctx.properties.deviceName +
-                             (heap.fromBudget ? " has a budget of " : " holds ") + formatBytes(heap.bytes) +
-                             ": measure fewer plants");
+void refuseIf(const std::string& problem) {
+    if (!problem.empty()) throw std::runtime_error(problem);
 }
 
 CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scene& scene, uint64_t count,
@@ -104,7 +138,9 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
                                         " (" + name + ")");
     });
     r.buildSeconds = std::chrono::duration<double>(Clock::now() - buildStart).count();
-    refuseIfTooBig(count, estimatedFieldBytes(count, &content.models, o.width, o.height, o.samples), heap, ctx);
+    // Again with the model pool's size, now known.
+    refuseIf(gpuMemoryProblem(count, estimatedFieldBytes(count, &content.models, o.width, o.height, o.samples),
+                              ctx.properties.deviceName, heap));
 
     FieldRenderSettings settings;
     settings.samples = VkSampleCountFlagBits(o.samples);
@@ -112,7 +148,7 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
     showProgress(progress, 0.0, "uploading the field and baking impostors");
     FieldRenderer renderer(ctx, std::move(content), settings);
     FrameResources frame{ctx, createRenderTarget(ctx, {o.width, o.height}, renderer.samples()),
-                         createGpuTimer(ctx, 16)};
+                         createCaptureBuffer(ctx, {o.width, o.height}), createGpuTimer(ctx, uint32_t(kPassCount))};
 
     FieldView view;
     view.camera = cameraAt(scene.camera, o.time);
@@ -122,6 +158,7 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
     r.driven = measurePath(o, ctx, renderer, frame, view, Path::Driven, progress, 0.0, drivenSpan);
     r.stats = renderer.readStats();
     r.rendererBytes = renderer.gpuBytes();
+    r.jointsSimulated = renderer.simulatedJoints();
     r.gpuMemoryBytes = budget ? deviceLocalUsage(ctx) : r.rendererBytes;
     if (naive) {
         r.naive = measurePath(o, ctx, renderer, frame, view, Path::Naive, progress, drivenSpan, 1.0 - drivenSpan);
@@ -141,9 +178,15 @@ void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, S
     result.device = ctx.properties.deviceName;
     result.memorySource = budget ? "VK_EXT_memory_budget" : "renderer accounting";
     const HeapCapacity heap = largestDeviceLocalHeap(ctx, budget);
+    const std::optional<uint64_t> hostAvailable = hostMemoryAvailable();
+    // A CPU device (lavapipe) takes its "GPU" memory from the host too.
+    const bool hostHoldsGpu = ctx.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     // Refuse the whole sweep up front rather than after hours of smaller counts.
-    for (uint64_t count : o.counts)
-        refuseIfTooBig(count, estimatedFieldBytes(count, nullptr, o.width, o.height, o.samples), heap, ctx);
+    for (uint64_t count : o.counts) {
+        const uint64_t gpuBytes = estimatedFieldBytes(count, nullptr, o.width, o.height, o.samples);
+        refuseIf(gpuMemoryProblem(count, gpuBytes, ctx.properties.deviceName, heap));
+        refuseIf(hostMemoryProblem(count, estimatedHostBytes(count) + (hostHoldsGpu ? gpuBytes : 0), hostAvailable));
+    }
 
     SweepProgress progress = startProgress(o.counts.size());
     for (size_t i = 0; i < o.counts.size(); ++i) {

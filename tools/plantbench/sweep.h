@@ -1,6 +1,7 @@
 // The measurement: for each count, the scene's field with that many plants,
 // warm-up frames, then measured frames of the GPU-driven path (and, with
-// --compare naive, of the naive path), each submitted and waited for.
+// --compare naive, of the naive path), each copying its image to a host
+// buffer as a capture does, submitted and waited for.
 #pragma once
 
 #include "plantbench_options.h"
@@ -9,6 +10,7 @@
 #include "engine/field_renderer.h"
 #include "engine/scene.h"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -16,7 +18,20 @@
 
 namespace pf {
 
-inline constexpr size_t kPassCount = std::size(kFieldPasses);
+// The scopes plantbench times, in recording order: every kFieldPasses scope
+// of the renderer's frame, then "capture", plantbench's own copy of the
+// resolved image to a host buffer after it (what a capture adds).
+inline constexpr const char* kCapturePass = "capture";
+inline constexpr auto kBenchPasses = [] {
+    std::array<const char*, std::size(kFieldPasses) + 1> passes{};
+    std::copy(std::begin(kFieldPasses), std::end(kFieldPasses), passes.begin());
+    passes.back() = kCapturePass;
+    return passes;
+}();
+inline constexpr size_t kPassCount = kBenchPasses.size();
+
+// True for the draw scopes inside "colour": those after it in kFieldPasses.
+bool nestedInColour(size_t pass);
 
 // Median and 95th percentile of one quantity over the measured frames;
 // nullopt when no frame reported it (no timestamps on the device). p95 is
@@ -31,7 +46,7 @@ std::optional<Spread> spreadOf(std::vector<double> samples);
 struct PathTimes {
     Spread frameMs; // wall time of a frame: set the view, record, submit, wait
     Spread cpuMs;   // host time to set the view and record the command buffer
-    std::array<std::optional<Spread>, kPassCount> gpuMs; // per kFieldPasses entry
+    std::array<std::optional<Spread>, kPassCount> gpuMs; // per kBenchPasses entry
 };
 
 struct CountResult {
@@ -42,6 +57,7 @@ struct CountResult {
     uint64_t rendererBytes = 0;      // FieldRenderer::gpuBytes()
     std::optional<PathTimes> naive;  // with --compare naive, unless skipped
     uint64_t naiveTriangles = 0;
+    uint64_t jointsSimulated = 0;    // FieldRenderer::simulatedJoints(): joints the physics pass steps
     std::string note;                // why naive was skipped, or empty
     double buildSeconds = 0.0;       // CPU build of the field (not part of any frame)
 };

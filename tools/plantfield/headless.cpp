@@ -45,7 +45,7 @@ nlohmann::json statsJson(const PlantfieldOptions& o, const GpuContext& ctx, cons
     for (const ScopeTime& s : gpu) {
         ms[s.name] = s.milliseconds;
         // The draw scopes are nested inside "colour" (kFieldPasses).
-        if (s.name == "physics" || s.name == "cull" || s.name == "shadow" || s.name == "colour") total += s.milliseconds;
+        if (s.name == "physics" || s.name == "pose" || s.name == "cull" || s.name == "shadow" || s.name == "colour") total += s.milliseconds;
     }
     ms["total"] = total;
     j["gpu_ms"] = ms;

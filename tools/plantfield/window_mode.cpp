@@ -62,6 +62,7 @@ int runWindow(const PlantfieldOptions& o) {
             }
             const WindowInput input = pollWindowInput(window.handle(), inputState);
             FieldView view = pathView(o, scene, o.time + t, dt, frameMs == 0);
+            view.realTime = true;
             if (input.togglePathPlayback) {
                 freeFlight = !freeFlight;
                 if (freeFlight) flight = flightFromCamera(view.camera);

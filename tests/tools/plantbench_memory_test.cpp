@@ -1,0 +1,80 @@
+// plantbench's memory check with made-up limits: a count the device or the
+// host cannot hold is refused with a message naming the count, the need and
+// the limit (tools/plantbench/memory_check.h).
+#include "memory_check.h"
+
+#include <gtest/gtest.h>
+
+namespace pf {
+namespace {
+
+constexpr uint64_t kMiB = 1ull << 20, kGiB = 1ull << 30;
+constexpr uint64_t kMaxPlants = 16777216;
+
+void expectMentions(const std::string& message, std::initializer_list<std::string> parts) {
+    for (const std::string& part : parts) EXPECT_NE(message.find(part), std::string::npos) << part << " in: " << message;
+}
+
+TEST(PlantbenchMemory, FieldEstimateGrowsWithThePlants) {
+    const uint64_t fixed = estimatedFieldBytes(0, nullptr, 1280, 720, 4);
+    EXPECT_GT(fixed, uint64_t(1280) * 720 * 4 * 4) << "the multisampled target at least";
+    const uint64_t perPlant = estimatedFieldBytes(1000, nullptr, 1280, 720, 4) - fixed;
+    EXPECT_EQ(perPlant % 1000, 0u);
+    EXPECT_GE(perPlant / 1000, 48u + 3 * 4) << "an instance and a visible entry per LOD";
+    PlantModelPool pool;
+    pool.indices.resize(300);
+    EXPECT_EQ(estimatedFieldBytes(1000, &pool, 1280, 720, 4) - estimatedFieldBytes(1000, nullptr, 1280, 720, 4),
+              300u * 4);
+    EXPECT_EQ(estimatedHostBytes(1000), 1000 * kHostBytesPerPlant);
+}
+
+TEST(PlantbenchMemory, FittingCountIsAccepted) {
+    EXPECT_EQ(gpuMemoryProblem(100000, estimatedFieldBytes(100000, nullptr, 1280, 720, 4), "fake GPU", {4 * kGiB, false}),
+              "");
+    EXPECT_EQ(hostMemoryProblem(100000, estimatedHostBytes(100000), 8 * kGiB), "");
+}
+
+TEST(PlantbenchMemory, CountAboveTheHeapIsRefusedNamingCountNeedAndHeap) {
+    const uint64_t need = estimatedFieldBytes(kMaxPlants, nullptr, 1280, 720, 4);
+    ASSERT_GT(need, 512 * kMiB);
+    expectMentions(gpuMemoryProblem(kMaxPlants, need, "fake GPU", {512 * kMiB, false}),
+                   {"16777216 plants", formatBytes(need), "GPU memory", "fake GPU", "holds 512.0 MiB",
+                    "measure fewer plants"});
+}
+
+TEST(PlantbenchMemory, HeapBudgetIsNamedAsABudget) {
+    expectMentions(gpuMemoryProblem(1000, 300 * kMiB, "fake GPU", {256 * kMiB, true}),
+                   {"1000 plants", "300.0 MiB", "budget of 256.0 MiB"});
+}
+
+TEST(PlantbenchMemory, CountAboveAvailableHostMemoryIsRefused) {
+    const uint64_t need = estimatedHostBytes(kMaxPlants);
+    ASSERT_GT(need, 100 * kMiB);
+    expectMentions(hostMemoryProblem(kMaxPlants, need, 100 * kMiB),
+                   {"16777216 plants", formatBytes(need), "host memory", "only 100.0 MiB", "MemAvailable",
+                    "measure fewer plants"});
+}
+
+TEST(PlantbenchMemory, HostIsNotCheckedWhenMemAvailableIsUnknown) {
+    EXPECT_EQ(hostMemoryProblem(kMaxPlants, 1000 * kGiB, std::nullopt), "");
+}
+
+TEST(PlantbenchMemory, MemAvailableIsReadInBytes) {
+    EXPECT_EQ(memAvailableOf("MemTotal:       32768000 kB\nMemFree:         1000 kB\n"
+                             "MemAvailable:   24000000 kB\nBuffers:          100 kB\n"),
+              24000000ull * 1024);
+    EXPECT_EQ(memAvailableOf("MemTotal:       32768000 kB\nMemFree:         1000 kB\n"), std::nullopt);
+    EXPECT_EQ(memAvailableOf(""), std::nullopt);
+    const std::optional<uint64_t> here = hostMemoryAvailable();
+    ASSERT_TRUE(here.has_value()) << "this machine's /proc/meminfo has MemAvailable";
+    EXPECT_GT(*here, 0u);
+}
+
+TEST(PlantbenchMemory, BytesAreFormattedForPeople) {
+    EXPECT_EQ(formatBytes(800), "800 B");
+    EXPECT_EQ(formatBytes(12 * kMiB), "12.0 MiB");
+    EXPECT_EQ(formatBytes(3 * kGiB / 2), "1.5 GiB");
+}
+
+} // namespace
+} // namespace pf

@@ -1,0 +1,52 @@
+// Whether a count can fit at all: estimates of the GPU and host memory a
+// field needs, compared with what the machine has. No Vulkan here, so the
+// check is unit-tested with made-up limits (tests/tools/plantbench_memory_test.cpp).
+#pragma once
+
+#include "engine/plant_models.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace pf {
+
+// The biggest device-local heap (any heap when none is device-local): its
+// size, or its budget when the device reports one.
+struct HeapCapacity {
+    uint64_t bytes = 0;
+    bool fromBudget = false;
+};
+
+// Bytes a field of `count` plants needs on the GPU, about: per plant the
+// instance (48 B), a visible-list entry per LOD (3 × 4 B), the LOD state
+// (4 B) and the naive list entry (4 B); the model pool's vertices and
+// indices when known; the render target, its capture buffer and the shadow map.
+uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_t width, uint32_t height,
+                             uint32_t samples);
+
+// Host bytes building a field of `count` plants needs at its peak
+// (kHostBytesPerPlant each, docs/PLANTBENCH.md): placement's grid and
+// points, the placed, thinned and kept PlantInstance arrays, and the
+// renderer's per-plant upload arrays.
+inline constexpr uint64_t kHostBytesPerPlant = 160;
+uint64_t estimatedHostBytes(uint64_t count);
+
+// MemAvailable of a /proc/meminfo text in bytes; nullopt when absent.
+std::optional<uint64_t> memAvailableOf(const std::string& meminfo);
+// MemAvailable of this machine's /proc/meminfo; nullopt when unreadable.
+std::optional<uint64_t> hostMemoryAvailable();
+
+// Empty when `count` plants needing `bytes` of GPU memory fit `heap`, the
+// largest heap of `device`; otherwise a message naming the count, the
+// estimated need and the heap.
+std::string gpuMemoryProblem(uint64_t count, uint64_t bytes, const std::string& device, const HeapCapacity& heap);
+// Empty when `bytes` of host memory fit `available` (MemAvailable; nullopt:
+// unknown, not checked); otherwise a message naming the count, the
+// estimated need and what is available.
+std::string hostMemoryProblem(uint64_t count, uint64_t bytes, std::optional<uint64_t> available);
+
+// "1.5 GiB", "12.0 MiB", "800 B".
+std::string formatBytes(uint64_t bytes);
+
+} // namespace pf
