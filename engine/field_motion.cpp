@@ -112,7 +112,7 @@ void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time,
         motion.simulatedStep = subStepsUntil(std::max(0.0, time - kSettleSeconds), motion.settings);
         applyNearChanges(ctx, motion,
                          releaseAllNearSkeletons(motion.near, motion.sharedOf,
-                                                 static_cast<const gpu::Skeleton*>(motion.pass.skeletons.mapped)));
+                                                 static_cast<gpu::Skeleton*>(motion.pass.skeletons.mapped)));
     }
     applyNearChanges(ctx, motion,
                      updateNearSkeletons(motion.near, motion.grid, motion.content->plants, motion.content->models,

@@ -66,7 +66,7 @@ NearSkeletons reserveNearSkeletons(SkeletonSet& set, const PlantModelPool& pool,
         const uint32_t count = std::min(plantsOfModel[m], model.joints > 0 ? share / model.joints : 0u);
         // Reserved in reverse so the lowest index is handed out first.
         for (uint32_t k = 0; k < count; ++k)
-            near.freeOfModel[m].push_back(addSkeleton(set, m, model.firstJoint, model.joints, glm::vec3(0.0f), 0.0f, 1.0f));
+            near.freeOfModel[m].push_back(addSkeleton(set, m, model.firstJoint, model.joints, glm::vec3(0.0f), 0.0f, 0.0f));
         std::reverse(near.freeOfModel[m].begin(), near.freeOfModel[m].end());
     }
     return near;
@@ -86,6 +86,7 @@ NearChanges updateNearSkeletons(NearSkeletons& near, const PlantGrid& grid, cons
     for (uint32_t plant : leaving) {
         const PlantInstance& p = plants[plant];
         near.freeOfModel[pool.modelOf(p.species, p.variant)].push_back(near.ownOf[plant]);
+        skeletons[near.ownOf[plant]].scale.x = 0.0f; // not simulated while free
         near.ownOf.erase(plant);
         changes.plantSkeleton.push_back({plant, sharedOf[plant]});
     }
@@ -107,13 +108,14 @@ NearChanges updateNearSkeletons(NearSkeletons& near, const PlantGrid& grid, cons
 }
 
 NearChanges releaseAllNearSkeletons(NearSkeletons& near, const std::vector<uint32_t>& sharedOf,
-                                    const gpu::Skeleton* skeletons) {
+                                    gpu::Skeleton* skeletons) {
     NearChanges changes;
     std::vector<std::pair<uint32_t, uint32_t>> owned(near.ownOf.begin(), near.ownOf.end());
     std::sort(owned.begin(), owned.end());
     for (const auto& [plant, own] : owned) {
         changes.plantSkeleton.push_back({plant, sharedOf[plant]});
         near.freeOfModel[skeletons[own].ids.x].push_back(own);
+        skeletons[own].scale.x = 0.0f;
     }
     near.ownOf.clear();
     // Lowest index handed out first again, as after reserveNearSkeletons:

@@ -32,7 +32,8 @@ std::vector<uint32_t> plantsNear(const PlantGrid& grid, const std::vector<PlantI
                                  const glm::vec3& centre, float radius);
 
 // Own skeletons reserved for near plants: per model an equal share of the
-// joint budget. Appends them to `set` (after the shared copies).
+// joint budget. Appends them to `set` (after the shared copies) with scale
+// 0: free skeletons are not simulated (skeletonInUse).
 struct NearSkeletons {
     std::vector<std::vector<uint32_t>> freeOfModel; // own skeletons not in use, per model
     std::unordered_map<uint32_t, uint32_t> ownOf;   // plant → its own skeleton
@@ -57,6 +58,6 @@ NearChanges updateNearSkeletons(NearSkeletons& near, const PlantGrid& grid, cons
                                 const glm::vec3& camera, gpu::Skeleton* skeletons);
 // Every own skeleton back to free (a restart): the plants follow their shared copies again.
 NearChanges releaseAllNearSkeletons(NearSkeletons& near, const std::vector<uint32_t>& sharedOf,
-                                    const gpu::Skeleton* skeletons);
+                                    gpu::Skeleton* skeletons);
 
 } // namespace pf

@@ -236,6 +236,7 @@ void stepSkeletonsOnCpu(SkeletonSet& set, const gpu::PhysicsUniforms& u) {
     const std::vector<gpu::JointPose> entry = set.poses; // every joint sees the poses of the start
     for (size_t i = 0; i < set.states.size(); ++i) {
         const gpu::Skeleton& skeleton = set.skeletons[set.jointSkeleton[i]];
+        if (!gpu::skeletonInUse(skeleton)) continue;
         const uint32_t joint = uint32_t(i) - skeleton.ids.w;
         const gpu::JointParams& p = set.params[skeleton.ids.y + joint];
         const uint32_t parent = p.links.x;
@@ -270,8 +271,10 @@ void poseSkeletonsOnCpu(SkeletonSet& set) {
 
     const gpu::JointPose identity{kIdentityRotation, gpu::vec4(0.0f)};
     for (const uint32_t i : order) {
+        const gpu::Skeleton& skeleton = set.skeletons[set.jointSkeleton[i]];
+        if (!gpu::skeletonInUse(skeleton)) continue;
         const gpu::JointParams& p = paramsOf(i);
-        const uint32_t firstState = set.skeletons[set.jointSkeleton[i]].ids.w;
+        const uint32_t firstState = skeleton.ids.w;
         const gpu::JointPose parent = p.links.x == JOINT_NO_PARENT ? identity : set.poses[firstState + p.links.x];
         set.poses[i] = gpu::composeWithParent(parent, p, set.states[i]);
     }

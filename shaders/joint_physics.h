@@ -46,6 +46,10 @@ using glm::sqrt;
 #define JOINT_PHYSICS_FN
 #endif
 
+// A skeleton nobody follows (a free near-plant skeleton) has scale 0 and is
+// neither stepped nor posed.
+JOINT_PHYSICS_FN bool skeletonInUse(Skeleton sk) { return sk.scale.x > 0.0f; }
+
 // Quaternions are vec4 (x, y, z, w).
 JOINT_PHYSICS_FN vec4 quatMultiply(vec4 a, vec4 b) {
     vec3 av = vec3(a.x, a.y, a.z), bv = vec3(b.x, b.y, b.z);

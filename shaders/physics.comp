@@ -36,6 +36,7 @@ void main() {
     if (index >= physics.counts.y) return;
 
     Skeleton sk = skeletons[jointSkeleton[index]];
+    if (!skeletonInUse(sk)) return;
     uint joint = index - sk.ids.w;
     JointParams jp = params[sk.ids.y + joint];
     uint parent = jp.links.x;

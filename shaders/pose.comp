@@ -44,6 +44,7 @@ void main() {
 
     uint index = jointOrder[level.x + k];
     Skeleton sk = skeletons[jointSkeleton[index]];
+    if (!skeletonInUse(sk)) return;
     JointParams jp = params[sk.ids.y + index - sk.ids.w];
     JointPose parent;
     if (jp.links.x == JOINT_NO_PARENT) {
