@@ -310,9 +310,6 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     block.frame = makeFrameUniforms(view.camera, env, extent, view.time);
 
     const glm::vec3 forward = glm::normalize(view.camera.target - view.camera.position);
-    const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
-    block.field.cameraRight = glm::vec4(right, 0.0f);
-    block.field.cameraUp = glm::vec4(glm::cross(right, forward), 0.0f);
     // Shadows where they are seen large: a square reaching ahead of the camera.
     const float radius = settings_.shadowRadius;
     const glm::vec3 flatForward = glm::length(glm::vec2(forward.x, forward.z)) > 1e-3f

@@ -130,8 +130,6 @@ struct CullUniforms {
 // Field additions to the frame uniforms (after FrameUniforms in the same block).
 struct FieldFrame {
     mat4 sunViewProj;   // world → shadow map clip space
-    vec4 cameraRight;   // xyz unit, w 0
-    vec4 cameraUp;      // xyz unit, w 0
     vec4 viewport;      // x width, y height (pixels), z shadow map texel size (m), w 1 when shadows are on
     vec4 wind;          // xz direction × speed (m/s), y gust strength, w time (s)
     vec4 windDetail;    // x turbulence, y gust wavelength (m), z gust front speed (m/s), w impostor sway (m per m/s of gust, at the top)
@@ -145,7 +143,7 @@ static_assert(sizeof(gpu::FieldVertex) == 64);
 static_assert(sizeof(gpu::DrawTemplate) == 32);
 static_assert(sizeof(gpu::DrawCommand) == 20);
 static_assert(sizeof(gpu::CullUniforms) == 9 * 16);
-static_assert(sizeof(gpu::FieldFrame) == 64 + 5 * 16);
+static_assert(sizeof(gpu::FieldFrame) == 64 + 3 * 16);
 #endif
 
 #endif
