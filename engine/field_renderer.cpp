@@ -290,7 +290,7 @@ void FieldRenderer::createPipelines() {
     desc.colorFormat = VK_FORMAT_UNDEFINED;
     desc.depthFormat = kShadowFormat;
     desc.samples = VK_SAMPLE_COUNT_1_BIT;
-    desc.flippedViewport = false;
+    desc.frontFace = VK_FRONT_FACE_CLOCKWISE; // an ordinary viewport (shadow_map.h)
     desc.depthBiasConstant = 1.5f;
     desc.depthBiasSlope = 2.0f;
     pipelines_.plantShadow = make({plant.vertex, plantShadow}, VK_CULL_MODE_NONE);

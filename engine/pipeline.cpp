@@ -35,11 +35,7 @@ VkPipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& d
     VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
     raster.polygonMode = VK_POLYGON_MODE_FILL;
     raster.cullMode = desc.cullMode;
-    // Meshes are counter-clockwise seen from outside. The colour passes flip
-    // y with a negative-height viewport, which restores the y-up winding
-    // convention: counter-clockwise is front. An ordinary viewport mirrors
-    // y-up clip space into y-down framebuffer space, so there it is clockwise.
-    raster.frontFace = desc.flippedViewport ? VK_FRONT_FACE_COUNTER_CLOCKWISE : VK_FRONT_FACE_CLOCKWISE;
+    raster.frontFace = desc.frontFace;
     raster.lineWidth = 1.0f;
     raster.depthBiasEnable = desc.depthBiasConstant != 0.0f || desc.depthBiasSlope != 0.0f;
     raster.depthBiasConstantFactor = desc.depthBiasConstant;
@@ -51,24 +47,28 @@ VkPipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& d
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     depth.depthTestEnable = desc.depthTest;
     depth.depthWriteEnable = desc.depthWrite;
-    depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+    depth.depthCompareOp = desc.depthCompare;
 
-    VkPipelineColorBlendAttachmentState blendAttachment{};
-    blendAttachment.colorWriteMask =
-        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    const VkFormat colorFormats[2] = {desc.colorFormat, desc.secondColorFormat};
+    const uint32_t colorCount = desc.colorFormat == VK_FORMAT_UNDEFINED          ? 0
+                                : desc.secondColorFormat == VK_FORMAT_UNDEFINED ? 1
+                                                                                : 2;
+    VkPipelineColorBlendAttachmentState blendAttachments[2]{};
+    for (VkPipelineColorBlendAttachmentState& b : blendAttachments)
+        b.colorWriteMask =
+            VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    const bool hasColor = desc.colorFormat != VK_FORMAT_UNDEFINED;
-    blend.attachmentCount = hasColor ? 1 : 0;
-    blend.pAttachments = &blendAttachment;
+    blend.attachmentCount = colorCount;
+    blend.pAttachments = blendAttachments;
 
-    VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR, VK_DYNAMIC_STATE_CULL_MODE};
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamic.dynamicStateCount = 2;
+    dynamic.dynamicStateCount = desc.dynamicCullMode ? 3 : 2;
     dynamic.pDynamicStates = dynamicStates;
 
     VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-    rendering.colorAttachmentCount = hasColor ? 1 : 0;
-    rendering.pColorAttachmentFormats = &desc.colorFormat;
+    rendering.colorAttachmentCount = colorCount;
+    rendering.pColorAttachmentFormats = colorFormats;
     rendering.depthAttachmentFormat = desc.depthFormat;
 
     VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};

@@ -30,9 +30,15 @@ struct GraphicsPipelineDesc {
     // themselves.
     float depthBiasConstant = 0.0f;
     float depthBiasSlope = 0.0f;
-    // Colour passes use a negative-height viewport (y up, counter-clockwise
-    // front faces); passes with an ordinary viewport say false.
-    bool flippedViewport = true;
+    // Meshes are counter-clockwise seen from outside. Colour passes flip y
+    // with a negative-height viewport, which keeps that winding; an ordinary
+    // viewport with a y-up projection mirrors it (clockwise).
+    VkFrontFace frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    VkCompareOp depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
+    // A second colour attachment (the impostor bake's normal + depth).
+    VkFormat secondColorFormat = VK_FORMAT_UNDEFINED;
+    // Cull mode set per draw with vkCmdSetCullMode; cullMode is then ignored.
+    bool dynamicCullMode = false;
 };
 
 // A compute pipeline of `module`'s main; destroys the module.

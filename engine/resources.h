@@ -49,6 +49,9 @@ struct ImageTransition {
     VkImageLayout oldLayout;
     VkImageLayout newLayout;
 };
+// The barrier for `range` of `image`, to record alone or batched with others.
+VkImageMemoryBarrier2 imageMemoryBarrier(VkImage image, const VkImageSubresourceRange& range, const ImageTransition& t);
+// Records the barrier for the first mip and layer of `image`.
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, const ImageTransition& t);
 // A global memory dependency (synchronization2).
 void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
