@@ -81,16 +81,8 @@ std::vector<uint8_t> readLayers(const GpuContext& ctx, const Image& image, uint3
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
         auto barrier = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 src, VkAccessFlags2 srcAccess,
                            VkPipelineStageFlags2 dst, VkAccessFlags2 dstAccess) {
-            VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-            b.srcStageMask = src;
-            b.srcAccessMask = srcAccess;
-            b.dstStageMask = dst;
-            b.dstAccessMask = dstAccess;
-            b.oldLayout = from;
-            b.newLayout = to;
-            b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-            b.image = image.image;
-            b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, layers};
+            const VkImageMemoryBarrier2 b = imageMemoryBarrier(
+                image.image, {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, layers}, {src, srcAccess, dst, dstAccess, from, to});
             VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
             dep.imageMemoryBarrierCount = 1;
             dep.pImageMemoryBarriers = &b;
