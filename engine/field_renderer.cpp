@@ -18,6 +18,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
@@ -68,6 +69,11 @@ Heightfield decimated(const Heightfield& terrain, uint32_t maxSamples) {
 }
 
 } // namespace
+
+bool nestedInColourPass(std::string_view pass) {
+    const auto colour = std::find(std::begin(kFieldPasses), std::end(kFieldPasses), std::string_view("colour"));
+    return std::find(std::next(colour), std::end(kFieldPasses), pass) != std::end(kFieldPasses);
+}
 
 FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const FieldRenderSettings& settings)
     : ctx_(ctx), content_(std::move(content)), settings_(settings) {

@@ -15,6 +15,7 @@
 #include "engine/shadow_map.h"
 
 #include <array>
+#include <string_view>
 #include <optional>
 
 namespace pf {
@@ -51,6 +52,10 @@ struct FieldFrameStats {
 // pass and the three after it are nested inside it.
 inline constexpr const char* kFieldPasses[] = {"physics", "pose",      "cull",       "shadow",
                                                "colour",  "plants",    "impostors",  "terrain_sky"};
+
+// True for the draw scopes recorded inside "colour" (those after it in
+// kFieldPasses): a frame's total adds only the others.
+bool nestedInColourPass(std::string_view pass);
 
 class FieldRenderer {
 public:

@@ -26,10 +26,7 @@ std::optional<Spread> spreadOf(std::vector<double> samples) {
 }
 
 bool nestedInColour(size_t pass) {
-    const auto colour = std::find_if(std::begin(kFieldPasses), std::end(kFieldPasses),
-                                     [](const char* p) { return std::string_view(p) == "colour"; });
-    return pass < std::size(kFieldPasses) && colour != std::end(kFieldPasses) &&
-           pass > size_t(colour - std::begin(kFieldPasses));
+    return pass < std::size(kFieldPasses) && nestedInColourPass(kFieldPasses[pass]);
 }
 
 namespace {

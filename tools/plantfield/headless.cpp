@@ -44,8 +44,7 @@ nlohmann::json statsJson(const PlantfieldOptions& o, const GpuContext& ctx, cons
     double total = 0;
     for (const ScopeTime& s : gpu) {
         ms[s.name] = s.milliseconds;
-        // The draw scopes are nested inside "colour" (kFieldPasses).
-        if (s.name == "physics" || s.name == "pose" || s.name == "cull" || s.name == "shadow" || s.name == "colour") total += s.milliseconds;
+        if (!nestedInColourPass(s.name)) total += s.milliseconds;
     }
     ms["total"] = total;
     j["gpu_ms"] = ms;
