@@ -243,10 +243,9 @@ void stepSkeletonsOnCpu(SkeletonSet& set, const gpu::PhysicsUniforms& u) {
         const gpu::vec4 parentRotation = parent == JOINT_NO_PARENT ? kIdentityRotation : entry[skeleton.ids.w + parent].rotation;
         const glm::vec3 base = gpu::posePoint(entry[i], xyz(p.restBase));
         const float dt = u.windDetail.w;
-        const gpu::JointStep c = gpu::prepareJointStep(p, parentRotation, base, skeleton, u, dt);
         gpu::JointState state = set.states[i];
-        for (uint32_t step = 0; step < u.counts.z; ++step)
-            state = gpu::stepJoint(c, state, u, u.windDetail.z + float(step) * dt, dt);
+        const gpu::JointStep c = gpu::prepareJointStep(p, parentRotation, base, state, skeleton, u, dt);
+        for (uint32_t step = 0; step < u.counts.z; ++step) state = gpu::stepJoint(c, state, step, dt);
         set.states[i] = state;
     }
 }

@@ -18,8 +18,9 @@
 //     ω ← (ω + dt/I·(τ − k·θa)) / (1 + dt·c/I + dt²·k/I),  q ← normalize(q·exp(ω·dt));
 // - no twist: the component of ω along the segment is dropped.
 // A frame's sub-steps all see the poses at entry, so what does not change
-// between them is computed once per joint (prepareJointStep) and the torque
-// is evaluated in the joint's local frame (fewer rotations per step).
+// between them is computed once per joint (prepareJointStep), the wind
+// included (sampled at the frame's ends, interpolated in time), and the
+// torque is evaluated in the joint's local frame (fewer rotations per step).
 // Instance scale s scales lengths by s, masses by s³, inertia by s⁵,
 // stiffness by s³ (r⁴/l), damping by s⁴ and areas by s².
 #ifndef PLANTFIELD_SHADERS_JOINT_PHYSICS_H
@@ -113,11 +114,16 @@ JOINT_PHYSICS_FN vec3 windAt(vec3 p, float t, PhysicsUniforms u) {
 
 // What a joint's sub-steps of one frame share: its parent's pose at entry
 // and its own base do not change between them, nor do its scaled constants.
+// The wind is sampled per frame, not per sub-step: at the centre of pressure
+// where it is at entry, at the frame's first and last sub-step times, and
+// interpolated linearly in time between them. Within a frame (1/60 s) the
+// point moves millimetres and the wind's fastest sine turns by 0.05 rad, so
+// this changes the force by well under a percent while it leaves the
+// sub-steps one sine evaluation instead of seven.
 struct JointStep {
     vec4 restFrame;     // Dp·R: the joint's frame is restFrame·q
-    vec3 base;          // the joint's base now, plant space after scale
-    vec3 placement;     // where the plant stands (world)
-    vec2 yaw;           // cos, sin of the plant's yaw
+    vec3 wind;          // wind at the first sub-step, plant space after yaw is undone (m/s)
+    vec3 windChange;    // added per sub-step (m/s)
     float arm;          // base to centre of pressure, after scale (m, local +Y)
     vec3 centreOfMass;  // of the subtree, rest local frame, after scale (m)
     vec3 weight;        // subtree mass × gravity (N, plant space: yaw leaves it unchanged)
@@ -129,9 +135,11 @@ struct JointStep {
 
 // `parentRotation`: the parent's pose rotation at the start of the frame
 // (identity for roots); `base`: the joint's base now, plant space before
-// scale (its own pose applied to restBase); dt the sub-step.
-JOINT_PHYSICS_FN JointStep prepareJointStep(JointParams jp, vec4 parentRotation, vec3 base, Skeleton sk,
-                                            PhysicsUniforms u, float dt) {
+// scale (its own pose applied to restBase); `entry`: the joint's state at the
+// start of the frame; dt the sub-step. The frame's u.counts.z sub-steps start
+// at time u.windDetail.z.
+JOINT_PHYSICS_FN JointStep prepareJointStep(JointParams jp, vec4 parentRotation, vec3 base, JointState entry,
+                                            Skeleton sk, PhysicsUniforms u, float dt) {
     float scale = sk.scale.x;
     float s2 = scale * scale, s3 = s2 * scale;
     float inertia = jp.dynamics.y * s3 * s2;
@@ -139,9 +147,6 @@ JOINT_PHYSICS_FN JointStep prepareJointStep(JointParams jp, vec4 parentRotation,
     float damping = jp.dynamics.w * s2 * s2;
     JointStep c;
     c.restFrame = quatMultiply(parentRotation, jp.restRotation);
-    c.base = base * scale;
-    c.placement = vec3(sk.placement.x, sk.placement.y, sk.placement.z);
-    c.yaw = vec2(cos(sk.placement.w), sin(sk.placement.w));
     c.arm = jp.aero.y * scale;
     c.centreOfMass = vec3(jp.load.x, jp.load.y, jp.load.z) * scale;
     c.weight = (jp.load.w * s3) * vec3(u.gravity.x, u.gravity.y, u.gravity.z);
@@ -149,20 +154,29 @@ JOINT_PHYSICS_FN JointStep prepareJointStep(JointParams jp, vec4 parentRotation,
     c.stiffness = stiffness;
     c.stepOverInertia = dt / inertia;
     c.implicitScale = 1.0f / (1.0f + dt * damping / inertia + dt * dt * stiffness / inertia);
+
+    vec2 yaw = vec2(cos(sk.placement.w), sin(sk.placement.w));
+    vec2 unyaw = vec2(yaw.x, -yaw.y);
+    vec3 pressure = base * scale + quatRotate(quatMultiply(c.restFrame, entry.rotation), vec3(0.0f, c.arm, 0.0f));
+    vec3 worldPoint = vec3(sk.placement.x, sk.placement.y, sk.placement.z) + yawRotate(yaw, pressure);
+    float steps = float(u.counts.z);
+    vec3 first = yawRotate(unyaw, windAt(worldPoint, u.windDetail.z, u));
+    vec3 last = yawRotate(unyaw, windAt(worldPoint, u.windDetail.z + steps * dt, u));
+    c.wind = first;
+    c.windChange = steps > 0.0f ? (last - first) / steps : vec3(0.0f);
     return c;
 }
 
-// One sub-step of one joint at `time`. The torque about the base is taken in
-// the joint's local frame L (where the arm is (0, arm, 0)): the wind and the
-// weight are turned into it, and the point's velocity there is ω × arm.
-JOINT_PHYSICS_FN JointState stepJoint(JointStep c, JointState s, PhysicsUniforms u, float time, float dt) {
-    vec4 frame = quatMultiply(c.restFrame, s.rotation);
-    vec4 toLocal = quatConjugate(frame);
+// Sub-step `step` (0 the first) of one joint's frame. The torque about the
+// base is taken in the joint's local frame L (where the arm is (0, arm, 0)):
+// the wind and the weight are turned into it, and the point's velocity there
+// is ω × arm.
+JOINT_PHYSICS_FN JointState stepJoint(JointStep c, JointState s, uint step, float dt) {
+    vec4 toLocal = quatConjugate(quatMultiply(c.restFrame, s.rotation));
     vec3 omega = vec3(s.angularVelocity.x, s.angularVelocity.y, s.angularVelocity.z);
 
     vec3 armLocal = vec3(0.0f, c.arm, 0.0f);
-    vec3 worldPoint = c.placement + yawRotate(c.yaw, c.base + quatRotate(frame, armLocal));
-    vec3 wind = yawRotate(vec2(c.yaw.x, -c.yaw.y), windAt(worldPoint, time, u));
+    vec3 wind = c.wind + float(step) * c.windChange;
     vec3 relative = quatRotate(toLocal, wind) - cross(omega, armLocal);
     vec3 drag = (c.dragFactor * length(relative)) * relative;
     vec3 localTorque = cross(armLocal, drag) + cross(c.centreOfMass, quatRotate(toLocal, c.weight));

@@ -44,9 +44,8 @@ void main() {
     vec3 base = posePoint(poses[index], jp.restBase.xyz);
 
     float dt = physics.windDetail.w;
-    JointStep c = prepareJointStep(jp, parentRotation, base, sk, physics, dt);
     JointState s = states[index];
-    for (uint step = 0u; step < physics.counts.z; ++step)
-        s = stepJoint(c, s, physics, physics.windDetail.z + float(step) * dt, dt);
+    JointStep c = prepareJointStep(jp, parentRotation, base, s, sk, physics, dt);
+    for (uint step = 0u; step < physics.counts.z; ++step) s = stepJoint(c, s, step, dt);
     states[index] = s;
 }
