@@ -2,20 +2,21 @@
 
 #include "engine/vk_check.h"
 
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace pf {
 
-ComputeSet createComputeSet(const GpuContext& ctx, std::span<const VkBuffer> buffers) {
-    const uint32_t count = uint32_t(buffers.size());
-    std::vector<VkDescriptorSetLayoutBinding> bindings(count);
+ComputeSet createComputeSet(const GpuContext& ctx, std::span<const ComputeBinding> bindings) {
+    const uint32_t count = uint32_t(bindings.size());
+    std::vector<VkDescriptorSetLayoutBinding> layoutBindings(count);
     for (uint32_t b = 0; b < count; ++b)
-        bindings[b] = {b, b == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
-                       VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+        layoutBindings[b] = {b, bindings[b].type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
     ComputeSet set;
     VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     layoutInfo.bindingCount = count;
-    layoutInfo.pBindings = bindings.data();
+    layoutInfo.pBindings = layoutBindings.data();
     VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &layoutInfo, nullptr, &set.setLayout));
 
     VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -23,12 +24,13 @@ ComputeSet createComputeSet(const GpuContext& ctx, std::span<const VkBuffer> buf
     pipelineLayoutInfo.pSetLayouts = &set.setLayout;
     VK_CHECK(vkCreatePipelineLayout(ctx.device, &pipelineLayoutInfo, nullptr, &set.pipelineLayout));
 
-    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, count - 1}};
+    // One pool size per binding: the pool sums them by type.
+    std::vector<VkDescriptorPoolSize> sizes(count);
+    for (uint32_t b = 0; b < count; ++b) sizes[b] = {bindings[b].type, 1};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 2;
-    poolInfo.pPoolSizes = sizes;
+    poolInfo.poolSizeCount = count;
+    poolInfo.pPoolSizes = sizes.data();
     VK_CHECK(vkCreateDescriptorPool(ctx.device, &poolInfo, nullptr, &set.descriptorPool));
     VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     allocInfo.descriptorPool = set.descriptorPool;
@@ -39,16 +41,27 @@ ComputeSet createComputeSet(const GpuContext& ctx, std::span<const VkBuffer> buf
     std::vector<VkDescriptorBufferInfo> infos(count);
     std::vector<VkWriteDescriptorSet> writes(count);
     for (uint32_t b = 0; b < count; ++b) {
-        infos[b] = {buffers[b], 0, VK_WHOLE_SIZE};
         writes[b] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         writes[b].dstSet = set.descriptorSet;
         writes[b].dstBinding = b;
         writes[b].descriptorCount = 1;
-        writes[b].descriptorType = bindings[b].descriptorType;
-        writes[b].pBufferInfo = &infos[b];
+        writes[b].descriptorType = bindings[b].type;
+        if (bindings[b].type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER) {
+            writes[b].pTexelBufferView = &bindings[b].view;
+        } else {
+            infos[b] = {bindings[b].buffer, 0, VK_WHOLE_SIZE};
+            writes[b].pBufferInfo = &infos[b];
+        }
     }
     vkUpdateDescriptorSets(ctx.device, count, writes.data(), 0, nullptr);
     return set;
+}
+
+ComputeSet createComputeSet(const GpuContext& ctx, std::span<const VkBuffer> buffers) {
+    std::vector<ComputeBinding> bindings(buffers.size());
+    for (size_t b = 0; b < buffers.size(); ++b)
+        bindings[b] = {b == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[b]};
+    return createComputeSet(ctx, bindings);
 }
 
 void destroyComputeSet(const GpuContext& ctx, ComputeSet& set) {
@@ -61,6 +74,22 @@ void destroyComputeSet(const GpuContext& ctx, ComputeSet& set) {
 void bindComputeSet(VkCommandBuffer cmd, const ComputeSet& set) {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, set.pipelineLayout, 0, 1, &set.descriptorSet, 0,
                             nullptr);
+}
+
+VkBufferView createTexelView(const GpuContext& ctx, const Buffer& buffer, VkFormat format, uint32_t texelBytes) {
+    const VkDeviceSize texels = buffer.size / texelBytes;
+    const uint32_t limit = ctx.properties.limits.maxTexelBufferElements;
+    if (texels > limit)
+        throw std::runtime_error("a texel buffer of " + std::to_string(texels) + " texels is more than this device's " +
+                                 "maxTexelBufferElements (" + std::to_string(limit) + ")");
+    VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+    info.buffer = buffer.buffer;
+    info.format = format;
+    info.offset = 0;
+    info.range = texels * texelBytes;
+    VkBufferView view = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateBufferView(ctx.device, &info, nullptr, &view));
+    return view;
 }
 
 } // namespace pf

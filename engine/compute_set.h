@@ -1,6 +1,6 @@
-// The descriptor set and pipeline layout of a compute pass whose bindings
-// are one uniform buffer (binding 0) followed by storage buffers, in order —
-// the shape of the cull and physics passes.
+// The descriptor set and pipeline layout of a compute pass: buffers bound in
+// order, each as a uniform buffer, a storage buffer or a uniform texel
+// buffer — the shape of the cull and physics passes.
 #pragma once
 
 #include "engine/resources.h"
@@ -16,9 +16,23 @@ struct ComputeSet {
     VkDescriptorSet descriptorSet = VK_NULL_HANDLE;
 };
 
-// buffers[0] is the uniform buffer, the rest storage buffers (whole ranges).
+// Binding b of the set is bindings[b]: a whole buffer for uniform and
+// storage buffers, a view for texel buffers.
+struct ComputeBinding {
+    VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkBufferView view = VK_NULL_HANDLE;
+};
+
+ComputeSet createComputeSet(const GpuContext& ctx, std::span<const ComputeBinding> bindings);
+// buffers[0] is the uniform buffer, the rest storage buffers.
 ComputeSet createComputeSet(const GpuContext& ctx, std::span<const VkBuffer> buffers);
 void destroyComputeSet(const GpuContext& ctx, ComputeSet& set);
 void bindComputeSet(VkCommandBuffer cmd, const ComputeSet& set);
+
+// A view of a whole buffer as texels of `format`, for shaders that read it
+// with texelFetch. Throws when the buffer holds more texels than the
+// device's maxTexelBufferElements.
+VkBufferView createTexelView(const GpuContext& ctx, const Buffer& buffer, VkFormat format, uint32_t texelBytes);
 
 } // namespace pf

@@ -13,17 +13,9 @@ namespace pf {
 
 namespace {
 
-// Binding order of shaders/physics.comp and shaders/pose.comp.
-enum Binding : uint32_t {
-    kBindingUniforms,
-    kBindingParams,
-    kBindingSkeletons,
-    kBindingStates,
-    kBindingPoses,
-    kBindingJointSkeleton,
-    kBindingJointOrder,
-    kBindingCount
-};
+// What the passes read: shader reads of storage buffers and of the texel
+// views of shaders/physics_bindings.glsl.
+constexpr VkAccessFlags2 kShaderReads = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
 
 // Buffers of zero size are invalid: an empty set still gets one element each.
 template <typename T>
@@ -67,7 +59,8 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
     pass.maxGroupsX = ctx.properties.limits.maxComputeWorkGroupCount[0];
     const std::vector<uint32_t> order = jointsByDepth(set, pass.levels);
 
-    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    // Every array is read through a texel view; states and poses are also written.
+    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
     const VkBufferUsageFlags uploaded = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     pass.uniforms = createHostBuffer(ctx, sizeof(gpu::PhysicsUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     pass.skeletons = createHostBuffer(ctx, bytesOf(set.skeletons), storage);
@@ -112,15 +105,30 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
             // physics and pose dispatches read (and overwrite) these.
             memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
-                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+                          kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         });
         destroyBuffer(ctx, staging);
     }
 
-    const VkBuffer buffers[kBindingCount] = {pass.uniforms.buffer,      pass.params.buffer, pass.skeletons.buffer,
-                                             pass.states.buffer,        pass.poses.buffer,  pass.jointSkeleton.buffer,
-                                             pass.jointOrder.buffer};
-    pass.set = createComputeSet(ctx, buffers);
+    const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
+    pass.views = {createTexelView(ctx, pass.params, uint4, 16),
+                  createTexelView(ctx, pass.skeletons, uint4, 16),
+                  createTexelView(ctx, pass.jointSkeleton, VK_FORMAT_R32_UINT, 4),
+                  createTexelView(ctx, pass.jointOrder, VK_FORMAT_R32_UINT, 4),
+                  createTexelView(ctx, pass.states, uint4, 16),
+                  createTexelView(ctx, pass.poses, uint4, 16)};
+    const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    // Binding order of shaders/physics_bindings.glsl.
+    const ComputeBinding bindings[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, pass.uniforms.buffer},
+                                       {texels, VK_NULL_HANDLE, pass.views[0]},
+                                       {texels, VK_NULL_HANDLE, pass.views[1]},
+                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pass.states.buffer},
+                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pass.poses.buffer},
+                                       {texels, VK_NULL_HANDLE, pass.views[2]},
+                                       {texels, VK_NULL_HANDLE, pass.views[3]},
+                                       {texels, VK_NULL_HANDLE, pass.views[4]},
+                                       {texels, VK_NULL_HANDLE, pass.views[5]}};
+    pass.set = createComputeSet(ctx, bindings);
     // The set's layout plus the pose level (uvec2 push constants; physics.comp declares none).
     const VkPushConstantRange levelRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(glm::uvec2)};
     VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -139,6 +147,7 @@ void destroyPhysicsPass(const GpuContext& ctx, PhysicsPass& pass) {
     vkDestroyPipeline(ctx.device, pass.posePipeline, nullptr);
     vkDestroyPipelineLayout(ctx.device, pass.layout, nullptr);
     destroyComputeSet(ctx, pass.set);
+    for (VkBufferView view : pass.views) vkDestroyBufferView(ctx.device, view, nullptr);
     for (Buffer* b : {&pass.uniforms, &pass.params, &pass.skeletons, &pass.states, &pass.poses, &pass.jointSkeleton,
                       &pass.jointOrder})
         destroyBuffer(ctx, *b);
@@ -160,7 +169,7 @@ void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, GpuTimer* t
     // here (read-after-write: make them visible).
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+                  kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     if (pass.jointCount == 0) return;
 
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout, 0, 1, &pass.set.descriptorSet, 0,
@@ -175,8 +184,7 @@ void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, GpuTimer* t
         // the physics dispatch read (write-after-read, covered by the same
         // execution dependency).
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     }
     if (timer) endScope(cmd, *timer);
 
@@ -186,7 +194,7 @@ void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, GpuTimer* t
         if (d > 0) {
             // This level reads the poses of its parents, which the previous level wrote.
             memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kShaderReads);
         }
         const glm::uvec2 level = pass.levels[d]; // never empty: a joint at depth d > 0 has a parent at d − 1
         vkCmdPushConstants(cmd, pass.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(level), &level);

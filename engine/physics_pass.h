@@ -11,10 +11,12 @@
 #include "engine/gpu_timer.h"
 #include "engine/resources.h"
 
+#include <array>
+
 namespace pf {
 
 struct PhysicsPass {
-    ComputeSet set; // uniforms, then the storage buffers below
+    ComputeSet set; // shaders/physics_bindings.glsl: the buffers below, read through texel views
     VkPipelineLayout layout = VK_NULL_HANDLE; // set's descriptor set and the pose level's push constants
     VkPipeline physicsPipeline = VK_NULL_HANDLE;
     VkPipeline posePipeline = VK_NULL_HANDLE;
@@ -26,6 +28,8 @@ struct PhysicsPass {
     Buffer poses;         // JointPose[] (read by the vertex shaders)
     Buffer jointSkeleton; // uint per simulated joint
     Buffer jointOrder;    // uint per simulated joint: the joints level after level (depth 0 first)
+    // Texel views: params, skeletons, jointSkeleton, jointOrder, states, poses.
+    std::array<VkBufferView, 6> views{};
 
     uint32_t skeletonCount = 0;
     uint32_t jointCount = 0;

@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "joint_physics.h"
+#include "physics_bindings.glsl"
 
 // Physics (DESIGN.md §5 pass 1, §6): one invocation per simulated joint
 // takes the frame's counts.z sub-steps of stepJoint, its state held in
@@ -8,43 +8,24 @@
 // parent's rotation and its own base from the poses at entry (written by the
 // previous pose pass) and writes only its own state, so the joints of a
 // dispatch are independent. engine/plant_physics.h stepSkeletonsOnCpu is the
-// CPU reference. Bindings: engine/physics_pass.cpp.
+// CPU reference.
 layout(local_size_x = PHYSICS_GROUP_SIZE) in;
-
-layout(set = 0, binding = 0, std140) uniform PhysicsBlock {
-    PhysicsUniforms physics;
-};
-layout(set = 0, binding = 1, std430) readonly buffer Params {
-    JointParams params[];
-};
-layout(set = 0, binding = 2, std430) readonly buffer Skeletons {
-    Skeleton skeletons[];
-};
-layout(set = 0, binding = 3, std430) buffer States {
-    JointState states[];
-};
-layout(set = 0, binding = 4, std430) readonly buffer Poses {
-    JointPose poses[];
-};
-layout(set = 0, binding = 5, std430) readonly buffer JointSkeletons {
-    uint jointSkeleton[];
-};
 
 void main() {
     // Two-dimensional dispatch past maxComputeWorkGroupCount[0] groups.
     uint index = gl_WorkGroupID.y * gl_NumWorkGroups.x * PHYSICS_GROUP_SIZE + gl_GlobalInvocationID.x;
     if (index >= physics.counts.y) return;
 
-    Skeleton sk = skeletons[jointSkeleton[index]];
+    Skeleton sk = skeletonOfJoint(index);
     if (!skeletonInUse(sk)) return;
     uint joint = index - sk.ids.w;
-    JointParams jp = params[sk.ids.y + joint];
+    JointParams jp = jointParamsAt(sk.ids.y + joint);
     uint parent = jp.links.x;
-    vec4 parentRotation = parent == JOINT_NO_PARENT ? vec4(0.0f, 0.0f, 0.0f, 1.0f) : poses[sk.ids.w + parent].rotation;
-    vec3 base = posePoint(poses[index], jp.restBase.xyz);
+    vec4 parentRotation = parent == JOINT_NO_PARENT ? vec4(0.0f, 0.0f, 0.0f, 1.0f) : poseAt(sk.ids.w + parent).rotation;
+    vec3 base = posePoint(poseAt(index), jp.restBase.xyz);
 
     float dt = physics.windDetail.w;
-    JointState s = states[index];
+    JointState s = stateAt(index);
     JointStep c = prepareJointStep(jp, parentRotation, base, s, sk, physics, dt);
     for (uint step = 0u; step < physics.counts.z; ++step) s = stepJoint(c, s, step, dt);
     states[index] = s;
