@@ -135,6 +135,43 @@ void expectFiniteAndBounded(const pf::SkeletonSet& set, float maxSpeed, const st
     EXPECT_LT(fastest, maxSpeed) << what;
 }
 
+// The branch-free log and exp of joint_physics.h against the exact formulas
+// in double precision, over every angle they are documented for, about
+// axes in all directions.
+TEST(PlantPhysics, RotationLogMatchesExactFormulaOverTheWholeAngleRange) {
+    double worst = 0.0;
+    for (int a = 0; a <= 1000; ++a) {
+        const double angle = std::numbers::pi * a / 1000.0;
+        const glm::dvec3 axis = glm::normalize(glm::dvec3(std::sin(0.37 * a), std::cos(0.11 * a), 0.5));
+        const glm::dvec3 exact = axis * angle;
+        for (double sign : {1.0, -1.0}) { // q and −q are the same rotation
+            const glm::dvec3 v = axis * std::sin(0.5 * angle) * sign;
+            const gpu::vec4 q(float(v.x), float(v.y), float(v.z), float(std::cos(0.5 * angle) * sign));
+            const glm::dvec3 got(gpu::rotationVectorOf(q));
+            // Near π the axis flips with float rounding of w: compare the turn.
+            const double error = angle < std::numbers::pi - 1e-3 ? glm::length(got - exact)
+                                                                : std::abs(glm::length(got) - angle);
+            worst = std::max(worst, error);
+        }
+    }
+    EXPECT_LT(worst, 2e-6) << "rad";
+    EXPECT_EQ(gpu::rotationVectorOf(gpu::vec4(0.0f, 0.0f, 0.0f, 1.0f)), glm::vec3(0.0f));
+}
+
+TEST(PlantPhysics, RotationExpIsExactUpToOneRadianAndCloseUpToPi) {
+    for (int a = 0; a <= 1000; ++a) {
+        const double angle = std::numbers::pi * a / 1000.0;
+        const glm::dvec3 axis = glm::normalize(glm::dvec3(0.3, std::cos(0.07 * a), std::sin(0.07 * a)));
+        const gpu::vec4 q = glm::normalize(gpu::quatFromRotationVector(glm::vec3(axis * angle)));
+        // The turn it makes, and about which axis.
+        const glm::dvec3 back(gpu::rotationVectorOf(q));
+        const double tolerance = angle <= 1.0 ? 2e-6 : 1e-4;
+        EXPECT_NEAR(glm::length(back), angle, tolerance) << "at " << angle << " rad";
+        // At π itself the axis is only defined up to sign.
+        if (angle > 1e-3 && angle < std::numbers::pi - 1e-3) EXPECT_GT(glm::dot(glm::normalize(back), axis), 1.0 - 1e-6) << "at " << angle << " rad";
+    }
+}
+
 TEST(PlantPhysics, RodSettlesWhereSpringBalancesWeight) {
     pf::PhysicsSettings settings;
     settings.dampingRatio = 1.0f;
