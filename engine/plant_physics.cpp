@@ -246,7 +246,7 @@ void stepSkeletonsOnCpu(SkeletonSet& set, const gpu::PhysicsUniforms& u) {
         gpu::JointState state = set.states[i];
         const gpu::JointStep c = gpu::prepareJointStep(p, parentRotation, base, state, skeleton, u, dt);
         for (uint32_t step = 0; step < u.counts.z; ++step) state = gpu::stepJoint(c, state, step, dt);
-        set.states[i] = state;
+        set.states[i] = gpu::endJointFrame(state);
     }
 }
 

@@ -15,7 +15,8 @@
 // - spring −k·θa (θa the axis-angle of q) and damping −c·ω, local frame;
 // - semi-implicit step with the spring and damping taken implicitly, which
 //   is stable for any stiffness:
-//     ω ← (ω + dt/I·(τ − k·θa)) / (1 + dt·c/I + dt²·k/I),  q ← normalize(q·exp(ω·dt));
+//     ω ← (ω + dt/I·(τ − k·θa)) / (1 + dt·c/I + dt²·k/I),  q ← q·exp(ω·dt)
+//   (q renormalised once a frame, endJointFrame);
 // - no twist: the component of ω along the segment is dropped.
 // A frame's sub-steps all see the poses at entry, so what does not change
 // between them is computed once per joint (prepareJointStep), the wind
@@ -72,7 +73,7 @@ JOINT_PHYSICS_FN vec3 quatRotate(vec4 q, vec3 v) {
 // exact to float precision up to a = 1 rad (a sub-step turns by ω·dt, far
 // below that) and within 1e-4 of it up to π; past π (ω above ~1500 rad/s at
 // dt = 1/480 s, a simulation already blowing up) the result is still a
-// finite rotation, never a NaN. stepJoint renormalises it.
+// finite rotation, never a NaN. endJointFrame renormalises the product.
 JOINT_PHYSICS_FN vec4 quatFromRotationVector(vec3 r) {
     float a2 = dot(r, r);
     vec3 v = r * (0.5f - a2 * (1.0f / 48.0f - a2 * (1.0f / 3840.0f - a2 * (1.0f / 645120.0f))));
@@ -82,24 +83,26 @@ JOINT_PHYSICS_FN vec4 quatFromRotationVector(vec3 r) {
 
 // log: the rotation vector (axis · angle, angle in [0, π]) of a unit
 // quaternion, with no branch and no atan (both cost the physics pass a
-// third of its time on lavapipe). With h the half angle, the vector part is
-// sin h · axis and t = sin h / (1 + cos h) = tan(h/2) lies in [0, 1]; the
-// angle is 4·atan t. atan by one range reduction, atan t = π/4 +
-// atan((t − 1)/(t + 1)) above tan(π/8), and its odd series to x¹⁵ on
-// |x| ≤ tan(π/8), whose first term left out is below 2e-8. The vector
-// part times angle / sin h = 4·(atan t / t) / (1 + cos h) is the result,
-// with no division by zero at the identity.
+// third of its time on lavapipe). With h the half angle, s = sin h = |xyz|
+// and d = 1 + cos h, t = s/d = tan(h/2) lies in [0, 1] and the angle is
+// 4·atan t. atan by one range reduction, atan t = π/4 + atan x with
+// x = (t − 1)/(t + 1) = (s − d)/(s + d) above tan(π/8), and the odd series
+// of atan x / x to x¹⁴ on |x| ≤ tan(π/8), whose first term left out is
+// below 2e-8. The result is xyz · angle / s, which is 4·(atan t / t)/d
+// unreduced (no division by zero at the identity) and 4·(π/4 + atan x)/s
+// reduced (s ≥ 0.38 there): two divisions in all.
 JOINT_PHYSICS_FN vec3 rotationVectorOf(vec4 q) {
     q = q.w < 0.0f ? -q : q; // the shorter way round
     vec3 u = vec3(q.x, q.y, q.z);
-    float t = length(u) / (1.0f + q.w);
-    bool reduced = t > 0.41421356f;
-    float x = reduced ? (t - 1.0f) / (t + 1.0f) : t;
+    float s = length(u);
+    float d = 1.0f + q.w;
+    bool reduced = s > 0.41421356f * d;
+    float x = (reduced ? s - d : s) / (reduced ? s + d : d);
     float x2 = x * x;
     float atanOverX = 1.0f + x2 * (-1.0f / 3.0f + x2 * (1.0f / 5.0f + x2 * (-1.0f / 7.0f + x2 * (1.0f / 9.0f +
                       x2 * (-1.0f / 11.0f + x2 * (1.0f / 13.0f - x2 * (1.0f / 15.0f)))))));
-    float atanOverT = reduced ? (0.78539816f + x * atanOverX) / t : atanOverX;
-    return u * (4.0f * atanOverT / (1.0f + q.w));
+    float factor = (reduced ? 0.78539816f + x * atanOverX : atanOverX) / (reduced ? s : d);
+    return u * (4.0f * factor);
 }
 
 // Yaw about +y by the plant's rotation (field_common.glsl yawMatrix), given
@@ -199,9 +202,18 @@ JOINT_PHYSICS_FN JointState stepJoint(JointStep c, JointState s, uint step, floa
     omega.y = 0.0f; // segments bend, they do not twist
 
     JointState next;
-    next.rotation = normalize(quatMultiply(s.rotation, quatFromRotationVector(omega * dt)));
+    next.rotation = quatMultiply(s.rotation, quatFromRotationVector(omega * dt));
     next.angularVelocity = vec4(omega.x, omega.y, omega.z, 0.0f);
     return next;
+}
+
+// After a frame's sub-steps. Each sub-step's turn is a unit quaternion to
+// float precision (quatFromRotationVector), so the rotation drifts from
+// unit length by about 1e-7 a sub-step, which rotationVectorOf tolerates;
+// it is renormalised once a frame instead of every sub-step.
+JOINT_PHYSICS_FN JointState endJointFrame(JointState s) {
+    s.rotation = normalize(s.rotation);
+    return s;
 }
 
 // The joint's rotation about its own base in rest plant space: R·q·R⁻¹.

@@ -28,5 +28,5 @@ void main() {
     JointState s = stateAt(index);
     JointStep c = prepareJointStep(jp, parentRotation, base, s, sk, physics, dt);
     for (uint step = 0u; step < physics.counts.z; ++step) s = stepJoint(c, s, step, dt);
-    states[index] = s;
+    states[index] = endJointFrame(s);
 }
