@@ -2,8 +2,6 @@
 
 #include "engine/vk_check.h"
 
-#include <stdexcept>
-#include <string>
 #include <vector>
 
 namespace pf {
@@ -74,22 +72,6 @@ void destroyComputeSet(const GpuContext& ctx, ComputeSet& set) {
 void bindComputeSet(VkCommandBuffer cmd, const ComputeSet& set) {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, set.pipelineLayout, 0, 1, &set.descriptorSet, 0,
                             nullptr);
-}
-
-VkBufferView createTexelView(const GpuContext& ctx, const Buffer& buffer, VkFormat format, uint32_t texelBytes) {
-    const VkDeviceSize texels = buffer.size / texelBytes;
-    const uint32_t limit = ctx.properties.limits.maxTexelBufferElements;
-    if (texels > limit)
-        throw std::runtime_error("a texel buffer of " + std::to_string(texels) + " texels is more than this device's " +
-                                 "maxTexelBufferElements (" + std::to_string(limit) + ")");
-    VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
-    info.buffer = buffer.buffer;
-    info.format = format;
-    info.offset = 0;
-    info.range = texels * texelBytes;
-    VkBufferView view = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateBufferView(ctx.device, &info, nullptr, &view));
-    return view;
 }
 
 } // namespace pf

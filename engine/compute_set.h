@@ -30,9 +30,4 @@ ComputeSet createComputeSet(const GpuContext& ctx, std::span<const VkBuffer> buf
 void destroyComputeSet(const GpuContext& ctx, ComputeSet& set);
 void bindComputeSet(VkCommandBuffer cmd, const ComputeSet& set);
 
-// A view of a whole buffer as texels of `format`, for shaders that read it
-// with texelFetch. Throws when the buffer holds more texels than the
-// device's maxTexelBufferElements.
-VkBufferView createTexelView(const GpuContext& ctx, const Buffer& buffer, VkFormat format, uint32_t texelBytes);
-
 } // namespace pf

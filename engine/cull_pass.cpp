@@ -86,7 +86,9 @@ CullPass createCullPass(const GpuContext& ctx, const CullPassInputs& inputs) {
     pass.state = createDeviceBuffer(ctx, VkDeviceSize(pass.instanceCount) * 4, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     pass.counts = createDeviceBuffer(ctx, VkDeviceSize(pass.modelCount) * LOD_COUNT * 4,
                                      storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-    pass.visible = createDeviceBuffer(ctx, VkDeviceSize(pass.instanceCount) * LOD_COUNT * 4, storage);
+    // Written here, read by the draw shaders through a texel view.
+    pass.visible = createDeviceBuffer(ctx, VkDeviceSize(pass.instanceCount) * LOD_COUNT * 4,
+                                      storage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
     pass.commands = createDeviceBuffer(ctx, VkDeviceSize(DRAW_CLASS_COUNT) * pass.templateCount * sizeof(gpu::DrawCommand),
                                        indirect);
     pass.drawCounts = createDeviceBuffer(ctx, DRAW_CLASS_COUNT * 4, indirect | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -177,7 +179,7 @@ void recordCullPass(VkCommandBuffer cmd, const CullPass& pass) {
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
                       VK_PIPELINE_STAGE_2_COPY_BIT,
-                  VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
+                  VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT |
                       VK_ACCESS_2_TRANSFER_READ_BIT);
 
     const VkBufferCopy countsRegion{0, 0, VkDeviceSize(pass.modelCount) * LOD_COUNT * 4};

@@ -86,7 +86,7 @@ FieldMotion createFieldMotion(const GpuContext& ctx, const FieldContent& content
     motion.pass = createPhysicsPass(ctx, set);
     motion.sharedOf = skeletonPerPlant(content);
     motion.instanceSkeleton = createHostBuffer(ctx, std::max<size_t>(1, motion.sharedOf.size()) * sizeof(uint32_t),
-                                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+                                               VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
     std::copy(motion.sharedOf.begin(), motion.sharedOf.end(), static_cast<uint32_t*>(motion.instanceSkeleton.mapped));
     motion.restStates = deviceCopyOf(ctx, set.states, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     motion.restPoses = deviceCopyOf(ctx, set.poses, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);

@@ -33,6 +33,11 @@ struct FieldUniformBlock {
 };
 
 constexpr VkShaderStageFlags kDrawStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+// The draw shaders read their buffers through texel views (field_common.glsl);
+// the cull pass reads instances and models, the impostor bake the vertices,
+// as storage buffers.
+constexpr VkBufferUsageFlags kStorageAndTexels =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
 
 struct Timed {
     VkCommandBuffer cmd;
@@ -97,6 +102,7 @@ FieldRenderer::~FieldRenderer() {
         vkDestroyPipeline(device, p, nullptr);
     vkDestroyPipelineLayout(device, pipelineLayout_, nullptr);
     vkDestroyDescriptorPool(device, descriptorPool_, nullptr);
+    for (VkBufferView view : texelViews_) vkDestroyBufferView(device, view, nullptr);
     vkDestroyDescriptorSetLayout(device, setLayout_, nullptr);
     destroyCullPass(ctx_, cull_);
     destroyFieldMotion(ctx_, motion_);
@@ -112,7 +118,7 @@ FieldRenderer::~FieldRenderer() {
 void FieldRenderer::uploadGeometry() {
     PlantModelPool& pool = content_.models;
     for (uint32_t quads = 1; quads <= 3; ++quads) billboards_[quads - 1] = appendBillboardMesh(pool, quads);
-    vertices_ = uploadVector(ctx_, pool.vertices, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    vertices_ = uploadVector(ctx_, pool.vertices, kStorageAndTexels);
     indices_ = uploadVector(ctx_, pool.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     atlas_ = bakeImpostorAtlas(ctx_, pool, vertices_, indices_, settings_.impostors);
 
@@ -120,7 +126,7 @@ void FieldRenderer::uploadGeometry() {
     std::vector<gpu::TerrainVertex> terrain(mesh.positions.size());
     for (size_t i = 0; i < terrain.size(); ++i)
         terrain[i] = {glm::vec4(mesh.positions[i], 0.0f), glm::vec4(mesh.normals[i], 0.0f)};
-    terrainVertices_ = uploadVector(ctx_, terrain, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    terrainVertices_ = uploadVector(ctx_, terrain, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
     terrainIndices_ = uploadVector(ctx_, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     terrainIndexCount_ = uint32_t(mesh.indices.size());
 }
@@ -149,12 +155,12 @@ void FieldRenderer::uploadInstances() {
     }
     std::vector<gpu::PlantModel> models;
     for (const PlantModelInfo& info : pool.models) models.push_back(info.gpu);
-    models_ = uploadVector(ctx_, models, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    instances_ = uploadVector(ctx_, instances, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    models_ = uploadVector(ctx_, models, kStorageAndTexels);
+    instances_ = uploadVector(ctx_, instances, kStorageAndTexels);
 
     std::vector<uint32_t> naive(plantCount);
     for (uint32_t i = 0; i < plantCount; ++i) naive[i] = i | (VISIBLE_COVERAGE_MAX << VISIBLE_COVERAGE_SHIFT);
-    naiveVisible_ = uploadVector(ctx_, naive, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    naiveVisible_ = uploadVector(ctx_, naive, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
 
     // Templates sorted by class: bark and foliage meshes of LOD0 and LOD1, then impostors.
     std::vector<gpu::DrawTemplate> templates;
@@ -179,19 +185,21 @@ void FieldRenderer::uploadInstances() {
 }
 
 void FieldRenderer::createDescriptors() {
+    const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    const VkDescriptorType image = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     const VkDescriptorSetLayoutBinding bindings[] = {
         {FIELD_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_INSTANCES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_VISIBLE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_MODELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_ATLAS_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_ATLAS_NORMAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_SKELETONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_POSES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_INSTANCE_SKELETON, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_INSTANCES, texels, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_VISIBLE, texels, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_VERTICES, texels, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_MODELS, texels, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_ATLAS_COLOR, image, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_ATLAS_NORMAL, image, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_SHADOW, image, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_TERRAIN, texels, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_SKELETONS, texels, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_POSES, texels, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_INSTANCE_SKELETON, texels, 1, kDrawStages, nullptr},
     };
     constexpr uint32_t kBindings = uint32_t(std::size(bindings));
     VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -199,9 +207,8 @@ void FieldRenderer::createDescriptors() {
     layoutInfo.pBindings = bindings;
     VK_CHECK(vkCreateDescriptorSetLayout(ctx_.device, &layoutInfo, nullptr, &setLayout_));
 
-    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
-                                          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 16},
-                                          {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 6}};
+    // Two sets (GPU-driven and naive) of the layout above.
+    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {texels, 16}, {image, 6}};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 2;
     poolInfo.poolSizeCount = uint32_t(std::size(sizes));
@@ -218,22 +225,25 @@ void FieldRenderer::createDescriptors() {
     drawSet_ = sets[0];
     naiveSet_ = sets[1];
 
+    const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
+    auto view = [&](const Buffer& buffer, VkFormat format, uint32_t bytes) {
+        texelViews_.push_back(createTexelView(ctx_, buffer, format, bytes));
+        return texelViews_.back();
+    };
+    const VkBufferView instances = view(instances_, uint4, 16), vertices = view(vertices_, uint4, 16),
+                       models = view(models_, uint4, 16), terrain = view(terrainVertices_, uint4, 16),
+                       skeletons = view(motion_.pass.skeletons, uint4, 16),
+                       poses = view(motion_.pass.poses, uint4, 16),
+                       instanceSkeleton = view(motion_.instanceSkeleton, VK_FORMAT_R32_UINT, 4);
+    const VkDescriptorBufferInfo frame{uniforms_.buffer, 0, VK_WHOLE_SIZE};
     const VkDescriptorImageInfo atlasColor{atlas_.sampler, atlas_.color.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     const VkDescriptorImageInfo atlasNormal{atlas_.sampler, atlas_.normalDepth.view,
                                             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     const VkDescriptorImageInfo shadow{shadow_.sampler, shadow_.depth.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     for (VkDescriptorSet set : sets) {
-        const Buffer& visible = set == drawSet_ ? cull_.visible : naiveVisible_;
-        const VkDescriptorBufferInfo buffers[] = {{uniforms_.buffer, 0, VK_WHOLE_SIZE},
-                                                  {instances_.buffer, 0, VK_WHOLE_SIZE},
-                                                  {visible.buffer, 0, VK_WHOLE_SIZE},
-                                                  {vertices_.buffer, 0, VK_WHOLE_SIZE},
-                                                  {models_.buffer, 0, VK_WHOLE_SIZE},
-                                                  {}, {}, {},
-                                                  {terrainVertices_.buffer, 0, VK_WHOLE_SIZE},
-                                                  {motion_.pass.skeletons.buffer, 0, VK_WHOLE_SIZE},
-                                                  {motion_.pass.poses.buffer, 0, VK_WHOLE_SIZE},
-                                                  {motion_.instanceSkeleton.buffer, 0, VK_WHOLE_SIZE}};
+        const VkBufferView visible = view(set == drawSet_ ? cull_.visible : naiveVisible_, VK_FORMAT_R32_UINT, 4);
+        const VkBufferView views[] = {VK_NULL_HANDLE, instances, visible,   vertices, models,           VK_NULL_HANDLE,
+                                      VK_NULL_HANDLE, VK_NULL_HANDLE, terrain, skeletons, poses, instanceSkeleton};
         const VkDescriptorImageInfo* images[] = {nullptr, nullptr, nullptr, nullptr, nullptr, &atlasColor,
                                                  &atlasNormal, &shadow, nullptr, nullptr, nullptr, nullptr};
         VkWriteDescriptorSet writes[kBindings];
@@ -244,7 +254,8 @@ void FieldRenderer::createDescriptors() {
             writes[i].descriptorCount = 1;
             writes[i].descriptorType = bindings[i].descriptorType;
             if (images[i]) writes[i].pImageInfo = images[i];
-            else writes[i].pBufferInfo = &buffers[i];
+            else if (views[i]) writes[i].pTexelBufferView = &views[i];
+            else writes[i].pBufferInfo = &frame;
         }
         vkUpdateDescriptorSets(ctx_.device, kBindings, writes, 0, nullptr);
     }

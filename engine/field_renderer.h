@@ -104,6 +104,7 @@ private:
 
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
     VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
+    std::vector<VkBufferView> texelViews_; // of the buffers the draw shaders read (field_common.glsl)
     VkDescriptorSet drawSet_ = VK_NULL_HANDLE;  // visible = the cull pass's lists
     VkDescriptorSet naiveSet_ = VK_NULL_HANDLE; // visible = naiveVisible_
     VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;

@@ -4,6 +4,7 @@
 
 #include <cstring>
 #include <stdexcept>
+#include <string>
 
 namespace pf {
 
@@ -65,6 +66,22 @@ void destroyBuffer(const GpuContext& ctx, Buffer& buffer) {
     if (buffer.buffer) vkDestroyBuffer(ctx.device, buffer.buffer, nullptr);
     if (buffer.memory) vkFreeMemory(ctx.device, buffer.memory, nullptr);
     buffer = {};
+}
+
+VkBufferView createTexelView(const GpuContext& ctx, const Buffer& buffer, VkFormat format, uint32_t texelBytes) {
+    const VkDeviceSize texels = buffer.size / texelBytes;
+    const uint32_t limit = ctx.properties.limits.maxTexelBufferElements;
+    if (texels > limit)
+        throw std::runtime_error("a texel buffer of " + std::to_string(texels) + " texels is more than this device's " +
+                                 "maxTexelBufferElements (" + std::to_string(limit) + ")");
+    VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+    info.buffer = buffer.buffer;
+    info.format = format;
+    info.offset = 0;
+    info.range = texels * texelBytes;
+    VkBufferView view = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateBufferView(ctx.device, &info, nullptr, &view));
+    return view;
 }
 
 Image createImage(const GpuContext& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,

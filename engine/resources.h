@@ -32,6 +32,13 @@ Buffer createHostBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageF
 Buffer createDeviceBufferWithData(const GpuContext& ctx, const void* data, VkDeviceSize size, VkBufferUsageFlags usage);
 void destroyBuffer(const GpuContext& ctx, Buffer& buffer);
 
+// A view of a whole buffer as texels of `format` (`texelBytes` each), for
+// shaders that read it as a uniform texel buffer: lavapipe gathers a texel
+// for all SIMD lanes at once, where it reads a storage buffer at a
+// per-invocation index one float and one lane at a time. Throws when the
+// buffer holds more texels than the device's maxTexelBufferElements.
+VkBufferView createTexelView(const GpuContext& ctx, const Buffer& buffer, VkFormat format, uint32_t texelBytes);
+
 Image createImage(const GpuContext& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
                   VkSampleCountFlagBits samples, VkImageAspectFlags aspect);
 void destroyImage(const GpuContext& ctx, Image& image);

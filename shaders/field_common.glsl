@@ -6,43 +6,61 @@
 #include "common.glsl"
 #include "plant_surface.glsl"
 #include "joint_physics.h"
+#include "texels.glsl"
 
-layout(set = 0, binding = FIELD_BINDING_INSTANCES, std430) readonly buffer Instances {
-    FieldInstance instances[];
-};
-layout(set = 0, binding = FIELD_BINDING_VISIBLE, std430) readonly buffer Visible {
-    uint visible[];
-};
-layout(set = 0, binding = FIELD_BINDING_VERTICES, std430) readonly buffer Vertices {
-    FieldVertex vertices[];
-};
-layout(set = 0, binding = FIELD_BINDING_MODELS, std430) readonly buffer Models {
-    PlantModel models[];
-};
+// Everything the draw shaders read per vertex or per plant is a uniform
+// texel buffer (uint views, 16-byte texels unless said; texels.glsl says
+// why).
+layout(set = 0, binding = FIELD_BINDING_INSTANCES) uniform usamplerBuffer instanceTexels; // FieldInstance[], 3 each
+layout(set = 0, binding = FIELD_BINDING_VISIBLE) uniform usamplerBuffer visibleTexels;   // uint (4-byte texels)
+layout(set = 0, binding = FIELD_BINDING_VERTICES) uniform usamplerBuffer vertexTexels;   // FieldVertex[], 4 each
+layout(set = 0, binding = FIELD_BINDING_MODELS) uniform usamplerBuffer modelTexels;      // PlantModel[], 7 each
 layout(set = 0, binding = FIELD_BINDING_ATLAS_COLOR) uniform sampler2DArray atlasColor;
 layout(set = 0, binding = FIELD_BINDING_ATLAS_NORMAL) uniform sampler2DArray atlasNormal;
 layout(set = 0, binding = FIELD_BINDING_SHADOW) uniform sampler2DShadow shadowMap;
-layout(set = 0, binding = FIELD_BINDING_TERRAIN, std430) readonly buffer Terrain {
-    TerrainVertex terrain[];
-};
+layout(set = 0, binding = FIELD_BINDING_TERRAIN) uniform usamplerBuffer terrainTexels;   // TerrainVertex[], 2 each
+layout(set = 0, binding = FIELD_BINDING_SKELETONS) uniform usamplerBuffer skeletonTexels; // Skeleton[], 3 each
+layout(set = 0, binding = FIELD_BINDING_POSES) uniform usamplerBuffer poseTexels;        // JointPose[], 2 each
+layout(set = 0, binding = FIELD_BINDING_INSTANCE_SKELETON) uniform usamplerBuffer instanceSkeletonTexels; // uint
 
-layout(set = 0, binding = FIELD_BINDING_SKELETONS, std430) readonly buffer Skeletons {
-    Skeleton skeletons[];
-};
-layout(set = 0, binding = FIELD_BINDING_POSES, std430) readonly buffer Poses {
-    JointPose poses[];
-};
-layout(set = 0, binding = FIELD_BINDING_INSTANCE_SKELETON, std430) readonly buffer InstanceSkeletons {
-    uint instanceSkeleton[];
-};
+FieldInstance fieldInstanceAt(uint i) {
+    int t = int(i) * 3;
+    return FieldInstance(floatTexel(instanceTexels, t), floatTexel(instanceTexels, t + 1),
+                         texelFetch(instanceTexels, t + 2));
+}
+
+FieldVertex fieldVertexAt(uint i) {
+    int t = int(i) * 4;
+    return FieldVertex(floatTexel(vertexTexels, t), floatTexel(vertexTexels, t + 1), floatTexel(vertexTexels, t + 2),
+                       texelFetch(vertexTexels, t + 3));
+}
+
+PlantModel plantModelAt(uint i) {
+    int t = int(i) * 7;
+    PlantModel m;
+    m.sphere = floatTexel(modelTexels, t);
+    m.boxMin = floatTexel(modelTexels, t + 1);
+    m.boxMax = floatTexel(modelTexels, t + 2);
+    m.lod = floatTexel(modelTexels, t + 3);
+    m.lists = texelFetch(modelTexels, t + 4);
+    m.impostor = texelFetch(modelTexels, t + 5);
+    m.impostorQuad = floatTexel(modelTexels, t + 6);
+    return m;
+}
+
+TerrainVertex terrainVertexAt(uint i) {
+    return TerrainVertex(floatTexel(terrainTexels, int(i) * 2), floatTexel(terrainTexels, int(i) * 2 + 1));
+}
 
 // Where the physics has moved joint `joint` of plant `instance` (plant
 // space, before the instance transform); the identity for plants without
 // a simulated skeleton.
 JointPose plantJointPose(uint instance, uint joint) {
-    uint skeleton = instanceSkeleton[instance];
+    uint skeleton = texelFetch(instanceSkeletonTexels, int(instance)).x;
     if (skeleton == NO_SKELETON) return JointPose(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0));
-    return poses[skeletons[skeleton].ids.w + joint];
+    // Skeleton.ids.w, the first pose of its joints.
+    int pose = int(texelFetch(skeletonTexels, int(skeleton) * 3).w + joint) * 2;
+    return JointPose(floatTexel(poseTexels, pose), floatTexel(poseTexels, pose + 1));
 }
 
 // The wind field of the physics pass (joint_physics.h windAt), for shaders
@@ -69,13 +87,13 @@ mat4 passViewProj() {
 // The plant a draw's instance stands for: gl_InstanceIndex already includes
 // the command's firstInstance, i.e. the start of its (model, LOD) list.
 struct VisiblePlant {
-    uint index;     // into instances[]
+    uint index;     // into the instances (fieldInstanceAt)
     float coverage; // share of pixels drawn, for the LOD cross-fade
     bool fadeIn;
 };
 
 VisiblePlant visiblePlant(uint entryIndex) {
-    uint entry = visible[entryIndex];
+    uint entry = texelFetch(visibleTexels, int(entryIndex)).x;
     VisiblePlant p;
     p.index = entry & VISIBLE_INDEX_MASK;
     p.fadeIn = (entry & VISIBLE_FADE_IN_BIT) != 0u;

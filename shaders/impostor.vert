@@ -22,9 +22,9 @@ const float kTau = 6.28318531;
 
 void main() {
     VisiblePlant p = visiblePlant(gl_InstanceIndex);
-    FieldInstance inst = instances[p.index];
-    PlantModel m = models[inst.ids.x];
-    FieldVertex v = vertices[gl_VertexIndex];
+    FieldInstance inst = fieldInstanceAt(p.index);
+    PlantModel m = plantModelAt(inst.ids.x);
+    FieldVertex v = fieldVertexAt(gl_VertexIndex);
 
     uint frames = m.impostor.y;
     uint quads = m.impostor.z;

@@ -1,14 +1,10 @@
 // The descriptor set of shaders/physics.comp and shaders/pose.comp (built by
 // engine/physics_pass.cpp in this order). What a pass only reads is bound
-// as a texel buffer and fetched whole texels at a time: lavapipe gathers
-// texels with vector loads, where a storage buffer read at a different
-// index per invocation is a loop over the SIMD lanes, one float at a time.
-// The uint views of float data are read back with uintBitsToFloat, which
-// keeps every bit (a float view could canonicalise the NaN pattern of
-// JOINT_NO_PARENT).
+// as a uint texel buffer (texels.glsl says why).
 #ifndef PHYSICS_BINDINGS_GLSL
 #define PHYSICS_BINDINGS_GLSL
 #include "joint_physics.h"
+#include "texels.glsl"
 
 layout(set = 0, binding = 0, std140) uniform PhysicsBlock {
     PhysicsUniforms physics;
@@ -25,10 +21,6 @@ layout(set = 0, binding = 5) uniform usamplerBuffer jointSkeletonTexels; // uint
 layout(set = 0, binding = 6) uniform usamplerBuffer jointOrderTexels;    // uint per simulated joint, level by level
 layout(set = 0, binding = 7) uniform usamplerBuffer stateTexels;         // the states, 2 texels each
 layout(set = 0, binding = 8) uniform usamplerBuffer poseTexels;          // the poses, 2 texels each
-
-vec4 floatTexel(usamplerBuffer b, int t) {
-    return uintBitsToFloat(texelFetch(b, t));
-}
 
 JointParams jointParamsAt(uint i) {
     int t = int(i) * 6;

@@ -14,8 +14,8 @@ layout(location = 6) out vec4 outFog;
 
 void main() {
     VisiblePlant p = visiblePlant(gl_InstanceIndex);
-    FieldInstance inst = instances[p.index];
-    FieldVertex v = vertices[gl_VertexIndex];
+    FieldInstance inst = fieldInstanceAt(p.index);
+    FieldVertex v = fieldVertexAt(gl_VertexIndex);
 
     // Skinning: every vertex follows its joint's pose.
     JointPose pose = plantJointPose(p.index, v.joint.x);
