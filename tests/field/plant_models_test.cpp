@@ -117,7 +117,9 @@ TEST(PlantModels, ReducedLodIsLighterAndTreesAreAtMostFortyPercent) {
         std::cout << model.name << ": LOD0 " << full << " triangles, LOD1 " << reduced << '\n';
         EXPECT_GT(reduced, 0u) << model.name;
         EXPECT_LT(reduced, full) << model.name;
-        if (isTree(scene.species[model.species])) EXPECT_LE(reduced * 10, full * 4) << model.name;
+        if (isTree(scene.species[model.species])) {
+            EXPECT_LE(reduced * 10, full * 4) << model.name;
+        }
     }
 }
 
