@@ -131,15 +131,15 @@ JOINT_PHYSICS_FN vec3 windAt(vec3 p, float t, PhysicsUniforms u) {
 // What a joint's sub-steps of one frame share: its parent's pose at entry
 // and its own base do not change between them, nor do its scaled constants.
 // The wind is sampled per frame, not per sub-step: at the centre of pressure
-// where it is at entry, at the frame's first and last sub-step times, and
-// interpolated linearly in time between them. Within a frame (1/60 s) the
-// point moves millimetres and the wind's fastest sine turns by 0.05 rad, so
-// this changes the force by well under a percent while it leaves the
-// sub-steps one sine evaluation instead of seven.
+// where it is at entry, at the times the frame starts and ends, and
+// interpolated linearly in time for each sub-step. Within a frame (1/60 s)
+// the point moves millimetres and the wind's fastest sine turns by 0.05 rad,
+// so this changes the force by well under a percent, and the sub-steps are
+// left without any of windAt's seven sines.
 struct JointStep {
     vec4 restFrame;     // Dp·R: the joint's frame is restFrame·q
-    vec3 wind;          // wind at the first sub-step, plant space after yaw is undone (m/s)
-    vec3 windChange;    // added per sub-step (m/s)
+    vec3 wind;          // wind at the frame's start, plant space after yaw is undone (m/s)
+    vec3 windChange;    // added per sub-step: (wind at the frame's end − wind) / sub-steps (m/s)
     float arm;          // base to centre of pressure, after scale (m, local +Y)
     vec3 centreOfMass;  // of the subtree, rest local frame, after scale (m)
     vec3 weight;        // subtree mass × gravity (N, plant space: yaw leaves it unchanged)
@@ -176,10 +176,10 @@ JOINT_PHYSICS_FN JointStep prepareJointStep(JointParams jp, vec4 parentRotation,
     vec3 pressure = base * scale + quatRotate(quatMultiply(c.restFrame, entry.rotation), vec3(0.0f, c.arm, 0.0f));
     vec3 worldPoint = vec3(sk.placement.x, sk.placement.y, sk.placement.z) + yawRotate(yaw, pressure);
     float steps = float(u.counts.z);
-    vec3 first = yawRotate(unyaw, windAt(worldPoint, u.windDetail.z, u));
-    vec3 last = yawRotate(unyaw, windAt(worldPoint, u.windDetail.z + steps * dt, u));
-    c.wind = first;
-    c.windChange = steps > 0.0f ? (last - first) / steps : vec3(0.0f);
+    vec3 start = yawRotate(unyaw, windAt(worldPoint, u.windDetail.z, u));
+    vec3 end = yawRotate(unyaw, windAt(worldPoint, u.windDetail.z + steps * dt, u));
+    c.wind = start;
+    c.windChange = steps > 0.0f ? (end - start) / steps : vec3(0.0f);
     return c;
 }
 
