@@ -168,7 +168,9 @@ TEST(PlantPhysics, RotationExpIsExactUpToOneRadianAndCloseUpToPi) {
         const double tolerance = angle <= 1.0 ? 2e-6 : 1e-4;
         EXPECT_NEAR(glm::length(back), angle, tolerance) << "at " << angle << " rad";
         // At π itself the axis is only defined up to sign.
-        if (angle > 1e-3 && angle < std::numbers::pi - 1e-3) EXPECT_GT(glm::dot(glm::normalize(back), axis), 1.0 - 1e-6) << "at " << angle << " rad";
+        if (angle > 1e-3 && angle < std::numbers::pi - 1e-3) {
+            EXPECT_GT(glm::dot(glm::normalize(back), axis), 1.0 - 1e-6) << "at " << angle << " rad";
+        }
     }
 }
 
