@@ -109,7 +109,7 @@ FieldRenderer::~FieldRenderer() {
     destroyShadowMap(ctx_, shadow_);
     destroyImpostorAtlas(ctx_, atlas_);
     for (Buffer* b : {&uniforms_, &vertices_, &indices_, &models_, &instances_, &terrainVertices_, &terrainIndices_,
-                      &naiveVisible_})
+                      &naiveVisible_, &outlines_})
         destroyBuffer(ctx_, *b);
 }
 
@@ -121,6 +121,7 @@ void FieldRenderer::uploadGeometry() {
     vertices_ = uploadVector(ctx_, pool.vertices, kStorageAndTexels);
     indices_ = uploadVector(ctx_, pool.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     atlas_ = bakeImpostorAtlas(ctx_, pool, vertices_, indices_, settings_.impostors);
+    outlines_ = uploadVector(ctx_, atlas_.outlines, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
 
     const TerrainMesh mesh = makeTerrainMesh(decimated(content_.terrain, kTerrainDrawSamples));
     std::vector<gpu::TerrainVertex> terrain(mesh.positions.size());
@@ -200,6 +201,7 @@ void FieldRenderer::createDescriptors() {
         {FIELD_BINDING_SKELETONS, texels, 1, kDrawStages, nullptr},
         {FIELD_BINDING_POSES, texels, 1, kDrawStages, nullptr},
         {FIELD_BINDING_INSTANCE_SKELETON, texels, 1, kDrawStages, nullptr},
+        {FIELD_BINDING_IMPOSTOR_OUTLINES, texels, 1, kDrawStages, nullptr},
     };
     constexpr uint32_t kBindings = uint32_t(std::size(bindings));
     VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -208,7 +210,7 @@ void FieldRenderer::createDescriptors() {
     VK_CHECK(vkCreateDescriptorSetLayout(ctx_.device, &layoutInfo, nullptr, &setLayout_));
 
     // Two sets (GPU-driven and naive) of the layout above.
-    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {texels, 16}, {image, 6}};
+    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {texels, 2 * 9}, {image, 2 * 3}};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 2;
     poolInfo.poolSizeCount = uint32_t(std::size(sizes));
@@ -234,7 +236,8 @@ void FieldRenderer::createDescriptors() {
                        models = view(models_, uint4, 16), terrain = view(terrainVertices_, uint4, 16),
                        skeletons = view(motion_.pass.skeletons, uint4, 16),
                        poses = view(motion_.pass.poses, uint4, 16),
-                       instanceSkeleton = view(motion_.instanceSkeleton, VK_FORMAT_R32_UINT, 4);
+                       instanceSkeleton = view(motion_.instanceSkeleton, VK_FORMAT_R32_UINT, 4),
+                       outlines = view(outlines_, uint4, 16);
     const VkDescriptorBufferInfo frame{uniforms_.buffer, 0, VK_WHOLE_SIZE};
     const VkDescriptorImageInfo atlasColor{atlas_.sampler, atlas_.color.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     const VkDescriptorImageInfo atlasNormal{atlas_.sampler, atlas_.normalDepth.view,
@@ -243,9 +246,10 @@ void FieldRenderer::createDescriptors() {
     for (VkDescriptorSet set : sets) {
         const VkBufferView visible = view(set == drawSet_ ? cull_.visible : naiveVisible_, VK_FORMAT_R32_UINT, 4);
         const VkBufferView views[] = {VK_NULL_HANDLE, instances, visible,   vertices, models,           VK_NULL_HANDLE,
-                                      VK_NULL_HANDLE, VK_NULL_HANDLE, terrain, skeletons, poses, instanceSkeleton};
+                                      VK_NULL_HANDLE, VK_NULL_HANDLE, terrain, skeletons, poses, instanceSkeleton,
+                                      outlines};
         const VkDescriptorImageInfo* images[] = {nullptr, nullptr, nullptr, nullptr, nullptr, &atlasColor,
-                                                 &atlasNormal, &shadow, nullptr, nullptr, nullptr, nullptr};
+                                                 &atlasNormal, &shadow, nullptr, nullptr, nullptr, nullptr, nullptr};
         VkWriteDescriptorSet writes[kBindings];
         for (uint32_t i = 0; i < kBindings; ++i) {
             writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -459,7 +463,8 @@ FieldFrameStats FieldRenderer::readStats() const {
         const PlantModelInfo& model = pool.models[m];
         for (uint32_t lod = 0; lod < kMeshLodCount; ++lod)
             stats.triangles += uint64_t(counts.perModelLod[m * LOD_COUNT + lod]) * model.triangles(lod);
-        stats.triangles += uint64_t(counts.perModelLod[m * LOD_COUNT + LOD_IMPOSTOR]) * 2u * model.gpu.impostor.z;
+        stats.triangles +=
+            uint64_t(counts.perModelLod[m * LOD_COUNT + LOD_IMPOSTOR]) * (kOutlineCorners - 2) * model.gpu.impostor.z;
     }
     return stats;
 }
@@ -474,7 +479,7 @@ uint64_t FieldRenderer::naiveTriangles() const {
 VkDeviceSize FieldRenderer::gpuBytes() const {
     VkDeviceSize bytes = 0;
     for (const Buffer* b : {&uniforms_, &vertices_, &indices_, &models_, &instances_, &terrainVertices_,
-                            &terrainIndices_, &naiveVisible_, &cull_.uniforms, &cull_.templates, &cull_.state,
+                            &terrainIndices_, &naiveVisible_, &outlines_, &cull_.uniforms, &cull_.templates, &cull_.state,
                             &cull_.counts, &cull_.visible, &cull_.commands, &cull_.drawCounts, &cull_.allCommands,
                             &cull_.readback, &motion_.pass.uniforms, &motion_.pass.params, &motion_.pass.skeletons,
                             &motion_.pass.states, &motion_.pass.poses, &motion_.pass.jointSkeleton,

@@ -143,6 +143,45 @@ glm::vec4 impostorQuadOf(const gpu::PlantModel& model) {
     return {radius, model.boxMin.y, top, radius};
 }
 
+namespace {
+
+// Reads the coverage of every layer back at mip kOutlineMip (or the last)
+// and makes each layer's outline. The atlas is sampled before and after.
+std::vector<ImpostorOutline> readOutlines(const GpuContext& ctx, const ImpostorAtlas& atlas) {
+    const uint32_t mip = std::min(kOutlineMip, atlas.mipLevels - 1);
+    const uint32_t size = std::max(atlas.settings.frameSize >> mip, 1u);
+    const VkDeviceSize layerBytes = VkDeviceSize(size) * size * 4;
+    Buffer readback = createHostBuffer(ctx, layerBytes * atlas.layers, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+        const ImageTransition toSource{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
+                                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+        pipelineBarrier(cmd, {atlasBarrier(atlas.color, mip, 1, atlas.layers, toSource)});
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, 0, atlas.layers};
+        region.imageExtent = {size, size, 1};
+        vkCmdCopyImageToBuffer(cmd, atlas.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1,
+                               &region);
+        const ImageTransition toSampled{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
+                                        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+        pipelineBarrier(cmd, {atlasBarrier(atlas.color, mip, 1, atlas.layers, toSampled)});
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                      VK_ACCESS_2_HOST_READ_BIT);
+    });
+    std::vector<ImpostorOutline> outlines(atlas.layers);
+    std::vector<uint8_t> alpha(size_t(size) * size);
+    const auto* texels = static_cast<const uint8_t*>(readback.mapped);
+    for (uint32_t layer = 0; layer < atlas.layers; ++layer) {
+        for (size_t t = 0; t < alpha.size(); ++t) alpha[t] = texels[layer * layerBytes + t * 4 + 3];
+        outlines[layer] = impostorOutline(alpha, size, kOutlineMargin);
+    }
+    destroyBuffer(ctx, readback);
+    return outlines;
+}
+
+} // namespace
+
 ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, const Buffer& vertices,
                                 const Buffer& indices, const ImpostorSettings& settings) {
     if (settings.frames == 0 || settings.frameSize == 0)
@@ -399,6 +438,7 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
     destroyImage(ctx, depth);
     destroyImage(ctx, targetNormal);
     destroyImage(ctx, targetColor);
+    atlas.outlines = readOutlines(ctx, atlas);
     return atlas;
 }
 
@@ -413,18 +453,19 @@ MeshRange appendBillboardMesh(PlantModelPool& pool, uint32_t quads) {
     if (quads < 1 || quads > 3) throw std::runtime_error("billboard mesh: quads must be 1, 2 or 3");
     MeshRange range;
     range.firstIndex = uint32_t(pool.indices.size());
-    range.indexCount = 6 * quads;
+    range.indexCount = 3 * (kOutlineCorners - 2) * quads;
     range.vertexOffset = uint32_t(pool.vertices.size());
-    const glm::vec2 corners[4] = {{-1.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}};
     for (uint32_t q = 0; q < quads; ++q) {
-        for (const glm::vec2& c : corners) {
+        for (uint32_t c = 0; c < kOutlineCorners; ++c) {
             gpu::FieldVertex v{};
-            v.position = {c.x, c.y, float(q), 0.5f * (c.x + 1.0f)};
-            v.normal = {0.0f, 0.0f, 1.0f, 1.0f - c.y};
+            v.position = {float(c), 0.0f, float(q), 0.0f};
+            v.normal = {0.0f, 0.0f, 1.0f, 0.0f};
             v.albedo = {1.0f, 1.0f, 1.0f, SURFACE_LEAF};
             pool.vertices.push_back(v);
         }
-        for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) pool.indices.push_back(4 * q + i);
+        // A fan: the outline is convex.
+        for (uint32_t c = 1; c + 1 < kOutlineCorners; ++c)
+            for (uint32_t i : {0u, c, c + 1}) pool.indices.push_back(kOutlineCorners * q + i);
     }
     return range;
 }

@@ -6,8 +6,11 @@
 // seen along its normal.
 #pragma once
 
+#include "engine/impostor_outline.h"
 #include "engine/plant_models.h"
 #include "engine/resources.h"
+
+#include <vector>
 
 namespace pf {
 
@@ -42,7 +45,16 @@ struct ImpostorAtlas {
     VkSampler sampler = VK_NULL_HANDLE; // linear, clamp, mipmapped
     uint32_t layers = 0;
     ImpostorSettings settings;
+    // Per layer, the polygon its billboards are drawn as (impostor_outline.h):
+    // read back from mip kOutlineMip (or the last, if coarser), grown by
+    // kOutlineMargin of its texels, so it holds everything the alpha test
+    // keeps at that mip and finer ones and at one mip coarser; smaller
+    // billboards may lose a faint fringe.
+    std::vector<ImpostorOutline> outlines;
 };
+
+constexpr uint32_t kOutlineMip = 3;
+constexpr float kOutlineMargin = 2.0f;
 
 // Bakes all models of the pool (already uploaded: vertices as FieldVertex
 // storage buffer, indices as index buffer), writes each model's
@@ -53,11 +65,12 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
                                 const Buffer& indices, const ImpostorSettings& settings = {});
 void destroyImpostorAtlas(const GpuContext& ctx, ImpostorAtlas& atlas);
 
-// Billboard quads for the pool's impostor draws: for quads q ∈ {1, 2, 3}
-// the vertices and indices the impostor vertex shader expands (FieldVertex:
-// position.xy = corner in [-1,1]×[0,1], position.z = quad index, w/normal.w =
-// uv with v = 0 at the top). Quad q lies in the plane through the plant's
-// axis at azimuth q·180°/quads (quads > 1); a single quad turns to the view.
+// Billboards for the pool's impostor draws: for quads q ∈ {1, 2, 3} the
+// vertices and indices the impostor vertex shader expands. Each quad is a
+// fan of kOutlineCorners corners (FieldVertex position.x = corner index,
+// position.z = quad index) that the shader places at the corners of the
+// shown frame's outline. Quad q lies in the plane through the plant's axis
+// at azimuth q·180°/quads (quads > 1); a single quad turns to the view.
 // Draw two-sided (no culling). Appends to the pool; returns the mesh range.
 MeshRange appendBillboardMesh(PlantModelPool& pool, uint32_t quads);
 

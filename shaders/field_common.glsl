@@ -22,6 +22,7 @@ layout(set = 0, binding = FIELD_BINDING_TERRAIN) uniform usamplerBuffer terrainT
 layout(set = 0, binding = FIELD_BINDING_SKELETONS) uniform usamplerBuffer skeletonTexels; // Skeleton[], 3 each
 layout(set = 0, binding = FIELD_BINDING_POSES) uniform usamplerBuffer poseTexels;        // JointPose[], 2 each
 layout(set = 0, binding = FIELD_BINDING_INSTANCE_SKELETON) uniform usamplerBuffer instanceSkeletonTexels; // uint
+layout(set = 0, binding = FIELD_BINDING_IMPOSTOR_OUTLINES) uniform usamplerBuffer outlineTexels; // 4 per atlas layer
 
 FieldInstance fieldInstanceAt(uint i) {
     int t = int(i) * 3;
@@ -46,6 +47,13 @@ PlantModel plantModelAt(uint i) {
     m.impostor = texelFetch(modelTexels, t + 5);
     m.impostorQuad = floatTexel(modelTexels, t + 6);
     return m;
+}
+
+// Corner `corner` (0 … OUTLINE_CORNERS − 1) of the outline billboards of atlas layer `layer`
+// are drawn as (engine/impostor_outline.h): uv in the frame, v = 0 at the top.
+vec2 outlineCorner(uint layer, uint corner) {
+    vec4 pair = floatTexel(outlineTexels, int(layer * (OUTLINE_CORNERS / 2u) + corner / 2u));
+    return (corner & 1u) == 0u ? pair.xy : pair.zw;
 }
 
 TerrainVertex terrainVertexAt(uint i) {

@@ -3,7 +3,9 @@
 #include "field_common.glsl"
 
 // LOD2 billboards (docs/IMPOSTORS.md): the quads of appendBillboardMesh
-// expanded around each visible plant and textured with its atlas frames
+// expanded around each visible plant, each drawn as the outline of the frame
+// it shows (the polygon around what the frame covers, not the whole
+// frame), and textured with its atlas frames
 // (engine/impostor_atlas.h: frame f views from azimuth 2π·f/frames along
 // d = (sin a, 0, cos a), right axis (cos a, 0, -sin a)). One quad turns to
 // the view about the vertical axis and shows the frame nearest the view
@@ -34,7 +36,7 @@ void main() {
     float viewAzimuth = dot(local.xz, local.xz) > 1e-12 ? atan(local.x, local.z) : 0.0;
 
     float quadAzimuth;
-    float u = v.position.w;
+    bool back = false;
     if (quads == 1u) {
         float t = mod(viewAzimuth / kTau * float(frames), float(frames));
         // The nearest frame, not a blend: frames are 30° apart and far
@@ -44,15 +46,20 @@ void main() {
         quadAzimuth = viewAzimuth;
     } else {
         quadAzimuth = v.position.z * 0.5 * kTau / float(quads);
-        bool back = dot(local.xz, vec2(sin(quadAzimuth), cos(quadAzimuth))) < 0.0;
+        back = dot(local.xz, vec2(sin(quadAzimuth), cos(quadAzimuth))) < 0.0;
         float shown = quadAzimuth + (back ? 0.5 * kTau : 0.0);
         uint f = uint(round(shown / kTau * float(frames))) % frames;
         outLayer = m.impostor.x + f;
-        // The opposite frame's right axis is this quad's left.
-        if (back) u = 1.0 - u;
     }
+    // This vertex is corner v.position.x of the shown frame's outline; the
+    // frame spans the quad, u across [-halfWidth, halfWidth], v from top to
+    // bottom. The opposite frame's right axis is this quad's left.
+    vec2 uv = outlineCorner(outLayer, uint(v.position.x));
+    float across = back ? 1.0 - uv.x : uv.x;
+    float height = 1.0 - uv.y; // 0 at the bottom, 1 at the top
     vec3 right = vec3(cos(quadAzimuth), 0.0, -sin(quadAzimuth));
-    vec3 plantPos = right * (v.position.x * m.impostorQuad.x) + vec3(0.0, mix(m.impostorQuad.y, m.impostorQuad.z, v.position.y), 0.0);
+    vec3 plantPos = right * ((2.0 * across - 1.0) * m.impostorQuad.x) +
+                    vec3(0.0, mix(m.impostorQuad.y, m.impostorQuad.z, height), 0.0);
 
     outWorldPos = plantToWorld(inst, plantPos);
     // Far plants have no skeleton: the quad's top leans with the gusts and
@@ -60,9 +67,9 @@ void main() {
     // Like the skeletons, which start at rest at time 0, the lean rises over
     // the first second.
     vec3 gust = fieldWindAt(inst.positionScale.xyz) - vec3(field.wind.x, 0.0, field.wind.z);
-    float lean = v.position.y * v.position.y * min(field.wind.w, 1.0);
+    float lean = height * height * min(field.wind.w, 1.0);
     outWorldPos += vec3(gust.x, 0.0, gust.z) * (field.windDetail.w * lean * inst.positionScale.w);
-    outUv = vec2(u, v.normal.w);
+    outUv = uv;
     outFade = packFade(p);
     outYaw = inst.orientation.x;
     outFog = fieldPush.shadowPass != 0u ? vec4(0.0) : vertexFog(outWorldPos);

@@ -257,6 +257,39 @@ TEST_F(ImpostorTest, MipsKeepTheCoverage) {
     }
 }
 
+// Every texel with any coverage at full size, and every texel of the mip
+// the outline was read from, lies inside its layer's outline; and the
+// outlines are much smaller than the frames (a cylinder with one leaf).
+TEST_F(ImpostorTest, OutlinesHoldAllCoverageAndCutTheEmptyFrame) {
+    bake();
+    ASSERT_EQ(atlas.outlines.size(), atlas.layers);
+    double area = 0.0;
+    for (uint32_t layer = 0; layer < atlas.layers; ++layer) {
+        const ImpostorOutline& o = atlas.outlines[layer];
+        auto inside = [&](glm::vec2 p) {
+            bool positive = false, negative = false;
+            for (size_t i = 0; i < o.size(); ++i) {
+                const glm::vec2 a = o[i], b = o[(i + 1) % o.size()];
+                const float s = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+                positive |= s > 1e-5f;
+                negative |= s < -1e-5f;
+            }
+            return !(positive && negative);
+        };
+        const Frame frame = colorFrame(layer);
+        for (uint32_t y = 0; y < kSize; ++y)
+            for (uint32_t x = 0; x < kSize; ++x)
+                if (frame.alpha(x, y) > 0)
+                    ASSERT_TRUE(inside((glm::vec2(x, y) + 0.5f) / float(kSize))) << "layer " << layer << " texel " << x
+                                                                                 << "," << y;
+        area += outlineArea(o);
+    }
+    area /= atlas.layers;
+    std::printf("mean outline area: %.2f of the frame\n", area);
+    EXPECT_LT(area, 0.8);
+    EXPECT_GT(area, 0.05);
+}
+
 TEST_F(ImpostorTest, TwoBakesAreIdentical) {
     bake();
     std::vector<uint8_t> firstColor = color, firstNormal = normal;
@@ -294,31 +327,31 @@ TEST_F(ImpostorTest, WritesTheAtlasOfATestModelToPng) {
     std::printf("wrote %s\n", (dir / "test_model_atlas.png").string().c_str());
 }
 
-TEST(BillboardMesh, AppendsOneToThreeQuadsWithCornersAndUv) {
+TEST(BillboardMesh, AppendsOneToThreeOutlineFansWithTheirCorners) {
     PlantModelPool pool;
     pool.vertices.resize(5);
     pool.indices.resize(7);
+    constexpr uint32_t kTriangles = kOutlineCorners - 2;
     for (uint32_t quads = 1; quads <= 3; ++quads) {
         const size_t verticesBefore = pool.vertices.size(), indicesBefore = pool.indices.size();
         MeshRange range = appendBillboardMesh(pool, quads);
         EXPECT_EQ(range.firstIndex, indicesBefore);
         EXPECT_EQ(range.vertexOffset, verticesBefore);
-        EXPECT_EQ(range.indexCount, 6 * quads);
-        ASSERT_EQ(pool.vertices.size(), verticesBefore + 4 * quads);
-        ASSERT_EQ(pool.indices.size(), indicesBefore + 6 * quads);
+        EXPECT_EQ(range.indexCount, 3 * kTriangles * quads);
+        ASSERT_EQ(pool.vertices.size(), verticesBefore + kOutlineCorners * quads);
+        ASSERT_EQ(pool.indices.size(), indicesBefore + 3 * kTriangles * quads);
         for (uint32_t i = 0; i < range.indexCount; ++i) {
-            uint32_t index = pool.indices[range.firstIndex + i];
-            ASSERT_LT(index, 4 * quads);
-            // Each triangle stays within its quad.
-            EXPECT_EQ(index / 4, i / 6);
+            const uint32_t index = pool.indices[range.firstIndex + i];
+            ASSERT_LT(index, kOutlineCorners * quads);
+            // Each triangle stays within its quad's fan, and every fan
+            // triangle starts at the quad's corner 0.
+            EXPECT_EQ(index / kOutlineCorners, i / (3 * kTriangles));
+            if (i % 3 == 0) EXPECT_EQ(index % kOutlineCorners, 0u);
         }
-        for (uint32_t v = 0; v < 4 * quads; ++v) {
+        for (uint32_t v = 0; v < kOutlineCorners * quads; ++v) {
             const gpu::FieldVertex& vertex = pool.vertices[verticesBefore + v];
-            EXPECT_EQ(vertex.position.z, float(v / 4));
-            EXPECT_TRUE(vertex.position.x == -1.0f || vertex.position.x == 1.0f);
-            EXPECT_TRUE(vertex.position.y == 0.0f || vertex.position.y == 1.0f);
-            EXPECT_EQ(vertex.position.w, 0.5f * (vertex.position.x + 1.0f)); // u
-            EXPECT_EQ(vertex.normal.w, 1.0f - vertex.position.y);           // v: 0 at the top
+            EXPECT_EQ(vertex.position.x, float(v % kOutlineCorners)); // corner
+            EXPECT_EQ(vertex.position.z, float(v / kOutlineCorners)); // quad
         }
     }
     EXPECT_THROW(appendBillboardMesh(pool, 0), std::runtime_error);
