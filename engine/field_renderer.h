@@ -94,7 +94,7 @@ private:
     Buffer vertices_, indices_;
     Buffer models_, instances_;
     Buffer terrainVertices_, terrainIndices_;
-    Buffer outlines_; // atlas_.outlines, the billboards' polygons
+    Buffer outlines_; // atlas_.outlines: the rectangle each atlas layer's billboards are drawn as
     Buffer naiveVisible_; // entry i = plant i at full coverage
     uint32_t terrainIndexCount_ = 0;
     std::array<MeshRange, 3> billboards_{}; // 1, 2, 3 quads

@@ -45,7 +45,7 @@ struct ImpostorAtlas {
     VkSampler sampler = VK_NULL_HANDLE; // linear, clamp, mipmapped
     uint32_t layers = 0;
     ImpostorSettings settings;
-    // Per layer, the polygon its billboards are drawn as (impostor_outline.h):
+    // Per layer, the rectangle its billboards are drawn as (impostor_outline.h):
     // read back from mip kOutlineMip (or the last, if coarser), grown by
     // kOutlineMargin of its texels, so it holds everything the alpha test
     // keeps at that mip and finer ones and at one mip coarser; smaller
