@@ -277,11 +277,13 @@ TEST_F(ImpostorTest, OutlinesHoldAllCoverageAndCutTheEmptyFrame) {
             return !(positive && negative);
         };
         const Frame frame = colorFrame(layer);
-        for (uint32_t y = 0; y < kSize; ++y)
-            for (uint32_t x = 0; x < kSize; ++x)
-                if (frame.alpha(x, y) > 0)
-                    ASSERT_TRUE(inside((glm::vec2(x, y) + 0.5f) / float(kSize))) << "layer " << layer << " texel " << x
-                                                                                 << "," << y;
+        for (uint32_t y = 0; y < kSize; ++y) {
+            for (uint32_t x = 0; x < kSize; ++x) {
+                if (frame.alpha(x, y) == 0) continue;
+                ASSERT_TRUE(inside((glm::vec2(x, y) + 0.5f) / float(kSize))) << "layer " << layer << " texel " << x
+                                                                             << "," << y;
+            }
+        }
         area += outlineArea(o);
     }
     area /= atlas.layers;
@@ -346,7 +348,9 @@ TEST(BillboardMesh, AppendsOneToThreeOutlineFansWithTheirCorners) {
             // Each triangle stays within its quad's fan, and every fan
             // triangle starts at the quad's corner 0.
             EXPECT_EQ(index / kOutlineCorners, i / (3 * kTriangles));
-            if (i % 3 == 0) EXPECT_EQ(index % kOutlineCorners, 0u);
+            if (i % 3 == 0) {
+                EXPECT_EQ(index % kOutlineCorners, 0u);
+            }
         }
         for (uint32_t v = 0; v < kOutlineCorners * quads; ++v) {
             const gpu::FieldVertex& vertex = pool.vertices[verticesBefore + v];
