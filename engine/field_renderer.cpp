@@ -245,8 +245,9 @@ void FieldRenderer::createDescriptors() {
     const VkDescriptorImageInfo shadow{shadow_.sampler, shadow_.depth.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     for (VkDescriptorSet set : sets) {
         const VkBufferView visible = view(set == drawSet_ ? cull_.visible : naiveVisible_, VK_FORMAT_R32_UINT, 4);
-        const VkBufferView views[] = {VK_NULL_HANDLE, instances, visible,   vertices, models,           VK_NULL_HANDLE,
-                                      VK_NULL_HANDLE, VK_NULL_HANDLE, terrain, skeletons, poses, instanceSkeleton,
+        // Indexed by binding, like `images`; the frame is the one plain buffer.
+        const VkBufferView views[] = {VK_NULL_HANDLE, instances,      visible, vertices,  models, VK_NULL_HANDLE,
+                                      VK_NULL_HANDLE, VK_NULL_HANDLE, terrain, skeletons, poses,  instanceSkeleton,
                                       outlines};
         const VkDescriptorImageInfo* images[] = {nullptr, nullptr, nullptr, nullptr, nullptr, &atlasColor,
                                                  &atlasNormal, &shadow, nullptr, nullptr, nullptr, nullptr, nullptr};
