@@ -109,6 +109,8 @@ std::string lineAndColumn(std::string_view text, size_t offset) {
 // ---- messages -------------------------------------------------------------
 
 std::string formatNumber(double value) {
+    // Whole numbers in full (10000000, not 1e+07); others in the shortest form.
+    if (value == std::floor(value) && std::abs(value) < 1e15) return std::to_string(int64_t(value));
     std::ostringstream out;
     out << value;
     return out.str();

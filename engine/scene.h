@@ -143,6 +143,11 @@ struct Wind {
     bool operator==(const Wind&) const = default;
 };
 
+// The most joints a scene or --joint-budget may give near plants: their
+// states and poses take 64 bytes a joint (640 MB here), and every simulated
+// array is read through texel views of at most 2²⁷ texels on common devices.
+constexpr uint32_t kMaxJointBudget = 10'000'000;
+
 // The physical model of the plants (issue 6, DESIGN.md §6).
 struct PhysicsSettings {
     float woodDensity = 600.0f;        // kg/m³ (seed 004: 400–1000)

@@ -256,7 +256,7 @@ PhysicsSettings readPhysics(const JsonNode& node) {
     readField(node, "leaf_drag", physics.leafDrag, atLeast(0.0));
     // Above 1/30 s a frame would need less than one step; below 1/10000 s a frame costs hundreds.
     readField(node, "sub_step", physics.subStep, between(1.0 / 10000.0, 1.0 / 30.0));
-    readField(node, "joint_budget", physics.jointBudget, anyNumber());
+    readField(node, "joint_budget", physics.jointBudget, between(0.0, double(kMaxJointBudget)));
     readField(node, "shared_phases", physics.sharedPhases, between(1, 64));
     return physics;
 }

@@ -75,6 +75,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "{ \"reduced", "/species/0/lod needs impostor_below_px ≤ reduced_below_px"},
         BadScene{"turbulence_out_of_range", PF_SCENE(",\n  \"wind\": { \"turbulence\": 1.5 }"), "1.5",
                  "/wind/turbulence must be a number in [0, 1] (got 1.5)"},
+        BadScene{"joint_budget_too_large", PF_SCENE(",\n  \"physics\": { \"joint_budget\": 20000000 }"), "20000000",
+                 "/physics/joint_budget must be an integer in [0, 10000000] (got 20000000)"},
         BadScene{"slope_out_of_range", PF_SCENE(",\n  \"placement\": { \"max_slope\": 120 }"), "120",
                  "/placement/max_slope must be a number in [0, 90] (got 120)"},
         BadScene{"inverted_height_range", PF_SCENE(",\n  \"placement\": { \"height_range\": [5, 1] }"), "[5, 1]",

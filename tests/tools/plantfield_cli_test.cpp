@@ -85,6 +85,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"MalformedWind", "--capture OUT --wind fast", "--wind"},
                       BadInvocation{"WindTooStrong", "--capture OUT --wind 500,90", "--wind"},
                       BadInvocation{"WindDirectionNotANumber", "--capture OUT --wind 10,east", "--wind"},
+                      BadInvocation{"JointBudgetTooLarge", "--capture OUT --joint-budget 10000001", "--joint-budget"},
+                      BadInvocation{"JointBudgetNotANumber", "--capture OUT --joint-budget many", "--joint-budget"},
                       BadInvocation{"UnknownScene", "/nonexistent/scene.json --capture OUT", "does not exist"}),
     invocationName);
 
@@ -122,7 +124,8 @@ TEST(PlantfieldCli, UnwritableOutputLeavesExistingFileUntouched) {
 TEST(PlantfieldCli, HelpListsEveryOption) {
     const CommandResult r = runCommand(kPlantfield + " --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* flag : {"--capture", "--size", "--window", "--frames", "--time", "--device", "--validation"})
+    for (const char* flag : {"--capture", "--size", "--window", "--frames", "--time", "--device", "--validation",
+                             "--wind", "--joint-budget", "--physics-check"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 
@@ -141,6 +144,22 @@ TEST(PlantfieldCli, WindowUnderXvfbRendersFrames) {
     for (size_t p = 0; p < image.pixels.size(); p += 4)
         colours.insert(image.pixels[p] | image.pixels[p + 1] << 8 | image.pixels[p + 2] << 16);
     EXPECT_GT(colours.size(), 100u);
+}
+
+// --joint-budget replaces the scene's: with none, only the shared copies of
+// each model are simulated; with a budget, near plants get their own too.
+TEST(PlantfieldCli, JointBudgetOnTheCommandLineSetsTheSimulatedJoints) {
+    auto simulated = [](const std::string& budget) {
+        const CommandResult r = runCommand(kPlantfield + " --stats --size 64x36 --joint-budget " + budget);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        const size_t start = r.output.find('{');
+        if (start == std::string::npos) return uint64_t(0);
+        return nlohmann::json::parse(r.output.substr(start)).at("joints_simulated").get<uint64_t>();
+    };
+    const uint64_t shared = simulated("0"), withNear = simulated("100000");
+    EXPECT_GT(shared, 0u);
+    EXPECT_GT(withNear, shared);
+    EXPECT_LE(withNear - shared, 100000u);
 }
 
 TEST(PlantfieldCli, PhysicsCheckMatchesCpuReference) {

@@ -19,6 +19,7 @@ Scene loadSceneOf(const PlantfieldOptions& o) {
     if (o.seed) scene.seed = *o.seed;
     if (o.windSpeed) scene.wind.speed = *o.windSpeed;
     if (o.windDirectionDegrees) scene.wind.directionDegrees = *o.windDirectionDegrees;
+    if (o.jointBudget) scene.physics.jointBudget = *o.jointBudget;
     return scene;
 }
 

@@ -39,6 +39,7 @@ nlohmann::json statsJson(const PlantfieldOptions& o, const GpuContext& ctx, cons
                   {"foliage", stats.draws[DRAW_FOLIAGE]},
                   {"impostor", stats.draws[DRAW_IMPOSTOR]}};
     j["triangles"] = stats.triangles;
+    j["joints_simulated"] = renderer.simulatedJoints();
     j["indirect_count"] = ctx.drawIndirectCount;
     nlohmann::json ms = nlohmann::json::object();
     double total = 0;

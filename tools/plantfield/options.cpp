@@ -87,6 +87,10 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                  "JSON: joints, steps, max_deviation_rad (exit 1 when 1e-3 rad or more), gpu_ms, cpu_ms");
     std::string windText;
     app.add_option("--wind", windText, "Replace the scene's wind: SPEED[,DIRECTION] in m/s and degrees clockwise from north");
+    app.add_option("--joint-budget", o.jointBudget,
+                   "Replace the scene's joint budget: joints of the nearest plants simulated each with their own\n"
+                   "state (0 to 10000000; farther plants share per-species copies)")
+        ->check(CLI::Range(uint32_t(0), kMaxJointBudget));
     app.add_option("--lod", o.forcedLod, "Draw every visible plant at this LOD: 0 full, 1 reduced, 2 impostor")
         ->check(CLI::Range(0, 2));
     app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");

@@ -41,6 +41,7 @@ struct PlantfieldOptions {
     std::optional<uint32_t> forcedLod; // draw every visible plant at this LOD
     std::optional<float> windSpeed;          // replaces the scene's wind speed (m/s)
     std::optional<float> windDirectionDegrees; // and direction, clockwise from north (-z) toward +x
+    std::optional<uint32_t> jointBudget;       // replaces the scene's physics.joint_budget
     bool shadows = true;
     std::string deviceName;
     bool listDevices = false;
