@@ -66,9 +66,7 @@ TerrainVertex terrainVertexAt(uint i) {
 JointPose plantJointPose(uint instance, uint joint) {
     uint skeleton = texelFetch(instanceSkeletonTexels, int(instance)).x;
     if (skeleton == NO_SKELETON) return JointPose(vec4(0.0, 0.0, 0.0, 1.0), vec4(0.0));
-    // Skeleton.ids.w, the first pose of its joints.
-    int pose = int(texelFetch(skeletonTexels, int(skeleton) * 3).w + joint) * 2;
-    return JointPose(floatTexel(poseTexels, pose), floatTexel(poseTexels, pose + 1));
+    return poseFromTexels(poseTexels, skeletonFromTexels(skeletonTexels, skeleton).ids.w + joint);
 }
 
 // The wind field of the physics pass (joint_physics.h windAt), for shaders

@@ -34,18 +34,9 @@ JointParams jointParamsAt(uint i) {
     return p;
 }
 
-Skeleton skeletonAt(uint i) {
-    int t = int(i) * 3;
-    Skeleton s;
-    s.ids = texelFetch(skeletonTexels, t);
-    s.placement = floatTexel(skeletonTexels, t + 1);
-    s.scale = floatTexel(skeletonTexels, t + 2);
-    return s;
-}
-
 // The skeleton simulated joint `joint` belongs to.
 Skeleton skeletonOfJoint(uint joint) {
-    return skeletonAt(texelFetch(jointSkeletonTexels, int(joint)).x);
+    return skeletonFromTexels(skeletonTexels, texelFetch(jointSkeletonTexels, int(joint)).x);
 }
 
 JointState stateAt(uint i) {
@@ -53,7 +44,7 @@ JointState stateAt(uint i) {
 }
 
 JointPose poseAt(uint i) {
-    return JointPose(floatTexel(poseTexels, int(i) * 2), floatTexel(poseTexels, int(i) * 2 + 1));
+    return poseFromTexels(poseTexels, i);
 }
 
 #endif

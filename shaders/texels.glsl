@@ -6,9 +6,21 @@
 // one lane at a time.
 #ifndef TEXELS_GLSL
 #define TEXELS_GLSL
+#include "physics_layouts.h"
 
 vec4 floatTexel(usamplerBuffer b, int t) {
     return uintBitsToFloat(texelFetch(b, t));
+}
+
+// The physics arrays that both the physics passes and the draw shaders read.
+Skeleton skeletonFromTexels(usamplerBuffer skeletons, uint i) {
+    int t = int(i) * 3;
+    return Skeleton(texelFetch(skeletons, t), floatTexel(skeletons, t + 1), floatTexel(skeletons, t + 2));
+}
+
+JointPose poseFromTexels(usamplerBuffer poses, uint i) {
+    int t = int(i) * 2;
+    return JointPose(floatTexel(poses, t), floatTexel(poses, t + 1));
 }
 
 #endif
