@@ -22,14 +22,7 @@ ComputeSet createComputeSet(const GpuContext& ctx, std::span<const ComputeBindin
     pipelineLayoutInfo.pSetLayouts = &set.setLayout;
     VK_CHECK(vkCreatePipelineLayout(ctx.device, &pipelineLayoutInfo, nullptr, &set.pipelineLayout));
 
-    // One pool size per binding: the pool sums them by type.
-    std::vector<VkDescriptorPoolSize> sizes(count);
-    for (uint32_t b = 0; b < count; ++b) sizes[b] = {bindings[b].type, 1};
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = count;
-    poolInfo.pPoolSizes = sizes.data();
-    VK_CHECK(vkCreateDescriptorPool(ctx.device, &poolInfo, nullptr, &set.descriptorPool));
+    set.descriptorPool = createDescriptorPool(ctx, layoutBindings, 1);
     VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     allocInfo.descriptorPool = set.descriptorPool;
     allocInfo.descriptorSetCount = 1;

@@ -210,12 +210,7 @@ void FieldRenderer::createDescriptors() {
     VK_CHECK(vkCreateDescriptorSetLayout(ctx_.device, &layoutInfo, nullptr, &setLayout_));
 
     // Two sets (GPU-driven and naive) of the layout above.
-    const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {texels, 2 * 9}, {image, 2 * 3}};
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 2;
-    poolInfo.poolSizeCount = uint32_t(std::size(sizes));
-    poolInfo.pPoolSizes = sizes;
-    VK_CHECK(vkCreateDescriptorPool(ctx_.device, &poolInfo, nullptr, &descriptorPool_));
+    descriptorPool_ = createDescriptorPool(ctx_, bindings, 2);
 
     const VkDescriptorSetLayout layouts[] = {setLayout_, setLayout_};
     VkDescriptorSet sets[2];

@@ -246,13 +246,7 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
     VkPipelineLayout pipelineLayout;
     VK_CHECK(vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &pipelineLayout));
 
-    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1};
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 1;
-    poolInfo.pPoolSizes = &poolSize;
-    VkDescriptorPool descriptorPool;
-    VK_CHECK(vkCreateDescriptorPool(ctx.device, &poolInfo, nullptr, &descriptorPool));
+    const VkDescriptorPool descriptorPool = createDescriptorPool(ctx, {&binding, 1}, 1);
     VkDescriptorSetAllocateInfo setAlloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     setAlloc.descriptorPool = descriptorPool;
     setAlloc.descriptorSetCount = 1;

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace pf {
 
@@ -66,6 +67,20 @@ void destroyBuffer(const GpuContext& ctx, Buffer& buffer) {
     if (buffer.buffer) vkDestroyBuffer(ctx.device, buffer.buffer, nullptr);
     if (buffer.memory) vkFreeMemory(ctx.device, buffer.memory, nullptr);
     buffer = {};
+}
+
+VkDescriptorPool createDescriptorPool(const GpuContext& ctx, std::span<const VkDescriptorSetLayoutBinding> bindings,
+                                      uint32_t sets) {
+    // One pool size per binding: the pool sums them by type.
+    std::vector<VkDescriptorPoolSize> sizes;
+    for (const VkDescriptorSetLayoutBinding& b : bindings) sizes.push_back({b.descriptorType, b.descriptorCount * sets});
+    VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    info.maxSets = sets;
+    info.poolSizeCount = uint32_t(sizes.size());
+    info.pPoolSizes = sizes.data();
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateDescriptorPool(ctx.device, &info, nullptr, &pool));
+    return pool;
 }
 
 VkBufferView createTexelView(const GpuContext& ctx, const Buffer& buffer, VkFormat format, uint32_t texelBytes) {

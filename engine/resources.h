@@ -4,6 +4,7 @@
 #include "engine/device.h"
 
 #include <functional>
+#include <span>
 
 namespace pf {
 
@@ -31,6 +32,11 @@ Buffer createHostBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageF
 // A device-local buffer filled through a staging copy.
 Buffer createDeviceBufferWithData(const GpuContext& ctx, const void* data, VkDeviceSize size, VkBufferUsageFlags usage);
 void destroyBuffer(const GpuContext& ctx, Buffer& buffer);
+
+// A descriptor pool with room for exactly `sets` sets of the layout made of
+// `bindings`: the sizes are counted from the bindings, not by hand.
+VkDescriptorPool createDescriptorPool(const GpuContext& ctx, std::span<const VkDescriptorSetLayoutBinding> bindings,
+                                      uint32_t sets);
 
 // A view of a whole buffer as texels of `format` (`texelBytes` each), for
 // shaders that read it as a uniform texel buffer: lavapipe gathers a texel

@@ -53,12 +53,7 @@ TextOverlay createTextOverlay(const GpuContext& ctx) {
     layoutInfo.pBindings = &binding;
     VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &layoutInfo, nullptr, &overlay.setLayout));
 
-    const VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1};
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 1;
-    poolInfo.pPoolSizes = &poolSize;
-    VK_CHECK(vkCreateDescriptorPool(ctx.device, &poolInfo, nullptr, &overlay.descriptorPool));
+    overlay.descriptorPool = createDescriptorPool(ctx, {&binding, 1}, 1);
 
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     alloc.descriptorPool = overlay.descriptorPool;
