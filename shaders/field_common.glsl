@@ -50,7 +50,7 @@ PlantModel plantModelAt(uint i) {
 }
 
 // Corner `corner` (0 … OUTLINE_CORNERS − 1) of the outline billboards of atlas layer `layer`
-// are drawn as (engine/impostor_outline.h): uv in the frame, v = 0 at the top.
+// are drawn as (engine/field/impostor_outline.h): uv in the frame, v = 0 at the top.
 vec2 outlineCorner(uint layer, uint corner) {
     vec4 pair = floatTexel(outlineTexels, int(layer * (OUTLINE_CORNERS / 2u) + corner / 2u));
     return (corner & 1u) == 0u ? pair.xy : pair.zw;

@@ -62,7 +62,7 @@ using uint = uint32_t;
 #define FIELD_BINDING_INSTANCE_SKELETON 11 // uint per instance: the Skeleton its vertices follow
 #define FIELD_BINDING_IMPOSTOR_OUTLINES 12 // per atlas layer, OUTLINE_CORNERS uv corners, two a texel
 
-// Corners of the polygon a billboard quad is drawn as (engine/impostor_outline.h).
+// Corners of the polygon a billboard quad is drawn as (engine/field/impostor_outline.h).
 #define OUTLINE_CORNERS 4
 
 // Descriptor bindings of the cull pass (its own set 0).

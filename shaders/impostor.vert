@@ -6,7 +6,7 @@
 // expanded around each visible plant, each drawn as the outline of the frame
 // it shows (the polygon around what the frame covers, not the whole
 // frame), and textured with its atlas frames
-// (engine/impostor_atlas.h: frame f views from azimuth 2π·f/frames along
+// (engine/field/impostor_atlas.h: frame f views from azimuth 2π·f/frames along
 // d = (sin a, 0, cos a), right axis (cos a, 0, -sin a)). One quad turns to
 // the view about the vertical axis and shows the frame nearest the view
 // azimuth; two or three crossed quads stay fixed in plant space, each

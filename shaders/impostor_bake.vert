@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "plant_surface.glsl"
 
-// One frame of the impostor bake (engine/impostor_atlas.h): a model's LOD0
+// One frame of the impostor bake (engine/field/impostor_atlas.h): a model's LOD0
 // mesh seen orthographically from azimuth a, fitted to the model's box.
 layout(set = 0, binding = 0, std430) readonly buffer Vertices {
     FieldVertex vertices[];

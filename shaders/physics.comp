@@ -7,7 +7,7 @@
 // registers between them (prepareJointStep once per joint). Every joint reads its
 // parent's rotation and its own base from the poses at entry (written by the
 // previous pose pass) and writes only its own state, so the joints of a
-// dispatch are independent. engine/plant_physics.h stepSkeletonsOnCpu is the
+// dispatch are independent. engine/physics/plant_physics.h stepSkeletonsOnCpu is the
 // CPU reference.
 layout(local_size_x = PHYSICS_GROUP_SIZE) in;
 

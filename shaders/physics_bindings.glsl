@@ -1,5 +1,5 @@
 // The descriptor set of shaders/physics.comp and shaders/pose.comp (built by
-// engine/physics_pass.cpp in this order). What a pass only reads is bound
+// engine/physics/physics_pass.cpp in this order). What a pass only reads is bound
 // as a uint texel buffer (texels.glsl says why).
 #ifndef PHYSICS_BINDINGS_GLSL
 #define PHYSICS_BINDINGS_GLSL

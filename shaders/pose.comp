@@ -7,7 +7,7 @@
 // written by the previous level's dispatch, with its own local map
 // (joint_physics.h composeWithParent). jointOrder lists the simulated joints
 // level after level; the push constants say which run of it this dispatch
-// poses. engine/plant_physics.h poseSkeletonsOnCpu is the CPU reference.
+// poses. engine/physics/plant_physics.h poseSkeletonsOnCpu is the CPU reference.
 layout(local_size_x = PHYSICS_GROUP_SIZE) in;
 
 layout(push_constant) uniform Level {

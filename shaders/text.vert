@@ -1,7 +1,7 @@
 #version 460
 // The text overlay's rectangles (stb_easy_font quads), pulled from a storage
 // buffer: six vertices, two triangles, a rectangle. Positions are pixels with
-// y down, as in the C++ OverlayRect of engine/text_overlay.cpp.
+// y down, as in the C++ OverlayRect of engine/window/text_overlay.cpp.
 struct OverlayRect {
     vec4 bounds; // x0, y0, x1, y1 in pixels
     vec4 color;  // linear rgba

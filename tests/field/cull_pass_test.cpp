@@ -1,9 +1,9 @@
-// The cull + LOD compute pass (engine/cull_pass.h) against its CPU reference
+// The cull + LOD compute pass (engine/field/cull_pass.h) against its CPU reference
 // cullOnCpu, on synthetic models and random fields; every GPU test runs with
 // the validation layer on.
-#include "engine/cull_pass.h"
-#include "engine/pipeline.h"
-#include "engine/vk_check.h"
+#include "engine/field/cull_pass.h"
+#include "engine/vk/pipeline.h"
+#include "engine/vk/vk_check.h"
 #include "gpu_test.h"
 #include "shaders/layouts.h"
 #include "shaders/lod_select.h"

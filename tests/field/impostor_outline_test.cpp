@@ -1,7 +1,7 @@
-// The outlines billboards are drawn as (engine/impostor_outline.h): every
+// The outlines billboards are drawn as (engine/field/impostor_outline.h): every
 // texel the alpha test can keep lies inside, empty frames draw nothing, and
 // the rectangle is much smaller than the frame for plant-like shapes.
-#include "engine/impostor_outline.h"
+#include "engine/field/impostor_outline.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
-// The impostor atlas bake (engine/impostor_atlas.h) on a hand-built model: a
+// The impostor atlas bake (engine/field/impostor_atlas.h) on a hand-built model: a
 // vertical bark cylinder and a leaf card sticking out along +x, so frames
 // differ with azimuth; read back and checked pixel by pixel.
-#include "engine/image.h"
-#include "engine/impostor_atlas.h"
-#include "engine/vk_check.h"
+#include "engine/image/image.h"
+#include "engine/field/impostor_atlas.h"
+#include "engine/vk/vk_check.h"
 #include "gpu_test.h"
 
 #include <glm/gtc/constants.hpp>

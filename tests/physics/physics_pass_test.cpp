@@ -1,8 +1,8 @@
-// The physics and pose compute passes (engine/physics_pass.h) against their
-// CPU reference (engine/plant_physics.h stepSkeletonsOnCpu and
+// The physics and pose compute passes (engine/physics/physics_pass.h) against their
+// CPU reference (engine/physics/plant_physics.h stepSkeletonsOnCpu and
 // poseSkeletonsOnCpu) on a synthetic forest; every GPU test runs with the
 // validation layer on.
-#include "engine/physics_pass.h"
+#include "engine/physics/physics_pass.h"
 #include "gpu_test.h"
 #include "shaders/joint_physics.h"
 

@@ -1,10 +1,10 @@
-// The plant physics (engine/plant_physics.h, docs/PHYSICS.md) against
+// The plant physics (engine/physics/plant_physics.h, docs/PHYSICS.md) against
 // physics: a rod settles where its spring balances its weight, an undamped
 // joint swings with period 2π·sqrt(I/k), energy only decays without wind,
 // every plant of data/plants stays finite in a gale over the whole stiffness
 // range, and the model's parameters follow beam theory and the leaves.
-#include "engine/plant_models.h"
-#include "engine/plant_physics.h"
+#include "engine/scene/plant_models.h"
+#include "engine/physics/plant_physics.h"
 #include "shaders/joint_physics.h"
 
 #include "lsystem/dialects/dialect.h"

@@ -1,8 +1,8 @@
 // Renders scene files headless through the FieldRenderer for the render tests.
 #pragma once
 
-#include "engine/capture.h"
-#include "engine/field_renderer.h"
+#include "engine/vk/capture.h"
+#include "engine/field/field_renderer.h"
 
 #include <optional>
 #include <string>

@@ -1,5 +1,5 @@
 // cameraAt: Catmull-Rom through timed keyframes, held at the ends.
-#include "engine/scene.h"
+#include "engine/scene/scene.h"
 
 #include <gtest/gtest.h>
 

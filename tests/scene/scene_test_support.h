@@ -1,7 +1,7 @@
 // Writing scene files for tests into a folder of their own.
 #pragma once
 
-#include "engine/scene.h"
+#include "engine/scene/scene.h"
 
 #include <filesystem>
 #include <string>

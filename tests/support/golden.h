@@ -4,7 +4,7 @@
 // the test binary. Goldens are rewritten only when PLANTFIELD_UPDATE_GOLDENS=1.
 #pragma once
 
-#include "engine/image.h"
+#include "engine/image/image.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // validation layer is always on: any validation message fails the test.
 #pragma once
 
-#include "engine/device.h"
+#include "engine/vk/device.h"
 
 #include <gtest/gtest.h>
 

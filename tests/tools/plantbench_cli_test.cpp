@@ -3,10 +3,10 @@
 #include "bad_invocation.h"
 #include "run_command.h"
 
-#include "engine/field_renderer.h"
-#include "engine/image.h"
-#include "engine/plant_models.h"
-#include "engine/scene.h"
+#include "engine/field/field_renderer.h"
+#include "engine/image/image.h"
+#include "engine/scene/plant_models.h"
+#include "engine/scene/scene.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -47,7 +47,7 @@ size_t explicitPlants(const std::string& scenePath) {
 }
 
 // The joints the renderer simulates lie between its shared skeletons alone
-// (every model in physics.sharedPhases copies, engine/field_motion.cpp) and
+// (every model in physics.sharedPhases copies, engine/physics/field_motion.cpp) and
 // those plus the near plants' own skeletons, at most physics.jointBudget.
 struct JointRange {
     uint64_t shared = 0, most = 0;

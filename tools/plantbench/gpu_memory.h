@@ -3,7 +3,7 @@
 
 #include "memory_check.h"
 
-#include "engine/device.h"
+#include "engine/vk/device.h"
 
 #include <cstdint>
 

@@ -5,7 +5,7 @@
 #include "report.h"
 #include "sweep.h"
 
-#include "engine/scene.h"
+#include "engine/scene/scene.h"
 
 #include <exception>
 #include <iostream>

@@ -3,7 +3,7 @@
 // check is unit-tested with made-up limits (tests/tools/plantbench_memory_test.cpp).
 #pragma once
 
-#include "engine/plant_models.h"
+#include "engine/scene/plant_models.h"
 
 #include <cstdint>
 #include <optional>

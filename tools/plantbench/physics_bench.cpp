@@ -1,19 +1,19 @@
-// physics_bench: the GPU physics + pose passes (engine/physics_pass.h)
-// against the CPU reference on one thread (engine/plant_physics.h), one
+// physics_bench: the GPU physics + pose passes (engine/physics/physics_pass.h)
+// against the CPU reference on one thread (engine/physics/plant_physics.h), one
 // frame of 8 sub-steps and the pose per iteration, for 10 000, 100 000 and
 // 1 000 000 joints: skeletons of the default scene's plant models, cloned
 // one model after another over a 1 km square in the scene's wind.
 //
 // GPU time is the timestamp queries around the recorded passes
-// (engine/gpu_timer.h, the benchmark's manual time), with physics_ms and
+// (engine/vk/gpu_timer.h, the benchmark's manual time), with physics_ms and
 // pose_ms the passes' own scopes (recordPhysicsPass); wall_ms adds the
 // submit and the wait. The counter joint_steps_per_ms is joints × sub-steps per
 // millisecond of that time (GPU: timestamps; CPU: wall time of one thread).
 #include "options.h"
 
-#include "engine/gpu_timer.h"
-#include "engine/physics_pass.h"
-#include "engine/plant_models.h"
+#include "engine/vk/gpu_timer.h"
+#include "engine/physics/physics_pass.h"
+#include "engine/scene/plant_models.h"
 
 #include <benchmark/benchmark.h>
 

@@ -2,8 +2,8 @@
 
 #include "tools/plantfield/options.h"
 
-#include "engine/device.h"
-#include "engine/image.h"
+#include "engine/vk/device.h"
+#include "engine/image/image.h"
 #include "shaders/field_layouts.h"
 
 #include <CLI/CLI.hpp>

@@ -1,6 +1,6 @@
 #include "plot.h"
 
-#include "engine/image.h"
+#include "engine/image/image.h"
 
 #include <algorithm>
 #include <cerrno>

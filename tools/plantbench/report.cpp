@@ -1,6 +1,6 @@
 #include "report.h"
 
-#include "engine/image.h"
+#include "engine/image/image.h"
 
 #include "gpu_memory.h"
 

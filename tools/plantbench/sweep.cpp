@@ -3,7 +3,7 @@
 #include "gpu_memory.h"
 #include "progress.h"
 
-#include "engine/gpu_timer.h"
+#include "engine/vk/gpu_timer.h"
 
 #include <algorithm>
 #include <chrono>
@@ -55,7 +55,7 @@ Buffer createCaptureBuffer(const GpuContext& ctx, VkExtent2D extent) {
     return createHostBuffer(ctx, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 }
 
-// What engine/capture.cpp records after a frame: the resolved image (left in
+// What engine/vk/capture.cpp records after a frame: the resolved image (left in
 // TRANSFER_SRC_OPTIMAL by the renderer) copied to a host buffer and made
 // visible to the host, timed as the "capture" scope.
 void recordCapture(VkCommandBuffer cmd, FrameResources& frame) {

@@ -6,9 +6,9 @@
 
 #include "plantbench_options.h"
 
-#include "engine/device.h"
-#include "engine/field_renderer.h"
-#include "engine/scene.h"
+#include "engine/vk/device.h"
+#include "engine/field/field_renderer.h"
+#include "engine/scene/scene.h"
 
 #include <algorithm>
 #include <array>

@@ -5,8 +5,8 @@
 
 #include "options.h"
 
-#include "engine/device.h"
-#include "engine/field_renderer.h"
+#include "engine/vk/device.h"
+#include "engine/field/field_renderer.h"
 
 #include <memory>
 

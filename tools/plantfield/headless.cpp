@@ -2,9 +2,9 @@
 #include "field_setup.h"
 #include "modes.h"
 
-#include "engine/capture.h"
-#include "engine/gpu_timer.h"
-#include "engine/image.h"
+#include "engine/vk/capture.h"
+#include "engine/vk/gpu_timer.h"
+#include "engine/image/image.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,7 +1,7 @@
 // Command-line options of plantfield, parsed and checked before any GPU work.
 #pragma once
 
-#include "engine/scene.h"
+#include "engine/scene/scene.h"
 
 #include <cstdint>
 #include <optional>

@@ -3,11 +3,11 @@
 #include "field_setup.h"
 #include "modes.h"
 
-#include "engine/gpu_timer.h"
-#include "engine/present_loop.h"
-#include "engine/text_overlay.h"
-#include "engine/window.h"
-#include "engine/window_input.h"
+#include "engine/vk/gpu_timer.h"
+#include "engine/window/present_loop.h"
+#include "engine/window/text_overlay.h"
+#include "engine/window/window.h"
+#include "engine/window/window_input.h"
 
 #include <cstdio>
 

@@ -1,0 +1,253 @@
+#include "engine/field/cull_pass.h"
+
+#include "engine/vk/pipeline.h"
+#include "engine/vk/vk_check.h"
+#include "shaders/lod_select.h"
+
+#include "shaders/build_draws_comp.spv.h"
+#include "shaders/cull_comp.spv.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace pf {
+
+namespace {
+
+constexpr uint32_t kBindingCount = 10;
+
+// Buffers of zero size are invalid; an empty field still gets valid ones.
+VkDeviceSize atLeastOneWord(VkDeviceSize bytes) { return std::max<VkDeviceSize>(bytes, 4); }
+
+Buffer createDeviceBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage) {
+    return createBuffer(ctx, atLeastOneWord(size), usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                        VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+}
+
+} // namespace
+
+std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProj) {
+    // Gribb–Hartmann: clip-space tests −w ≤ x,y ≤ w and 0 ≤ z ≤ w are planes
+    // in world space made of the matrix rows (glm is column-major: m[c][r]).
+    auto row = [&](int r) { return glm::vec4(viewProj[0][r], viewProj[1][r], viewProj[2][r], viewProj[3][r]); };
+    std::array<glm::vec4, 6> planes = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
+                                       row(3) - row(1), row(2),          row(3) - row(2)};
+    for (glm::vec4& p : planes) p /= glm::length(glm::vec3(p));
+    return planes;
+}
+
+void assignVisibleLists(std::span<gpu::PlantModel> models, std::span<const gpu::FieldInstance> instances) {
+    std::vector<uint32_t> perModel(models.size(), 0);
+    for (const gpu::FieldInstance& inst : instances) {
+        if (inst.ids.x >= models.size())
+            throw std::runtime_error("field instance refers to model " + std::to_string(inst.ids.x) + " of " +
+                                     std::to_string(models.size()));
+        ++perModel[inst.ids.x];
+    }
+    const uint32_t total = uint32_t(instances.size());
+    uint32_t first = 0;
+    for (size_t m = 0; m < models.size(); ++m) {
+        models[m].lists = glm::uvec4(first, total + first, 2 * total + first, perModel[m]);
+        first += perModel[m];
+    }
+}
+
+CullPass createCullPass(const GpuContext& ctx, const CullPassInputs& inputs) {
+    if (inputs.instanceCount > FIELD_MAX_INSTANCES)
+        throw std::runtime_error("field of " + std::to_string(inputs.instanceCount) + " instances exceeds " +
+                                 std::to_string(FIELD_MAX_INSTANCES));
+    CullPass pass;
+    pass.instanceCount = inputs.instanceCount;
+    pass.modelCount = inputs.modelCount;
+    pass.templateCount = uint32_t(inputs.templates.size());
+    for (uint32_t t = 0; t < pass.templateCount; ++t) {
+        const uint32_t drawClass = inputs.templates[t].mesh.w;
+        if (drawClass >= DRAW_CLASS_COUNT || (t > 0 && drawClass < inputs.templates[t - 1].mesh.w))
+            throw std::runtime_error("draw templates must be sorted by draw class");
+        if (pass.templatesPerClass[drawClass]++ == 0) pass.firstTemplateOfClass[drawClass] = t;
+    }
+
+    // Past maxComputeWorkGroupCount[0] groups the cull dispatch wraps into rows.
+    const uint32_t groups = (pass.instanceCount + CULL_GROUP_SIZE - 1) / CULL_GROUP_SIZE;
+    pass.cullGroups.x = std::min(groups, ctx.properties.limits.maxComputeWorkGroupCount[0]);
+    pass.cullGroups.y = pass.cullGroups.x ? (groups + pass.cullGroups.x - 1) / pass.cullGroups.x : 0;
+
+    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    const VkBufferUsageFlags indirect = storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+    pass.uniforms = createHostBuffer(ctx, sizeof(gpu::CullUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    if (pass.templateCount > 0)
+        pass.templates = createDeviceBufferWithData(ctx, inputs.templates.data(),
+                                                    inputs.templates.size_bytes(), storage);
+    else
+        pass.templates = createDeviceBuffer(ctx, 0, storage);
+    pass.state = createDeviceBuffer(ctx, VkDeviceSize(pass.instanceCount) * 4, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    pass.counts = createDeviceBuffer(ctx, VkDeviceSize(pass.modelCount) * LOD_COUNT * 4,
+                                     storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    // Written here, read by the draw shaders through a texel view.
+    pass.visible = createDeviceBuffer(ctx, VkDeviceSize(pass.instanceCount) * LOD_COUNT * 4,
+                                      storage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    pass.commands = createDeviceBuffer(ctx, VkDeviceSize(DRAW_CLASS_COUNT) * pass.templateCount * sizeof(gpu::DrawCommand),
+                                       indirect);
+    pass.drawCounts = createDeviceBuffer(ctx, DRAW_CLASS_COUNT * 4, indirect | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    pass.allCommands = createDeviceBuffer(ctx, VkDeviceSize(pass.templateCount) * sizeof(gpu::DrawCommand), indirect);
+    pass.readback = createHostBuffer(ctx, (VkDeviceSize(pass.modelCount) * LOD_COUNT + DRAW_CLASS_COUNT) * 4,
+                                     VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+
+    // Until a first frame resets it, every plant is settled at LOD 0.
+    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+        vkCmdFillBuffer(cmd, pass.state.buffer, 0, VK_WHOLE_SIZE, LOD_STATE_SETTLED << 8);
+        // Waiting for the queue is no memory dependency: the first cull reads it.
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    });
+
+    const VkBuffer buffers[kBindingCount] = {
+        pass.uniforms.buffer, inputs.instances->buffer, inputs.models->buffer, pass.state.buffer,
+        pass.counts.buffer,   pass.visible.buffer,      pass.templates.buffer, pass.commands.buffer,
+        pass.drawCounts.buffer, pass.allCommands.buffer};
+    pass.set = createComputeSet(ctx, buffers);
+    pass.cullPipeline =
+        createComputePipeline(ctx.device, pass.set.pipelineLayout, createShaderModule(ctx.device, spirv_cull_comp));
+    pass.buildDrawsPipeline =
+        createComputePipeline(ctx.device, pass.set.pipelineLayout, createShaderModule(ctx.device, spirv_build_draws_comp));
+    return pass;
+}
+
+void destroyCullPass(const GpuContext& ctx, CullPass& pass) {
+    vkDestroyPipeline(ctx.device, pass.cullPipeline, nullptr);
+    vkDestroyPipeline(ctx.device, pass.buildDrawsPipeline, nullptr);
+    destroyComputeSet(ctx, pass.set);
+    for (Buffer* b : {&pass.uniforms, &pass.templates, &pass.state, &pass.counts, &pass.visible, &pass.commands,
+                      &pass.drawCounts, &pass.allCommands, &pass.readback})
+        destroyBuffer(ctx, *b);
+    pass = {};
+}
+
+gpu::CullUniforms makeCullUniforms(const glm::mat4& viewProj, const glm::vec3& cameraPosition, float fovYRadians,
+                                   uint32_t viewportHeight, float deltaSeconds, bool firstFrame, uint32_t forcedLod) {
+    gpu::CullUniforms u{};
+    const std::array<glm::vec4, 6> planes = frustumPlanes(viewProj);
+    std::copy(planes.begin(), planes.end(), u.frustum);
+    u.camera = glm::vec4(cameraPosition, float(viewportHeight) / (2.0f * std::tan(fovYRadians * 0.5f)));
+    u.counts = glm::uvec4(0, 0, forcedLod, firstFrame ? 1u : 0u);
+    u.timing = glm::vec4(deltaSeconds, 0, 0, 0);
+    return u;
+}
+
+void setCullUniforms(const CullPass& pass, const gpu::CullUniforms& uniforms) {
+    gpu::CullUniforms u = uniforms;
+    u.counts.x = pass.instanceCount;
+    u.counts.y = pass.templateCount;
+    std::memcpy(pass.uniforms.mapped, &u, sizeof(u));
+}
+
+void recordCullPass(VkCommandBuffer cmd, const CullPass& pass) {
+    // The previous frame may still draw from commands and visible and copy
+    // counts (write-after-read: execution only), and its cull wrote the
+    // state this cull reads (read-after-write: make it visible).
+    memoryBarrier(cmd,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT |
+                      VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+
+    vkCmdFillBuffer(cmd, pass.counts.buffer, 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, pass.drawCounts.buffer, 0, VK_WHOLE_SIZE, 0);
+    // Both shaders increment the zeroed counters with atomics. (Fills are
+    // transfer-stage work; layers disagree on CLEAR vs COPY, TRANSFER is both.)
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.cullPipeline);
+    bindComputeSet(cmd, pass.set);
+    vkCmdDispatch(cmd, pass.cullGroups.x, pass.cullGroups.y, 1);
+    // build_draws reads the final per-list counts.
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.buildDrawsPipeline);
+    vkCmdDispatch(cmd, (pass.templateCount + CULL_GROUP_SIZE - 1) / CULL_GROUP_SIZE, 1, 1);
+    // Indirect draws read commands and drawCounts, vertex shaders the visible
+    // lists (written by cull, covered as an earlier compute write), and the
+    // copy below the counters.
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
+                      VK_PIPELINE_STAGE_2_COPY_BIT,
+                  VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT |
+                      VK_ACCESS_2_TRANSFER_READ_BIT);
+
+    const VkBufferCopy countsRegion{0, 0, VkDeviceSize(pass.modelCount) * LOD_COUNT * 4};
+    if (countsRegion.size > 0) vkCmdCopyBuffer(cmd, pass.counts.buffer, pass.readback.buffer, 1, &countsRegion);
+    const VkBufferCopy drawCountsRegion{0, countsRegion.size, DRAW_CLASS_COUNT * 4};
+    vkCmdCopyBuffer(cmd, pass.drawCounts.buffer, pass.readback.buffer, 1, &drawCountsRegion);
+    // The host reads the counters after the frame's fence.
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                  VK_ACCESS_2_HOST_READ_BIT);
+}
+
+void drawClassIndirect(VkCommandBuffer cmd, const GpuContext& ctx, const CullPass& pass, uint32_t drawClass) {
+    const uint32_t stride = sizeof(gpu::DrawCommand);
+    if (ctx.drawIndirectCount) {
+        vkCmdDrawIndexedIndirectCount(cmd, pass.commands.buffer, VkDeviceSize(drawClass) * pass.templateCount * stride,
+                                      pass.drawCounts.buffer, VkDeviceSize(drawClass) * 4, pass.templateCount, stride);
+        return;
+    }
+    const uint32_t count = pass.templatesPerClass[drawClass];
+    const VkDeviceSize first = VkDeviceSize(pass.firstTemplateOfClass[drawClass]) * stride;
+    if (count == 0) return;
+    if (ctx.multiDrawIndirect) {
+        vkCmdDrawIndexedIndirect(cmd, pass.allCommands.buffer, first, count, stride);
+        return;
+    }
+    for (uint32_t i = 0; i < count; ++i)
+        vkCmdDrawIndexedIndirect(cmd, pass.allCommands.buffer, first + VkDeviceSize(i) * stride, 1, stride);
+}
+
+CullCounts readCullCounts(const CullPass& pass) {
+    const auto* words = static_cast<const uint32_t*>(pass.readback.mapped);
+    CullCounts out;
+    out.perModelLod.assign(words, words + size_t(pass.modelCount) * LOD_COUNT);
+    for (uint32_t c = 0; c < DRAW_CLASS_COUNT; ++c) out.drawsPerClass[c] = words[out.perModelLod.size() + c];
+    for (size_t i = 0; i < out.perModelLod.size(); ++i) out.perLod[i % LOD_COUNT] += out.perModelLod[i];
+    return out;
+}
+
+CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span<const gpu::PlantModel> models,
+                        const gpu::CullUniforms& uniforms, std::vector<uint32_t>& state) {
+    state.resize(instances.size(), LOD_STATE_SETTLED << 8);
+    CpuCullResult out;
+    out.lists.resize(models.size() * LOD_COUNT);
+    const glm::vec4* f = uniforms.frustum;
+    for (uint32_t i = 0; i < instances.size(); ++i) {
+        const gpu::FieldInstance& inst = instances[i];
+        const uint32_t m = inst.ids.x;
+        const gpu::PlantModel& model = models[m];
+        const glm::vec4 sphere = gpu::instanceSphere(inst, model);
+        const float pixels = gpu::projectedPixels(sphere, uniforms.camera);
+        const bool inside = gpu::sphereInFrustum(sphere, f[0], f[1], f[2], f[3], f[4], f[5]) &&
+                            gpu::largeEnoughToDraw(pixels, model, uniforms.counts.z);
+        const uint32_t next = gpu::nextLodState(state[i], inside, pixels, model.lod, uniforms.counts.z,
+                                                uniforms.counts.w == 1u, uniforms.timing.x);
+        state[i] = next;
+        if (!inside) continue;
+        const uint32_t progress = gpu::lodStateProgress(next);
+        std::vector<uint32_t>* lists = &out.lists[size_t(m) * LOD_COUNT];
+        if (progress == LOD_STATE_SETTLED) {
+            lists[gpu::lodStateCurrent(next)].push_back(gpu::visibleEntry(i, 0, VISIBLE_COVERAGE_MAX));
+            continue;
+        }
+        const uint32_t coverageIn = gpu::fadeInCoverage(progress);
+        lists[gpu::lodStateCurrent(next)].push_back(gpu::visibleEntry(i, VISIBLE_FADE_IN_BIT, coverageIn));
+        lists[gpu::lodStateFrom(next)].push_back(gpu::visibleEntry(i, 0, VISIBLE_COVERAGE_MAX - coverageIn));
+    }
+    for (std::vector<uint32_t>& list : out.lists) std::sort(list.begin(), list.end());
+    return out;
+}
+
+} // namespace pf

@@ -1,0 +1,107 @@
+// The GPU-driven part of the field frame (DESIGN.md §5 pass 3): one compute
+// invocation per field instance tests the instance's bounding sphere against
+// the frustum, picks its LOD from projected height with hysteresis (and a
+// dithered fade between LODs), and appends it to the compacted visible list
+// of its (model, LOD); a second small pass turns every non-empty list into a
+// VkDrawIndexedIndirectCommand of its draw class and counts them, for
+// vkCmdDrawIndexedIndirectCount (or, without that feature, instanceCount is
+// written into one command per template and all are drawn). No per-plant CPU
+// work per frame.
+#pragma once
+
+#include "engine/vk/compute_set.h"
+#include "engine/vk/resources.h"
+#include "shaders/field_layouts.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace pf {
+
+// The six planes of a view-projection (Vulkan clip space, depth 0..1),
+// normalised, normals pointing inward.
+std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProj);
+
+// The visible-list layout the cull pass appends into: for each LOD l, for
+// each model m in order, a region of (instances of m) entries, so
+// lists[l] = l · instanceCount + (instances of models before m) and
+// lists.w = instances of m. Fills lists of every model from the instances'
+// ids.x; the visible buffer then holds LOD_COUNT · instanceCount entries.
+void assignVisibleLists(std::span<gpu::PlantModel> models, std::span<const gpu::FieldInstance> instances);
+
+struct CullPassInputs {
+    const Buffer* instances = nullptr;       // gpu::FieldInstance[instanceCount], storage
+    const Buffer* models = nullptr;          // gpu::PlantModel[modelCount], storage (lists filled)
+    uint32_t instanceCount = 0;
+    uint32_t modelCount = 0;
+    std::span<const gpu::DrawTemplate> templates; // copied to the GPU at creation
+};
+
+struct CullPass {
+    ComputeSet set; // uniforms, then the storage buffers below
+    VkPipeline cullPipeline = VK_NULL_HANDLE;
+    VkPipeline buildDrawsPipeline = VK_NULL_HANDLE;
+
+    Buffer uniforms;     // host-visible CullUniforms
+    Buffer templates;    // DrawTemplate[]
+    Buffer state;        // uint per instance: LOD state (field_layouts.h)
+    Buffer counts;       // uint per (model, LOD)
+    Buffer visible;      // uint entries: LOD lists of every model (3 × instanceCount)
+    Buffer commands;     // DrawCommand[DRAW_CLASS_COUNT × templateCount], class c's region starts at c × templateCount
+    Buffer drawCounts;   // uint[DRAW_CLASS_COUNT]
+    Buffer allCommands;  // DrawCommand[templateCount] in template order (fallback path)
+    Buffer readback;     // host-visible copy of counts then drawCounts, written at the end of record()
+
+    uint32_t instanceCount = 0;
+    uint32_t modelCount = 0;
+    uint32_t templateCount = 0;
+    std::array<uint32_t, DRAW_CLASS_COUNT> templatesPerClass{}; // fallback: how many templates each class has
+    std::array<uint32_t, DRAW_CLASS_COUNT> firstTemplateOfClass{}; // templates are sorted by class
+    glm::uvec2 cullGroups{}; // cull dispatch: rows of at most maxComputeWorkGroupCount[0] groups
+};
+
+// Templates must be sorted by draw class. Throws when there are more
+// instances than FIELD_MAX_INSTANCES.
+CullPass createCullPass(const GpuContext& ctx, const CullPassInputs& inputs);
+void destroyCullPass(const GpuContext& ctx, CullPass& pass);
+
+// Per frame, before record: frustum, camera, forced LOD, delta time.
+// `firstFrame` resets every instance's LOD state to settled at its target LOD.
+// counts.x and counts.y (instances, templates) are left 0: setCullUniforms
+// fills them from the pass.
+gpu::CullUniforms makeCullUniforms(const glm::mat4& viewProj, const glm::vec3& cameraPosition, float fovYRadians,
+                                   uint32_t viewportHeight, float deltaSeconds, bool firstFrame,
+                                   uint32_t forcedLod = 0xFFFFFFFFu);
+void setCullUniforms(const CullPass& pass, const gpu::CullUniforms& uniforms);
+
+// Records: clear counters, cull, build draws, copy counters to readback, and
+// the barriers that make the visible list readable by vertex shaders and the
+// commands by indirect draws.
+void recordCullPass(VkCommandBuffer cmd, const CullPass& pass);
+
+// Draws every command of one class: vkCmdDrawIndexedIndirectCount when the
+// device has it, otherwise vkCmdDrawIndexedIndirect over the class's
+// templates (empty ones draw nothing). The caller binds pipeline, index buffer
+// and descriptor sets.
+void drawClassIndirect(VkCommandBuffer cmd, const GpuContext& ctx, const CullPass& pass, uint32_t drawClass);
+
+// Counters of the last recorded frame (read after its fence).
+struct CullCounts {
+    std::vector<uint32_t> perModelLod;                 // [model · LOD_COUNT + lod] entries in that list
+    std::array<uint32_t, DRAW_CLASS_COUNT> drawsPerClass{}; // commands written
+    std::array<uint32_t, LOD_COUNT> perLod{};          // summed over models (fading plants count in both)
+};
+CullCounts readCullCounts(const CullPass& pass);
+
+// The same decision on the CPU (the reference the tests check the GPU
+// against): the LOD list entries instance i gets this frame, updating state.
+struct CpuCullResult {
+    std::vector<std::vector<uint32_t>> lists; // [model · LOD_COUNT + lod] visible entries, sorted
+};
+CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span<const gpu::PlantModel> models,
+                        const gpu::CullUniforms& uniforms, std::vector<uint32_t>& state);
+
+} // namespace pf

@@ -1,0 +1,123 @@
+// The GPU-driven field frame (DESIGN.md §5): every plant in one instance
+// buffer; per frame the cull pass picks what is drawn at which LOD and
+// writes the indirect draws, the shadow pass and the colour pass draw from
+// those lists. The CPU does no per-plant work per frame. recordNaive() draws
+// the same field the simple way (every plant at full detail, one draw call
+// each) as the baseline plantbench compares against.
+#pragma once
+
+#include "engine/scene/camera.h"
+#include "engine/field/cull_pass.h"
+#include "engine/physics/field_motion.h"
+#include "engine/scene/field_content.h"
+#include "engine/field/impostor_atlas.h"
+#include "engine/vk/render_target.h"
+#include "engine/field/shadow_map.h"
+
+#include <array>
+#include <string_view>
+#include <optional>
+
+namespace pf {
+
+struct GpuTimer;
+
+struct FieldRenderSettings {
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_4_BIT;
+    bool shadows = true;
+    uint32_t shadowMapSize = 1024;
+    float shadowRadius = 60.0f; // metres: half the side of the shadowed square ahead of the camera
+    float impostorSway = 0.04f;  // metres an impostor's top leans per m/s of gust (times the plant's scale)
+    ImpostorSettings impostors;
+};
+
+struct FieldView {
+    Camera camera;
+    float time = 0.0f;      // scene seconds
+    float deltaTime = 0.0f; // seconds since the previous frame (LOD fades advance by it)
+    bool firstFrame = true; // LOD state starts settled at each plant's target LOD
+    std::optional<uint32_t> forcedLod; // every visible plant at this LOD (tests, debugging)
+    bool realTime = false;   // a window: physics skips what it cannot catch up (field_motion.h)
+};
+
+// What the last recorded frame drew, from the cull pass's counters.
+struct FieldFrameStats {
+    uint32_t instances = 0;
+    std::array<uint32_t, LOD_COUNT> plantsPerLod{}; // fading plants count at both LODs
+    std::array<uint32_t, DRAW_CLASS_COUNT> draws{};   // indirect commands per class
+    uint64_t triangles = 0;                           // colour pass, plants only
+};
+
+// GPU timer scope names, in recording order. "colour" is the whole colour
+// pass and the three after it are nested inside it.
+inline constexpr const char* kFieldPasses[] = {"physics", "pose",      "cull",       "shadow",
+                                               "colour",  "plants",    "impostors",  "terrain_sky"};
+
+// True for the draw scopes recorded inside "colour" (those after it in
+// kFieldPasses): a frame's total adds only the others.
+bool nestedInColourPass(std::string_view pass);
+
+class FieldRenderer {
+public:
+    FieldRenderer(const GpuContext& ctx, FieldContent content, const FieldRenderSettings& settings);
+    ~FieldRenderer();
+    FieldRenderer(const FieldRenderer&) = delete;
+    FieldRenderer& operator=(const FieldRenderer&) = delete;
+
+    // Uniforms of the next frame: call only while no frame is in flight.
+    void setView(const FieldView& view, VkExtent2D extent);
+    // Leaves target.color in TRANSFER_SRC_OPTIMAL. With a timer, writes
+    // one scope per entry of kFieldPasses.
+    void record(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer = nullptr) const;
+    // The baseline: no culling, no LOD, one vkCmdDrawIndexed per plant and class.
+    void recordNaive(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer = nullptr) const;
+    // After the fence of a frame recorded with record().
+    FieldFrameStats readStats() const;
+
+    const FieldContent& content() const { return content_; }
+    VkSampleCountFlagBits samples() const { return settings_.samples; }
+    uint64_t naiveTriangles() const; // what recordNaive draws in its colour pass
+    uint32_t simulatedJoints() const { return motion_.pass.jointCount; } // shared copies and near plants' own
+    VkDeviceSize gpuBytes() const;   // buffers and images this renderer allocated
+
+private:
+    struct Pipelines {
+        VkPipeline sky = VK_NULL_HANDLE, terrain = VK_NULL_HANDLE, bark = VK_NULL_HANDLE, foliage = VK_NULL_HANDLE,
+                   impostor = VK_NULL_HANDLE, plantShadow = VK_NULL_HANDLE, impostorShadow = VK_NULL_HANDLE;
+    };
+
+    const GpuContext& ctx_;
+    FieldContent content_;
+    FieldRenderSettings settings_;
+
+    Buffer uniforms_;
+    Buffer vertices_, indices_;
+    Buffer models_, instances_;
+    Buffer terrainVertices_, terrainIndices_;
+    Buffer outlines_; // atlas_.outlines: the rectangle each atlas layer's billboards are drawn as
+    Buffer naiveVisible_; // entry i = plant i at full coverage
+    uint32_t terrainIndexCount_ = 0;
+    std::array<MeshRange, 3> billboards_{}; // 1, 2, 3 quads
+    ImpostorAtlas atlas_;
+    ShadowMap shadow_;
+    CullPass cull_;
+    FieldMotion motion_;
+
+    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+    VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
+    std::vector<VkBufferView> texelViews_; // of the buffers the draw shaders read (field_common.glsl)
+    VkDescriptorSet drawSet_ = VK_NULL_HANDLE;  // visible = the cull pass's lists
+    VkDescriptorSet naiveSet_ = VK_NULL_HANDLE; // visible = naiveVisible_
+    VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
+    Pipelines pipelines_;
+
+    void uploadGeometry();
+    void uploadInstances();
+    void createDescriptors();
+    void createPipelines();
+    void recordShadowPass(VkCommandBuffer cmd, bool naive) const;
+    void recordColourPass(VkCommandBuffer cmd, const RenderTarget& target, bool naive, GpuTimer* timer) const;
+    void drawPlantsNaive(VkCommandBuffer cmd, bool bark, bool foliage) const;
+};
+
+} // namespace pf

@@ -1,0 +1,77 @@
+// Billboard impostors (DESIGN.md §5 LOD2, seed 001): at load, every plant
+// model is rendered on the GPU from `frames` directions around its vertical
+// axis into a layered atlas of albedo + coverage and normal + depth, so far
+// plants are drawn as one camera-facing quad (frame chosen and blended by
+// view direction) or as two or three crossed quads, each showing the frame
+// seen along its normal.
+#pragma once
+
+#include "engine/field/impostor_outline.h"
+#include "engine/scene/plant_models.h"
+#include "engine/vk/resources.h"
+
+#include <vector>
+
+namespace pf {
+
+struct ImpostorSettings {
+    uint32_t frameSize = 256; // pixels per side of one frame
+    uint32_t frames = 12;     // views around the plant, 360/frames degrees apart (0°: looking along -z of plant space)
+};
+
+// Frame convention, shared with shaders/impostor.vert. Frame f of n views the
+// plant from azimuth a = 2π·f/n about +y: the orthographic camera sits along
+// d = (sin a, 0, cos a), looks along -d, its right axis is
+// (cos a, 0, -sin a) and its up axis +y (frame 0 looks along -z, +x right).
+// The frame spans [-halfWidth, halfWidth] along the right axis (u 0 → 1) and
+// [bottom, top] in y (image row 0 = top); depth 0 is the box's front
+// (dot(p, d) = halfDepth), 1 its back. Crossed quads need frames divisible
+// by 4 (Double) and 6 (Triple): 12 serves all three kinds.
+glm::vec3 impostorViewDirection(uint32_t frame, uint32_t frames);
+glm::vec3 impostorRightAxis(uint32_t frame, uint32_t frames);
+
+// gpu.impostorQuad of a model from its box: half width = half depth = the
+// box's horizontal radius about the plant's axis (x = z = 0), so every frame
+// holds the whole plant; bottom and top = the box's y range.
+glm::vec4 impostorQuadOf(const gpu::PlantModel& model);
+
+// Both images are premultiplied by coverage (the MSAA resolve of a clear-0
+// background): divide rgb and normalDepth by color.a before use. Layer of
+// (model m, frame f) = models[m].gpu.impostor.x + f; full mip chains.
+struct ImpostorAtlas {
+    Image color;       // R8G8B8A8_SRGB array, one layer per (model, frame): albedo, alpha = coverage
+    Image normalDepth; // R8G8B8A8_UNORM array: plant-space normal·0.5+0.5, alpha = depth across the box (0 front … 1 back)
+    uint32_t mipLevels = 0;
+    VkSampler sampler = VK_NULL_HANDLE; // linear, clamp, mipmapped
+    uint32_t layers = 0;
+    ImpostorSettings settings;
+    // Per layer, the rectangle its billboards are drawn as (impostor_outline.h):
+    // read back from mip kOutlineMip (or the last, if coarser), grown by
+    // kOutlineMargin of its texels, so it holds everything the alpha test
+    // keeps at that mip and finer ones and at one mip coarser; smaller
+    // billboards may lose a faint fringe.
+    std::vector<ImpostorOutline> outlines;
+};
+
+constexpr uint32_t kOutlineMip = 3;
+constexpr float kOutlineMargin = 2.0f;
+
+// Bakes all models of the pool (already uploaded: vertices as FieldVertex
+// storage buffer, indices as index buffer), writes each model's
+// gpu.impostor (first layer, frames, quads per billboard from its
+// BillboardKind) and gpu.impostorQuad, and leaves both images in
+// SHADER_READ_ONLY_OPTIMAL.
+ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, const Buffer& vertices,
+                                const Buffer& indices, const ImpostorSettings& settings = {});
+void destroyImpostorAtlas(const GpuContext& ctx, ImpostorAtlas& atlas);
+
+// Billboards for the pool's impostor draws: for quads q ∈ {1, 2, 3} the
+// vertices and indices the impostor vertex shader expands. Each quad is a
+// fan of kOutlineCorners corners (FieldVertex position.x = corner index,
+// position.z = quad index) that the shader places at the corners of the
+// shown frame's outline. Quad q lies in the plane through the plant's axis
+// at azimuth q·180°/quads (quads > 1); a single quad turns to the view.
+// Draw two-sided (no culling). Appends to the pool; returns the mesh range.
+MeshRange appendBillboardMesh(PlantModelPool& pool, uint32_t quads);
+
+} // namespace pf

@@ -1,0 +1,144 @@
+#include "engine/physics/field_motion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace pf {
+namespace {
+
+// Shared skeletons: `phases` copies per model, model after model.
+SkeletonSet sharedSkeletons(const FieldContent& content) {
+    const PlantModelPool& pool = content.models;
+    const uint32_t phases = std::max(1u, content.scene.physics.sharedPhases);
+    const float angle = glm::radians(content.scene.wind.directionDegrees);
+    const glm::vec3 along(std::sin(angle), 0.0f, -std::cos(angle));
+    SkeletonSet set;
+    set.params = pool.joints;
+    for (uint32_t m = 0; m < pool.models.size(); ++m)
+        for (uint32_t phase = 0; phase < phases; ++phase)
+            addSkeleton(set, m, pool.models[m].firstJoint, pool.models[m].joints,
+                        along * (float(phase) * sharedPhaseSpacing(content.scene.physics)), 0.0f,
+                        1.0f);
+    return set;
+}
+
+// Each plant follows the shared copy its wind phase falls in.
+std::vector<uint32_t> skeletonPerPlant(const FieldContent& content) {
+    const uint32_t phases = std::max(1u, content.scene.physics.sharedPhases);
+    std::vector<uint32_t> skeleton(content.plants.size());
+    for (size_t i = 0; i < skeleton.size(); ++i) {
+        const PlantInstance& p = content.plants[i];
+        const uint32_t phase =
+            std::min(phases - 1, uint32_t(p.windPhase / (2.0f * std::numbers::pi_v<float>) * float(phases)));
+        skeleton[i] = content.models.modelOf(p.species, p.variant) * phases + phase;
+    }
+    return skeleton;
+}
+
+template <class T>
+Buffer deviceCopyOf(const GpuContext& ctx, const std::vector<T>& data, VkBufferUsageFlags usage) {
+    return createDeviceBufferWithData(ctx, data.data(), std::max<size_t>(1, data.size()) * sizeof(T), usage);
+}
+
+void copyWhole(VkCommandBuffer cmd, const Buffer& from, const Buffer& to) {
+    const VkBufferCopy region{0, 0, std::min(from.size, to.size)};
+    vkCmdCopyBuffer(cmd, from.buffer, to.buffer, 1, &region);
+}
+
+
+// The near-plant changes of a frame: plants repointed (host-visible), own
+// skeletons started from their shared copy's states and poses.
+void applyNearChanges(const GpuContext& ctx, FieldMotion& motion, const NearChanges& changes) {
+    auto* skeletonOf = static_cast<uint32_t*>(motion.instanceSkeleton.mapped);
+    for (const auto& [plant, skeleton] : changes.plantSkeleton) skeletonOf[plant] = skeleton;
+    if (changes.startFrom.empty()) return;
+    const auto* skeletons = static_cast<const gpu::Skeleton*>(motion.pass.skeletons.mapped);
+    std::vector<VkBufferCopy> states, poses;
+    for (const auto& [own, shared] : changes.startFrom) {
+        const uint32_t joints = skeletons[own].ids.z;
+        states.push_back({skeletons[shared].ids.w * sizeof(gpu::JointState), skeletons[own].ids.w * sizeof(gpu::JointState),
+                          joints * sizeof(gpu::JointState)});
+        poses.push_back({skeletons[shared].ids.w * sizeof(gpu::JointPose), skeletons[own].ids.w * sizeof(gpu::JointPose),
+                         joints * sizeof(gpu::JointPose)});
+    }
+    // Within one buffer: source and destination ranges never overlap (different skeletons).
+    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+        vkCmdCopyBuffer(cmd, motion.pass.states.buffer, motion.pass.states.buffer, uint32_t(states.size()), states.data());
+        vkCmdCopyBuffer(cmd, motion.pass.poses.buffer, motion.pass.poses.buffer, uint32_t(poses.size()), poses.data());
+    });
+}
+
+} // namespace
+
+float sharedPhaseSpacing(const PhysicsSettings& settings) {
+    return kGustWavelength / float(std::max(1u, settings.sharedPhases));
+}
+
+FieldMotion createFieldMotion(const GpuContext& ctx, const FieldContent& content) {
+    FieldMotion motion;
+    motion.content = &content;
+    motion.wind = content.scene.wind;
+    motion.settings = content.scene.physics;
+    SkeletonSet set = sharedSkeletons(content);
+    motion.near = reserveNearSkeletons(set, content.models, content.plants, motion.settings.jointBudget);
+    motion.grid = makePlantGrid(content.plants, content.scene.terrain.size, 16.0f);
+    motion.pass = createPhysicsPass(ctx, set);
+    motion.sharedOf = skeletonPerPlant(content);
+    motion.instanceSkeleton = createHostBuffer(ctx, std::max<size_t>(1, motion.sharedOf.size()) * sizeof(uint32_t),
+                                               VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    std::copy(motion.sharedOf.begin(), motion.sharedOf.end(), static_cast<uint32_t*>(motion.instanceSkeleton.mapped));
+    motion.restStates = deviceCopyOf(ctx, set.states, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    motion.restPoses = deviceCopyOf(ctx, set.poses, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    return motion;
+}
+
+void destroyFieldMotion(const GpuContext& ctx, FieldMotion& motion) {
+    destroyPhysicsPass(ctx, motion.pass);
+    for (Buffer* b : {&motion.instanceSkeleton, &motion.restStates, &motion.restPoses}) destroyBuffer(ctx, *b);
+}
+
+void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart,
+                        const glm::vec3& camera, bool realTime) {
+    const double dt = motion.settings.subStep;
+    // Whole sub-steps from time 0, so a time is reached the same way from anywhere.
+    const uint64_t target = subStepsUntil(time, motion.settings);
+    if (restart || target < motion.simulatedStep) {
+        // Back to rest; the copies finish before any later physics reads them.
+        submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+            copyWhole(cmd, motion.restStates, motion.pass.states);
+            copyWhole(cmd, motion.restPoses, motion.pass.poses);
+        });
+        motion.simulatedStep = subStepsUntil(std::max(0.0, time - kSettleSeconds), motion.settings);
+        applyNearChanges(ctx, motion,
+                         releaseAllNearSkeletons(motion.near, motion.sharedOf,
+                                                 static_cast<gpu::Skeleton*>(motion.pass.skeletons.mapped)));
+    }
+    applyNearChanges(ctx, motion,
+                     updateNearSkeletons(motion.near, motion.grid, motion.content->plants, motion.content->models,
+                                         motion.sharedOf, camera, static_cast<gpu::Skeleton*>(motion.pass.skeletons.mapped)));
+    if (realTime && !restart && target - motion.simulatedStep > kMaxFrameGapSubSteps)
+        motion.simulatedStep = target - kMaxFrameGapSubSteps;
+    uint64_t steps = target - motion.simulatedStep;
+    auto uniformsFor = [&](uint32_t count) {
+        return makePhysicsUniforms(motion.wind, motion.settings, float(double(motion.simulatedStep) * dt), float(dt),
+                                   count, motion.pass.skeletonCount, motion.pass.jointCount);
+    };
+    // Catch up in frame-sized chunks, so parents' poses are never older than
+    // kFrameSubSteps steps.
+    while (steps > kFrameSubSteps) {
+        setPhysicsUniforms(motion.pass, uniformsFor(kFrameSubSteps));
+        submitAndWait(ctx, [&](VkCommandBuffer cmd) { recordPhysicsPass(cmd, motion.pass); });
+        motion.simulatedStep += kFrameSubSteps;
+        steps -= kFrameSubSteps;
+    }
+    setPhysicsUniforms(motion.pass, uniformsFor(uint32_t(steps)));
+    motion.frameSubSteps = uint32_t(steps);
+    motion.simulatedStep += steps;
+}
+
+void recordFieldMotion(VkCommandBuffer cmd, const FieldMotion& motion, GpuTimer* timer) {
+    recordPhysicsPass(cmd, motion.pass, timer);
+}
+
+} // namespace pf

@@ -1,0 +1,234 @@
+#include "engine/physics/physics_pass.h"
+
+#include "engine/vk/pipeline.h"
+#include "engine/vk/vk_check.h"
+
+#include "shaders/physics_comp.spv.h"
+#include "shaders/pose_comp.spv.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace pf {
+
+namespace {
+
+// What the passes read: shader reads of storage buffers and of the texel
+// views of shaders/physics_bindings.glsl.
+constexpr VkAccessFlags2 kShaderReads = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+
+// Buffers of zero size are invalid: an empty set still gets one element each.
+template <typename T>
+VkDeviceSize bytesOf(const std::vector<T>& v) {
+    return VkDeviceSize(std::max<size_t>(v.size(), 1)) * sizeof(T);
+}
+
+// Past maxComputeWorkGroupCount[0] groups a dispatch wraps into rows.
+void dispatchJoints(VkCommandBuffer cmd, const PhysicsPass& pass, uint32_t joints) {
+    const uint32_t groups = (joints + PHYSICS_GROUP_SIZE - 1) / PHYSICS_GROUP_SIZE;
+    const uint32_t x = std::min(groups, pass.maxGroupsX);
+    vkCmdDispatch(cmd, x, (groups + x - 1) / x, 1);
+}
+
+// The simulated joints grouped by depth (a counting sort on links.y), and
+// each depth's run of them: what the pose levels dispatch over.
+std::vector<uint32_t> jointsByDepth(const SkeletonSet& set, std::vector<glm::uvec2>& levels) {
+    const size_t n = set.states.size();
+    std::vector<uint32_t> depth(n);
+    levels.clear();
+    for (size_t i = 0; i < n; ++i) {
+        const gpu::Skeleton& skeleton = set.skeletons[set.jointSkeleton[i]];
+        depth[i] = set.params[skeleton.ids.y + (uint32_t(i) - skeleton.ids.w)].links.y;
+        if (depth[i] >= levels.size()) levels.resize(depth[i] + 1, glm::uvec2(0));
+        ++levels[depth[i]].y;
+    }
+    for (size_t d = 1; d < levels.size(); ++d) levels[d].x = levels[d - 1].x + levels[d - 1].y;
+    std::vector<uint32_t> order(n);
+    std::vector<uint32_t> next(levels.size());
+    for (size_t d = 0; d < levels.size(); ++d) next[d] = levels[d].x;
+    for (size_t i = 0; i < n; ++i) order[next[depth[i]]++] = uint32_t(i);
+    return order;
+}
+
+} // namespace
+
+PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
+    PhysicsPass pass;
+    pass.skeletonCount = uint32_t(set.skeletons.size());
+    pass.jointCount = uint32_t(set.states.size());
+    pass.maxGroupsX = ctx.properties.limits.maxComputeWorkGroupCount[0];
+    const std::vector<uint32_t> order = jointsByDepth(set, pass.levels);
+
+    // Every array is read through a texel view; states and poses are also written.
+    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+    const VkBufferUsageFlags uploaded = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    pass.uniforms = createHostBuffer(ctx, sizeof(gpu::PhysicsUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    pass.skeletons = createHostBuffer(ctx, bytesOf(set.skeletons), storage);
+    if (!set.skeletons.empty())
+        std::memcpy(pass.skeletons.mapped, set.skeletons.data(), set.skeletons.size() * sizeof(gpu::Skeleton));
+    std::memset(pass.uniforms.mapped, 0, sizeof(gpu::PhysicsUniforms));
+
+    pass.params = createBuffer(ctx, bytesOf(set.params), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    pass.states = createBuffer(ctx, bytesOf(set.states), uploaded | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                               VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    pass.poses = createBuffer(ctx, bytesOf(set.poses), uploaded | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                              VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    pass.jointSkeleton = createBuffer(ctx, bytesOf(set.jointSkeleton), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    pass.jointOrder = createBuffer(ctx, bytesOf(order), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+
+    // One staging buffer holds the five device-local arrays back to back.
+    struct Upload {
+        const void* data;
+        VkDeviceSize bytes;
+        const Buffer* target;
+    };
+    const Upload uploads[] = {
+        {set.params.data(), set.params.size() * sizeof(gpu::JointParams), &pass.params},
+        {set.states.data(), set.states.size() * sizeof(gpu::JointState), &pass.states},
+        {set.poses.data(), set.poses.size() * sizeof(gpu::JointPose), &pass.poses},
+        {set.jointSkeleton.data(), set.jointSkeleton.size() * sizeof(uint32_t), &pass.jointSkeleton},
+        {order.data(), order.size() * sizeof(uint32_t), &pass.jointOrder}};
+    VkDeviceSize stagingBytes = 0;
+    for (const Upload& u : uploads) stagingBytes += u.bytes;
+    if (stagingBytes > 0) {
+        Buffer staging = createHostBuffer(ctx, stagingBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+            VkDeviceSize offset = 0;
+            for (const Upload& u : uploads) {
+                if (u.bytes == 0) continue;
+                std::memcpy(static_cast<char*>(staging.mapped) + offset, u.data, u.bytes);
+                const VkBufferCopy region{offset, 0, u.bytes};
+                vkCmdCopyBuffer(cmd, staging.buffer, u.target->buffer, 1, &region);
+                offset += u.bytes;
+            }
+            // Waiting for the queue is no memory dependency: the first
+            // physics and pose dispatches read (and overwrite) these.
+            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
+                          kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        });
+        destroyBuffer(ctx, staging);
+    }
+
+    const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
+    pass.views = {createTexelView(ctx, pass.params, uint4, 16),
+                  createTexelView(ctx, pass.skeletons, uint4, 16),
+                  createTexelView(ctx, pass.jointSkeleton, VK_FORMAT_R32_UINT, 4),
+                  createTexelView(ctx, pass.jointOrder, VK_FORMAT_R32_UINT, 4),
+                  createTexelView(ctx, pass.states, uint4, 16),
+                  createTexelView(ctx, pass.poses, uint4, 16)};
+    const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    // Binding order of shaders/physics_bindings.glsl.
+    const ComputeBinding bindings[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, pass.uniforms.buffer},
+                                       {texels, VK_NULL_HANDLE, pass.views[0]},
+                                       {texels, VK_NULL_HANDLE, pass.views[1]},
+                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pass.states.buffer},
+                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pass.poses.buffer},
+                                       {texels, VK_NULL_HANDLE, pass.views[2]},
+                                       {texels, VK_NULL_HANDLE, pass.views[3]},
+                                       {texels, VK_NULL_HANDLE, pass.views[4]},
+                                       {texels, VK_NULL_HANDLE, pass.views[5]}};
+    pass.set = createComputeSet(ctx, bindings);
+    // The set's layout plus the pose level (uvec2 push constants; physics.comp declares none).
+    const VkPushConstantRange levelRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(glm::uvec2)};
+    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layoutInfo.setLayoutCount = 1;
+    layoutInfo.pSetLayouts = &pass.set.setLayout;
+    layoutInfo.pushConstantRangeCount = 1;
+    layoutInfo.pPushConstantRanges = &levelRange;
+    VK_CHECK(vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &pass.layout));
+    pass.physicsPipeline = createComputePipeline(ctx.device, pass.layout, createShaderModule(ctx.device, spirv_physics_comp));
+    pass.posePipeline = createComputePipeline(ctx.device, pass.layout, createShaderModule(ctx.device, spirv_pose_comp));
+    return pass;
+}
+
+void destroyPhysicsPass(const GpuContext& ctx, PhysicsPass& pass) {
+    vkDestroyPipeline(ctx.device, pass.physicsPipeline, nullptr);
+    vkDestroyPipeline(ctx.device, pass.posePipeline, nullptr);
+    vkDestroyPipelineLayout(ctx.device, pass.layout, nullptr);
+    destroyComputeSet(ctx, pass.set);
+    for (VkBufferView view : pass.views) vkDestroyBufferView(ctx.device, view, nullptr);
+    for (Buffer* b : {&pass.uniforms, &pass.params, &pass.skeletons, &pass.states, &pass.poses, &pass.jointSkeleton,
+                      &pass.jointOrder})
+        destroyBuffer(ctx, *b);
+    pass = {};
+}
+
+void setPhysicsUniforms(const PhysicsPass& pass, const gpu::PhysicsUniforms& uniforms) {
+    // The shaders bound their invocations by the counts of the buffers they were given.
+    gpu::PhysicsUniforms u = uniforms;
+    u.counts.x = pass.skeletonCount;
+    u.counts.y = pass.jointCount;
+    std::memcpy(pass.uniforms.mapped, &u, sizeof(u));
+}
+
+void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, GpuTimer* timer) {
+    // The previous frame's vertex shaders may still read the poses the pose
+    // dispatch overwrites (write-after-read: execution only), and the
+    // previous physics and pose dispatches wrote the states and poses read
+    // here (read-after-write: make them visible).
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    if (pass.jointCount == 0) return;
+
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout, 0, 1, &pass.set.descriptorSet, 0,
+                            nullptr);
+    if (timer) beginScope(cmd, *timer, "physics");
+    // The sub-step count is what setPhysicsUniforms wrote for this frame.
+    const uint32_t subSteps = static_cast<const gpu::PhysicsUniforms*>(pass.uniforms.mapped)->counts.z;
+    if (subSteps > 0) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.physicsPipeline);
+        dispatchJoints(cmd, pass, pass.jointCount);
+        // The pose dispatches read the new states, and overwrite the poses
+        // the physics dispatch read (write-after-read, covered by the same
+        // execution dependency).
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    }
+    if (timer) endScope(cmd, *timer);
+
+    if (timer) beginScope(cmd, *timer, "pose");
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.posePipeline);
+    for (size_t d = 0; d < pass.levels.size(); ++d) {
+        if (d > 0) {
+            // This level reads the poses of its parents, which the previous level wrote.
+            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kShaderReads);
+        }
+        const glm::uvec2 level = pass.levels[d]; // never empty: a joint at depth d > 0 has a parent at d − 1
+        vkCmdPushConstants(cmd, pass.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(level), &level);
+        dispatchJoints(cmd, pass, level.y);
+    }
+    if (timer) endScope(cmd, *timer);
+    // The vertex shaders skin plant vertices with the new poses.
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+}
+
+void readPhysicsState(const GpuContext& ctx, const PhysicsPass& pass, std::vector<gpu::JointState>& states,
+                      std::vector<gpu::JointPose>& poses) {
+    states.resize(pass.jointCount);
+    poses.resize(pass.jointCount);
+    if (pass.jointCount == 0) return;
+    const VkDeviceSize stateBytes = VkDeviceSize(pass.jointCount) * sizeof(gpu::JointState);
+    const VkDeviceSize poseBytes = VkDeviceSize(pass.jointCount) * sizeof(gpu::JointPose);
+    Buffer readback = createHostBuffer(ctx, stateBytes + poseBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+        // The last physics and pose dispatches wrote what is copied.
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        const VkBufferCopy stateRegion{0, 0, stateBytes};
+        const VkBufferCopy poseRegion{0, stateBytes, poseBytes};
+        vkCmdCopyBuffer(cmd, pass.states.buffer, readback.buffer, 1, &stateRegion);
+        vkCmdCopyBuffer(cmd, pass.poses.buffer, readback.buffer, 1, &poseRegion);
+        // The host reads the copy after the queue is idle.
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                      VK_ACCESS_2_HOST_READ_BIT);
+    });
+    std::memcpy(states.data(), readback.mapped, stateBytes);
+    std::memcpy(poses.data(), static_cast<const char*>(readback.mapped) + stateBytes, poseBytes);
+    destroyBuffer(ctx, readback);
+}
+
+} // namespace pf

@@ -1,0 +1,33 @@
+#include "engine/scene/camera.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace pf {
+
+glm::vec3 sunDirection(const Environment& env) {
+    const float elevation = glm::radians(env.sunElevationDegrees);
+    const float azimuth = glm::radians(env.sunAzimuthDegrees);
+    return glm::normalize(glm::vec3(std::sin(azimuth) * std::cos(elevation), std::sin(elevation),
+                                    -std::cos(azimuth) * std::cos(elevation)));
+}
+
+gpu::FrameUniforms makeFrameUniforms(const Camera& camera, const Environment& env, glm::uvec2 viewport, float time) {
+    const float aspect = float(viewport.x) / float(viewport.y);
+    const glm::mat4 view = glm::lookAtRH(camera.position, camera.target, glm::vec3(0, 1, 0));
+    const glm::mat4 proj =
+        glm::perspectiveRH_ZO(glm::radians(camera.fovYDegrees), aspect, camera.nearPlane, camera.farPlane);
+
+    gpu::FrameUniforms u{};
+    u.viewProj = proj * view;
+    u.invViewProj = glm::inverse(u.viewProj);
+    u.cameraPosition = glm::vec4(camera.position, time);
+    u.sunDirection = glm::vec4(sunDirection(env), 0.0f);
+    u.sunRadiance = glm::vec4(env.sunRadiance, 0.0f);
+    u.skyZenith = glm::vec4(env.skyZenith, 0.0f);
+    u.skyHorizon = glm::vec4(env.skyHorizon, 0.0f);
+    u.groundAlbedo = glm::vec4(env.groundAlbedo, 0.0f);
+    u.fog = glm::vec4(env.fogDensity, env.groundHalfSize, 0.0f, 0.0f);
+    return u;
+}
+
+} // namespace pf

@@ -1,0 +1,36 @@
+// Camera and sky/sun settings, and the per-frame uniforms built from them.
+#pragma once
+
+#include "shaders/layouts.h"
+
+#include <glm/glm.hpp>
+
+namespace pf {
+
+struct Camera {
+    glm::vec3 position{4.0f, 2.0f, 6.0f};
+    glm::vec3 target{0.0f, 1.5f, 0.0f};
+    float fovYDegrees = 45.0f;
+    float nearPlane = 0.05f;
+    float farPlane = 2000.0f;
+};
+
+struct Environment {
+    float sunElevationDegrees = 38.0f;
+    float sunAzimuthDegrees = 140.0f; // clockwise from -z (north) toward +x
+    glm::vec3 sunRadiance{1.9f, 1.8f, 1.6f};
+    glm::vec3 skyZenith{0.16f, 0.30f, 0.62f};
+    glm::vec3 skyHorizon{0.62f, 0.72f, 0.85f};
+    glm::vec3 groundAlbedo{0.13f, 0.22f, 0.055f};
+    float fogDensity = 0.0025f;    // per metre
+    float groundHalfSize = 400.0f; // metres
+};
+
+// Unit vector toward the sun.
+glm::vec3 sunDirection(const Environment& env);
+
+// Projection for a viewport of `viewport` pixels (width, height) with negative
+// height (y up in clip space) and depth in [0, 1].
+gpu::FrameUniforms makeFrameUniforms(const Camera& camera, const Environment& env, glm::uvec2 viewport, float time);
+
+} // namespace pf

@@ -1,0 +1,110 @@
+#include "engine/scene/field_content.h"
+
+#include <glm/glm.hpp>
+
+#include <numbers>
+
+namespace pf {
+
+Heightfield terrainOf(const Scene& scene) {
+    const Terrain& t = scene.terrain;
+    if (const auto* image = std::get_if<ImageHeightfield>(&t.heightfield))
+        return loadImageTerrain(image->path.string(), t.size, image->heightScale);
+    const auto& noise = std::get<NoiseHeightfield>(t.heightfield);
+    NoiseTerrainSettings settings;
+    settings.resolution = t.resolution;
+    settings.size = t.size;
+    settings.seed = noise.seed.value_or(terrainSeed(scene));
+    settings.octaves = noise.octaves;
+    settings.frequency = noise.frequency;
+    settings.amplitude = noise.amplitude;
+    settings.lacunarity = noise.lacunarity;
+    settings.gain = noise.gain;
+    return makeNoiseTerrain(settings);
+}
+
+namespace {
+
+PlacementRule ruleOf(const Scene& scene, size_t speciesIndex) {
+    const Species& species = scene.species[speciesIndex];
+    const Placement& p = species.placement;
+    PlacementRule rule;
+    rule.species = uint32_t(speciesIndex);
+    switch (p.mode) {
+    case PlacementMode::Density: rule.densityPerHectare = p.densityPerHectare; break;
+    case PlacementMode::Distance: rule.minDistance = p.minDistance; break;
+    case PlacementMode::Count:
+        // The density that would give `count` plants over the whole square;
+        // slope and height limits then remove some.
+        rule.densityPerHectare = float(p.count) * 10000.0f / (scene.terrain.size * scene.terrain.size);
+        break;
+    case PlacementMode::Explicit: break;
+    }
+    rule.clearance = p.clearance;
+    rule.maxSlopeDegrees = p.maxSlopeDegrees;
+    rule.minHeight = p.heightRange.x;
+    rule.maxHeight = p.heightRange.y;
+    rule.minScale = p.scaleRange.x;
+    rule.maxScale = p.scaleRange.y;
+    rule.variants = species.variants;
+    rule.seed = placementSeed(scene, speciesIndex);
+    return rule;
+}
+
+// Listed plants: on the terrain, with a variant and wind phase from their index.
+void appendExplicit(const Scene& scene, const Heightfield& terrain, size_t speciesIndex,
+                    std::vector<PlantInstance>& out) {
+    const Species& species = scene.species[speciesIndex];
+    for (size_t i = 0; i < species.placement.instances.size(); ++i) {
+        const PlacedPlant& placed = species.placement.instances[i];
+        PlantInstance plant;
+        plant.position = {placed.position.x, heightAt(terrain, placed.position.x, placed.position.y), placed.position.y};
+        plant.rotation = glm::radians(placed.rotationDegrees);
+        plant.scale = placed.scale;
+        plant.species = uint32_t(speciesIndex);
+        plant.variant = uint32_t(i % species.variants);
+        plant.windPhase = float(std::fmod(double(i) * 2.399963, 2.0 * std::numbers::pi)); // golden angle
+        out.push_back(plant);
+    }
+}
+
+} // namespace
+
+std::vector<PlacementRule> placementRules(const Scene& scene) {
+    std::vector<PlacementRule> rules;
+    for (size_t i = 0; i < scene.species.size(); ++i)
+        if (scene.species[i].placement.mode != PlacementMode::Explicit) rules.push_back(ruleOf(scene, i));
+    return rules;
+}
+
+std::vector<PlantInstance> placePlants(const Scene& scene, const Heightfield& terrain, std::optional<size_t> count) {
+    const std::vector<PlacementRule> rules = placementRules(scene);
+    const uint64_t seed = placementSeed(scene, 0);
+    std::vector<PlantInstance> generated;
+    if (!rules.empty()) generated = count ? scaleToCount(terrain, rules, *count, seed) : placeSpecies(terrain, rules, seed);
+
+    // Group by species in scene order: generated plants are already grouped
+    // by rule, and rules follow scene order; explicit species slot in.
+    std::vector<PlantInstance> plants;
+    plants.reserve(generated.size());
+    size_t next = 0;
+    for (size_t s = 0; s < scene.species.size(); ++s) {
+        if (scene.species[s].placement.mode == PlacementMode::Explicit) {
+            appendExplicit(scene, terrain, s, plants);
+            continue;
+        }
+        while (next < generated.size() && generated[next].species == s) plants.push_back(generated[next++]);
+    }
+    return plants;
+}
+
+FieldContent buildFieldContent(const Scene& scene, std::optional<size_t> count, const ModelProgress& progress) {
+    FieldContent content;
+    content.scene = scene;
+    content.terrain = terrainOf(scene);
+    content.plants = placePlants(scene, content.terrain, count);
+    content.models = buildPlantModels(scene, progress);
+    return content;
+}
+
+} // namespace pf

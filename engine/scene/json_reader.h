@@ -1,0 +1,86 @@
+// Checked reading of a JSON file for the scene loader (internal to engine/):
+// every value carries its JSON pointer, and every error names the file, the
+// line and column of the value at fault and what was expected.
+#pragma once
+
+#include "engine/scene/scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <initializer_list>
+#include <string_view>
+
+namespace pf {
+
+// The parsed document and the text it came from, for locating values.
+struct JsonSource {
+    std::filesystem::path file;
+    std::string text;
+    nlohmann::json root;
+};
+
+// Throws SceneError when the file cannot be read or is not JSON.
+JsonSource readJsonFile(const std::filesystem::path& file);
+
+// One value of a document and the path of keys and indices leading to it.
+struct JsonNode {
+    const JsonSource* source = nullptr;
+    const nlohmann::json* value = nullptr;
+    std::vector<std::string> path;
+
+    std::string pointer() const; // RFC 6901, e.g. /species/2/density
+};
+
+JsonNode rootNode(const JsonSource& source);
+
+// Where the value (or, with atKey, its key) starts: "file:line:column".
+std::string locationOf(const JsonNode& node, bool atKey = false);
+
+// SceneError("file:line:column: /pointer message").
+[[noreturn]] void failAt(const JsonNode& node, std::string_view message, bool atKey = false);
+
+// Checks that node is an object whose keys are all in known; an unknown key is
+// an error suggesting the closest known one.
+void requireObject(const JsonNode& node, std::initializer_list<std::string_view> known);
+// Checks that node is an object whose keys are names the caller checks itself.
+void requireMap(const JsonNode& node);
+std::optional<JsonNode> member(const JsonNode& object, std::string_view key);
+JsonNode requireMember(const JsonNode& object, std::string_view key, std::string_view expected);
+std::vector<JsonNode> arrayElements(const JsonNode& node, std::string_view expected);
+
+// Allowed numbers: [min, max] with either end open. Values are stored as
+// float, so the widest range is float's.
+struct Range {
+    double min = std::numeric_limits<float>::lowest();
+    double max = std::numeric_limits<float>::max();
+    bool minOpen = false;
+    bool maxOpen = false;
+};
+Range anyNumber();
+Range atLeast(double min);
+Range above(double min);
+Range between(double min, double max);
+
+double readNumber(const JsonNode& node, Range range);
+uint32_t readInteger(const JsonNode& node, Range range);
+std::string readString(const JsonNode& node);
+// An array of exactly N numbers, each in range.
+template <int N>
+glm::vec<N, float> readVector(const JsonNode& node, Range range);
+
+// The same, reading object[key] into out when it is there and leaving out
+// (the default) alone when it is not.
+void readField(const JsonNode& object, std::string_view key, float& out, Range range);
+void readField(const JsonNode& object, std::string_view key, double& out, Range range);
+void readField(const JsonNode& object, std::string_view key, uint32_t& out, Range range);
+void readField(const JsonNode& object, std::string_view key, std::optional<float>& out, Range range);
+void readField(const JsonNode& object, std::string_view key, std::optional<uint32_t>& out, Range range);
+void readField(const JsonNode& object, std::string_view key, glm::vec2& out, Range range);
+void readField(const JsonNode& object, std::string_view key, glm::vec3& out, Range range);
+void readField(const JsonNode& object, std::string_view key, std::string& out);
+
+// "; did you mean \"x\"?" for the known word x closest to word, or empty when
+// none is close enough to be a typo.
+std::string didYouMean(std::string_view word, const std::vector<std::string_view>& known);
+
+} // namespace pf

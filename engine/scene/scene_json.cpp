@@ -1,0 +1,333 @@
+// loadScene: the sections of a scene file (docs/SCENE_FORMAT.md), each read
+// onto its struct's defaults, so a key left out keeps the default.
+#include "engine/scene/json_reader.h"
+#include "engine/scene/scene.h"
+
+#include "lsystem/turtle_builder.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace pf {
+namespace {
+
+const Range kColour = atLeast(0.0); // linear RGB; above 1 is allowed for bright light
+
+std::filesystem::path existingFile(const JsonNode& node, const std::filesystem::path& sceneFolder) {
+    const std::string name = readString(node);
+    if (name.empty()) failAt(node, "must be a file name");
+    const std::filesystem::path path = (sceneFolder / name).lexically_normal();
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error))
+        failAt(node, "names a file that does not exist: " + path.string() + " (paths are relative to the scene file)");
+    return path;
+}
+
+// A [low, high] pair with low ≤ high.
+void readInterval(const JsonNode& object, std::string_view key, glm::vec2& out, Range range) {
+    const std::optional<JsonNode> node = member(object, key);
+    if (!node) return;
+    out = readVector<2>(*node, range);
+    if (out.x > out.y) failAt(*node, "must be [low, high] with low ≤ high");
+}
+
+NoiseHeightfield readNoise(const JsonNode& node) {
+    requireObject(node, {"seed", "octaves", "amplitude", "frequency", "lacunarity", "gain"});
+    NoiseHeightfield noise;
+    readField(node, "seed", noise.seed, anyNumber());
+    readField(node, "octaves", noise.octaves, between(1, 16));
+    readField(node, "amplitude", noise.amplitude, atLeast(0.0));
+    readField(node, "frequency", noise.frequency, above(0.0));
+    readField(node, "lacunarity", noise.lacunarity, atLeast(1.0));
+    readField(node, "gain", noise.gain, between(0.0, 1.0));
+    return noise;
+}
+
+ImageHeightfield readImage(const JsonNode& node, const std::filesystem::path& sceneFolder) {
+    requireObject(node, {"path", "height_scale"});
+    ImageHeightfield image;
+    image.path = existingFile(requireMember(node, "path", "a greyscale PNG file"), sceneFolder);
+    readField(node, "height_scale", image.heightScale, atLeast(0.0));
+    return image;
+}
+
+Terrain readTerrain(const JsonNode& node, const std::filesystem::path& sceneFolder) {
+    requireObject(node, {"size", "resolution", "noise", "image", "albedo"});
+    Terrain terrain;
+    readField(node, "size", terrain.size, above(0.0));
+    readField(node, "resolution", terrain.resolution, between(2, 8193));
+    readField(node, "albedo", terrain.albedo, between(0.0, 1.0));
+    const std::optional<JsonNode> noise = member(node, "noise");
+    const std::optional<JsonNode> image = member(node, "image");
+    if (noise && image)
+        failAt(*image, "cannot be given together with \"noise\": the heightfield is one or the other", true);
+    if (noise) terrain.heightfield = readNoise(*noise);
+    if (image) terrain.heightfield = readImage(*image, sceneFolder);
+    return terrain;
+}
+
+PlacedPlant readPlacedPlant(const JsonNode& node) {
+    requireObject(node, {"position", "rotation", "scale"});
+    PlacedPlant plant;
+    plant.position = readVector<2>(requireMember(node, "position", "[x, z] in metres"), anyNumber());
+    readField(node, "rotation", plant.rotationDegrees, anyNumber());
+    readField(node, "scale", plant.scale, above(0.0));
+    return plant;
+}
+
+// In PlacementMode's order.
+const char* const kPlacementModeKeys[] = {"density", "min_distance", "count", "instances"};
+
+// Reads onto inherited: a species' placement starts from the global one, and
+// its way of counting plants (one of kPlacementModeKeys) replaces the inherited one.
+Placement readPlacement(const JsonNode& node, Placement inherited) {
+    requireObject(node, {"density", "min_distance", "count", "instances", "clearance", "max_slope", "height_range",
+                         "scale", "seed"});
+    Placement placement = std::move(inherited);
+    std::optional<JsonNode> modeNode;
+    for (size_t mode = 0; mode < std::size(kPlacementModeKeys); ++mode) {
+        const std::optional<JsonNode> given = member(node, kPlacementModeKeys[mode]);
+        if (!given) continue;
+        if (modeNode)
+            failAt(*given,
+                   "cannot be given together with \"" + modeNode->path.back() +
+                       "\": density, min_distance, count and instances are alternatives",
+                   true);
+        modeNode = given;
+        placement.mode = PlacementMode(mode);
+        placement.instances.clear(); // only an explicit placement keeps a list
+    }
+    readField(node, "density", placement.densityPerHectare, atLeast(0.0));
+    readField(node, "min_distance", placement.minDistance, above(0.0));
+    readField(node, "count", placement.count, anyNumber());
+    if (const std::optional<JsonNode> instances = member(node, "instances")) {
+        for (const JsonNode& element : arrayElements(*instances, "an array of plants"))
+            placement.instances.push_back(readPlacedPlant(element));
+    }
+    readField(node, "clearance", placement.clearance, atLeast(0.0));
+    readField(node, "max_slope", placement.maxSlopeDegrees, between(0.0, 90.0));
+    readInterval(node, "height_range", placement.heightRange, anyNumber());
+    readInterval(node, "scale", placement.scaleRange, above(0.0));
+    readField(node, "seed", placement.seed, anyNumber());
+    return placement;
+}
+
+const char* const kBillboardNames[] = {"single", "double", "triple"};
+
+LodHints readLod(const JsonNode& node) {
+    requireObject(node, {"billboard", "reduced_below_px", "impostor_below_px", "hidden_below_px"});
+    LodHints lod;
+    if (const std::optional<JsonNode> billboard = member(node, "billboard")) {
+        const std::string name = readString(*billboard);
+        const std::vector<std::string_view> names(std::begin(kBillboardNames), std::end(kBillboardNames));
+        const auto it = std::find(names.begin(), names.end(), name);
+        if (it == names.end())
+            failAt(*billboard,
+                   "must be \"single\", \"double\" or \"triple\" (got \"" + name + "\")" + didYouMean(name, names));
+        lod.billboard = BillboardKind(it - names.begin());
+    }
+    readField(node, "reduced_below_px", lod.reducedBelowPixels, above(0.0));
+    readField(node, "impostor_below_px", lod.impostorBelowPixels, above(0.0));
+    readField(node, "hidden_below_px", lod.hiddenBelowPixels, atLeast(0.0));
+    if (lod.impostorBelowPixels > lod.reducedBelowPixels)
+        failAt(node, "needs impostor_below_px ≤ reduced_below_px (impostors are the farthest level)");
+    if (lod.hiddenBelowPixels > lod.impostorBelowPixels)
+        failAt(node, "needs hidden_below_px ≤ impostor_below_px (hidden plants are farther than impostors)");
+    return lod;
+}
+
+bool isIndex(std::string_view key) {
+    return !key.empty() && key.size() <= 3 &&
+           std::all_of(key.begin(), key.end(), [](char c) { return std::isdigit((unsigned char)c); }) &&
+           std::stoi(std::string(key)) <= 255;
+}
+
+// Keys are palette names ("leaf") or indices ("9"); the palette repeats past 7.
+std::vector<MaterialOverride> readMaterials(const JsonNode& node) {
+    requireMap(node);
+    std::vector<std::string_view> names;
+    for (const lsys::Material& m : lsys::defaultPalette()) names.push_back(m.name);
+    std::vector<MaterialOverride> materials;
+    for (const auto& [key, value] : node.value->items()) {
+        const JsonNode entry = *member(node, key);
+        MaterialOverride material;
+        const auto named = std::find(names.begin(), names.end(), key);
+        if (named != names.end()) {
+            material.index = uint32_t(named - names.begin());
+        } else if (isIndex(key)) {
+            material.index = uint32_t(std::stoi(key));
+        } else {
+            failAt(entry,
+                   "is not a material: use a palette name (bark, leaf, …) or an index 0-255" + didYouMean(key, names),
+                   true);
+        }
+        if (std::any_of(materials.begin(), materials.end(),
+                        [&](const MaterialOverride& m) { return m.index == material.index; }))
+            failAt(entry, "names a material already given", true);
+        material.albedo = readVector<3>(entry, between(0.0, 1.0));
+        materials.push_back(material);
+    }
+    std::sort(materials.begin(), materials.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+    return materials;
+}
+
+bool isConstantName(std::string_view name) {
+    return !name.empty() && !std::isdigit((unsigned char)name[0]) &&
+           std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum((unsigned char)c) || c == '_'; });
+}
+
+std::map<std::string, double> readDefines(const JsonNode& node) {
+    requireMap(node);
+    std::map<std::string, double> defines;
+    for (const auto& [key, value] : node.value->items()) {
+        const JsonNode entry = *member(node, key);
+        if (!isConstantName(key)) failAt(entry, "is not a constant name (letters, digits and _)", true);
+        defines[key] = readNumber(entry, anyNumber());
+    }
+    return defines;
+}
+
+Species readSpecies(const JsonNode& node, const std::filesystem::path& sceneFolder, const Placement& globalPlacement) {
+    requireObject(
+        node, {"name", "lsystem", "defines", "steps", "variants", "seed", "height", "lod", "materials", "placement"});
+    Species species;
+    species.name = readString(requireMember(node, "name", "a name for the species"));
+    if (species.name.empty()) failAt(*member(node, "name"), "must not be empty");
+    species.lsystem = existingFile(requireMember(node, "lsystem", "the L-system file"), sceneFolder);
+    if (auto defines = member(node, "defines")) species.defines = readDefines(*defines);
+    readField(node, "steps", species.steps, between(0, 1000));
+    readField(node, "variants", species.variants, between(1, 1024));
+    readField(node, "seed", species.seed, anyNumber());
+    readField(node, "height", species.height, above(0.0));
+    if (auto lod = member(node, "lod")) species.lod = readLod(*lod);
+    if (auto materials = member(node, "materials")) species.materials = readMaterials(*materials);
+    const std::optional<JsonNode> placement = member(node, "placement");
+    species.placement = placement ? readPlacement(*placement, globalPlacement) : globalPlacement;
+    return species;
+}
+
+Sun readSun(const JsonNode& node) {
+    requireObject(node, {"elevation", "azimuth", "colour", "intensity"});
+    Sun sun;
+    readField(node, "elevation", sun.elevationDegrees, between(-90.0, 90.0));
+    readField(node, "azimuth", sun.azimuthDegrees, anyNumber());
+    readField(node, "colour", sun.colour, kColour);
+    readField(node, "intensity", sun.intensity, atLeast(0.0));
+    return sun;
+}
+
+Sky readSky(const JsonNode& node) {
+    requireObject(node, {"zenith", "horizon"});
+    Sky sky;
+    readField(node, "zenith", sky.zenith, kColour);
+    readField(node, "horizon", sky.horizon, kColour);
+    return sky;
+}
+
+Fog readFog(const JsonNode& node) {
+    requireObject(node, {"density"});
+    Fog fog;
+    readField(node, "density", fog.density, atLeast(0.0));
+    return fog;
+}
+
+Wind readWind(const JsonNode& node) {
+    requireObject(node, {"speed", "direction", "gust_strength", "gust_speed", "turbulence"});
+    Wind wind;
+    readField(node, "speed", wind.speed, atLeast(0.0));
+    readField(node, "direction", wind.directionDegrees, anyNumber());
+    readField(node, "gust_strength", wind.gustStrength, atLeast(0.0));
+    readField(node, "gust_speed", wind.gustSpeed, atLeast(0.0));
+    readField(node, "turbulence", wind.turbulence, between(0.0, 1.0));
+    return wind;
+}
+
+PhysicsSettings readPhysics(const JsonNode& node) {
+    requireObject(node, {"wood_density", "youngs_modulus", "stiffness_scale", "damping_ratio", "gravity", "air_density",
+                         "drag_coefficient", "leaf_drag", "sub_step", "joint_budget", "shared_phases"});
+    PhysicsSettings physics;
+    readField(node, "wood_density", physics.woodDensity, above(0.0));
+    readField(node, "youngs_modulus", physics.youngsModulus, above(0.0));
+    readField(node, "stiffness_scale", physics.stiffnessScale, above(0.0));
+    readField(node, "damping_ratio", physics.dampingRatio, between(0.0, 10.0));
+    readField(node, "gravity", physics.gravity, atLeast(0.0));
+    readField(node, "air_density", physics.airDensity, atLeast(0.0));
+    readField(node, "drag_coefficient", physics.dragCoefficient, atLeast(0.0));
+    readField(node, "leaf_drag", physics.leafDrag, atLeast(0.0));
+    // Above 1/30 s a frame would need less than one step; below 1/10000 s a frame costs hundreds.
+    readField(node, "sub_step", physics.subStep, between(1.0 / 10000.0, 1.0 / 30.0));
+    readField(node, "joint_budget", physics.jointBudget, between(0.0, double(kMaxJointBudget)));
+    readField(node, "shared_phases", physics.sharedPhases, between(1, 64));
+    return physics;
+}
+
+const Range kFov = {.min = 0.0, .max = 180.0, .minOpen = true, .maxOpen = true};
+
+CameraKeyframe readKeyframe(const JsonNode& node) {
+    requireObject(node, {"time", "position", "target", "fov"});
+    CameraKeyframe key;
+    key.time = readNumber(requireMember(node, "time", "seconds"), anyNumber());
+    key.position = readVector<3>(requireMember(node, "position", "[x, y, z] in metres"), anyNumber());
+    key.target = readVector<3>(requireMember(node, "target", "[x, y, z] in metres"), anyNumber());
+    readField(node, "fov", key.fovYDegrees, kFov);
+    if (key.position == key.target) failAt(*member(node, "target"), "must differ from position");
+    return key;
+}
+
+CameraPath readCamera(const JsonNode& node) {
+    requireObject(node, {"fov", "near", "far", "keyframes"});
+    CameraPath camera;
+    readField(node, "fov", camera.fovYDegrees, kFov);
+    readField(node, "near", camera.nearPlane, above(0.0));
+    readField(node, "far", camera.farPlane, above(camera.nearPlane));
+    if (const std::optional<JsonNode> keyframes = member(node, "keyframes")) {
+        for (const JsonNode& element : arrayElements(*keyframes, "an array of keyframes")) {
+            CameraKeyframe key = readKeyframe(element);
+            if (!camera.keyframes.empty() && key.time <= camera.keyframes.back().time)
+                failAt(*member(element, "time"), "must be later than the previous keyframe's time");
+            camera.keyframes.push_back(key);
+        }
+    }
+    return camera;
+}
+
+void requireUniqueNames(const std::vector<Species>& species, const std::vector<JsonNode>& elements) {
+    for (size_t i = 0; i < species.size(); ++i)
+        for (size_t j = 0; j < i; ++j)
+            if (species[i].name == species[j].name)
+                failAt(*member(elements[i], "name"), "repeats the name of /species/" + std::to_string(j));
+}
+
+} // namespace
+
+Scene loadScene(const std::filesystem::path& file) {
+    const JsonSource source = readJsonFile(file);
+    const JsonNode root = rootNode(source);
+    requireObject(root,
+                  {"description", "seed", "terrain", "species", "placement", "sun", "sky", "fog", "wind", "physics", "camera"});
+    const std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
+
+    Scene scene;
+    scene.file = file;
+    readField(root, "description", scene.description);
+    readField(root, "seed", scene.seed, anyNumber());
+    if (auto terrain = member(root, "terrain")) scene.terrain = readTerrain(*terrain, folder);
+
+    const std::optional<JsonNode> globalNode = member(root, "placement");
+    const Placement globalPlacement = globalNode ? readPlacement(*globalNode, {}) : Placement{};
+    const JsonNode list = requireMember(root, "species", "an array of plant species");
+    const std::vector<JsonNode> elements = arrayElements(list, "an array of plant species");
+    for (const JsonNode& element : elements) scene.species.push_back(readSpecies(element, folder, globalPlacement));
+    if (scene.species.empty()) failAt(list, "must list at least one species");
+    requireUniqueNames(scene.species, elements);
+
+    if (auto sun = member(root, "sun")) scene.sun = readSun(*sun);
+    if (auto sky = member(root, "sky")) scene.sky = readSky(*sky);
+    if (auto fog = member(root, "fog")) scene.fog = readFog(*fog);
+    if (auto wind = member(root, "wind")) scene.wind = readWind(*wind);
+    if (auto physics = member(root, "physics")) scene.physics = readPhysics(*physics);
+    if (auto camera = member(root, "camera")) scene.camera = readCamera(*camera);
+    return scene;
+}
+
+} // namespace pf

@@ -1,0 +1,209 @@
+// Species meshes of the field (engine/scene/plant_models.h): the default scene's
+// pool is well formed, LOD1 is lighter, bounds and heights hold, builds are
+// deterministic, and broken L-systems fail with their position.
+#include "engine/scene/plant_models.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+
+namespace {
+
+const std::filesystem::path kData = PLANTFIELD_DATA_DIR;
+const std::filesystem::path kOutput = PLANTFIELD_TEST_OUTPUT_DIR;
+
+// Built once: every test below reads the same default pool.
+const pf::Scene& defaultScene() {
+    static const pf::Scene scene = pf::loadScene(kData / "scenes" / "default.json");
+    return scene;
+}
+
+const pf::PlantModelPool& defaultPool() {
+    static const pf::PlantModelPool pool = pf::buildPlantModels(defaultScene());
+    return pool;
+}
+
+// Species that the default forest draws as trees (checked for LOD1 ≤ 40 %).
+bool isTree(const pf::Species& species) { return species.height && *species.height >= 5.0f; }
+
+template <typename F>
+void forEachMesh(const pf::PlantModelInfo& model, F f) {
+    for (uint32_t lod = 0; lod < pf::kMeshLodCount; ++lod)
+        for (uint32_t drawClass = 0; drawClass < pf::kMeshClassCount; ++drawClass) f(lod, drawClass, model.meshes[lod][drawClass]);
+}
+
+// Vertices a mesh's indices may reach: up to the next mesh's first vertex.
+uint32_t verticesOf(const pf::PlantModelPool& pool, const pf::MeshRange& range) {
+    uint32_t end = uint32_t(pool.vertices.size());
+    for (const pf::PlantModelInfo& model : pool.models)
+        forEachMesh(model, [&](uint32_t, uint32_t, const pf::MeshRange& other) {
+            if (other.vertexOffset > range.vertexOffset) end = std::min(end, other.vertexOffset);
+        });
+    return end - range.vertexOffset;
+}
+
+std::filesystem::path writePlant(const std::string& name, const std::string& text) {
+    std::filesystem::create_directories(kOutput);
+    const std::filesystem::path path = kOutput / name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+pf::Scene sceneOf(const std::filesystem::path& lsystem, uint32_t variants) {
+    pf::Scene scene;
+    pf::Species species;
+    species.name = "probe";
+    species.lsystem = lsystem;
+    species.variants = variants;
+    scene.species.push_back(species);
+    return scene;
+}
+
+TEST(PlantModels, DefaultSceneHasEverySpeciesAndVariant) {
+    const pf::Scene& scene = defaultScene();
+    const pf::PlantModelPool& pool = defaultPool();
+    ASSERT_GE(scene.species.size(), 4u);
+    ASSERT_EQ(pool.firstModel.size(), scene.species.size());
+    for (uint32_t s = 0; s < scene.species.size(); ++s)
+        for (uint32_t v = 0; v < scene.species[s].variants; ++v) {
+            const pf::PlantModelInfo& model = pool.models.at(pool.modelOf(s, v));
+            EXPECT_EQ(model.species, s);
+            EXPECT_EQ(model.variant, v);
+            EXPECT_EQ(model.name, scene.species[s].name + "#" + std::to_string(v));
+            EXPECT_GT(model.triangles(LOD_FULL), 0u) << model.name;
+            EXPECT_GT(model.joints, 0u) << model.name;
+            EXPECT_EQ(model.gpu.lod.x, scene.species[s].lod.reducedBelowPixels);
+            EXPECT_EQ(model.gpu.lod.y, scene.species[s].lod.impostorBelowPixels);
+        }
+}
+
+TEST(PlantModels, RangesAndIndicesLieInsideThePool) {
+    const pf::PlantModelPool& pool = defaultPool();
+    for (const pf::PlantModelInfo& model : pool.models)
+        forEachMesh(model, [&](uint32_t lod, uint32_t drawClass, const pf::MeshRange& range) {
+            ASSERT_LE(uint64_t(range.firstIndex) + range.indexCount, pool.indices.size()) << model.name;
+            ASSERT_EQ(range.indexCount % 3, 0u);
+            if (range.indexCount == 0) return;
+            const uint32_t vertices = verticesOf(pool, range);
+            ASSERT_LE(uint64_t(range.vertexOffset) + vertices, pool.vertices.size());
+            for (uint32_t i = 0; i < range.indexCount; ++i)
+                ASSERT_LT(pool.indices[range.firstIndex + i], vertices) << model.name << " lod " << lod << " class " << drawClass;
+            for (uint32_t i = 0; i < vertices; ++i) {
+                const gpu::FieldVertex& v = pool.vertices[range.vertexOffset + i];
+                ASSERT_LT(v.joint.x, model.joints) << model.name;
+                ASSERT_NEAR(glm::length(glm::vec3(v.normal)), 1.0f, 1e-3f) << model.name;
+                const float kind = v.albedo.w;
+                if (drawClass == DRAW_BARK) ASSERT_EQ(kind, SURFACE_BARK);
+                else ASSERT_TRUE(kind == SURFACE_LEAF || kind == SURFACE_BLADE);
+                if (kind == SURFACE_LEAF) {
+                    ASSERT_GE(v.position.w, 0.0f);
+                    ASSERT_LE(v.position.w, 1.0f);
+                    ASSERT_GE(v.normal.w, 0.0f);
+                    ASSERT_LE(v.normal.w, 1.0f);
+                }
+            }
+        });
+}
+
+TEST(PlantModels, ReducedLodIsLighterAndTreesAreAtMostFortyPercent) {
+    const pf::Scene& scene = defaultScene();
+    const pf::PlantModelPool& pool = defaultPool();
+    for (const pf::PlantModelInfo& model : pool.models) {
+        const uint32_t full = model.triangles(LOD_FULL), reduced = model.triangles(LOD_REDUCED);
+        std::cout << model.name << ": LOD0 " << full << " triangles, LOD1 " << reduced << '\n';
+        EXPECT_GT(reduced, 0u) << model.name;
+        EXPECT_LT(reduced, full) << model.name;
+        if (isTree(scene.species[model.species])) {
+            EXPECT_LE(reduced * 10, full * 4) << model.name;
+        }
+    }
+}
+
+TEST(PlantModels, LeafySpeciesHaveFoliageAtBothLods) {
+    const pf::PlantModelPool& pool = defaultPool();
+    for (const pf::PlantModelInfo& model : pool.models) {
+        EXPECT_GT(model.meshes[LOD_FULL][DRAW_FOLIAGE].indexCount, 0u) << model.name;
+        EXPECT_GT(model.meshes[LOD_REDUCED][DRAW_FOLIAGE].indexCount, 0u) << model.name;
+    }
+}
+
+TEST(PlantModels, BoundsContainEveryVertex) {
+    const pf::PlantModelPool& pool = defaultPool();
+    for (const pf::PlantModelInfo& model : pool.models) {
+        const glm::vec3 centre(model.gpu.sphere), lo(model.gpu.boxMin), hi(model.gpu.boxMax);
+        forEachMesh(model, [&](uint32_t, uint32_t, const pf::MeshRange& range) {
+            for (uint32_t i = 0; i < range.indexCount; ++i) {
+                const glm::vec3 p(pool.vertices[range.vertexOffset + pool.indices[range.firstIndex + i]].position);
+                ASSERT_TRUE(glm::all(glm::greaterThanEqual(p, lo)) && glm::all(glm::lessThanEqual(p, hi))) << model.name;
+                ASSERT_LE(glm::distance(p, centre), model.gpu.sphere.w * 1.0001f) << model.name;
+            }
+        });
+    }
+}
+
+TEST(PlantModels, ScaledHeightMatchesTheSpecies) {
+    const pf::Scene& scene = defaultScene();
+    const pf::PlantModelPool& pool = defaultPool();
+    for (const pf::PlantModelInfo& model : pool.models) {
+        const std::optional<float> height = scene.species[model.species].height;
+        if (!height) continue;
+        float top = 0.0f;
+        for (uint32_t drawClass = 0; drawClass < pf::kMeshClassCount; ++drawClass) {
+            const pf::MeshRange& range = model.meshes[LOD_FULL][drawClass];
+            for (uint32_t i = 0; i < range.indexCount; ++i)
+                top = std::max(top, pool.vertices[range.vertexOffset + pool.indices[range.firstIndex + i]].position.y);
+        }
+        EXPECT_NEAR(top, *height, 0.01f * *height) << model.name;
+    }
+}
+
+TEST(PlantModels, SameSceneGivesTheSamePoolBitForBit) {
+    const pf::PlantModelPool& first = defaultPool();
+    const pf::PlantModelPool second = pf::buildPlantModels(defaultScene());
+    ASSERT_EQ(first.vertices.size(), second.vertices.size());
+    ASSERT_EQ(first.indices, second.indices);
+    EXPECT_EQ(std::memcmp(first.vertices.data(), second.vertices.data(), first.vertices.size() * sizeof(gpu::FieldVertex)), 0);
+    ASSERT_EQ(first.models.size(), second.models.size());
+    for (size_t m = 0; m < first.models.size(); ++m) {
+        EXPECT_EQ(first.models[m].meshes, second.models[m].meshes);
+        EXPECT_EQ(std::memcmp(&first.models[m].gpu, &second.models[m].gpu, sizeof(gpu::PlantModel)), 0);
+    }
+}
+
+TEST(PlantModels, SyntaxErrorNamesSpeciesFileLineAndColumn) {
+    const std::filesystem::path path = writePlant("broken.lsys", "derivation length: 2\nAxiom: A\nA --> F(1,\n");
+    try {
+        pf::buildPlantModels(sceneOf(path, 1));
+        FAIL() << "a broken L-system built";
+    } catch (const std::runtime_error& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("probe"), std::string::npos) << message;
+        EXPECT_NE(message.find(path.string() + ":3:"), std::string::npos) << message;
+    }
+}
+
+TEST(PlantModels, DerivationOverTheModuleBudgetFails) {
+    const std::filesystem::path path = writePlant("explosive.lsys", "derivation length: 40\nAxiom: F\nF --> FF\n");
+    EXPECT_THROW(pf::buildPlantModels(sceneOf(path, 1)), std::runtime_error);
+}
+
+TEST(PlantModels, StochasticVariantsAreDistinctMeshes) {
+    const pf::PlantModelPool pool = pf::buildPlantModels(sceneOf(kData / "plants" / "stochastic_bush.lsys", 3));
+    ASSERT_EQ(pool.models.size(), 3u);
+    std::set<std::vector<float>> meshes;
+    for (const pf::PlantModelInfo& model : pool.models) {
+        const pf::MeshRange& range = model.meshes[LOD_FULL][DRAW_BARK];
+        const uint32_t vertices = verticesOf(pool, range);
+        std::vector<float> positions;
+        for (uint32_t i = 0; i < vertices; ++i)
+            for (int k = 0; k < 3; ++k) positions.push_back(pool.vertices[range.vertexOffset + i].position[k]);
+        meshes.insert(positions);
+    }
+    EXPECT_EQ(meshes.size(), 3u);
+}
+
+} // namespace
