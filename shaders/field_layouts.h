@@ -15,10 +15,15 @@ using uint = uint32_t;
 #endif
 
 // Levels of detail: full geometry, reduced geometry, billboard impostor.
+// The mesh LODs come first; the impostor is the last (and LOD_IMPOSTOR is the
+// number of mesh LODs).
 #define LOD_FULL 0
 #define LOD_REDUCED 1
 #define LOD_IMPOSTOR 2
 #define LOD_COUNT 3
+// PlantModel::lists: component l < LOD_COUNT is the first visible-list entry
+// of LOD l, this one the model's instance count (every list's capacity).
+#define PLANT_MODEL_LIST_CAPACITY LOD_COUNT
 
 // Draw classes: each has its own pipeline and its own indirect command list.
 #define DRAW_BARK 0     // opaque, back faces culled
@@ -40,9 +45,11 @@ using uint = uint32_t;
 #define VISIBLE_COVERAGE_MAX 127u
 #define FIELD_MAX_INSTANCES (1u << VISIBLE_INDEX_BITS)
 
-// Per-instance LOD state (FieldInstanceState::x): current LOD in bits 0-1,
-// the LOD it fades from in bits 2-3, fade progress 0..255 in bits 8-15
-// (255: settled, nothing to fade).
+// Per-instance LOD state: current LOD in bits 0-1, the LOD it fades from in
+// bits 2-3, fade progress 0..255 in bits 8-15 (255: settled, nothing to fade).
+#define LOD_STATE_LOD_BITS 2u
+#define LOD_STATE_LOD_MASK 3u
+#define LOD_STATE_PROGRESS_SHIFT 8u
 #define LOD_STATE_SETTLED 255u
 
 #define CULL_GROUP_SIZE 64
@@ -90,7 +97,7 @@ struct PlantModel {
     vec4 boxMin;       // plant-space bounds, w 0
     vec4 boxMax;       // w: not drawn at all below this many pixels of projected height (0: always drawn)
     vec4 lod;          // x: LOD0→1 below this many pixels of projected height, y: LOD1→2 below, z: hysteresis fraction, w: fade seconds
-    uvec4 lists;       // x, y, z: first visible-list entry of LOD 0, 1, 2; w: instances of this model (each list's capacity)
+    uvec4 lists;       // first visible-list entry of each LOD, then the capacity (PLANT_MODEL_LIST_CAPACITY)
     uvec4 impostor;    // x: first atlas layer, y: frames around the plant, z: quads per billboard (1, 2, 3), w: 0
     vec4 impostorQuad; // x: half width (m), y: bottom, z: top (plant space), w: half depth of the baked box
 };
@@ -141,6 +148,8 @@ struct FieldFrame {
 
 #ifdef __cplusplus
 } // namespace gpu
+static_assert(LOD_COUNT <= 3, "PlantModel::lists holds one first entry per LOD and the capacity in a uvec4");
+static_assert(LOD_COUNT <= (1u << LOD_STATE_LOD_BITS) && LOD_STATE_LOD_MASK == (1u << LOD_STATE_LOD_BITS) - 1u);
 static_assert(sizeof(gpu::FieldInstance) == 48);
 static_assert(sizeof(gpu::PlantModel) == 7 * 16);
 static_assert(sizeof(gpu::FieldVertex) == 64);

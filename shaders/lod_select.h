@@ -28,11 +28,11 @@ using glm::sin;
 #define LOD_NOT_FORCED 0xFFFFFFFFu
 
 // The state word: current LOD, the LOD it fades from, fade progress.
-LOD_SELECT_FN uint lodStateCurrent(uint state) { return state & 3u; }
-LOD_SELECT_FN uint lodStateFrom(uint state) { return (state >> 2u) & 3u; }
-LOD_SELECT_FN uint lodStateProgress(uint state) { return (state >> 8u) & 255u; }
+LOD_SELECT_FN uint lodStateCurrent(uint state) { return state & LOD_STATE_LOD_MASK; }
+LOD_SELECT_FN uint lodStateFrom(uint state) { return (state >> LOD_STATE_LOD_BITS) & LOD_STATE_LOD_MASK; }
+LOD_SELECT_FN uint lodStateProgress(uint state) { return (state >> LOD_STATE_PROGRESS_SHIFT) & 255u; }
 LOD_SELECT_FN uint lodStatePack(uint current, uint from, uint progress) {
-    return current | (from << 2u) | (progress << 8u);
+    return current | (from << LOD_STATE_LOD_BITS) | (progress << LOD_STATE_PROGRESS_SHIFT);
 }
 
 // World-space bounding sphere of an instance: xyz centre, w radius. The yaw

@@ -50,7 +50,8 @@ void assignVisibleLists(std::span<gpu::PlantModel> models, std::span<const gpu::
     const uint32_t total = uint32_t(instances.size());
     uint32_t first = 0;
     for (size_t m = 0; m < models.size(); ++m) {
-        models[m].lists = glm::uvec4(first, total + first, 2 * total + first, perModel[m]);
+        for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) models[m].lists[lod] = lod * total + first;
+        models[m].lists[PLANT_MODEL_LIST_CAPACITY] = perModel[m];
         first += perModel[m];
     }
 }

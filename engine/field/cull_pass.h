@@ -28,8 +28,10 @@ std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProj);
 // The visible-list layout the cull pass appends into: for each LOD l, for
 // each model m in order, a region of (instances of m) entries, so
 // lists[l] = l · instanceCount + (instances of models before m) and
-// lists.w = instances of m. Fills lists of every model from the instances'
-// ids.x; the visible buffer then holds LOD_COUNT · instanceCount entries.
+// lists[PLANT_MODEL_LIST_CAPACITY] = instances of m, and no list can
+// overflow. Fills lists of every model from the instances' ids.x; the
+// visible buffer then holds LOD_COUNT · instanceCount entries. Throws when
+// an instance names a model that does not exist.
 void assignVisibleLists(std::span<gpu::PlantModel> models, std::span<const gpu::FieldInstance> instances);
 
 struct CullPassInputs {
@@ -49,7 +51,7 @@ struct CullPass {
     Buffer templates;    // DrawTemplate[]
     Buffer state;        // uint per instance: LOD state (field_layouts.h)
     Buffer counts;       // uint per (model, LOD)
-    Buffer visible;      // uint entries: LOD lists of every model (3 × instanceCount)
+    Buffer visible;      // uint entries: LOD lists of every model (LOD_COUNT × instanceCount)
     Buffer commands;     // DrawCommand[DRAW_CLASS_COUNT × templateCount], class c's region starts at c × templateCount
     Buffer drawCounts;   // uint[DRAW_CLASS_COUNT]
     Buffer allCommands;  // DrawCommand[templateCount] in template order (fallback path)

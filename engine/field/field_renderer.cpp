@@ -132,30 +132,21 @@ void FieldRenderer::uploadGeometry() {
     terrainIndexCount_ = uint32_t(mesh.indices.size());
 }
 
-// Instances, the models with their visible-list regions, and the draw
-// templates of the cull pass. List layout: for each LOD l, for each model m
-// a region as long as m has plants, so no list can overflow.
+// Instances, the models with their visible-list regions (assignVisibleLists),
+// and the draw templates of the cull pass.
 void FieldRenderer::uploadInstances() {
     PlantModelPool& pool = content_.models;
     const uint32_t plantCount = uint32_t(content_.plants.size());
     std::vector<gpu::FieldInstance> instances(plantCount);
-    std::vector<uint32_t> perModel(pool.models.size(), 0);
     for (uint32_t i = 0; i < plantCount; ++i) {
         const PlantInstance& p = content_.plants[i];
-        const uint32_t model = pool.modelOf(p.species, p.variant);
         instances[i] = {glm::vec4(p.position, p.scale), glm::vec4(p.rotation, p.windPhase, 0.0f, 0.0f),
-                        glm::uvec4(model, p.species, p.variant, 0u)};
-        ++perModel[model];
-    }
-    uint32_t prefix = 0;
-    for (size_t m = 0; m < pool.models.size(); ++m) {
-        gpu::PlantModel& model = pool.models[m].gpu;
-        for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) model.lists[lod] = lod * plantCount + prefix;
-        model.lists.w = perModel[m];
-        prefix += perModel[m];
+                        glm::uvec4(pool.modelOf(p.species, p.variant), p.species, p.variant, 0u)};
     }
     std::vector<gpu::PlantModel> models;
     for (const PlantModelInfo& info : pool.models) models.push_back(info.gpu);
+    assignVisibleLists(models, instances);
+    for (size_t m = 0; m < pool.models.size(); ++m) pool.models[m].gpu.lists = models[m].lists;
     models_ = uploadVector(ctx_, models, kStorageAndTexels);
     instances_ = uploadVector(ctx_, instances, kStorageAndTexels);
 
@@ -166,7 +157,8 @@ void FieldRenderer::uploadInstances() {
     // Templates sorted by class: bark and foliage meshes of LOD0 and LOD1, then impostors.
     std::vector<gpu::DrawTemplate> templates;
     auto add = [&](const MeshRange& mesh, uint32_t drawClass, uint32_t model, uint32_t lod) {
-        if (mesh.indexCount == 0 || perModel[model] == 0) return;
+        const uint32_t plantsOfModel = models[model].lists[PLANT_MODEL_LIST_CAPACITY];
+        if (mesh.indexCount == 0 || plantsOfModel == 0) return;
         templates.push_back({glm::uvec4(mesh.indexCount, mesh.firstIndex, mesh.vertexOffset, drawClass),
                              glm::uvec4(model * LOD_COUNT + lod, pool.models[model].gpu.lists[lod], 0u, 0u)});
     };
@@ -446,6 +438,21 @@ void FieldRenderer::drawPlantsNaive(VkCommandBuffer cmd, bool bark, bool foliage
                 vkCmdDrawIndexed(cmd, mesh.indexCount, 1, mesh.firstIndex, int32_t(mesh.vertexOffset), i);
         }
     }
+}
+
+uint32_t FieldFrameStats::visibleEntries() const {
+    uint32_t entries = 0;
+    for (uint32_t plants : plantsPerLod) entries += plants;
+    return entries;
+}
+
+uint32_t FieldFrameStats::culled() const { return instances > visibleEntries() ? instances - visibleEntries() : 0; }
+
+std::string plantsPerLodText(const FieldFrameStats& stats) {
+    std::string text;
+    for (uint32_t lod = 0; lod < LOD_COUNT; ++lod)
+        text += (lod ? "  " : "") + std::string(kLodNames[lod]) + " " + std::to_string(stats.plantsPerLod[lod]);
+    return text;
 }
 
 FieldFrameStats FieldRenderer::readStats() const {

@@ -15,8 +15,9 @@
 #include "engine/field/shadow_map.h"
 
 #include <array>
-#include <string_view>
 #include <optional>
+#include <string>
+#include <string_view>
 
 namespace pf {
 
@@ -40,13 +41,25 @@ struct FieldView {
     bool realTime = false;   // a window: physics skips what it cannot catch up (field_motion.h)
 };
 
+// Names of the LODs and draw classes in statistics, reports and the overlay.
+inline constexpr std::array<const char*, LOD_COUNT> kLodNames = {"full", "reduced", "impostor"};
+inline constexpr std::array<const char*, DRAW_CLASS_COUNT> kDrawClassNames = {"bark", "foliage", "impostor"};
+
 // What the last recorded frame drew, from the cull pass's counters.
 struct FieldFrameStats {
     uint32_t instances = 0;
     std::array<uint32_t, LOD_COUNT> plantsPerLod{}; // fading plants count at both LODs
     std::array<uint32_t, DRAW_CLASS_COUNT> draws{};   // indirect commands per class
     uint64_t triangles = 0;                           // colour pass, plants only
+
+    // Entries of every visible list: a fading plant counts twice.
+    uint32_t visibleEntries() const;
+    // Plants in no list: neither in view nor large enough to draw.
+    uint32_t culled() const;
 };
+
+// "full 3  reduced 40  impostor 900": plants per LOD, for logs and the overlay.
+std::string plantsPerLodText(const FieldFrameStats& stats);
 
 // GPU timer scope names, in recording order. "colour" is the whole colour
 // pass and the three after it are nested inside it.

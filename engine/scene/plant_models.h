@@ -24,8 +24,8 @@ struct MeshRange {
     bool operator==(const MeshRange&) const = default;
 };
 
-// Mesh LODs that have geometry: LOD_FULL and LOD_REDUCED (the impostor is baked later).
-inline constexpr uint32_t kMeshLodCount = 2;
+// Mesh LODs that have geometry: those before LOD_IMPOSTOR (the impostor is baked later).
+inline constexpr uint32_t kMeshLodCount = LOD_IMPOSTOR;
 // Draw classes that have geometry: DRAW_BARK and DRAW_FOLIAGE.
 inline constexpr uint32_t kMeshClassCount = 2;
 

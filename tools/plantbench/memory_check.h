@@ -19,7 +19,7 @@ struct HeapCapacity {
 };
 
 // Bytes a field of `count` plants needs on the GPU, about: per plant the
-// instance (48 B), a visible-list entry per LOD (3 × 4 B), the LOD state
+// instance (48 B), a visible-list entry per LOD (LOD_COUNT × 4 B), the LOD state
 // (4 B) and the naive list entry (4 B); the model pool's vertices and
 // indices when known; the render target, its capture buffer and the shadow map.
 uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_t width, uint32_t height,

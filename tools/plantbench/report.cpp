@@ -21,13 +21,6 @@ std::optional<double> naiveRatio(const CountResult& r) {
 
 namespace {
 
-const char* const kLodNames[LOD_COUNT] = {"full", "reduced", "impostor"};
-const char* const kDrawClassNames[DRAW_CLASS_COUNT] = {"bark", "foliage", "impostor"};
-
-uint32_t drawnEntries(const FieldFrameStats& s) { return s.plantsPerLod[0] + s.plantsPerLod[1] + s.plantsPerLod[2]; }
-// A fading plant is in two lists; culled counts the plants in none.
-uint32_t culled(const FieldFrameStats& s) { return s.instances > drawnEntries(s) ? s.instances - drawnEntries(s) : 0; }
-
 std::string fixed(double value, int decimals) {
     char text[32];
     std::snprintf(text, sizeof(text), "%.*f", decimals, value);
@@ -64,7 +57,7 @@ nlohmann::json countJson(const CountResult& r) {
     j["gpu_ms"] = gpuJson(r.driven);
     j["plants_per_lod"] = nlohmann::json::object();
     for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) j["plants_per_lod"][kLodNames[lod]] = r.stats.plantsPerLod[lod];
-    j["culled"] = culled(r.stats);
+    j["culled"] = r.stats.culled();
     j["triangles"] = r.stats.triangles;
     j["joints_simulated"] = r.jointsSimulated;
     j["draws"] = nlohmann::json::object();
@@ -157,7 +150,7 @@ std::string sweepCsv(const SweepResult& result) {
         for (const std::optional<Spread>& pass : r.driven.gpuMs)
             csv << "," << ms(medianOf(pass)) << "," << ms(p95Of(pass));
         for (uint32_t plants : r.stats.plantsPerLod) csv << "," << plants;
-        csv << "," << culled(r.stats) << "," << r.stats.triangles << "," << r.jointsSimulated;
+        csv << "," << r.stats.culled() << "," << r.stats.triangles << "," << r.jointsSimulated;
         for (uint32_t draws : r.stats.draws) csv << "," << draws;
         csv << "," << r.gpuMemoryBytes;
         if (r.naive)

@@ -21,7 +21,6 @@ namespace {
 nlohmann::json statsJson(const PlantfieldOptions& o, const GpuContext& ctx, const FieldRenderer& renderer,
                          const FieldFrameStats& stats, const std::vector<ScopeTime>& gpu, double time,
                          double wallMs) {
-    const uint32_t drawn = stats.plantsPerLod[0] + stats.plantsPerLod[1] + stats.plantsPerLod[2];
     nlohmann::json j;
     j["scene"] = o.scenePath;
     j["device"] = ctx.properties.deviceName;
@@ -29,15 +28,10 @@ nlohmann::json statsJson(const PlantfieldOptions& o, const GpuContext& ctx, cons
     j["time"] = time;
     j["instances"] = stats.instances;
     j["models"] = renderer.content().models.models.size();
-    j["plants_per_lod"] = {{"full", stats.plantsPerLod[LOD_FULL]},
-                           {"reduced", stats.plantsPerLod[LOD_REDUCED]},
-                           {"impostor", stats.plantsPerLod[LOD_IMPOSTOR]}};
-    // A fading plant is in two lists; the culled count is of plants in none.
-    j["visible_entries"] = drawn;
-    j["culled"] = stats.instances > drawn ? stats.instances - drawn : 0;
-    j["draws"] = {{"bark", stats.draws[DRAW_BARK]},
-                  {"foliage", stats.draws[DRAW_FOLIAGE]},
-                  {"impostor", stats.draws[DRAW_IMPOSTOR]}};
+    for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) j["plants_per_lod"][kLodNames[lod]] = stats.plantsPerLod[lod];
+    j["visible_entries"] = stats.visibleEntries();
+    j["culled"] = stats.culled();
+    for (uint32_t c = 0; c < DRAW_CLASS_COUNT; ++c) j["draws"][kDrawClassNames[c]] = stats.draws[c];
     j["triangles"] = stats.triangles;
     j["joints_simulated"] = renderer.simulatedJoints();
     j["indirect_count"] = ctx.drawIndirectCount;
@@ -95,10 +89,9 @@ int runHeadless(const PlantfieldOptions& o) {
         const FieldFrameStats stats = renderer.readStats();
         if (o.stats)
             std::cout << statsJson(o, ctx, renderer, stats, readGpuTimer(ctx, timer), time, wallMs).dump(2) << "\n";
-        std::fprintf(stderr, "plantfield: %ux%u on %s: %u plants, %u full, %u reduced, %u impostors, %.1f M triangles%s%s\n",
-                     o.size.width, o.size.height, ctx.properties.deviceName, stats.instances, stats.plantsPerLod[0],
-                     stats.plantsPerLod[1], stats.plantsPerLod[2], double(stats.triangles) / 1e6,
-                     o.capturePath.empty() ? "" : " -> ", o.capturePath.c_str());
+        std::fprintf(stderr, "plantfield: %ux%u on %s: %u plants (%s), %.1f M triangles%s%s\n", o.size.width,
+                     o.size.height, ctx.properties.deviceName, stats.instances, plantsPerLodText(stats).c_str(),
+                     double(stats.triangles) / 1e6, o.capturePath.empty() ? "" : " -> ", o.capturePath.c_str());
         destroyGpuTimer(ctx, timer);
         destroyRenderTarget(ctx, target);
     }

@@ -18,9 +18,8 @@ std::string overlayText(double frameMs, const FieldFrameStats& stats, const std:
                         bool freeFlight) {
     char text[512];
     int n = std::snprintf(text, sizeof(text),
-                          "%.1f fps  %.2f ms\nplants %u: full %u  reduced %u  impostor %u\ntriangles %.2f M\n",
-                          frameMs > 0 ? 1000.0 / frameMs : 0.0, frameMs, stats.instances, stats.plantsPerLod[0],
-                          stats.plantsPerLod[1], stats.plantsPerLod[2], double(stats.triangles) / 1e6);
+                          "%.1f fps  %.2f ms\nplants %u: %s\ntriangles %.2f M\n", frameMs > 0 ? 1000.0 / frameMs : 0.0,
+                          frameMs, stats.instances, plantsPerLodText(stats).c_str(), double(stats.triangles) / 1e6);
     for (const ScopeTime& s : gpu)
         if (n > 0 && size_t(n) < sizeof(text))
             n += std::snprintf(text + n, sizeof(text) - size_t(n), "%s %.2f ms  ", s.name.c_str(), s.milliseconds);
