@@ -3,13 +3,18 @@
 #include "physics_bindings.glsl"
 
 // Physics (DESIGN.md §5 pass 1, §6): one invocation per simulated joint
-// takes the frame's counts.z sub-steps of stepJoint, its state held in
+// takes the dispatch's sub-steps of stepJoint, its state held in
 // registers between them (prepareJointStep once per joint). Every joint reads its
 // parent's rotation and its own base from the poses at entry (written by the
 // previous pose pass) and writes only its own state, so the joints of a
 // dispatch are independent. engine/physics/plant_physics.h stepSkeletonsOnCpu is the
 // CPU reference.
 layout(local_size_x = PHYSICS_GROUP_SIZE) in;
+
+// This dispatch's start time and sub-step count; the uniforms give the rest.
+layout(push_constant) uniform DispatchBlock {
+    PhysicsDispatch dispatch;
+};
 
 void main() {
     // Two-dimensional dispatch past maxComputeWorkGroupCount[0] groups.
@@ -24,9 +29,12 @@ void main() {
     vec4 parentRotation = parent == JOINT_NO_PARENT ? vec4(0.0f, 0.0f, 0.0f, 1.0f) : poseAt(sk.ids.w + parent).rotation;
     vec3 base = posePoint(poseAt(index), jp.restBase.xyz);
 
-    float dt = physics.windDetail.w;
+    PhysicsUniforms u = physics;
+    u.windDetail.z = dispatch.time;
+    u.counts.z = dispatch.subSteps;
+    float dt = u.windDetail.w;
     JointState s = stateAt(index);
-    JointStep c = prepareJointStep(jp, parentRotation, base, s, sk, physics, dt);
-    for (uint step = 0u; step < physics.counts.z; ++step) s = stepJoint(c, s, step, dt);
+    JointStep c = prepareJointStep(jp, parentRotation, base, s, sk, u, dt);
+    for (uint step = 0u; step < u.counts.z; ++step) s = stepJoint(c, s, step, dt);
     states[index] = endJointFrame(s);
 }

@@ -64,6 +64,14 @@ struct PhysicsUniforms {
     uvec4 counts;    // x skeletons, y simulated joints, z sub-steps this dispatch, w 0
 };
 
+// The push constants of one physics dispatch: when its sub-steps start and
+// how many it takes. A frame's catch-up and its own steps are several
+// dispatches in one command buffer; the rest of PhysicsUniforms holds for all.
+struct PhysicsDispatch {
+    float time;    // s: the first sub-step's time (PhysicsUniforms::windDetail.z of this dispatch)
+    uint subSteps; // PhysicsUniforms::counts.z of this dispatch
+};
+
 #ifdef __cplusplus
 } // namespace gpu
 static_assert(sizeof(gpu::JointParams) == 6 * 16);
@@ -71,6 +79,7 @@ static_assert(sizeof(gpu::JointState) == 32);
 static_assert(sizeof(gpu::JointPose) == 32);
 static_assert(sizeof(gpu::Skeleton) == 48);
 static_assert(sizeof(gpu::PhysicsUniforms) == 64);
+static_assert(sizeof(gpu::PhysicsDispatch) == 8);
 #endif
 
 #endif

@@ -328,8 +328,8 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     block.field.sunViewProj = sunViewProjection(sunDirection(env), focus, radius, 250.0f, shadow_.size);
     block.field.viewport = glm::vec4(float(extent.width), float(extent.height), 2.0f * radius / float(shadow_.size),
                                      settings_.shadows ? 1.0f : 0.0f);
+    advanceFieldMotion(motion_, view.time, view.firstFrame, view.camera.position, view.realTime);
     // The physics pass's wind field, for the shaders that sway without a skeleton.
-    advanceFieldMotion(ctx_, motion_, view.time, view.firstFrame, view.camera.position, view.realTime);
     const gpu::PhysicsUniforms wind =
         makePhysicsUniforms(motion_.wind, motion_.settings, view.time, motion_.settings.subStep, 0, 0, 0);
     block.field.wind = glm::vec4(wind.wind.x, wind.wind.y, wind.wind.z, view.time);

@@ -77,7 +77,9 @@ public:
     FieldRenderer(const FieldRenderer&) = delete;
     FieldRenderer& operator=(const FieldRenderer&) = delete;
 
-    // Uniforms of the next frame: call only while no frame is in flight.
+    // Prepares the next frame: its uniforms and the plan of its physics
+    // (advanceFieldMotion), nothing submitted. Call only while no frame is
+    // in flight, once before each record.
     void setView(const FieldView& view, VkExtent2D extent);
     // Leaves target.color in TRANSFER_SRC_OPTIMAL. With a timer, writes
     // one scope per entry of kFieldPasses.

@@ -48,25 +48,20 @@ void copyWhole(VkCommandBuffer cmd, const Buffer& from, const Buffer& to) {
 
 
 // The near-plant changes of a frame: plants repointed (host-visible), own
-// skeletons started from their shared copy's states and poses.
-void applyNearChanges(const GpuContext& ctx, FieldMotion& motion, const NearChanges& changes) {
+// skeletons started from their shared copy's states and poses (copies the
+// frame records).
+void planNearChanges(FieldMotion& motion, const NearChanges& changes) {
     auto* skeletonOf = static_cast<uint32_t*>(motion.instanceSkeleton.mapped);
     for (const auto& [plant, skeleton] : changes.plantSkeleton) skeletonOf[plant] = skeleton;
-    if (changes.startFrom.empty()) return;
     const auto* skeletons = static_cast<const gpu::Skeleton*>(motion.pass.skeletons.mapped);
-    std::vector<VkBufferCopy> states, poses;
     for (const auto& [own, shared] : changes.startFrom) {
         const uint32_t joints = skeletons[own].ids.z;
-        states.push_back({skeletons[shared].ids.w * sizeof(gpu::JointState), skeletons[own].ids.w * sizeof(gpu::JointState),
-                          joints * sizeof(gpu::JointState)});
-        poses.push_back({skeletons[shared].ids.w * sizeof(gpu::JointPose), skeletons[own].ids.w * sizeof(gpu::JointPose),
-                         joints * sizeof(gpu::JointPose)});
+        motion.next.ownStates.push_back({skeletons[shared].ids.w * sizeof(gpu::JointState),
+                                         skeletons[own].ids.w * sizeof(gpu::JointState),
+                                         joints * sizeof(gpu::JointState)});
+        motion.next.ownPoses.push_back({skeletons[shared].ids.w * sizeof(gpu::JointPose),
+                                        skeletons[own].ids.w * sizeof(gpu::JointPose), joints * sizeof(gpu::JointPose)});
     }
-    // Within one buffer: source and destination ranges never overlap (different skeletons).
-    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-        vkCmdCopyBuffer(cmd, motion.pass.states.buffer, motion.pass.states.buffer, uint32_t(states.size()), states.data());
-        vkCmdCopyBuffer(cmd, motion.pass.poses.buffer, motion.pass.poses.buffer, uint32_t(poses.size()), poses.data());
-    });
 }
 
 } // namespace
@@ -98,47 +93,68 @@ void destroyFieldMotion(const GpuContext& ctx, FieldMotion& motion) {
     for (Buffer* b : {&motion.instanceSkeleton, &motion.restStates, &motion.restPoses}) destroyBuffer(ctx, *b);
 }
 
-void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart,
-                        const glm::vec3& camera, bool realTime) {
+void advanceFieldMotion(FieldMotion& motion, double time, bool restart, const glm::vec3& camera, bool realTime) {
+    motion.next = {};
     const double dt = motion.settings.subStep;
     // Whole sub-steps from time 0, so a time is reached the same way from anywhere.
     const uint64_t target = subStepsUntil(time, motion.settings);
-    if (restart || target < motion.simulatedStep) {
-        // Back to rest; the copies finish before any later physics reads them.
-        submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-            copyWhole(cmd, motion.restStates, motion.pass.states);
-            copyWhole(cmd, motion.restPoses, motion.pass.poses);
-        });
+    const bool farAhead = !realTime && target > motion.simulatedStep &&
+                          target - motion.simulatedStep > subStepsUntil(kSettleSeconds, motion.settings);
+    if (restart || target < motion.simulatedStep || farAhead) {
+        motion.next.restart = true;
         motion.simulatedStep = subStepsUntil(std::max(0.0, time - kSettleSeconds), motion.settings);
-        applyNearChanges(ctx, motion,
-                         releaseAllNearSkeletons(motion.near, motion.sharedOf,
-                                                 static_cast<gpu::Skeleton*>(motion.pass.skeletons.mapped)));
+        planNearChanges(motion, releaseAllNearSkeletons(motion.near, motion.sharedOf,
+                                                        static_cast<gpu::Skeleton*>(motion.pass.skeletons.mapped)));
     }
-    applyNearChanges(ctx, motion,
-                     updateNearSkeletons(motion.near, motion.grid, motion.content->plants, motion.content->models,
-                                         motion.sharedOf, camera, static_cast<gpu::Skeleton*>(motion.pass.skeletons.mapped)));
+    planNearChanges(motion, updateNearSkeletons(motion.near, motion.grid, motion.content->plants,
+                                                motion.content->models, motion.sharedOf, camera,
+                                                static_cast<gpu::Skeleton*>(motion.pass.skeletons.mapped)));
     if (realTime && !restart && target - motion.simulatedStep > kMaxFrameGapSubSteps)
         motion.simulatedStep = target - kMaxFrameGapSubSteps;
-    uint64_t steps = target - motion.simulatedStep;
-    auto uniformsFor = [&](uint32_t count) {
-        return makePhysicsUniforms(motion.wind, motion.settings, float(double(motion.simulatedStep) * dt), float(dt),
-                                   count, motion.pass.skeletonCount, motion.pass.jointCount);
-    };
-    // Catch up in frame-sized chunks, so parents' poses are never older than
-    // kFrameSubSteps steps.
-    while (steps > kFrameSubSteps) {
-        setPhysicsUniforms(motion.pass, uniformsFor(kFrameSubSteps));
-        submitAndWait(ctx, [&](VkCommandBuffer cmd) { recordPhysicsPass(cmd, motion.pass); });
-        motion.simulatedStep += kFrameSubSteps;
-        steps -= kFrameSubSteps;
+    // Frame-sized dispatches, so parents' poses are never older than kFrameSubSteps steps.
+    const float start = float(double(motion.simulatedStep) * dt);
+    for (uint64_t steps = target - motion.simulatedStep; steps > 0;) {
+        const uint32_t count = uint32_t(std::min<uint64_t>(steps, kFrameSubSteps));
+        motion.next.dispatches.push_back({float(double(motion.simulatedStep) * dt), count});
+        motion.simulatedStep += count;
+        steps -= count;
     }
-    setPhysicsUniforms(motion.pass, uniformsFor(uint32_t(steps)));
-    motion.frameSubSteps = uint32_t(steps);
-    motion.simulatedStep += steps;
+    setPhysicsUniforms(motion.pass, makePhysicsUniforms(motion.wind, motion.settings, start, float(dt), 0,
+                                                        motion.pass.skeletonCount, motion.pass.jointCount));
 }
 
 void recordFieldMotion(VkCommandBuffer cmd, const FieldMotion& motion, GpuTimer* timer) {
-    recordPhysicsPass(cmd, motion.pass, timer);
+    const FieldMotionFrame& frame = motion.next;
+    if (frame.restart || !frame.ownStates.empty()) {
+        // The copies overwrite states and poses the previous frame's passes
+        // wrote and its vertex shaders read (write-after-write and -read).
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                      VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    }
+    if (frame.restart) {
+        copyWhole(cmd, motion.restStates, motion.pass.states);
+        copyWhole(cmd, motion.restPoses, motion.pass.poses);
+    }
+    if (!frame.ownStates.empty()) {
+        // Own skeletons start from their shared copy's state, rest included.
+        if (frame.restart)
+            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                          VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        // Within one buffer: source and destination ranges never overlap (different skeletons).
+        vkCmdCopyBuffer(cmd, motion.pass.states.buffer, motion.pass.states.buffer, uint32_t(frame.ownStates.size()),
+                        frame.ownStates.data());
+        vkCmdCopyBuffer(cmd, motion.pass.poses.buffer, motion.pass.poses.buffer, uint32_t(frame.ownPoses.size()),
+                        frame.ownPoses.data());
+    }
+    if (frame.restart || !frame.ownStates.empty()) {
+        // The physics and pose passes read and overwrite what was copied.
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT |
+                          VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    }
+    recordPhysicsPass(cmd, motion.pass, frame.dispatches, timer);
 }
 
 } // namespace pf

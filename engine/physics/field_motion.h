@@ -13,15 +13,25 @@
 
 namespace pf {
 
-// Steps recorded in the frame itself; more (a jump in time) run before it.
+// Sub-steps of one physics dispatch: a frame that has more to catch up (a
+// jump in time) records several, each followed by the poses, so parents'
+// poses are never older than this many steps.
 inline constexpr uint32_t kFrameSubSteps = 8;
 // A capture at time T starts from rest at T − this (plants settle in ~5 s),
-// so it costs the same at any T and depends on T alone.
+// so it costs the same at any T and depends on T alone; so does a sequence
+// whose next frame is further ahead than this.
 inline constexpr double kSettleSeconds = 5.0;
 // In real time, at most this many steps between two frames: a slow frame
 // (a window on a CPU device) must not make the next one slower still. Time
 // beyond it passes without being simulated.
 inline constexpr uint32_t kMaxFrameGapSubSteps = 4 * kFrameSubSteps;
+
+// What the next recordFieldMotion records, as advanceFieldMotion planned it.
+struct FieldMotionFrame {
+    bool restart = false;                          // states and poses back to rest first
+    std::vector<VkBufferCopy> ownStates, ownPoses; // near plants' new skeletons start from their shared copy's
+    std::vector<gpu::PhysicsDispatch> dispatches;  // the catch-up, then the frame's own steps
+};
 
 struct FieldMotion {
     const FieldContent* content = nullptr; // outlives the motion (the renderer owns both)
@@ -34,22 +44,24 @@ struct FieldMotion {
     Buffer restPoses;
     Wind wind;
     PhysicsSettings settings;
-    uint64_t simulatedStep = 0;  // sub-steps from time 0 the states will be at after the recorded ones
-    uint32_t frameSubSteps = 0;  // steps the next recordFieldMotion takes
+    uint64_t simulatedStep = 0; // sub-steps from time 0 the states will be at after the next recorded frame
+    FieldMotionFrame next;
 };
 
 FieldMotion createFieldMotion(const GpuContext& ctx, const FieldContent& content);
 void destroyFieldMotion(const GpuContext& ctx, FieldMotion& motion);
 
-// Brings the simulation to `time`: from rest at max(0, time − kSettleSeconds)
-// when `restart` or when time went backwards; steps beyond the last
-// kFrameSubSteps run now (the GPU must be idle); the rest are left for the
-// frame. Call while no frame is in flight.
-// Near plants are those around `camera`. `realTime` caps the steps between
-// frames (kMaxFrameGapSubSteps); captures and sequences simulate every step.
-void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart,
-                        const glm::vec3& camera, bool realTime);
-// The physics and pose passes of the frame (timer scopes "physics", "pose").
+// Plans the frame that brings the simulation to `time` (FieldMotion::next):
+// from rest at max(0, time − kSettleSeconds) when `restart`, when time went
+// backwards, or (not in real time) when it jumped further ahead than that.
+// Writes what the host owns (which skeleton each plant follows, near plants'
+// placements) and the uniforms, so call it while no frame is in flight; it
+// submits nothing. Near plants are those around `camera`. `realTime` caps the
+// steps between frames (kMaxFrameGapSubSteps); captures and sequences
+// simulate every step.
+void advanceFieldMotion(FieldMotion& motion, double time, bool restart, const glm::vec3& camera, bool realTime);
+// Records the planned frame: the copies, then the physics and pose passes
+// (timer scopes "physics", with any catch-up, and "pose").
 void recordFieldMotion(VkCommandBuffer cmd, const FieldMotion& motion, GpuTimer* timer = nullptr);
 
 // The shared skeleton copies of a model follow each other along the wind

@@ -50,6 +50,32 @@ std::vector<uint32_t> jointsByDepth(const SkeletonSet& set, std::vector<glm::uve
     return order;
 }
 
+// The dispatch's sub-steps of every joint, then the barrier that lets the
+// pose levels read the new states and overwrite the poses it read.
+void recordPhysicsDispatch(VkCommandBuffer cmd, const PhysicsPass& pass, const gpu::PhysicsDispatch& dispatch) {
+    if (dispatch.subSteps == 0) return;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.physicsPipeline);
+    vkCmdPushConstants(cmd, pass.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(dispatch), &dispatch);
+    dispatchJoints(cmd, pass, pass.jointCount);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+}
+
+// Every pose from the roots down, one dispatch per depth.
+void recordPoseLevels(VkCommandBuffer cmd, const PhysicsPass& pass) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.posePipeline);
+    for (size_t d = 0; d < pass.levels.size(); ++d) {
+        if (d > 0) {
+            // This level reads the poses of its parents, which the previous level wrote.
+            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kShaderReads);
+        }
+        const glm::uvec2 level = pass.levels[d]; // never empty: a joint at depth d > 0 has a parent at d − 1
+        vkCmdPushConstants(cmd, pass.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(level), &level);
+        dispatchJoints(cmd, pass, level.y);
+    }
+}
+
 } // namespace
 
 PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
@@ -129,7 +155,8 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
                                        {texels, VK_NULL_HANDLE, pass.views[4]},
                                        {texels, VK_NULL_HANDLE, pass.views[5]}};
     pass.set = createComputeSet(ctx, bindings);
-    // The set's layout plus the pose level (uvec2 push constants; physics.comp declares none).
+    // The set's layout plus 8 bytes of push constants: the physics dispatch or the pose level.
+    static_assert(sizeof(gpu::PhysicsDispatch) == sizeof(glm::uvec2));
     const VkPushConstantRange levelRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(glm::uvec2)};
     VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layoutInfo.setLayoutCount = 1;
@@ -162,7 +189,8 @@ void setPhysicsUniforms(const PhysicsPass& pass, const gpu::PhysicsUniforms& uni
     std::memcpy(pass.uniforms.mapped, &u, sizeof(u));
 }
 
-void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, GpuTimer* timer) {
+void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, std::span<const gpu::PhysicsDispatch> dispatches,
+                       GpuTimer* timer) {
     // The previous frame's vertex shaders may still read the poses the pose
     // dispatch overwrites (write-after-read: execution only), and the
     // previous physics and pose dispatches wrote the states and poses read
@@ -174,36 +202,33 @@ void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, GpuTimer* t
 
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout, 0, 1, &pass.set.descriptorSet, 0,
                             nullptr);
+    const gpu::PhysicsDispatch poseOnly{0.0f, 0};
+    if (dispatches.empty()) dispatches = {&poseOnly, 1};
     if (timer) beginScope(cmd, *timer, "physics");
-    // The sub-step count is what setPhysicsUniforms wrote for this frame.
-    const uint32_t subSteps = static_cast<const gpu::PhysicsUniforms*>(pass.uniforms.mapped)->counts.z;
-    if (subSteps > 0) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.physicsPipeline);
-        dispatchJoints(cmd, pass, pass.jointCount);
-        // The pose dispatches read the new states, and overwrite the poses
-        // the physics dispatch read (write-after-read, covered by the same
-        // execution dependency).
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    }
-    if (timer) endScope(cmd, *timer);
-
-    if (timer) beginScope(cmd, *timer, "pose");
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.posePipeline);
-    for (size_t d = 0; d < pass.levels.size(); ++d) {
-        if (d > 0) {
-            // This level reads the poses of its parents, which the previous level wrote.
+    for (size_t i = 0; i < dispatches.size(); ++i) {
+        if (i > 0) {
+            // This dispatch reads the states and poses the one before wrote.
             memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kShaderReads);
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         }
-        const glm::uvec2 level = pass.levels[d]; // never empty: a joint at depth d > 0 has a parent at d − 1
-        vkCmdPushConstants(cmd, pass.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(level), &level);
-        dispatchJoints(cmd, pass, level.y);
+        recordPhysicsDispatch(cmd, pass, dispatches[i]);
+        const bool last = i + 1 == dispatches.size();
+        if (last && timer) {
+            endScope(cmd, *timer);
+            beginScope(cmd, *timer, "pose");
+        }
+        recordPoseLevels(cmd, pass);
     }
     if (timer) endScope(cmd, *timer);
     // The vertex shaders skin plant vertices with the new poses.
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+}
+
+void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, GpuTimer* timer) {
+    const auto* uniforms = static_cast<const gpu::PhysicsUniforms*>(pass.uniforms.mapped);
+    const gpu::PhysicsDispatch dispatch{uniforms->windDetail.z, uniforms->counts.z};
+    recordPhysicsPass(cmd, pass, {&dispatch, 1}, timer);
 }
 
 void readPhysicsState(const GpuContext& ctx, const PhysicsPass& pass, std::vector<gpu::JointState>& states,

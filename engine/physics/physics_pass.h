@@ -12,6 +12,7 @@
 #include "engine/vk/resources.h"
 
 #include <array>
+#include <span>
 
 namespace pf {
 
@@ -41,15 +42,20 @@ struct PhysicsPass {
 PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set);
 void destroyPhysicsPass(const GpuContext& ctx, PhysicsPass& pass);
 
-// Per frame, while no frame using them is in flight.
+// Per frame, while no frame using them is in flight. Each dispatch replaces
+// the time (windDetail.z) and sub-step count (counts.z) with its own.
 void setPhysicsUniforms(const PhysicsPass& pass, const gpu::PhysicsUniforms& uniforms);
 
-// Records physics (u.counts.z sub-steps; none when 0) then pose, with the
-// barriers that order them after the previous frame's vertex reads of the
-// poses and make the new poses visible to vertex shaders. With a timer, the
-// physics dispatch is timed as scope "physics" and the pose levels as
-// "pose" (both recorded unless the set is empty; "physics" times nothing
-// when there are no sub-steps). Compute only: record it outside rendering.
+// Records, for each dispatch in order, its physics sub-steps (none when 0)
+// then the pose levels, with the barriers that order the first after the
+// previous frame's vertex reads of the poses, each dispatch after the poses
+// of the one before, and make the last poses visible to vertex shaders. With
+// a timer, everything up to the last pose levels is scope "physics" and those
+// are "pose" (both recorded unless the set is empty). No dispatch at all
+// poses once. Compute only: record it outside rendering.
+void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, std::span<const gpu::PhysicsDispatch> dispatches,
+                       GpuTimer* timer = nullptr);
+// One dispatch at the time and sub-step count setPhysicsUniforms wrote.
 void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, GpuTimer* timer = nullptr);
 
 // Copies states and poses back (tests, --physics-check).
