@@ -44,61 +44,29 @@ Provenance Provenance::pristine() {
 
 uint16_t readsOf(const TurtleCommand& command, std::span<const float> p, const TurtleState& state,
                  const Provenance& provenance, size_t openPolygons, size_t localPolygons) {
-    auto field = [&](StyleField f) { return provenance.sources(f); };
+    const TurtleReads& declared = actingDefinition(command.action, openPolygons).reads;
+    const uint16_t reads = declared.always | (p.empty() ? declared.bare : kReadsNothing) |
+                           (state.elasticity != 0.0f ? declared.bending : kReadsNothing);
+    uint16_t sources = 0;
+    for (StyleField field : kFields)
+        if (reads & readBit(field)) sources |= provenance.sources(field);
+    if (reads & kReadsWorldUp) sources |= kSourceWorldUp;
     // With no polygon of its own open, whether one was open at the entry decides.
-    const uint16_t polygon = localPolygons == 0 ? kSourcePolygon : 0;
-    const bool bare = p.empty();
-    switch (command.action) {
-        case TurtleAction::Draw: {
-            uint16_t reads = polygon | (bare ? field(StyleField::Length) : 0);
-            if (openPolygons > 0) return reads;  // moves along a polygon's outline
-            reads |= field(StyleField::Width) | field(StyleField::Material) | field(StyleField::Stiffness) |
-                     field(StyleField::Elasticity);
-            return state.elasticity != 0.0f ? reads | field(StyleField::Tropism) : reads;
-        }
-        case TurtleAction::Move: return polygon | (bare ? field(StyleField::Length) : 0);
-        case TurtleAction::Yaw:
-        case TurtleAction::YawBack:
-        case TurtleAction::Pitch:
-        case TurtleAction::PitchBack:
-        case TurtleAction::Roll:
-        case TurtleAction::RollBack: return bare ? field(StyleField::Angle) : 0;
-        case TurtleAction::RollHorizontal: return kSourceWorldUp;
-        case TurtleAction::Sphere: return field(StyleField::Material) | (bare ? field(StyleField::Width) : 0);
-        case TurtleAction::Surface:
-        case TurtleAction::PolygonBegin: return field(StyleField::Material);
-        case TurtleAction::PolygonVertex: return polygon;
-        default: return 0;  // the rest only write, or derive a field from itself (see updateProvenance)
-    }
+    if ((reads & kReadsPolygonOpen) && localPolygons == 0) sources |= kSourcePolygon;
+    return sources;
 }
 
 void updateProvenance(const TurtleCommand& command, std::span<const float> p, size_t openPolygons,
                       Provenance& provenance) {
-    const bool bare = p.empty();
-    // A field set from a parameter depends on nothing; one scaled or offset
-    // keeps its sources but is no longer the entry value.
-    auto set = [&](StyleField f) { provenance[f] = 0; };
-    auto derive = [&](StyleField f) { provenance[f] &= static_cast<uint16_t>(~kPristine); };
-    switch (command.action) {
-        case TurtleAction::Draw:
-            if (openPolygons == 0 && p.size() > 1) set(StyleField::Width);
-            break;
-        case TurtleAction::Width: bare ? derive(StyleField::Width) : set(StyleField::Width); break;
-        case TurtleAction::Material: bare ? derive(StyleField::Material) : set(StyleField::Material); break;
-        case TurtleAction::ScaleLength:
-        case TurtleAction::AddLength: if (!bare) derive(StyleField::Length); break;
-        case TurtleAction::SetLength: if (!bare) set(StyleField::Length); break;
-        case TurtleAction::ScaleAngle:
-        case TurtleAction::AddAngle: if (!bare) derive(StyleField::Angle); break;
-        case TurtleAction::SetAngle: if (!bare) set(StyleField::Angle); break;
-        case TurtleAction::ScaleWidth:
-        case TurtleAction::AddWidth: if (!bare) derive(StyleField::Width); break;
-        case TurtleAction::AddMaterial: if (!bare) derive(StyleField::Material); break;
-        case TurtleAction::Stiffness: if (!bare) set(StyleField::Stiffness); break;
-        case TurtleAction::Elasticity: if (!bare) set(StyleField::Elasticity); break;
-        // A world vector: seen from the local frame it depends on the entry orientation.
-        case TurtleAction::TropismVector: if (p.size() >= 3) provenance[StyleField::Tropism] = kSourceOrientation; break;
-        default: break;
+    const TurtleCommandDefinition& definition = actingDefinition(command.action, openPolygons);
+    const StyleChange& change = definition.changes;
+    switch (p.size() >= parameterCount(definition) ? change.complete : change.otherwise) {
+        case FieldChange::Keep: break;
+        case FieldChange::Set: provenance[change.field] = 0; break;  // from a parameter: depends on nothing
+        // Scaled or offset, it keeps its sources but is no longer the entry value.
+        case FieldChange::Derive: provenance[change.field] &= static_cast<uint16_t>(~kPristine); break;
+        // Seen from the local frame, a plant-space vector depends on the entry orientation.
+        case FieldChange::SetInPlant: provenance[change.field] = kSourceOrientation; break;
     }
 }
 

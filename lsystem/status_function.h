@@ -38,10 +38,6 @@ enum StyleSource : uint16_t {
 };
 inline constexpr uint16_t kPristine = 1 << 15;
 
-// The style fields of TurtleState that change along a body, in this order.
-enum class StyleField : uint8_t { Width, Length, Angle, Material, Stiffness, Elasticity, Tropism };
-inline constexpr size_t kStyleFields = 7;
-
 struct Provenance {
     std::array<uint16_t, kStyleFields> fields;
 
@@ -68,13 +64,14 @@ struct StatusFunction {
     std::vector<glm::vec3> outerVertices;
 };
 
-// The entry values a module reads (turtle.h's table) before it is applied to
-// state: openPolygons counts every open polygon, localPolygons those opened
-// inside the object.
+// The entry values a module reads before it is applied to state, from its
+// command's TurtleReads: openPolygons counts every open polygon, localPolygons
+// those opened inside the object.
 uint16_t readsOf(const TurtleCommand& command, std::span<const float> parameters, const TurtleState& state,
                  const Provenance& provenance, size_t openPolygons, size_t localPolygons);
 
-// The provenance after the module is applied (Push and Pop are the caller's).
+// The provenance after the module is applied, from its command's StyleChange
+// (Push and Pop are the caller's).
 void updateProvenance(const TurtleCommand& command, std::span<const float> parameters, size_t openPolygons,
                       Provenance& provenance);
 

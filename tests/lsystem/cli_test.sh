@@ -84,6 +84,14 @@ expect_run export-bad-input 2 'bad.lsys:2:12' -- "$LSYS" export "$WORK/bad.lsys"
 expect_run export-no-output 2 'output' -- "$LSYS" export "$DATA/plants/koch_curve.lsys"
 expect_run help 0 'derive' -- "$LSYS" --help
 expect_run derive-help 0 '--max-modules' -- "$LSYS" derive --help
+expect_run help-lists-turtle 0 '--help-turtle' -- "$LSYS" --help
+expect_run help-turtle 0 '^F  *l = length, w = width  *draw a segment' -- "$LSYS" --help-turtle
+# A row for every symbol of the turtle's commands (lsystem/turtle_commands.cpp), first on its line.
+for symbol in F f + - '&' '^' '\' / '|' '$' '[' ']' '!' ';' "'" % @Lm @La @Ls @Am @Aa @As @Wm @Wa @Ca @K @Ts @Tv \
+    @O '~name' '{' . '}' @Oc; do
+    SYMBOL=$symbol awk '$1 == ENVIRON["SYMBOL"] { found = 1 } END { exit !found }' "$WORK/out" ||
+        fail "help-turtle: no row for $symbol: $(cat "$WORK/out")"
+done
 expect_run no-command 2 'subcommand' -- "$LSYS"
 expect_run bad-option 2 'steps' -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" -n many
 

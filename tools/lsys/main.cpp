@@ -4,6 +4,7 @@
 //   lsys instance FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--randomness K] [--json]
 //   lsys export FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] -o OUT.gltf|.glb|.obj [--flat|--instanced]
 //               [--randomness K] [--granularity G] [--max-gltf-nodes N] [--generalized-cylinders]
+//   lsys --help-turtle
 // Exit codes: 0 success, 2 bad input (parse errors, budget exceeded), 1 usage errors.
 
 #include <chrono>
@@ -275,6 +276,14 @@ int check(const Arguments& arguments) {
 int main(int argc, char** argv) {
     CLI::App app{"lsys: derive, check, instance and export L-systems written in the .lsys notation or a dialect (docs/DIALECTS.md)"};
     app.require_subcommand(1);
+    // Printed from the commands' definitions, so it cannot fall behind the turtle.
+    app.add_flag_callback(
+        "--help-turtle",
+        [] {
+            std::cout << lsys::turtleCommandHelp();
+            throw CLI::Success();
+        },
+        "Print the turtle's commands (symbol, parameters, what each does) and exit");
     Arguments arguments;
 
     CLI::App* deriveCommand = app.add_subcommand("derive", "Derive an L-system and report, print or count the result");

@@ -1,0 +1,351 @@
+#include "lsystem/turtle_commands.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "lsystem/turtle.h"
+
+namespace lsys {
+
+namespace {
+
+// Rotates the two frame vectors other than axis by degrees about axis, then
+// re-orthonormalises so rounding does not accumulate.
+void rotate(TurtleState& s, glm::vec3 axis, float degrees) {
+    const glm::quat rotation = glm::angleAxis(glm::radians(degrees), axis);
+    s.heading = glm::normalize(rotation * s.heading);
+    const glm::vec3 left = rotation * s.left;
+    s.left = glm::normalize(left - glm::dot(left, s.heading) * s.heading);
+    s.up = glm::cross(s.heading, s.left);
+}
+
+// The angle of a turn: its parameter, or the current angle.
+float turnAngle(const TurtleStep& t) { return t.parameterOr(0, t.state.angle); }
+
+// ABOP's $: L = V x H / |V x H| with V the world up (+Y).
+void rollHorizontal(TurtleState& s) {
+    const glm::vec3 horizontalLeft = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), s.heading);
+    if (glm::length(horizontalLeft) < 1e-6f) return;  // heading vertical: any roll is horizontal
+    s.left = glm::normalize(horizontalLeft);
+    s.up = glm::cross(s.heading, s.left);
+}
+
+// ABOP §2.4: after a segment, H turns toward T by e * |H x T| about H x T.
+void bendTowardTropism(TurtleState& s) {
+    if (s.elasticity == 0.0f) return;
+    const glm::vec3 axis = glm::cross(s.heading, s.tropism);
+    const float sine = glm::length(axis);
+    if (!(sine > 1e-6f)) return;  // parallel to T (or NaN): no defined bend
+    rotate(s, axis / sine, glm::degrees(s.elasticity * sine));
+}
+
+// cpfg's colour map has 256 entries; parameters are arbitrary floats, and
+// negative, huge or NaN indices become 0.
+uint32_t materialIndex(float value) { return value >= 0.0f && value < 256.0f ? static_cast<uint32_t>(value) : 0; }
+
+// A segment drawn backwards (negative length) faces the other way.
+Frame segmentFrame(const TurtleState& s, float length) {
+    Frame frame = frameOf(s);
+    if (length < 0.0f) frame.rotation = frame.rotation * glm::angleAxis(glm::radians(180.0f), glm::vec3(0, 0, 1));
+    return frame;
+}
+
+// A vertex of the innermost open polygon, if there is one.
+void addVertex(TurtleStack& stack, glm::vec3 position) {
+    if (!stack.polygons.empty()) stack.polygons.back().outline.push_back(position);
+}
+
+// Moves along H; inside a polygon the new position is one of its vertices.
+void move(const TurtleStep& t) {
+    t.state.position += t.state.heading * t.parameterOr(0, t.state.length);
+    addVertex(t.stack, t.state.position);
+}
+
+void drawSegment(const TurtleStep& t) {
+    TurtleState& s = t.state;
+    const float length = t.parameterOr(0, s.length);
+    const float startWidth = s.width;
+    s.width = t.parameterOr(1, s.width);
+    s.joint = t.out.addSegment(segmentFrame(s, length), std::abs(length), startWidth * 0.5f, s.width * 0.5f,
+                               s.material, s.joint, s.stiffness);
+    s.position += s.heading * length;
+    bendTowardTropism(s);
+}
+
+void popBranch(const TurtleStep& t) {
+    if (t.stack.branches.empty()) return;
+    t.state = t.stack.branches.back();
+    t.stack.branches.pop_back();
+}
+
+void closePolygon(const TurtleStep& t) {
+    if (t.stack.polygons.empty()) return;
+    OpenPolygon polygon = std::move(t.stack.polygons.back());
+    t.stack.polygons.pop_back();
+    std::vector<glm::vec3> outline;
+    for (const glm::vec3& p : polygon.outline)
+        if (outline.empty() || glm::distance(p, outline.back()) > 1e-6f) outline.push_back(p);
+    if (outline.size() > 1 && glm::distance(outline.front(), outline.back()) <= 1e-6f) outline.pop_back();
+    if (outline.size() >= 3) t.out.addPolygon(polygon.start, std::move(outline), polygon.material, polygon.joint);
+}
+
+void changeNothing(const TurtleStep&) {}
+
+// Widths are diameters and angles degrees; bare modules of the @ families
+// change nothing, which their defaults (x = 1, x = 0, x = the field) say.
+// An entry left out does not compile: TurtleReads and StyleChange have no default.
+constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
+    {.action = TurtleAction::None, .symbol = "@Oc",
+     .documentation = "nothing (cpfg's unfilled screen-space circle), as every module not listed here",
+     .reads = {kReadsNothing}, .changes = kChangesNoStyle, .apply = changeNothing},
+    // Its joint's parent is the joint the turtle is on (TurtleState::joint);
+    // a negative l draws backwards, turned 180 degrees about U.
+    {.action = TurtleAction::Draw, .symbol = "F", .parameters = "l = length, w = width",
+     .documentation = "draw a segment (a joint) of length l tapering from the width to w, then bend by tropism; "
+                      "in a polygon, f",
+     .reads = {kReadsWidth | kReadsMaterial | kReadsStiffness | kReadsElasticity | kReadsPolygonOpen, kReadsLength,
+               kReadsTropism},
+     .changes = {StyleField::Width, FieldChange::Set, FieldChange::Keep},
+     // cpfg and lpfg trace a polygon's outline with F too: Robbins' {+F-F-F} is a triangle.
+     .inPolygon = TurtleAction::Move, .apply = drawSegment},
+    {.action = TurtleAction::Move, .symbol = "f", .parameters = "l = length",
+     .documentation = "move by l without drawing; in a polygon, record where it ends as a vertex",
+     .reads = {kReadsPolygonOpen, kReadsLength}, .changes = kChangesNoStyle, .apply = move},
+    {.action = TurtleAction::Yaw, .symbol = "+", .parameters = "a = angle",
+     .documentation = "yaw by a degrees about U, towards L", .reads = {kReadsNothing, kReadsAngle},
+     .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, turnAngle(t)); }},
+    {.action = TurtleAction::YawBack, .symbol = "-", .parameters = "a = angle",
+     .documentation = "yaw by a degrees about U, away from L", .reads = {kReadsNothing, kReadsAngle},
+     .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, -turnAngle(t)); }},
+    {.action = TurtleAction::Pitch, .symbol = "&", .parameters = "a = angle",
+     .documentation = "pitch down by a degrees about L", .reads = {kReadsNothing, kReadsAngle},
+     .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) { rotate(t.state, t.state.left, turnAngle(t)); }},
+    {.action = TurtleAction::PitchBack, .symbol = "^", .parameters = "a = angle",
+     .documentation = "pitch up by a degrees about L", .reads = {kReadsNothing, kReadsAngle},
+     .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) { rotate(t.state, t.state.left, -turnAngle(t)); }},
+    {.action = TurtleAction::Roll, .symbol = "\\", .parameters = "a = angle",
+     .documentation = "roll left by a degrees about H", .reads = {kReadsNothing, kReadsAngle},
+     .changes = kChangesNoStyle,
+     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.heading, turnAngle(t)); }},
+    {.action = TurtleAction::RollBack, .symbol = "/", .parameters = "a = angle",
+     .documentation = "roll right by a degrees about H", .reads = {kReadsNothing, kReadsAngle},
+     .changes = kChangesNoStyle,
+     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.heading, -turnAngle(t)); }},
+    {.action = TurtleAction::TurnAround, .symbol = "|", .documentation = "turn 180 degrees about U",
+     .reads = {kReadsNothing}, .changes = kChangesNoStyle,
+     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, 180.0f); }},
+    {.action = TurtleAction::RollHorizontal, .symbol = "$",
+     .documentation = "roll about H until L is horizontal (ABOP: L = V x H / |V x H|, V = +Y)",
+     .reads = {kReadsWorldUp}, .changes = kChangesNoStyle,
+     .apply = [](const TurtleStep& t) { rollHorizontal(t.state); }},
+    // Only the branch stack: open polygons are not popped (ABOP Fig 5.6's
+    // [+A{.].C.} closes after the branch a polygon opened in it).
+    {.action = TurtleAction::Push, .symbol = "[", .documentation = "push the turtle state",
+     .reads = {kReadsNothing}, .changes = kChangesNoStyle,
+     .apply = [](const TurtleStep& t) { t.stack.branches.push_back(t.state); }},
+    {.action = TurtleAction::Pop, .symbol = "]",
+     .documentation = "pop the turtle state (with nothing pushed, nothing happens)", .reads = {kReadsNothing},
+     .changes = kChangesNoStyle, .apply = popBranch},
+    {.action = TurtleAction::Width, .symbol = "!", .parameters = "w = width * 0.7",
+     .documentation = "set the width to w (0.7 is TurtleSettings::widthFactor)", .reads = {kReadsNothing},
+     .changes = {StyleField::Width, FieldChange::Set, FieldChange::Derive},
+     .apply = [](const TurtleStep& t) { t.state.width = t.parameterOr(0, t.state.width * t.settings.widthFactor); }},
+    {.action = TurtleAction::Material, .symbol = ";", .alias = "'", .parameters = "i = material + 1",
+     .documentation = "set the material index to i; outside 0..255 (cpfg's colour map) it becomes 0",
+     .reads = {kReadsNothing}, .changes = {StyleField::Material, FieldChange::Set, FieldChange::Derive},
+     .apply = [](const TurtleStep& t) {
+         t.state.material = materialIndex(t.parameterOr(0, static_cast<float>(t.state.material) + 1.0f));
+     }},
+    // A string-level operation, not a state transition: interpretModules()
+    // skips to the ] (and the rewriter already removes % produced by rules).
+    {.action = TurtleAction::Cut, .symbol = "%", .documentation = "cut the rest of the branch, up to its ]",
+     .reads = {kReadsNothing}, .changes = kChangesNoStyle, .apply = changeNothing},
+    {.action = TurtleAction::ScaleLength, .symbol = "@Lm", .parameters = "x = 1",
+     .documentation = "multiply the length of a bare F or f by x", .reads = {kReadsNothing},
+     .changes = {StyleField::Length, FieldChange::Derive, FieldChange::Keep},
+     .apply = [](const TurtleStep& t) { t.state.length *= t.parameterOr(0, 1.0f); }},
+    {.action = TurtleAction::AddLength, .symbol = "@La", .parameters = "x = 0",
+     .documentation = "add x to the length of a bare F or f", .reads = {kReadsNothing},
+     .changes = {StyleField::Length, FieldChange::Derive, FieldChange::Keep},
+     .apply = [](const TurtleStep& t) { t.state.length += t.parameterOr(0, 0.0f); }},
+    {.action = TurtleAction::SetLength, .symbol = "@Ls", .parameters = "x = length",
+     .documentation = "set the length of a bare F or f to x", .reads = {kReadsNothing},
+     .changes = {StyleField::Length, FieldChange::Set, FieldChange::Keep},
+     .apply = [](const TurtleStep& t) { t.state.length = t.parameterOr(0, t.state.length); }},
+    {.action = TurtleAction::ScaleAngle, .symbol = "@Am", .parameters = "x = 1",
+     .documentation = "multiply the angle of a bare turn by x", .reads = {kReadsNothing},
+     .changes = {StyleField::Angle, FieldChange::Derive, FieldChange::Keep},
+     .apply = [](const TurtleStep& t) { t.state.angle *= t.parameterOr(0, 1.0f); }},
+    {.action = TurtleAction::AddAngle, .symbol = "@Aa", .parameters = "x = 0",
+     .documentation = "add x to the angle of a bare turn", .reads = {kReadsNothing},
+     .changes = {StyleField::Angle, FieldChange::Derive, FieldChange::Keep},
+     .apply = [](const TurtleStep& t) { t.state.angle += t.parameterOr(0, 0.0f); }},
+    {.action = TurtleAction::SetAngle, .symbol = "@As", .parameters = "x = angle",
+     .documentation = "set the angle of a bare turn to x", .reads = {kReadsNothing},
+     .changes = {StyleField::Angle, FieldChange::Set, FieldChange::Keep},
+     .apply = [](const TurtleStep& t) { t.state.angle = t.parameterOr(0, t.state.angle); }},
+    {.action = TurtleAction::ScaleWidth, .symbol = "@Wm", .parameters = "x = 1",
+     .documentation = "multiply the width by x", .reads = {kReadsNothing},
+     .changes = {StyleField::Width, FieldChange::Derive, FieldChange::Keep},
+     .apply = [](const TurtleStep& t) { t.state.width *= t.parameterOr(0, 1.0f); }},
+    {.action = TurtleAction::AddWidth, .symbol = "@Wa", .parameters = "x = 0",
+     .documentation = "add x to the width", .reads = {kReadsNothing},
+     .changes = {StyleField::Width, FieldChange::Derive, FieldChange::Keep},
+     .apply = [](const TurtleStep& t) { t.state.width += t.parameterOr(0, 0.0f); }},
+    {.action = TurtleAction::AddMaterial, .symbol = "@Ca", .parameters = "x = 0",
+     .documentation = "add x to the material index, kept in 0..255 as by ;", .reads = {kReadsNothing},
+     .changes = {StyleField::Material, FieldChange::Derive, FieldChange::Keep},
+     .apply = [](const TurtleStep& t) {
+         t.state.material = materialIndex(static_cast<float>(t.state.material) + t.parameterOr(0, 0.0f));
+     }},
+    // Crankshaw's F(l,k) arrives as @K(k)F(l) through the dialect's interpretation rules.
+    {.action = TurtleAction::Stiffness, .symbol = "@K", .parameters = "k = stiffness",
+     .documentation = "set the spring stiffness of the following segments' joints (0: from beam theory)",
+     .reads = {kReadsNothing}, .changes = {StyleField::Stiffness, FieldChange::Set, FieldChange::Keep},
+     .apply = [](const TurtleStep& t) { t.state.stiffness = t.parameterOr(0, t.state.stiffness); }},
+    // |T| scales the bend, e < 0 bends away, e = 0 (the default) does not bend.
+    {.action = TurtleAction::Elasticity, .symbol = "@Ts", .parameters = "e = elasticity",
+     .documentation = "set the elasticity: after each segment H turns toward T by e*|H x T| radians (ABOP section 2.4)",
+     .reads = {kReadsNothing}, .changes = {StyleField::Elasticity, FieldChange::Set, FieldChange::Keep},
+     .apply = [](const TurtleStep& t) { t.state.elasticity = t.parameterOr(0, t.state.elasticity); }},
+    {.action = TurtleAction::TropismVector, .symbol = "@Tv", .parameters = "x, y, z",
+     .documentation = "set the tropism vector T, in plant space (with fewer parameters, nothing happens)",
+     .reads = {kReadsNothing}, .changes = {StyleField::Tropism, FieldChange::SetInPlant, FieldChange::Keep},
+     .apply = [](const TurtleStep& t) {
+         if (t.parameters.size() >= 3) t.state.tropism = {t.parameters[0], t.parameters[1], t.parameters[2]};
+     }},
+    {.action = TurtleAction::Sphere, .symbol = "@O", .parameters = "d = width",
+     .documentation = "draw a sphere of diameter d", .reads = {kReadsMaterial, kReadsWidth},
+     .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) {
+         t.out.addSphere(frameOf(t.state), 0.5f * t.parameterOr(0, t.state.width), t.state.material, t.state.joint);
+     }},
+    // A surface grows from its origin along H, spreads along L and faces U.
+    {.action = TurtleAction::Surface, .symbol = "~", .symbolIsPrefix = true, .parameters = "s = 1",
+     .documentation = "draw the surface `name` scaled by s: leaf, petal, or a mesh of data/meshes",
+     .reads = {kReadsMaterial}, .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) {
+         t.out.addSurface(t.command.surface, frameOf(t.state), t.parameterOr(0, 1.0f), t.state.material,
+                          t.state.joint);
+     }},
+    {.action = TurtleAction::PolygonBegin, .symbol = "{",
+     .documentation = "open a polygon with the frame, material and joint here", .reads = {kReadsMaterial},
+     .changes = kChangesNoStyle,
+     .apply = [](const TurtleStep& t) {
+         t.stack.polygons.push_back({frameOf(t.state), t.state.material, t.state.joint, {}});
+     }},
+    {.action = TurtleAction::PolygonVertex, .symbol = ".",
+     .documentation = "record the position as a vertex of the innermost open polygon", .reads = {kReadsPolygonOpen},
+     .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) { addVertex(t.stack, t.state.position); }},
+    {.action = TurtleAction::PolygonEnd, .symbol = "}",
+     .documentation = "close the innermost polygon, drawn when it has 3 or more distinct vertices",
+     .reads = {kReadsNothing}, .changes = kChangesNoStyle, .apply = closePolygon},
+}};
+
+constexpr std::array<std::string_view, 2> symbolsOf(const TurtleCommandDefinition& definition) {
+    return {definition.symbol, definition.alias};
+}
+
+// Each command at its action's index, with a symbol, a line of documentation and a transition.
+constexpr bool everyCommandIsDefined() {
+    for (size_t i = 0; i < kDefinitions.size(); ++i) {
+        const TurtleCommandDefinition& definition = kDefinitions[i];
+        if (static_cast<size_t>(definition.action) != i || definition.symbol.empty() ||
+            definition.documentation.empty() || definition.apply == nullptr)
+            return false;
+    }
+    return true;
+}
+static_assert(everyCommandIsDefined(), "every TurtleAction needs its definition, in enum order");
+
+// A module name means one command: no symbol repeats, none starts with a prefix symbol.
+constexpr bool symbolsAreUnambiguous() {
+    for (size_t a = 0; a < kDefinitions.size(); ++a)
+        for (size_t i = 0; i < 2; ++i)
+            for (size_t b = 0; b < kDefinitions.size(); ++b)
+                for (size_t j = 0; j < 2; ++j) {
+                    const std::string_view symbol = symbolsOf(kDefinitions[a])[i];
+                    const std::string_view other = symbolsOf(kDefinitions[b])[j];
+                    if (symbol.empty() || other.empty() || (a == b && i == j)) continue;
+                    if (symbol == other || (kDefinitions[b].symbolIsPrefix && symbol.starts_with(other))) return false;
+                }
+    return true;
+}
+static_assert(symbolsAreUnambiguous(), "two turtle commands share a module name");
+
+}  // namespace
+
+std::span<const TurtleCommandDefinition, kTurtleActions> turtleCommandDefinitions() { return kDefinitions; }
+
+const TurtleCommandDefinition& turtleCommandDefinition(TurtleAction action) {
+    return kDefinitions[static_cast<size_t>(action)];
+}
+
+const TurtleCommandDefinition& actingDefinition(TurtleAction action, size_t openPolygons) {
+    const TurtleCommandDefinition& definition = turtleCommandDefinition(action);
+    return openPolygons > 0 && definition.inPolygon ? turtleCommandDefinition(*definition.inPolygon) : definition;
+}
+
+size_t parameterCount(const TurtleCommandDefinition& definition) {
+    const std::string_view list = definition.parameters;
+    return list.empty() ? 0 : static_cast<size_t>(std::count(list.begin(), list.end(), ',')) + 1;
+}
+
+TurtleCommand turtleCommand(const std::string& name) {
+    static const std::unordered_map<std::string_view, TurtleAction> exact = [] {
+        std::unordered_map<std::string_view, TurtleAction> actions;
+        for (const TurtleCommandDefinition& definition : kDefinitions)
+            if (!definition.symbolIsPrefix)
+                for (std::string_view symbol : symbolsOf(definition))
+                    if (!symbol.empty()) actions.emplace(symbol, definition.action);
+        return actions;
+    }();
+    for (const TurtleCommandDefinition& definition : kDefinitions) {
+        const std::string_view prefix = definition.symbol;
+        if (definition.symbolIsPrefix && name.size() > prefix.size() && name.starts_with(prefix))
+            return {definition.action, name.substr(prefix.size())};
+    }
+    const auto found = exact.find(name);
+    return {found == exact.end() ? TurtleAction::None : found->second, {}};
+}
+
+std::vector<TurtleCommand> turtleCommands(const SymbolTable& symbols) {
+    std::vector<TurtleCommand> commands;
+    commands.reserve(symbols.size());
+    for (const std::string& name : symbols.names) commands.push_back(turtleCommand(name));
+    return commands;
+}
+
+std::string turtleCommandHelp() {
+    struct Row {
+        std::string symbol, parameters;
+        std::string_view documentation;
+    };
+    std::vector<Row> rows;
+    size_t symbolWidth = 6, parameterWidth = 10;  // the headings
+    for (const TurtleCommandDefinition& definition : kDefinitions)
+        for (std::string_view symbol : symbolsOf(definition)) {
+            if (symbol.empty()) continue;
+            // A prefix is shown with the name it is followed by: ~name.
+            rows.push_back({std::string(symbol) + (definition.symbolIsPrefix ? "name" : ""),
+                            std::string(definition.parameters), definition.documentation});
+            symbolWidth = std::max(symbolWidth, rows.back().symbol.size());
+            parameterWidth = std::max(parameterWidth, rows.back().parameters.size());
+        }
+    auto line = [&](std::string_view symbol, std::string_view parameters, std::string_view documentation) {
+        std::string text(symbol);
+        text.resize(symbolWidth + 2, ' ');
+        text.append(parameters).resize(symbolWidth + 2 + parameterWidth + 2, ' ');
+        return text.append(documentation).append("\n");
+    };
+    std::string help =
+        "The turtle's commands (docs/LSYS_FORMAT.md, \"Turtle\"). Angles are in degrees, widths are diameters;\n"
+        "a parameter left out is what follows its '='.\n\n";
+    help += line("symbol", "parameters", "what it does");
+    for (const Row& row : rows) help += line(row.symbol, row.parameters, row.documentation);
+    return help;
+}
+
+}  // namespace lsys

@@ -1,0 +1,52 @@
+// The table of turtle commands (lsystem/turtle_commands.h): the names the
+// turtle resolves and the help it prints both come from it.
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "turtle_test_support.h"
+
+namespace lsys::test {
+namespace {
+
+TEST(LsysTurtleCommands, EveryDefinedSymbolNamesItsCommand) {
+    for (const TurtleCommandDefinition& definition : turtleCommandDefinitions()) {
+        for (std::string_view symbol : {definition.symbol, definition.alias}) {
+            if (symbol.empty()) continue;
+            const std::string name = std::string(symbol) + (definition.symbolIsPrefix ? "leaf" : "");
+            const TurtleCommand command = turtleCommand(name);
+            EXPECT_EQ(command.action, definition.action) << name;
+            EXPECT_EQ(command.surface, definition.symbolIsPrefix ? "leaf" : "") << name;
+        }
+    }
+    EXPECT_EQ(turtleCommand("A").action, TurtleAction::None);
+    EXPECT_EQ(turtleCommand("~").action, TurtleAction::None);  // a surface needs a name
+}
+
+TEST(LsysTurtleCommands, TheHelpHasARowForEverySymbol) {
+    std::istringstream help(turtleCommandHelp());
+    std::vector<std::string> firstWords;
+    for (std::string line; std::getline(help, line);) firstWords.push_back(line.substr(0, line.find(' ')));
+    for (const TurtleCommandDefinition& definition : turtleCommandDefinitions()) {
+        for (std::string_view symbol : {definition.symbol, definition.alias}) {
+            if (symbol.empty()) continue;
+            const std::string shown = std::string(symbol) + (definition.symbolIsPrefix ? "name" : "");
+            EXPECT_NE(std::find(firstWords.begin(), firstWords.end(), shown), firstWords.end()) << shown;
+        }
+    }
+}
+
+TEST(LsysTurtleCommands, FInsideAPolygonActsAsSmallF) {
+    EXPECT_EQ(actingDefinition(TurtleAction::Draw, 0).action, TurtleAction::Draw);
+    EXPECT_EQ(actingDefinition(TurtleAction::Draw, 1).action, TurtleAction::Move);
+    EXPECT_EQ(actingDefinition(TurtleAction::Move, 1).action, TurtleAction::Move);
+    EXPECT_EQ(parameterCount(turtleCommandDefinition(TurtleAction::Draw)), 2u);
+    EXPECT_EQ(parameterCount(turtleCommandDefinition(TurtleAction::TropismVector)), 3u);
+    EXPECT_EQ(parameterCount(turtleCommandDefinition(TurtleAction::TurnAround)), 0u);
+}
+
+}  // namespace
+}  // namespace lsys::test
