@@ -1,7 +1,8 @@
-// Plants that move (issue 6, DESIGN.md §6): the physical model of a plant's
-// skeleton built from its L-system (masses, inertias, stiffnesses, drag),
-// and the CPU reference of the GPU physics and pose passes — the same
-// per-joint math (shaders/joint_physics.h), one joint after another.
+// Plants that move (docs/PHYSICS.md, after Crankshaw 2020, ch. 6): the
+// physical model of a plant's skeleton built from its L-system (masses,
+// inertias, stiffnesses, drag), and the CPU reference of the GPU physics and
+// pose passes — the same per-joint math (shaders/joint_physics.h), one joint
+// after another.
 #pragma once
 
 #include "engine/scene.h"
