@@ -1,15 +1,15 @@
 #pragma once
-// The b-grammar of seed 000 (ch. 4-6): an acyclic grammar that generates
-// exactly one word, the derived string of an L-system, without storing it.
-// Every non-terminal (a node) has one production, its body: terminal modules
-// with their parameters and references to other nodes, in string order.
-// Nodes are stored in topological order, children before parents, and the
-// axiom is the last node, so one forward pass over the nodes sees every node
-// after all the nodes it refers to.
+// The b-grammar (Calgary b-grammar thesis, ch. 4-6): an acyclic grammar that
+// generates exactly one word, the derived string of an L-system, without
+// storing it. Every non-terminal (a node) has one production, its body:
+// terminal modules with their parameters and references to other nodes, in
+// string order. Nodes are stored in topological order, children before parents,
+// and the axiom is the last node, so one forward pass over the nodes sees every
+// node after all the nodes it refers to.
 //
 // This is the grammar side of the InstanceGraph: each node becomes an object,
 // each reference in a body an instance of it whose transform is the turtle's
-// state accumulated over the body before it (seed 000 §4.2). Bodies are kept
+// state accumulated over the body before it (the thesis, §4.2). Bodies are kept
 // plain to walk for that, and every node caches what the instancing step and
 // the counts need: the length of its expansion, its modules per symbol and its
 // bracket depth effect.
@@ -56,8 +56,8 @@ struct BNode {
     uint64_t modules = 0;     // length of the expansion
     // Brackets of the expansion: '[' minus ']' over all of it, and the lowest
     // depth any prefix reaches relative to the start (0 or negative). A node is
-    // legal (seed 000 §4.2: its turtle status function exists) when that is 0:
-    // it may leave states pushed but never pops below its start.
+    // legal (Calgary b-grammar thesis, §4.2: its turtle status function exists)
+    // when that is 0: it may leave states pushed but never pops below its start.
     int32_t depthChange = 0;
     int32_t lowestDepth = 0;
 
@@ -103,7 +103,7 @@ struct BGrammarOptions {
     // false: the word derive() produces; true: applyInterpretation(derive()),
     // the word the turtle reads.
     bool interpreted = false;
-    // The randomness factor k of seed 000 §5.1 for productions that draw random
+    // The randomness factor k (Calgary b-grammar thesis, §5.1) for productions that draw random
     // numbers: at most k distinct rewrites per (module, remaining steps), each
     // occurrence picking one from the seed. The word then has derive()'s
     // statistics but is not derive()'s word. 0: the exact word, derived and
@@ -128,8 +128,8 @@ ModuleString expand(const BGrammar& grammar, size_t maxModules = 50'000'000);
 // Modules of the word per symbol (indexed by SymbolId), without expanding it.
 std::vector<uint64_t> countModules(const BGrammar& grammar);
 
-// References to nodes over all bodies (the instances of seed 000 §4.2, the
-// axiom's included).
+// References to nodes over all bodies (the instances of the Calgary b-grammar
+// thesis, §4.2, the axiom's included).
 uint64_t nodeReferences(const BGrammar& grammar);
 
 // Memory the b-grammar occupies (its arrays' sizes, not their capacities).

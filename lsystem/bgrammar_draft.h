@@ -38,10 +38,10 @@ private:
 uint32_t appendNode(BGrammar& draft, std::span<const BodyItem> body, const BGrammarLimits& limits);
 
 // Finishes a draft: nodes referenced once are inlined into their parent
-// (seed 000 §4.4), so are illegal nodes (those that pop below their start)
-// wherever they are used, and unreferenced nodes and modules are dropped; then
-// every node's counts and bracket depths are cached. Throws DerivationError
-// past the limits or when a count passes 2^64.
+// (Calgary b-grammar thesis, §4.4), so are illegal nodes (those that pop below
+// their start) wherever they are used, and unreferenced nodes and modules are
+// dropped; then every node's counts and bracket depths are cached. Throws
+// DerivationError past the limits or when a count passes 2^64.
 BGrammar finishBGrammar(BGrammar draft, const BGrammarLimits& limits);
 
 // Whether buildBGrammar can build the grammar's b-grammar from its rules

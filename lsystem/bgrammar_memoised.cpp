@@ -1,14 +1,14 @@
-// The b-grammar built from the rules, never expanding the word (seed 000
-// §4.1, §4.3, §5.1). The word a module becomes in r more steps depends only on
-// the module (symbol and parameter bits) and r when the rules are context-free
-// and draw no random numbers, so each (module, r) is rewritten once: it
-// becomes nothing, a single item (substituted where it is used, §4.3), or a
-// node whose body holds what each module of its successor becomes in r - 1
-// steps. A step is derive()'s: the rules, then the decomposition rules until
-// none applies (at most their maximum depth); the interpretation rules, when
-// asked for, rewrite the modules left after the last step the same way.
-// Decomposition and interpretation are context-free here, so applying them
-// module by module gives derive()'s passes over the whole string.
+// The b-grammar built from the rules, never expanding the word (Calgary
+// b-grammar thesis, §4.1, §4.3, §5.1). The word a module becomes in r more
+// steps depends only on the module (symbol and parameter bits) and r when the
+// rules are context-free and draw no random numbers, so each (module, r) is
+// rewritten once: it becomes nothing, a single item (substituted where it is
+// used, §4.3), or a node whose body holds what each module of its successor
+// becomes in r - 1 steps. A step is derive()'s: the rules, then the
+// decomposition rules until none applies (at most their maximum depth); the
+// interpretation rules, when asked for, rewrite the modules left after the last
+// step the same way. Decomposition and interpretation are context-free here, so
+// applying them module by module gives derive()'s passes over the whole string.
 //
 // With random draws the key gains a variant in [0, k): every occurrence of a
 // module picks one from the seed and the occurrence's place in its parent's
@@ -234,7 +234,7 @@ private:
         }
     }
 
-    // A body of no item is nothing, of one item that item (seed 000 §4.3), else a node.
+    // A body of no item is nothing, of one item that item (Calgary b-grammar thesis, §4.3), else a node.
     std::optional<BodyItem> itemFor(std::span<const BodyItem> body) {
         if (body.empty()) return std::nullopt;
         if (body.size() == 1) return body.front();

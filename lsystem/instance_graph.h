@@ -1,8 +1,9 @@
 #pragma once
-// The object-instancing hierarchy of seed 000 §4.2 built from a b-grammar
-// (lsystem/bgrammar.h): each node becomes an object, each reference to a node
-// in a body an instance of it, placed by the turtle state accumulated over the
-// body before it. docs/INSTANCING.md describes the model; in short:
+// The object-instancing hierarchy of the Calgary b-grammar thesis (§4.2) built
+// from a b-grammar (lsystem/bgrammar.h): each node becomes an object, each
+// reference to a node in a body an instance of it, placed by the turtle state
+// accumulated over the body before it. docs/INSTANCING.md describes the model;
+// in short:
 //
 // - An object is the turtle's interpretation of a node's word from a local
 //   entry frame (the identity): its primitives are in that local space, and
@@ -15,7 +16,7 @@
 // - Orientation-dependent commands (tropism bends, `$`, `@Tv`) read the entry
 //   orientation only through world vectors seen from the local frame; keying
 //   on those shares subtrees whose entry orientations differ by a rotation
-//   about the vector (seed 000 Theorem 5.1), within a granularity pi/G.
+//   about the vector (the thesis' Theorem 5.1), within a granularity pi/G.
 // - Joints: an object's primitives refer to the joints of its own subtree, in
 //   drawing order, or to the joint current when the instance starts.
 // - Every object carries its local bounds, so a renderer can cull a subtree.
@@ -100,9 +101,9 @@ Frame compose(const Frame& parent, const Frame& local);
 Bounds transformed(const Bounds& local, const Frame& frame);
 
 struct InstanceGraphOptions {
-    // G of seed 000 §5.3: entries whose tropism vector (and world vertical,
-    // for `$`) seen from the entry frame fall in the same cell of pi/G in
-    // both spherical angles share an object. 0: only identical ones (exact).
+    // G of the Calgary b-grammar thesis, §5.3: entries whose tropism vector (and
+    // world vertical, for `$`) seen from the entry frame fall in the same cell of
+    // pi/G in both spherical angles share an object. 0: only identical ones (exact).
     int orientationGranularity = 0;
     size_t maxObjects = 1'000'000;  // DerivationError past it
 };

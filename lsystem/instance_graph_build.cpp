@@ -1,7 +1,7 @@
 // buildInstanceGraph: every object is the turtle's interpretation of a node's
-// body from a local entry frame (seed 000 §4.2), with the turtle's own
-// applyModule(); references to other nodes become instances of objects
-// looked up by (node, entry values read), built on first use.
+// body from a local entry frame (Calgary b-grammar thesis, §4.2), with the
+// turtle's own applyModule(); references to other nodes become instances of
+// objects looked up by (node, entry values read), built on first use.
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,7 +1,8 @@
 #pragma once
 // What an object of the InstanceGraph is keyed by: its node and the entry
 // values its interpretation read (status_function.h's sources), with the
-// orientation-dependent ones quantised by seed 000 §5.3's granularity.
+// orientation-dependent ones quantised by the granularity of the Calgary
+// b-grammar thesis, §5.3.
 // Internal to the builder (lsystem/instance_graph_build.cpp).
 
 #include <array>

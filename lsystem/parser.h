@@ -1,5 +1,5 @@
 #pragma once
-// Reads the native .lsys notation (DESIGN.md §2, docs/LSYS_FORMAT.md) into a Grammar.
+// Reads the native .lsys notation (docs/LSYS_FORMAT.md) into a Grammar.
 
 #include <string>
 #include <string_view>

@@ -1,7 +1,7 @@
 #pragma once
 // A plant once interpreted: the records a renderer uploads and an exporter
 // writes. The turtle produces one directly from a derived string; flattening
-// an InstanceGraph must produce the same records (DESIGN.md §3–4).
+// an InstanceGraph must produce the same records (docs/INSTANCING.md).
 //
 // Plant space is the turtle's space, y up: the turtle starts at the origin
 // heading +Y with left -X and up +Z. A Frame's rotation maps local axes to
@@ -42,7 +42,7 @@ struct Primitive {
     float endRadius = 0.0f;
 };
 
-// One drawn segment of the skeleton in its rest pose (seed 004).
+// One drawn segment of the skeleton in its rest pose (Crankshaw 2020's joints).
 struct Joint {
     int32_t parent = -1;  // joint this one grows on; -1 for a root
     Frame rest;           // plant-space frame at the segment's base

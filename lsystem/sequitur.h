@@ -1,7 +1,8 @@
 #pragma once
-// Grammar-based compression of a derived word into a b-grammar (seed 000
-// ch. 6), for the L-systems whose rewriting cannot be shared by key: context-
-// sensitive or cut rules, random draws without a randomness factor.
+// Grammar-based compression of a derived word into a b-grammar (Calgary
+// b-grammar thesis, ch. 6), for the L-systems whose rewriting cannot be shared
+// by key: context-sensitive or cut rules, random draws without a randomness
+// factor.
 //
 // SEQUITUR (Nevill-Manning & Witten 1997) reads the word module by module
 // (equal symbol and parameter bits are the same terminal) and keeps two
@@ -9,7 +10,7 @@
 // (pair of adjacent symbols) occurs twice in the grammar, and every rule is
 // used at least twice.
 //
-// Bracket legality (seed 000 §6.2) takes precedence: a digram that would make
+// Bracket legality (the thesis, §6.2) takes precedence: a digram that would make
 // an illegal or unhelpful rule is never indexed, so it may repeat. A digram xy
 // (x, y terminals or rules standing for their expansions) becomes a rule only
 // when
@@ -18,7 +19,7 @@
 //     balanced x), so every rule has a turtle status function; and
 //   - if it leaves states pushed (depth(x) + depth(y) > 0), its expansion
 //     starts with '[': rules then gather whole branches "[...]" instead of
-//     partial axes like "F[+F", the grouping seed 000 found more compact.
+//     partial axes like "F[+F", the grouping the thesis found more compact.
 // Inlining a rule used once never changes an expansion, so rules stay legal.
 
 #include "lsystem/bgrammar.h"

@@ -1,6 +1,6 @@
 #pragma once
 // What interpreting a node's body from a local entry frame leaves behind for
-// the body that refers to it: seed 000's interpretation status function
+// the body that refers to it: the Calgary b-grammar thesis's interpretation status function
 // (S, n, g1..gn), plus which entry values it read. Internal to the
 // InstanceGraph builder (lsystem/instance_graph_build.cpp).
 //
@@ -55,7 +55,7 @@ struct LocalState {
     JointRef joint = kEntryJoint;
 };
 
-// Seed 000's status function: S (the state at the end), n and g1..gn (the
+// The Calgary b-grammar thesis' status function: S (the state at the end), n and g1..gn (the
 // states left pushed, bottom first) and, while a polygon opened outside is
 // being traced, the vertices added to it (local positions).
 struct StatusFunction {

@@ -1,4 +1,4 @@
-// GPU data layouts of the plant field (DESIGN.md §5), shared by GLSL and C++.
+// GPU data layouts of the plant field (docs/ARCHITECTURE.md), shared by GLSL and C++.
 // Members are vec4/uvec4 (or plain uints where Vulkan fixes the layout), so
 // std430 and C++ agree without padding rules.
 #ifndef PLANTFIELD_SHADERS_FIELD_LAYOUTS_H
@@ -107,7 +107,7 @@ struct FieldVertex {
     vec4 position; // xyz plant space (m), w texture u
     vec4 normal;   // xyz unit normal, w texture v
     vec4 albedo;   // rgb linear albedo, a SURFACE_* kind
-    uvec4 joint;   // x joint index in the model's skeleton (issue 6), yzw 0
+    uvec4 joint;   // x joint index in the model's skeleton, yzw 0
 };
 
 struct TerrainVertex {

@@ -1,8 +1,9 @@
-// The physics of one joint and the pose of a skeleton (DESIGN.md §6 with the
-// errata of seeds/NOTES.md), written once for shaders/physics.comp,
-// shaders/pose.comp and the CPU reference (engine/physics/plant_physics.h), so both
-// make the same float operations. GLSL and C++ (namespace gpu, glm) read
-// this file; float literals carry an f suffix so C++ does not widen them.
+// The physics of one joint and the pose of a skeleton (docs/PHYSICS.md:
+// Crankshaw 2020's model, its errata corrected), written once for
+// shaders/physics.comp, shaders/pose.comp and the CPU reference
+// (engine/physics/plant_physics.h), so both make the same float operations. GLSL and
+// C++ (namespace gpu, glm) read this file; float literals carry an f suffix so
+// C++ does not widen them.
 //
 // Model, per joint j with rest frame R (plant space, local +Y along the
 // segment) and rotation q away from rest (local frame):

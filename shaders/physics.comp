@@ -2,11 +2,11 @@
 #extension GL_GOOGLE_include_directive : require
 #include "physics_bindings.glsl"
 
-// Physics (DESIGN.md §5 pass 1, §6): one invocation per simulated joint
-// takes the dispatch's sub-steps of stepJoint, its state held in
-// registers between them (prepareJointStep once per joint). Every joint reads its
-// parent's rotation and its own base from the poses at entry (written by the
-// previous pose pass) and writes only its own state, so the joints of a
+// Physics, the frame's first pass (docs/PHYSICS.md): one invocation per
+// simulated joint takes the dispatch's sub-steps of stepJoint, its state
+// held in registers between them (prepareJointStep once per joint). Every joint
+// reads its parent's rotation and its own base from the poses at entry (written
+// by the previous pose pass) and writes only its own state, so the joints of a
 // dispatch are independent. engine/physics/plant_physics.h stepSkeletonsOnCpu is the
 // CPU reference.
 layout(local_size_x = PHYSICS_GROUP_SIZE) in;

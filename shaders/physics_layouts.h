@@ -1,5 +1,5 @@
-// GPU data of the plant physics (DESIGN.md §6, issue 6), shared by GLSL and
-// C++ like field_layouts.h: vec4/uvec4 members only.
+// GPU data of the plant physics (docs/PHYSICS.md), shared by GLSL and C++ like
+// field_layouts.h: vec4/uvec4 members only.
 //
 // A model's skeleton is its joints (one per segment). A simulated copy of a
 // skeleton (a Skeleton) has one JointState and one JointPose per joint. The

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "physics_bindings.glsl"
 
-// Pose (DESIGN.md §5 pass 2), one dispatch per depth level from the roots
+// Pose, the frame's second pass, one dispatch per depth level from the roots
 // down: one invocation per joint of the level composes its parent's pose,
 // written by the previous level's dispatch, with its own local map
 // (joint_physics.h composeWithParent). jointOrder lists the simulated joints

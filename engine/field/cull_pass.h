@@ -1,12 +1,12 @@
-// The GPU-driven part of the field frame (DESIGN.md §5 pass 3): one compute
-// invocation per field instance tests the instance's bounding sphere against
-// the frustum, picks its LOD from projected height with hysteresis (and a
-// dithered fade between LODs), and appends it to the compacted visible list
-// of its (model, LOD); a second small pass turns every non-empty list into a
-// VkDrawIndexedIndirectCommand of its draw class and counts them, for
-// vkCmdDrawIndexedIndirectCount (or, without that feature, instanceCount is
-// written into one command per template and all are drawn). No per-plant CPU
-// work per frame.
+// The GPU-driven part of the field frame, its cull + LOD pass
+// (docs/CULLING.md): one compute invocation per field instance tests the
+// instance's bounding sphere against the frustum, picks its LOD from projected
+// height with hysteresis (and a dithered fade between LODs), and appends it to
+// the compacted visible list of its (model, LOD); a second small pass turns
+// every non-empty list into a VkDrawIndexedIndirectCommand of its draw class
+// and counts them, for vkCmdDrawIndexedIndirectCount (or, without that
+// feature, instanceCount is written into one command per template and all are
+// drawn). No per-plant CPU work per frame.
 #pragma once
 
 #include "engine/vk/compute_set.h"

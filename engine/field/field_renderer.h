@@ -1,4 +1,4 @@
-// The GPU-driven field frame (DESIGN.md §5): every plant in one instance
+// The GPU-driven field frame (docs/ARCHITECTURE.md): every plant in one instance
 // buffer; per frame the cull pass picks what is drawn at which LOD and
 // writes the indirect draws, the shadow pass and the colour pass draw from
 // those lists. The CPU does no per-plant work per frame. recordNaive() draws

@@ -1,4 +1,4 @@
-// Billboard impostors (DESIGN.md §5 LOD2, seed 001): at load, every plant
+// Billboard impostors (LOD2, after Tankard 2001's billboards): at load, every plant
 // model is rendered on the GPU from `frames` directions around its vertical
 // axis into a layered atlas of albedo + coverage and normal + depth, so far
 // plants are drawn as one camera-facing quad (frame chosen and blended by

@@ -1,6 +1,7 @@
 // The sun's shadow map: one orthographic depth map over the part of the
-// field near the camera, drawn from the same indirect lists as the frame
-// (DESIGN.md §5 pass 4) and sampled with hardware depth comparison.
+// field near the camera, drawn in the frame's shadow pass (after the cull
+// pass) from the same indirect lists as the colour pass, and sampled with
+// hardware depth comparison.
 #pragma once
 
 #include "engine/vk/resources.h"

@@ -1,4 +1,4 @@
-// The field's moving plants (issue 6): which simulated skeleton each plant
+// The field's moving plants: which simulated skeleton each plant
 // follows, and when the physics pass steps. Farther plants share a model's
 // skeletons, simulated in a few copies placed a fraction of a gust
 // wavelength apart along the wind, so neighbours sway out of phase; each

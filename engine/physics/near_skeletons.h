@@ -1,4 +1,4 @@
-// Simulation LOD for plants near the camera (issue 6): up to the scene's
+// Simulation LOD for plants near the camera: up to the scene's
 // joint budget, plants close to the camera get a skeleton of their own —
 // the wind at their own place, their own scale — instead of following one
 // of their model's shared copies. A plant keeps its skeleton (and so its

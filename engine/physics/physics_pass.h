@@ -1,5 +1,5 @@
-// The physics and pose passes on the GPU (DESIGN.md §5 passes 1 and 2):
-// one compute invocation per simulated joint takes the frame's sub-steps
+// The physics and pose passes on the GPU, the frame's first two (before the
+// cull pass): one compute invocation per simulated joint takes the frame's sub-steps
 // (shaders/physics.comp), then the poses are composed level by level from
 // the roots, one dispatch per depth (shaders/pose.comp). The poses are what the vertex
 // shaders skin plant vertices with. engine/physics/plant_physics.h is the CPU

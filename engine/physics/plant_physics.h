@@ -1,6 +1,7 @@
 // Simulated skeletons and the CPU reference of the GPU physics and pose
-// passes: the same per-joint math (shaders/joint_physics.h), one joint after
-// another, over the parameters of engine/scene/joint_params.h.
+// passes (docs/PHYSICS.md, after Crankshaw 2020, ch. 6): the same per-joint
+// math (shaders/joint_physics.h), one joint after another, over the
+// parameters of engine/scene/joint_params.h.
 #pragma once
 
 #include "engine/scene/joint_params.h"

@@ -55,13 +55,13 @@ std::vector<PlantInstance> placePoissonDisk(const Heightfield& terrain, const Pl
 // Output is grouped by rule, in the order of `rules`.
 std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<const PlacementRule> rules, uint64_t seed);
 
-// Exactly `count` plants for the same rules (issue 5's --instances N): the
-// rules with every distance and clearance scaled by one factor, chosen from a
-// small pilot placement to give slightly more than `count`, then thinned to
-// `count` by keeping the plants with the smallest hash of (seed, position in
-// the placement) — a uniform subset of a few per cent, so every species keeps
-// its share and the field stays a Poisson-disk field. Throws when the rules
-// admit no plant at all on this terrain.
+// Exactly `count` plants for the same rules (`plantfield --instances N` must
+// render exactly N): the rules with every distance and clearance scaled by one
+// factor, chosen from a small pilot placement to give slightly more than
+// `count`, then thinned to `count` by keeping the plants with the smallest hash
+// of (seed, position in the placement) — a uniform subset of a few per cent, so
+// every species keeps its share and the field stays a Poisson-disk field.
+// Throws when the rules admit no plant at all on this terrain.
 std::vector<PlantInstance> scaleToCount(const Heightfield& terrain, std::span<const PlacementRule> rules, size_t count,
                                         uint64_t seed);
 

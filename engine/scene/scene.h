@@ -82,7 +82,7 @@ struct Placement {
     bool operator==(const Placement&) const = default;
 };
 
-// Seed 001's impostors: one camera-facing quad, or two / three crossed quads.
+// Tankard 2001's billboards: one camera-facing quad, or two / three crossed quads.
 enum class BillboardKind { Single, Double, Triple };
 
 // Where the renderer switches level of detail, by projected height on screen.
@@ -148,9 +148,9 @@ struct Wind {
 // array is read through texel views of at most 2²⁷ texels on common devices.
 constexpr uint32_t kMaxJointBudget = 10'000'000;
 
-// The physical model of the plants (issue 6, DESIGN.md §6).
+// The physical model of the plants (docs/PHYSICS.md).
 struct PhysicsSettings {
-    float woodDensity = 600.0f;        // kg/m³ (seed 004: 400–1000)
+    float woodDensity = 600.0f;        // kg/m³ (Crankshaw 2020: 400–1000)
     float youngsModulus = 1.0e9f;      // Pa, of green wood, for stiffness from beam theory
     float stiffnessScale = 1.0f;       // multiplies every stiffness (art direction: >1 stiffer)
     float dampingRatio = 0.15f;        // ζ: c = 2·ζ·sqrt(k·I)

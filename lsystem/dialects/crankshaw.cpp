@@ -1,4 +1,4 @@
-// Crankshaw 2020 (seed 004): statements '#...;', several per line allowed.
+// Crankshaw 2020: statements '#...;', several per line allowed.
 //   #n = 6;                       derivation length: 6
 //   #define r {10, 20};           #define r (10+ran(20-10))      (drawn once)
 //   #object F BRANCH;             // object F: BRANCH             (the turtle draws no objects yet)
@@ -21,7 +21,8 @@ namespace lsys {
 namespace {
 
 // Single-character modules besides names (ABOP turtle symbols; the thesis'
-// swapped pitch/roll wording is not followed, see seeds/NOTES.md).
+// wording swaps pitch and roll relative to ABOP although its examples come from
+// ABOP, so it is not followed).
 constexpr std::string_view kSymbols = "+-/\\^&$[]!|'%.";
 
 struct Crankshaw {

@@ -2,9 +2,10 @@
 // The three notations of the source documents (docs/DIALECTS.md), each read by
 // translating it into native .lsys text, which the native parser then reads:
 // every dialect ends in the same Grammar.
-//   crankshaw  seed 004: #n = 6; #define r 20; #w : ...; #p1 : pred : cond : succ;
-//   robbins    seed 003: iterations 10 angle 30 ...  A --> ...
-//   plantlang  seed 002: Axiom = f20t15dX   X => t<dY   d m f u r t T o O c a A l L
+//   crankshaw  Crankshaw 2020: #n = 6; #define r 20; #w : ...; #p1 : pred : cond : succ;
+//   robbins    Robbins 1998: iterations 10 angle 30 ...  A --> ...
+//   plantlang  the clouds-and-mountains chapter:
+//              Axiom = f20t15dX   X => t<dY   d m f u r t T o O c a A l L
 
 #include <cstdint>
 #include <optional>

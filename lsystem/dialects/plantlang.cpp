@@ -1,4 +1,5 @@
-// The turtle command language of seed 002 ("plantlang"), one statement a line:
+// The turtle command language ("plantlang") of the clouds-and-mountains chapter
+// (docs/REFERENCES.md), one statement a line:
 //   Axiom = f20t15dt14dt13dX
 //   X => t<dt<Yf70Yf132L0.9Y          productions: '=>' or '->'
 //   (0.2) F -> [-F]F                   stochastic: the probability first

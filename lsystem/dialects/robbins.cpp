@@ -1,4 +1,4 @@
-// Robbins 1998 (seed 003): a free-form stream of words.
+// Robbins 1998 (Branching Shadows): a free-form stream of words.
 //   iterations 10 angle 30 length 1 thickness .2 startpoint 0 0 0 forward 0 0 1 left 1 0 0 up 0 1 0
 //   FP A                                   the axiom: every module before the first production
 //   A --> !(.9) t(.1) FP B >(94) B         a production runs until the next "NAME -->"

@@ -1,6 +1,6 @@
 // Every dialect file in data/plants/dialects derives exactly as its native twin,
-// and the reference counts of ../shared/reference/README.md come out of the
-// dialect files themselves.
+// and the module counts of the source documents' worked examples (computed
+// independently of this project) come out of the dialect files themselves.
 
 #include <algorithm>
 
@@ -55,7 +55,7 @@ INSTANTIATE_TEST_SUITE_P(
         return name;
     });
 
-// The reference counts of ../shared/reference/README.md are checked on the
+// The module counts of the source documents' worked examples are checked on the
 // dialect files too, next to their native twins, in tests/lsystem/reference_test.cpp.
 
 TEST(CrankshawReference, StochasticSameSeedSameStringOtherSeedOtherString) {

@@ -1,6 +1,7 @@
-// Seed 000's growth law: for a D0L bush the hierarchy grows linearly with the
-// number of steps while the primitives it stands for grow geometrically; the
-// 9-step bush (134 M segments) is built without expanding anything.
+// The growth law of the Calgary b-grammar thesis: for a D0L bush the hierarchy
+// grows linearly with the number of steps while the primitives it stands for
+// grow geometrically; the 9-step bush (134 M segments) is built without
+// expanding anything.
 
 #include <chrono>
 #include <cstdio>

@@ -1,7 +1,7 @@
-// A node whose body pops below its start has no status function (seed 000
-// §4.2): it is interpreted inline, as part of the body that uses it, and the
-// plant stays the turtle's. buildBGrammar already inlines such nodes, so the
-// b-grammar here is written by hand.
+// A node whose body pops below its start has no status function (Calgary
+// b-grammar thesis, §4.2): it is interpreted inline, as part of the body that
+// uses it, and the plant stays the turtle's. buildBGrammar already inlines such
+// nodes, so the b-grammar here is written by hand.
 
 #include "instance_graph_test_support.h"
 

@@ -1,7 +1,8 @@
-// Tropism makes a subtree's shape depend on its entry orientation (seed 000
-// §5.3). Objects are shared between entries whose tropism vector, seen from
-// the entry frame, is the same (Theorem 5.1: the orientations differ by a
-// rotation about T) — exactly with G = 0, within cells of pi/G otherwise.
+// Tropism makes a subtree's shape depend on its entry orientation (Calgary
+// b-grammar thesis, §5.3). Objects are shared between entries whose tropism
+// vector, seen from the entry frame, is the same (Theorem 5.1: the orientations
+// differ by a rotation about T) — exactly with G = 0, within cells of pi/G
+// otherwise.
 
 #include <cstdio>
 

@@ -1,6 +1,6 @@
-// Seed 000 §4.5: for a D0L system the b-grammar grows linearly with the
-// number of steps while the word grows geometrically, so a word of 134 M
-// segments is counted from a few nodes.
+// Calgary b-grammar thesis, §4.5: for a D0L system the b-grammar grows
+// linearly with the number of steps while the word grows geometrically, so a
+// word of 134 M segments is counted from a few nodes.
 
 #include <map>
 

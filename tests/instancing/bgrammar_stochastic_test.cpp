@@ -1,6 +1,7 @@
-// Pseudo-stochastic b-grammars (seed 000 §5.1): with a randomness factor k a
-// module is rewritten at most k ways per step, picked from the seed. The word
-// is not derive()'s, but is reproducible and has its statistics.
+// Pseudo-stochastic b-grammars (Calgary b-grammar thesis, §5.1): with a
+// randomness factor k a module is rewritten at most k ways per step, picked
+// from the seed. The word is not derive()'s, but is reproducible and has its
+// statistics.
 
 #include <cmath>
 

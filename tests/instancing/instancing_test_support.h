@@ -56,7 +56,8 @@ inline void appendNodeWord(const BGrammar& grammar, uint32_t node, std::vector<S
     }
 }
 
-// Seed 000's legality: no prefix of the node's word has more ']' than '['.
+// Legality as the Calgary b-grammar thesis defines it: no prefix of the node's
+// word has more ']' than '['.
 inline bool nodeIsLegal(const BGrammar& grammar, uint32_t node) {
     std::vector<SymbolId> word;
     appendNodeWord(grammar, node, word);

@@ -1,7 +1,7 @@
-// SEQUITUR with bracket legality (seed 000 ch. 6): the grammar generates the
-// input exactly, no rule pops below its start, rules that leave branches open
-// start with '[', every rule is used twice and no digram repeats where a rule
-// may be formed.
+// SEQUITUR with bracket legality (Calgary b-grammar thesis, ch. 6): the grammar
+// generates the input exactly, no rule pops below its start, rules that leave
+// branches open start with '[', every rule is used twice and no digram repeats
+// where a rule may be formed.
 
 #include <random>
 #include <set>
@@ -106,7 +106,7 @@ TEST(Sequitur, RulesRespectBracketLegality) {
 }
 
 TEST(Sequitur, BranchesBecomeRules) {
-    // After seed 000 §6.2's example: rules gather whole branches, never "F[" or "F]"
+    // After the Calgary b-grammar thesis' example in §6.2: rules gather whole branches, never "F[" or "F]"
     // (SEQUITUR is greedy, so the two copies of "[-FF[+FF][-FF]]" are parsed differently).
     SymbolTable symbols;
     ModuleString word = wordOf("FFFF[+FF][-FF[+FF][-FF]]FF[+FF][-FF[+FF][-FF]]", symbols);

@@ -1,4 +1,4 @@
-// Context matching with lpfg's bracket rules (DESIGN.md §2). Each case rewrites
+// Context matching with lpfg's bracket rules (docs/LSYS_FORMAT.md). Each case rewrites
 // the module A to X when its context matches, and checks the whole word after
 // one step, so a wrong match anywhere in the word shows up.
 

@@ -1,4 +1,5 @@
-// Every case of ../shared/reference/README.md, from the files in data/plants:
+// Every worked example of the source documents with a known module count
+// (computed independently of this project), from the files in data/plants:
 // the native file and, where the source document has its own notation, its
 // twin in data/plants/dialects (read through loadDialectFile).
 

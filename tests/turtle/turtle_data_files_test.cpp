@@ -53,7 +53,7 @@ TEST(LsysTurtleDataFiles, EveryPlantInterpretsWithoutNaN) {
     EXPECT_GE(drawn, 15u);
 }
 
-// Robbins' first example (seed 003) draws its leaves as { +F -F -F } triangles.
+// The first example of Robbins 1998 draws its leaves as { +F -F -F } triangles.
 TEST(LsysTurtleDataFiles, RobbinsLeavesAreTriangles) {
     for (const char* file : {"plants/dialects/robbins_first_example.robbins", "plants/dialects/robbins_first_example.lsys"}) {
         SCOPED_TRACE(file);

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Issue 4's instancing benchmark: InstanceGraph build time and bytes against a flat
-# primitive buffer for a D0L bush, parametric trees, a stochastic field with
-# randomness factor k = 20 and context-sensitive systems, from `lsys instance
-# --json` (b-grammar + InstanceGraph build, measured inside lsys without parsing). Prints a
-# Markdown table for docs/BENCHMARKS.md. Usage: tools/bench/instancing.sh
+# The instancing benchmark of docs/BENCHMARKS.md: InstanceGraph build time and
+# bytes against a flat primitive buffer for a D0L bush, parametric trees, a
+# stochastic field with randomness factor k = 20 and context-sensitive systems,
+# from `lsys instance --json` (b-grammar + InstanceGraph build, measured inside
+# lsys without parsing). Prints a Markdown table for docs/BENCHMARKS.md.
+# Usage: tools/bench/instancing.sh
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 build=${BUILD_DIR:-$root/build}

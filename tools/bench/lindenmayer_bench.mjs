@@ -1,7 +1,8 @@
-// The peer of issue 3's rewriter benchmark: the npm `lindenmayer` library
-// (v1.5.4) deriving the same three systems as data/plants/fractal_bush.lsys,
-// decreasing_tree.lsys and context_benchmark.lsys. Prints the module count so
-// runs can be checked against lsys; hyperfine times the whole process.
+// The peer of the rewriter benchmark (tools/bench/rewriter_vs_lindenmayer.sh):
+// the npm `lindenmayer` library (v1.5.4) deriving the same three systems as
+// data/plants/fractal_bush.lsys, decreasing_tree.lsys and
+// context_benchmark.lsys. Prints the module count so runs can be checked
+// against lsys; hyperfine times the whole process.
 // Usage: node lindenmayer_bench.mjs bush|tree|context STEPS
 import LSystem from 'lindenmayer';
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Issue 3's rewriter benchmark: lsys against the npm `lindenmayer` library on
-# the same three systems, side by side in one hyperfine run per system
-# (whole process, deriving only). Prints a Markdown table of mean times and
-# ratios for docs/BENCHMARKS.md. Usage: tools/bench/rewriter_vs_lindenmayer.sh [RUNS]
+# The rewriter benchmark of docs/BENCHMARKS.md: lsys against the npm
+# `lindenmayer` library on the same three systems, side by side in one hyperfine
+# run per system (whole process, deriving only). Prints a Markdown table of mean
+# times and ratios for docs/BENCHMARKS.md.
+# Usage: tools/bench/rewriter_vs_lindenmayer.sh [RUNS]
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 build=${BUILD_DIR:-$root/build}

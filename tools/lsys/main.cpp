@@ -256,12 +256,12 @@ void addDerivationOptions(CLI::App& command, Arguments& arguments) {
 // --randomness and --granularity: how the InstanceGraph is built.
 void addGraphOptions(CLI::App& command, Arguments& arguments) {
     command.add_option("--randomness", arguments.randomness,
-        "Randomness factor k (seed 000 §5.1): at most k rewrites per module and step for random "
-        "rules; the plant then differs from derive's (same statistics). 0: exact, derived and compressed")
+        "Randomness factor k (Calgary b-grammar thesis, §5.1): at most k rewrites per module and step "
+        "for random rules; the plant then differs from derive's (same statistics). 0: exact, derived and compressed")
         ->check(CLI::Range(0, 1'000'000));
     command.add_option("--granularity", arguments.graphOptions.orientationGranularity,
-        "G of seed 000 §5.3: share subtrees whose entry orientation relative to the tropism "
-        "vector falls in the same pi/G cell (approximate); 0: exact sharing only")
+        "G of the Calgary b-grammar thesis, §5.3: share subtrees whose entry orientation relative to "
+        "the tropism vector falls in the same pi/G cell (approximate); 0: exact sharing only")
         ->check(CLI::Range(0, 1'000'000));
 }
 
@@ -301,7 +301,8 @@ int main(int argc, char** argv) {
 
     CLI::App* instanceCommand = app.add_subcommand(
         "instance",
-        "Build the InstanceGraph (seed 000: the b-grammar's shared subtrees placed by the turtle) of the plant and count "
+        "Build the InstanceGraph (after the Calgary b-grammar thesis: the b-grammar's shared subtrees placed by "
+        "the turtle) of the plant and count "
         "it without expanding: primitives = segments + surfaces + spheres + polygons, joints = segments, nodes = "
         "b-grammar non-terminals + the axiom, objects = distinct (node, entry turtle values it reads), instances = "
         "references to objects in all objects + primitives placed directly, compression = primitives / instances, "

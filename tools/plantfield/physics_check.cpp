@@ -1,8 +1,8 @@
-// plantfield --physics-check (issue 6): one skeleton of every plant model of
-// the scene, at the origin, simulated for 600 sub-steps of the scene's
-// physics in the scene's wind on the GPU (engine/physics/physics_pass.h, frames of 8
-// sub-steps) and on the CPU reference (engine/physics/plant_physics.h); prints the
-// largest rotation difference of any joint's state or pose as JSON.
+// plantfield --physics-check: one skeleton of every plant model of the scene,
+// at the origin, simulated for 600 sub-steps of the scene's physics in the
+// scene's wind on the GPU (engine/physics/physics_pass.h, frames of 8 sub-steps) and on
+// the CPU reference (engine/physics/plant_physics.h); prints the largest rotation
+// difference of any joint's state or pose as JSON.
 #include "field_setup.h"
 #include "modes.h"
 
