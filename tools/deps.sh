@@ -15,6 +15,7 @@ PACKAGES=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglm-dev libglfw3-dev libstb-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev xvfb xauth libtinygltf-dev gnuplot-nox
+  clang-format
 )
 command -v node >/dev/null && command -v npm >/dev/null || PACKAGES+=(nodejs npm)
 FUZZ_PACKAGES=(clang libclang-rt-14-dev)
