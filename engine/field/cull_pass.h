@@ -64,9 +64,8 @@ struct CullPass {
 };
 
 // Templates must be sorted by draw class. Throws when there are more
-// instances than FIELD_MAX_INSTANCES.
-CullPass createCullPass(const GpuContext& ctx, const CullPassInputs& inputs);
-void destroyCullPass(const GpuContext& ctx, CullPass& pass);
+// instances than FIELD_MAX_INSTANCES. What the pass creates is owned by `owner`.
+CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs);
 
 // Per frame, before record: frustum, camera, forced LOD, delta time.
 // `firstFrame` resets every instance's LOD state to settled at its target LOD.

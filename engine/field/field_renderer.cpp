@@ -51,9 +51,9 @@ struct Timed {
 };
 
 template <class T>
-Buffer uploadVector(const GpuContext& ctx, const std::vector<T>& data, VkBufferUsageFlags usage) {
+Buffer uploadVector(GpuResources& owner, const std::vector<T>& data, VkBufferUsageFlags usage) {
     if (data.empty()) throw std::runtime_error("field renderer: nothing to upload");
-    return createDeviceBufferWithData(ctx, data.data(), data.size() * sizeof(T), usage);
+    return createDeviceBufferWithData(owner, data.data(), data.size() * sizeof(T), usage);
 }
 
 // The drawn terrain keeps at most this many samples a side: far cells of a
@@ -81,36 +81,22 @@ bool nestedInColourPass(std::string_view pass) {
 }
 
 FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const FieldRenderSettings& settings)
-    : ctx_(ctx), content_(std::move(content)), settings_(settings) {
+    : ctx_(ctx), content_(std::move(content)), settings_(settings), resources_(ctx) {
     if (content_.plants.empty()) throw std::runtime_error("the scene places no plant");
     if (content_.plants.size() > FIELD_MAX_INSTANCES)
         throw std::runtime_error("at most " + std::to_string(FIELD_MAX_INSTANCES) + " plants can be drawn");
-    uniforms_ = createHostBuffer(ctx_, sizeof(FieldUniformBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    uniforms_ = createHostBuffer(resources_, sizeof(FieldUniformBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     uploadGeometry();
     uploadInstances();
-    motion_ = createFieldMotion(ctx_, content_);
-    shadow_ = createShadowMap(ctx_, settings_.shadowMapSize);
+    motion_ = createFieldMotion(resources_, content_);
+    shadow_ = createShadowMap(resources_, settings_.shadowMapSize);
     createDescriptors();
     createPipelines();
 }
 
 FieldRenderer::~FieldRenderer() {
-    VkDevice device = ctx_.device;
-    vkDeviceWaitIdle(device);
-    for (VkPipeline p : {pipelines_.sky, pipelines_.terrain, pipelines_.bark, pipelines_.foliage, pipelines_.impostor,
-                         pipelines_.plantShadow, pipelines_.impostorShadow})
-        vkDestroyPipeline(device, p, nullptr);
-    vkDestroyPipelineLayout(device, pipelineLayout_, nullptr);
-    vkDestroyDescriptorPool(device, descriptorPool_, nullptr);
-    for (VkBufferView view : texelViews_) vkDestroyBufferView(device, view, nullptr);
-    vkDestroyDescriptorSetLayout(device, setLayout_, nullptr);
-    destroyCullPass(ctx_, cull_);
-    destroyFieldMotion(ctx_, motion_);
-    destroyShadowMap(ctx_, shadow_);
-    destroyImpostorAtlas(ctx_, atlas_);
-    for (Buffer* b : {&uniforms_, &vertices_, &indices_, &models_, &instances_, &terrainVertices_, &terrainIndices_,
-                      &naiveVisible_, &outlines_})
-        destroyBuffer(ctx_, *b);
+    // resources_ then destroys what the last frame used.
+    vkDeviceWaitIdle(ctx_.device);
 }
 
 // Plant meshes and billboards in one vertex and one index pool, the
@@ -118,17 +104,17 @@ FieldRenderer::~FieldRenderer() {
 void FieldRenderer::uploadGeometry() {
     PlantModelPool& pool = content_.models;
     for (uint32_t quads = 1; quads <= 3; ++quads) billboards_[quads - 1] = appendBillboardMesh(pool, quads);
-    vertices_ = uploadVector(ctx_, pool.vertices, kStorageAndTexels);
-    indices_ = uploadVector(ctx_, pool.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-    atlas_ = bakeImpostorAtlas(ctx_, pool, vertices_, indices_, settings_.impostors);
-    outlines_ = uploadVector(ctx_, atlas_.outlines, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    vertices_ = uploadVector(resources_, pool.vertices, kStorageAndTexels);
+    indices_ = uploadVector(resources_, pool.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    atlas_ = bakeImpostorAtlas(resources_, pool, vertices_, indices_, settings_.impostors);
+    outlines_ = uploadVector(resources_, atlas_.outlines, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
 
     const TerrainMesh mesh = makeTerrainMesh(decimated(content_.terrain, kTerrainDrawSamples));
     std::vector<gpu::TerrainVertex> terrain(mesh.positions.size());
     for (size_t i = 0; i < terrain.size(); ++i)
         terrain[i] = {glm::vec4(mesh.positions[i], 0.0f), glm::vec4(mesh.normals[i], 0.0f)};
-    terrainVertices_ = uploadVector(ctx_, terrain, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-    terrainIndices_ = uploadVector(ctx_, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    terrainVertices_ = uploadVector(resources_, terrain, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    terrainIndices_ = uploadVector(resources_, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     terrainIndexCount_ = uint32_t(mesh.indices.size());
 }
 
@@ -156,12 +142,12 @@ void FieldRenderer::uploadInstances() {
     }
     std::vector<gpu::PlantModel> models;
     for (const PlantModelInfo& info : pool.models) models.push_back(info.gpu);
-    models_ = uploadVector(ctx_, models, kStorageAndTexels);
-    instances_ = uploadVector(ctx_, instances, kStorageAndTexels);
+    models_ = uploadVector(resources_, models, kStorageAndTexels);
+    instances_ = uploadVector(resources_, instances, kStorageAndTexels);
 
     std::vector<uint32_t> naive(plantCount);
     for (uint32_t i = 0; i < plantCount; ++i) naive[i] = i | (VISIBLE_COVERAGE_MAX << VISIBLE_COVERAGE_SHIFT);
-    naiveVisible_ = uploadVector(ctx_, naive, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    naiveVisible_ = uploadVector(resources_, naive, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
 
     // Templates sorted by class: bark and foliage meshes of LOD0 and LOD1, then impostors.
     std::vector<gpu::DrawTemplate> templates;
@@ -182,7 +168,7 @@ void FieldRenderer::uploadInstances() {
     inputs.instanceCount = plantCount;
     inputs.modelCount = uint32_t(pool.models.size());
     inputs.templates = templates;
-    cull_ = createCullPass(ctx_, inputs);
+    cull_ = createCullPass(resources_, inputs);
 }
 
 void FieldRenderer::createDescriptors() {
@@ -207,15 +193,15 @@ void FieldRenderer::createDescriptors() {
     VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     layoutInfo.bindingCount = kBindings;
     layoutInfo.pBindings = bindings;
-    VK_CHECK(vkCreateDescriptorSetLayout(ctx_.device, &layoutInfo, nullptr, &setLayout_));
+    VkDescriptorSetLayout setLayout;
+    VK_CHECK(vkCreateDescriptorSetLayout(ctx_.device, &layoutInfo, nullptr, &setLayout));
+    resources_.own(setLayout);
 
-    // Two sets (GPU-driven and naive) of the layout above.
-    descriptorPool_ = createDescriptorPool(ctx_, bindings, 2);
-
-    const VkDescriptorSetLayout layouts[] = {setLayout_, setLayout_};
+    const VkDescriptorSetLayout layouts[] = {setLayout, setLayout};
     VkDescriptorSet sets[2];
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = descriptorPool_;
+    // Two sets (GPU-driven and naive) of the layout above.
+    alloc.descriptorPool = createDescriptorPool(resources_, bindings, 2);
     alloc.descriptorSetCount = 2;
     alloc.pSetLayouts = layouts;
     VK_CHECK(vkAllocateDescriptorSets(ctx_.device, &alloc, sets));
@@ -224,8 +210,7 @@ void FieldRenderer::createDescriptors() {
 
     const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
     auto view = [&](const Buffer& buffer, VkFormat format, uint32_t bytes) {
-        texelViews_.push_back(createTexelView(ctx_, buffer, format, bytes));
-        return texelViews_.back();
+        return createTexelView(resources_, buffer, format, bytes);
     };
     const VkBufferView instances = view(instances_, uint4, 16), vertices = view(vertices_, uint4, 16),
                        models = view(models_, uint4, 16), terrain = view(terrainVertices_, uint4, 16),
@@ -263,24 +248,25 @@ void FieldRenderer::createDescriptors() {
     const VkPushConstantRange push{kDrawStages, 0, sizeof(uint32_t)};
     VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     pipelineLayoutInfo.setLayoutCount = 1;
-    pipelineLayoutInfo.pSetLayouts = &setLayout_;
+    pipelineLayoutInfo.pSetLayouts = &setLayout;
     pipelineLayoutInfo.pushConstantRangeCount = 1;
     pipelineLayoutInfo.pPushConstantRanges = &push;
     VK_CHECK(vkCreatePipelineLayout(ctx_.device, &pipelineLayoutInfo, nullptr, &pipelineLayout_));
+    resources_.own(pipelineLayout_);
 }
 
 void FieldRenderer::createPipelines() {
-    VkDevice device = ctx_.device;
+    GpuResources modules(ctx_);
     struct Stages {
         VkShaderModule vertex, fragment;
     };
-    const Stages sky{createShaderModule(device, spirv_sky_vert), createShaderModule(device, spirv_sky_frag)};
-    const Stages terrain{createShaderModule(device, spirv_terrain_vert), createShaderModule(device, spirv_terrain_frag)};
-    const Stages plant{createShaderModule(device, spirv_plant_vert), createShaderModule(device, spirv_plant_frag)};
-    const Stages impostor{createShaderModule(device, spirv_impostor_vert),
-                          createShaderModule(device, spirv_impostor_frag)};
-    const VkShaderModule plantShadow = createShaderModule(device, spirv_plant_shadow_frag);
-    const VkShaderModule impostorShadow = createShaderModule(device, spirv_impostor_shadow_frag);
+    const Stages sky{createShaderModule(modules, spirv_sky_vert), createShaderModule(modules, spirv_sky_frag)};
+    const Stages terrain{createShaderModule(modules, spirv_terrain_vert), createShaderModule(modules, spirv_terrain_frag)};
+    const Stages plant{createShaderModule(modules, spirv_plant_vert), createShaderModule(modules, spirv_plant_frag)};
+    const Stages impostor{createShaderModule(modules, spirv_impostor_vert),
+                          createShaderModule(modules, spirv_impostor_frag)};
+    const VkShaderModule plantShadow = createShaderModule(modules, spirv_plant_shadow_frag);
+    const VkShaderModule impostorShadow = createShaderModule(modules, spirv_impostor_shadow_frag);
 
     GraphicsPipelineDesc desc;
     desc.layout = pipelineLayout_;
@@ -291,7 +277,7 @@ void FieldRenderer::createPipelines() {
         desc.vertex = s.vertex;
         desc.fragment = s.fragment;
         desc.cullMode = cull;
-        return createGraphicsPipeline(device, desc);
+        return createGraphicsPipeline(resources_, desc);
     };
     // The sky lies on the far plane (depth 1, the clear value): drawn last,
     // it fills what nothing else covered, and writes no depth.
@@ -312,13 +298,6 @@ void FieldRenderer::createPipelines() {
     desc.depthBiasSlope = 2.0f;
     pipelines_.plantShadow = make({plant.vertex, plantShadow}, VK_CULL_MODE_NONE);
     pipelines_.impostorShadow = make({impostor.vertex, impostorShadow}, VK_CULL_MODE_NONE);
-
-    for (const Stages& s : {sky, terrain, plant, impostor}) {
-        vkDestroyShaderModule(device, s.vertex, nullptr);
-        vkDestroyShaderModule(device, s.fragment, nullptr);
-    }
-    vkDestroyShaderModule(device, plantShadow, nullptr);
-    vkDestroyShaderModule(device, impostorShadow, nullptr);
 }
 
 void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
@@ -473,20 +452,7 @@ uint64_t FieldRenderer::naiveTriangles() const {
 }
 
 VkDeviceSize FieldRenderer::gpuBytes() const {
-    VkDeviceSize bytes = 0;
-    for (const Buffer* b : {&uniforms_, &vertices_, &indices_, &models_, &instances_, &terrainVertices_,
-                            &terrainIndices_, &naiveVisible_, &outlines_, &cull_.uniforms, &cull_.templates, &cull_.state,
-                            &cull_.counts, &cull_.visible, &cull_.commands, &cull_.drawCounts, &cull_.allCommands,
-                            &cull_.readback, &motion_.pass.uniforms, &motion_.pass.params, &motion_.pass.skeletons,
-                            &motion_.pass.states, &motion_.pass.poses, &motion_.pass.jointSkeleton,
-                            &motion_.instanceSkeleton, &motion_.restStates, &motion_.restPoses})
-        bytes += b->size;
-    auto imageBytes = [](const Image& image, uint32_t layers, uint32_t bytesPerTexel, double mipFactor) {
-        return VkDeviceSize(double(image.extent.width) * image.extent.height * layers * bytesPerTexel * mipFactor);
-    };
-    bytes += imageBytes(atlas_.color, atlas_.layers, 4, 4.0 / 3.0) + imageBytes(atlas_.normalDepth, atlas_.layers, 4, 4.0 / 3.0);
-    bytes += imageBytes(shadow_.depth, 1, 4, 1.0);
-    return bytes;
+    return resources_.bytes();
 }
 
 } // namespace pf

@@ -38,8 +38,8 @@ struct FieldMotion {
     uint32_t frameSubSteps = 0;  // steps the next recordFieldMotion takes
 };
 
-FieldMotion createFieldMotion(const GpuContext& ctx, const FieldContent& content);
-void destroyFieldMotion(const GpuContext& ctx, FieldMotion& motion);
+// What the motion creates is owned by `owner`.
+FieldMotion createFieldMotion(GpuResources& owner, const FieldContent& content);
 
 // Brings the simulation to `time`: from rest at max(0, time − kSettleSeconds)
 // when `restart` or when time went backwards; steps beyond the last

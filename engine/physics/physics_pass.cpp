@@ -52,7 +52,8 @@ std::vector<uint32_t> jointsByDepth(const SkeletonSet& set, std::vector<glm::uve
 
 } // namespace
 
-PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
+PhysicsPass createPhysicsPass(GpuResources& owner, const SkeletonSet& set) {
+    const GpuContext& ctx = owner.ctx();
     PhysicsPass pass;
     pass.skeletonCount = uint32_t(set.skeletons.size());
     pass.jointCount = uint32_t(set.states.size());
@@ -62,19 +63,19 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
     // Every array is read through a texel view; states and poses are also written.
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
     const VkBufferUsageFlags uploaded = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    pass.uniforms = createHostBuffer(ctx, sizeof(gpu::PhysicsUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-    pass.skeletons = createHostBuffer(ctx, bytesOf(set.skeletons), storage);
+    pass.uniforms = createHostBuffer(owner, sizeof(gpu::PhysicsUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    pass.skeletons = createHostBuffer(owner, bytesOf(set.skeletons), storage);
     if (!set.skeletons.empty())
         std::memcpy(pass.skeletons.mapped, set.skeletons.data(), set.skeletons.size() * sizeof(gpu::Skeleton));
     std::memset(pass.uniforms.mapped, 0, sizeof(gpu::PhysicsUniforms));
 
-    pass.params = createBuffer(ctx, bytesOf(set.params), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    pass.states = createBuffer(ctx, bytesOf(set.states), uploaded | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+    pass.params = createBuffer(owner, bytesOf(set.params), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    pass.states = createBuffer(owner, bytesOf(set.states), uploaded | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    pass.poses = createBuffer(ctx, bytesOf(set.poses), uploaded | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+    pass.poses = createBuffer(owner, bytesOf(set.poses), uploaded | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                               VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    pass.jointSkeleton = createBuffer(ctx, bytesOf(set.jointSkeleton), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    pass.jointOrder = createBuffer(ctx, bytesOf(order), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    pass.jointSkeleton = createBuffer(owner, bytesOf(set.jointSkeleton), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    pass.jointOrder = createBuffer(owner, bytesOf(order), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
 
     // One staging buffer holds the five device-local arrays back to back.
     struct Upload {
@@ -91,7 +92,8 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
     VkDeviceSize stagingBytes = 0;
     for (const Upload& u : uploads) stagingBytes += u.bytes;
     if (stagingBytes > 0) {
-        Buffer staging = createHostBuffer(ctx, stagingBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        GpuResources scratch(ctx);
+        Buffer staging = createHostBuffer(scratch, stagingBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
             VkDeviceSize offset = 0;
             for (const Upload& u : uploads) {
@@ -107,28 +109,27 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
                           kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         });
-        destroyBuffer(ctx, staging);
     }
 
     const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
-    pass.views = {createTexelView(ctx, pass.params, uint4, 16),
-                  createTexelView(ctx, pass.skeletons, uint4, 16),
-                  createTexelView(ctx, pass.jointSkeleton, VK_FORMAT_R32_UINT, 4),
-                  createTexelView(ctx, pass.jointOrder, VK_FORMAT_R32_UINT, 4),
-                  createTexelView(ctx, pass.states, uint4, 16),
-                  createTexelView(ctx, pass.poses, uint4, 16)};
+    const VkBufferView views[] = {createTexelView(owner, pass.params, uint4, 16),
+                                  createTexelView(owner, pass.skeletons, uint4, 16),
+                                  createTexelView(owner, pass.jointSkeleton, VK_FORMAT_R32_UINT, 4),
+                                  createTexelView(owner, pass.jointOrder, VK_FORMAT_R32_UINT, 4),
+                                  createTexelView(owner, pass.states, uint4, 16),
+                                  createTexelView(owner, pass.poses, uint4, 16)};
     const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     // Binding order of shaders/physics_bindings.glsl.
     const ComputeBinding bindings[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, pass.uniforms.buffer},
-                                       {texels, VK_NULL_HANDLE, pass.views[0]},
-                                       {texels, VK_NULL_HANDLE, pass.views[1]},
+                                       {texels, VK_NULL_HANDLE, views[0]},
+                                       {texels, VK_NULL_HANDLE, views[1]},
                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pass.states.buffer},
                                        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pass.poses.buffer},
-                                       {texels, VK_NULL_HANDLE, pass.views[2]},
-                                       {texels, VK_NULL_HANDLE, pass.views[3]},
-                                       {texels, VK_NULL_HANDLE, pass.views[4]},
-                                       {texels, VK_NULL_HANDLE, pass.views[5]}};
-    pass.set = createComputeSet(ctx, bindings);
+                                       {texels, VK_NULL_HANDLE, views[2]},
+                                       {texels, VK_NULL_HANDLE, views[3]},
+                                       {texels, VK_NULL_HANDLE, views[4]},
+                                       {texels, VK_NULL_HANDLE, views[5]}};
+    pass.set = createComputeSet(owner, bindings);
     // The set's layout plus the pose level (uvec2 push constants; physics.comp declares none).
     const VkPushConstantRange levelRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(glm::uvec2)};
     VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -137,21 +138,10 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
     layoutInfo.pushConstantRangeCount = 1;
     layoutInfo.pPushConstantRanges = &levelRange;
     VK_CHECK(vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &pass.layout));
-    pass.physicsPipeline = createComputePipeline(ctx.device, pass.layout, createShaderModule(ctx.device, spirv_physics_comp));
-    pass.posePipeline = createComputePipeline(ctx.device, pass.layout, createShaderModule(ctx.device, spirv_pose_comp));
+    owner.own(pass.layout);
+    pass.physicsPipeline = createComputePipeline(owner, pass.layout, spirv_physics_comp);
+    pass.posePipeline = createComputePipeline(owner, pass.layout, spirv_pose_comp);
     return pass;
-}
-
-void destroyPhysicsPass(const GpuContext& ctx, PhysicsPass& pass) {
-    vkDestroyPipeline(ctx.device, pass.physicsPipeline, nullptr);
-    vkDestroyPipeline(ctx.device, pass.posePipeline, nullptr);
-    vkDestroyPipelineLayout(ctx.device, pass.layout, nullptr);
-    destroyComputeSet(ctx, pass.set);
-    for (VkBufferView view : pass.views) vkDestroyBufferView(ctx.device, view, nullptr);
-    for (Buffer* b : {&pass.uniforms, &pass.params, &pass.skeletons, &pass.states, &pass.poses, &pass.jointSkeleton,
-                      &pass.jointOrder})
-        destroyBuffer(ctx, *b);
-    pass = {};
 }
 
 void setPhysicsUniforms(const PhysicsPass& pass, const gpu::PhysicsUniforms& uniforms) {
@@ -213,7 +203,8 @@ void readPhysicsState(const GpuContext& ctx, const PhysicsPass& pass, std::vecto
     if (pass.jointCount == 0) return;
     const VkDeviceSize stateBytes = VkDeviceSize(pass.jointCount) * sizeof(gpu::JointState);
     const VkDeviceSize poseBytes = VkDeviceSize(pass.jointCount) * sizeof(gpu::JointPose);
-    Buffer readback = createHostBuffer(ctx, stateBytes + poseBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    GpuResources scratch(ctx);
+    Buffer readback = createHostBuffer(scratch, stateBytes + poseBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
         // The last physics and pose dispatches wrote what is copied.
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
@@ -228,7 +219,6 @@ void readPhysicsState(const GpuContext& ctx, const PhysicsPass& pass, std::vecto
     });
     std::memcpy(states.data(), readback.mapped, stateBytes);
     std::memcpy(poses.data(), static_cast<const char*>(readback.mapped) + stateBytes, poseBytes);
-    destroyBuffer(ctx, readback);
 }
 
 } // namespace pf

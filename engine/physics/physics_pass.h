@@ -11,7 +11,7 @@
 #include "engine/vk/gpu_timer.h"
 #include "engine/vk/resources.h"
 
-#include <array>
+#include <vector>
 
 namespace pf {
 
@@ -28,8 +28,6 @@ struct PhysicsPass {
     Buffer poses;         // JointPose[] (read by the vertex shaders)
     Buffer jointSkeleton; // uint per simulated joint
     Buffer jointOrder;    // uint per simulated joint: the joints level after level (depth 0 first)
-    // Texel views: params, skeletons, jointSkeleton, jointOrder, states, poses.
-    std::array<VkBufferView, 6> views{};
 
     uint32_t skeletonCount = 0;
     uint32_t jointCount = 0;
@@ -38,8 +36,8 @@ struct PhysicsPass {
 };
 
 // Uploads the set (its states and poses as they are, normally at rest).
-PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set);
-void destroyPhysicsPass(const GpuContext& ctx, PhysicsPass& pass);
+// What the pass creates is owned by `owner`.
+PhysicsPass createPhysicsPass(GpuResources& owner, const SkeletonSet& set);
 
 // Per frame, while no frame using them is in flight.
 void setPhysicsUniforms(const PhysicsPass& pass, const gpu::PhysicsUniforms& uniforms);

@@ -6,7 +6,8 @@
 
 namespace pf {
 
-ComputeSet createComputeSet(const GpuContext& ctx, std::span<const ComputeBinding> bindings) {
+ComputeSet createComputeSet(GpuResources& owner, std::span<const ComputeBinding> bindings) {
+    VkDevice device = owner.ctx().device;
     const uint32_t count = uint32_t(bindings.size());
     std::vector<VkDescriptorSetLayoutBinding> layoutBindings(count);
     for (uint32_t b = 0; b < count; ++b)
@@ -15,19 +16,21 @@ ComputeSet createComputeSet(const GpuContext& ctx, std::span<const ComputeBindin
     VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     layoutInfo.bindingCount = count;
     layoutInfo.pBindings = layoutBindings.data();
-    VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &layoutInfo, nullptr, &set.setLayout));
+    VK_CHECK(vkCreateDescriptorSetLayout(device, &layoutInfo, nullptr, &set.setLayout));
+    owner.own(set.setLayout);
 
     VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     pipelineLayoutInfo.setLayoutCount = 1;
     pipelineLayoutInfo.pSetLayouts = &set.setLayout;
-    VK_CHECK(vkCreatePipelineLayout(ctx.device, &pipelineLayoutInfo, nullptr, &set.pipelineLayout));
+    VK_CHECK(vkCreatePipelineLayout(device, &pipelineLayoutInfo, nullptr, &set.pipelineLayout));
+    owner.own(set.pipelineLayout);
 
-    set.descriptorPool = createDescriptorPool(ctx, layoutBindings, 1);
+    set.descriptorPool = createDescriptorPool(owner, layoutBindings, 1);
     VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     allocInfo.descriptorPool = set.descriptorPool;
     allocInfo.descriptorSetCount = 1;
     allocInfo.pSetLayouts = &set.setLayout;
-    VK_CHECK(vkAllocateDescriptorSets(ctx.device, &allocInfo, &set.descriptorSet));
+    VK_CHECK(vkAllocateDescriptorSets(device, &allocInfo, &set.descriptorSet));
 
     std::vector<VkDescriptorBufferInfo> infos(count);
     std::vector<VkWriteDescriptorSet> writes(count);
@@ -44,22 +47,15 @@ ComputeSet createComputeSet(const GpuContext& ctx, std::span<const ComputeBindin
             writes[b].pBufferInfo = &infos[b];
         }
     }
-    vkUpdateDescriptorSets(ctx.device, count, writes.data(), 0, nullptr);
+    vkUpdateDescriptorSets(device, count, writes.data(), 0, nullptr);
     return set;
 }
 
-ComputeSet createComputeSet(const GpuContext& ctx, std::span<const VkBuffer> buffers) {
+ComputeSet createComputeSet(GpuResources& owner, std::span<const VkBuffer> buffers) {
     std::vector<ComputeBinding> bindings(buffers.size());
     for (size_t b = 0; b < buffers.size(); ++b)
         bindings[b] = {b == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[b]};
-    return createComputeSet(ctx, bindings);
-}
-
-void destroyComputeSet(const GpuContext& ctx, ComputeSet& set) {
-    vkDestroyPipelineLayout(ctx.device, set.pipelineLayout, nullptr);
-    vkDestroyDescriptorPool(ctx.device, set.descriptorPool, nullptr);
-    vkDestroyDescriptorSetLayout(ctx.device, set.setLayout, nullptr);
-    set = {};
+    return createComputeSet(owner, bindings);
 }
 
 void bindComputeSet(VkCommandBuffer cmd, const ComputeSet& set) {

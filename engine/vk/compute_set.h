@@ -24,10 +24,10 @@ struct ComputeBinding {
     VkBufferView view = VK_NULL_HANDLE;
 };
 
-ComputeSet createComputeSet(const GpuContext& ctx, std::span<const ComputeBinding> bindings);
+// The layouts and the pool are owned by `owner`.
+ComputeSet createComputeSet(GpuResources& owner, std::span<const ComputeBinding> bindings);
 // buffers[0] is the uniform buffer, the rest storage buffers.
-ComputeSet createComputeSet(const GpuContext& ctx, std::span<const VkBuffer> buffers);
-void destroyComputeSet(const GpuContext& ctx, ComputeSet& set);
+ComputeSet createComputeSet(GpuResources& owner, std::span<const VkBuffer> buffers);
 void bindComputeSet(VkCommandBuffer cmd, const ComputeSet& set);
 
 } // namespace pf

@@ -42,23 +42,24 @@ static_assert(sizeof(StbVertex) == 16);
 
 } // namespace
 
-TextOverlay createTextOverlay(const GpuContext& ctx) {
+TextOverlay createTextOverlay(GpuResources& owner) {
+    const GpuContext& ctx = owner.ctx();
     TextOverlay overlay;
-    overlay.rects = createHostBuffer(ctx, kMaxOverlayRects * sizeof(OverlayRect), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    overlay.rects = createHostBuffer(owner, kMaxOverlayRects * sizeof(OverlayRect), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 
     const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT,
                                                nullptr};
     VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     layoutInfo.bindingCount = 1;
     layoutInfo.pBindings = &binding;
-    VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &layoutInfo, nullptr, &overlay.setLayout));
-
-    overlay.descriptorPool = createDescriptorPool(ctx, {&binding, 1}, 1);
+    VkDescriptorSetLayout setLayout;
+    VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &layoutInfo, nullptr, &setLayout));
+    owner.own(setLayout);
 
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = overlay.descriptorPool;
+    alloc.descriptorPool = createDescriptorPool(owner, {&binding, 1}, 1);
     alloc.descriptorSetCount = 1;
-    alloc.pSetLayouts = &overlay.setLayout;
+    alloc.pSetLayouts = &setLayout;
     VK_CHECK(vkAllocateDescriptorSets(ctx.device, &alloc, &overlay.descriptorSet));
 
     const VkDescriptorBufferInfo bufferInfo{overlay.rects.buffer, 0, VK_WHOLE_SIZE};
@@ -73,31 +74,22 @@ TextOverlay createTextOverlay(const GpuContext& ctx) {
     const VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::vec2)};
     VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     pipelineLayoutInfo.setLayoutCount = 1;
-    pipelineLayoutInfo.pSetLayouts = &overlay.setLayout;
+    pipelineLayoutInfo.pSetLayouts = &setLayout;
     pipelineLayoutInfo.pushConstantRangeCount = 1;
     pipelineLayoutInfo.pPushConstantRanges = &pushRange;
     VK_CHECK(vkCreatePipelineLayout(ctx.device, &pipelineLayoutInfo, nullptr, &overlay.pipelineLayout));
+    owner.own(overlay.pipelineLayout);
 
+    GpuResources modules(ctx);
     GraphicsPipelineDesc desc;
-    desc.vertex = createShaderModule(ctx.device, spirv_text_vert);
-    desc.fragment = createShaderModule(ctx.device, spirv_text_frag);
+    desc.vertex = createShaderModule(modules, spirv_text_vert);
+    desc.fragment = createShaderModule(modules, spirv_text_frag);
     desc.layout = overlay.pipelineLayout;
     desc.colorFormat = kColorFormat;
     desc.cullMode = VK_CULL_MODE_NONE;
     desc.depthTest = desc.depthWrite = false;
-    overlay.pipeline = createGraphicsPipeline(ctx.device, desc);
-    vkDestroyShaderModule(ctx.device, desc.vertex, nullptr);
-    vkDestroyShaderModule(ctx.device, desc.fragment, nullptr);
+    overlay.pipeline = createGraphicsPipeline(owner, desc);
     return overlay;
-}
-
-void destroyTextOverlay(const GpuContext& ctx, TextOverlay& overlay) {
-    vkDestroyPipeline(ctx.device, overlay.pipeline, nullptr);
-    vkDestroyPipelineLayout(ctx.device, overlay.pipelineLayout, nullptr);
-    vkDestroyDescriptorPool(ctx.device, overlay.descriptorPool, nullptr);
-    vkDestroyDescriptorSetLayout(ctx.device, overlay.setLayout, nullptr);
-    destroyBuffer(ctx, overlay.rects);
-    overlay = {};
 }
 
 void setOverlayText(TextOverlay& overlay, const std::string& lines) {

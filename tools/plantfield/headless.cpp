@@ -100,7 +100,7 @@ int runHeadless(const PlantfieldOptions& o) {
                      stats.plantsPerLod[1], stats.plantsPerLod[2], double(stats.triangles) / 1e6,
                      o.capturePath.empty() ? "" : " -> ", o.capturePath.c_str());
         destroyGpuTimer(ctx, timer);
-        destroyRenderTarget(ctx, target);
+        destroyRenderTarget(target);
     }
     destroyContext(ctx);
     return 0;
