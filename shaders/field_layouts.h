@@ -4,6 +4,8 @@
 #ifndef PLANTFIELD_SHADERS_FIELD_LAYOUTS_H
 #define PLANTFIELD_SHADERS_FIELD_LAYOUTS_H
 
+#include "layouts.h"
+
 #ifdef __cplusplus
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -48,7 +50,7 @@ using uint = uint32_t;
 #define CULL_GROUP_SIZE 64
 
 // Descriptor bindings of the field's draw set (set 0).
-#define FIELD_BINDING_FRAME 0       // FrameUniforms (layouts.h) + FieldFrame
+#define FIELD_BINDING_FRAME BINDING_FRAME_UNIFORMS // FrameUniforms (layouts.h) + FieldFrame
 #define FIELD_BINDING_INSTANCES 1   // FieldInstance[]
 #define FIELD_BINDING_VISIBLE 2     // uint[] visible entries, per (model, LOD) list
 #define FIELD_BINDING_VERTICES 3    // FieldVertex[]
@@ -61,6 +63,9 @@ using uint = uint32_t;
 #define FIELD_BINDING_POSES 10      // JointPose[] of every simulated joint
 #define FIELD_BINDING_INSTANCE_SKELETON 11 // uint per instance: the Skeleton its vertices follow
 #define FIELD_BINDING_IMPOSTOR_OUTLINES 12 // per atlas layer, OUTLINE_CORNERS uv corners, two a texel
+
+// Descriptor binding of the impostor bake (its own set 0).
+#define IMPOSTOR_BAKE_BINDING_VERTICES 0 // FieldVertex[]
 
 // Corners of the polygon a billboard quad is drawn as (engine/field/impostor_outline.h).
 #define OUTLINE_CORNERS 4
@@ -131,6 +136,14 @@ struct CullUniforms {
     vec4 timing;        // x seconds since the previous frame, yzw 0
 };
 
+// The push constants of one impostor bake frame (engine/field/impostor_atlas.h):
+// the orthographic view from azimuth a, fitted to the model's box.
+struct ImpostorBakePush {
+    vec4 right;  // xyz (cos a, 0, -sin a) / half width
+    vec4 toView; // xyz (sin a, 0, cos a) / half depth
+    vec4 height; // x bottom, y 1 / (top - bottom)
+};
+
 // Field additions to the frame uniforms (after FrameUniforms in the same block).
 struct FieldFrame {
     mat4 sunViewProj;   // world → shadow map clip space
@@ -148,6 +161,7 @@ static_assert(sizeof(gpu::DrawTemplate) == 32);
 static_assert(sizeof(gpu::DrawCommand) == 20);
 static_assert(sizeof(gpu::CullUniforms) == 9 * 16);
 static_assert(sizeof(gpu::FieldFrame) == 64 + 3 * 16);
+static_assert(sizeof(gpu::ImpostorBakePush) == 3 * 16);
 #endif
 
 #endif

@@ -19,6 +19,18 @@ using uint = uint32_t;
 #endif
 
 #define PHYSICS_GROUP_SIZE 64
+
+// Descriptor bindings of the physics and pose passes (their set 0). What a
+// pass only reads is a uint texel buffer (texels.glsl says why).
+#define PHYSICS_BINDING_UNIFORMS 0       // PhysicsUniforms
+#define PHYSICS_BINDING_PARAMS 1         // JointParams[], texels
+#define PHYSICS_BINDING_SKELETONS 2      // Skeleton[], texels
+#define PHYSICS_BINDING_STATES 3         // JointState[], written
+#define PHYSICS_BINDING_POSES 4          // JointPose[], written
+#define PHYSICS_BINDING_JOINT_SKELETON 5 // uint per simulated joint: its Skeleton, texels
+#define PHYSICS_BINDING_JOINT_ORDER 6    // uint per simulated joint, level by level, texels
+#define PHYSICS_BINDING_STATE_TEXELS 7   // the states again, as texels
+#define PHYSICS_BINDING_POSE_TEXELS 8    // the poses again, as texels
 #define JOINT_NO_PARENT 0xFFFFFFFFu
 // Skeleton::ids.w of a plant without a simulated skeleton: its vertices stay at rest.
 #define NO_SKELETON 0xFFFFFFFFu

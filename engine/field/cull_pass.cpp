@@ -1,7 +1,6 @@
 #include "engine/field/cull_pass.h"
 
 #include "engine/vk/pipeline.h"
-#include "engine/vk/vk_check.h"
 #include "shaders/lod_select.h"
 
 #include "shaders/build_draws_comp.spv.h"
@@ -16,8 +15,6 @@
 namespace pf {
 
 namespace {
-
-constexpr uint32_t kBindingCount = 10;
 
 // Buffers of zero size are invalid; an empty field still gets valid ones.
 VkDeviceSize atLeastOneWord(VkDeviceSize bytes) { return std::max<VkDeviceSize>(bytes, 4); }
@@ -106,11 +103,18 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     });
 
-    const VkBuffer buffers[kBindingCount] = {
-        pass.uniforms.buffer, inputs.instances->buffer, inputs.models->buffer, pass.state.buffer,
-        pass.counts.buffer,   pass.visible.buffer,      pass.templates.buffer, pass.commands.buffer,
-        pass.drawCounts.buffer, pass.allCommands.buffer};
-    pass.set = createComputeSet(owner, buffers);
+    const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+    const DescriptorBinding bindings[] = {uniformBuffer(CULL_BINDING_UNIFORMS, compute, pass.uniforms),
+                                          storageBuffer(CULL_BINDING_INSTANCES, compute, *inputs.instances),
+                                          storageBuffer(CULL_BINDING_MODELS, compute, *inputs.models),
+                                          storageBuffer(CULL_BINDING_STATE, compute, pass.state),
+                                          storageBuffer(CULL_BINDING_COUNTS, compute, pass.counts),
+                                          storageBuffer(CULL_BINDING_VISIBLE, compute, pass.visible),
+                                          storageBuffer(CULL_BINDING_TEMPLATES, compute, pass.templates),
+                                          storageBuffer(CULL_BINDING_COMMANDS, compute, pass.commands),
+                                          storageBuffer(CULL_BINDING_DRAW_COUNTS, compute, pass.drawCounts),
+                                          storageBuffer(CULL_BINDING_ALL_COMMANDS, compute, pass.allCommands)};
+    pass.set = createComputeSet(owner, bindings);
     pass.cullPipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_cull_comp);
     pass.buildDrawsPipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_build_draws_comp);
     return pass;

@@ -41,7 +41,7 @@ struct CullPassInputs {
 };
 
 struct CullPass {
-    ComputeSet set; // uniforms, then the storage buffers below
+    ComputeSet set; // CULL_BINDING_*: the uniforms, the inputs' buffers and the storage buffers below
     VkPipeline cullPipeline = VK_NULL_HANDLE;
     VkPipeline buildDrawsPipeline = VK_NULL_HANDLE;
 

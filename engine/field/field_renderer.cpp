@@ -1,9 +1,9 @@
 #include "engine/field/field_renderer.h"
 
+#include "engine/vk/descriptors.h"
 #include "engine/vk/gpu_timer.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/target_pass.h"
-#include "engine/vk/vk_check.h"
 
 #include "shaders/impostor_frag.spv.h"
 #include "shaders/impostor_shadow_frag.spv.h"
@@ -171,88 +171,37 @@ void FieldRenderer::uploadInstances() {
     cull_ = createCullPass(resources_, inputs);
 }
 
+// The draw set and the naive set differ only in the visible list: the cull
+// pass's lists, or every plant once.
 void FieldRenderer::createDescriptors() {
-    const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-    const VkDescriptorType image = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    const VkDescriptorSetLayoutBinding bindings[] = {
-        {FIELD_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_INSTANCES, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_VISIBLE, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_VERTICES, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_MODELS, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_ATLAS_COLOR, image, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_ATLAS_NORMAL, image, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_SHADOW, image, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_TERRAIN, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_SKELETONS, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_POSES, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_INSTANCE_SKELETON, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_IMPOSTOR_OUTLINES, texels, 1, kDrawStages, nullptr},
+    const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
+    auto texels = [&](uint32_t binding, const Buffer& buffer, VkFormat format, uint32_t texelBytes) {
+        return texelBuffer(binding, kDrawStages, createTexelView(resources_, buffer, format, texelBytes));
     };
-    constexpr uint32_t kBindings = uint32_t(std::size(bindings));
-    VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    layoutInfo.bindingCount = kBindings;
-    layoutInfo.pBindings = bindings;
-    VkDescriptorSetLayout setLayout;
-    VK_CHECK(vkCreateDescriptorSetLayout(ctx_.device, &layoutInfo, nullptr, &setLayout));
-    resources_.own(setLayout);
+    const std::vector<DescriptorBinding> drawTable = {
+        uniformBuffer(FIELD_BINDING_FRAME, kDrawStages, uniforms_),
+        texels(FIELD_BINDING_INSTANCES, instances_, uint4, 16),
+        texels(FIELD_BINDING_VISIBLE, cull_.visible, VK_FORMAT_R32_UINT, 4),
+        texels(FIELD_BINDING_VERTICES, vertices_, uint4, 16),
+        texels(FIELD_BINDING_MODELS, models_, uint4, 16),
+        sampledImage(FIELD_BINDING_ATLAS_COLOR, kDrawStages, atlas_.sampler, atlas_.color.view),
+        sampledImage(FIELD_BINDING_ATLAS_NORMAL, kDrawStages, atlas_.sampler, atlas_.normalDepth.view),
+        sampledImage(FIELD_BINDING_SHADOW, kDrawStages, shadow_.sampler, shadow_.depth.view),
+        texels(FIELD_BINDING_TERRAIN, terrainVertices_, uint4, 16),
+        texels(FIELD_BINDING_SKELETONS, motion_.pass.skeletons, uint4, 16),
+        texels(FIELD_BINDING_POSES, motion_.pass.poses, uint4, 16),
+        texels(FIELD_BINDING_INSTANCE_SKELETON, motion_.instanceSkeleton, VK_FORMAT_R32_UINT, 4),
+        texels(FIELD_BINDING_IMPOSTOR_OUTLINES, outlines_, uint4, 16)};
+    std::vector<DescriptorBinding> naiveTable = drawTable;
+    for (DescriptorBinding& b : naiveTable)
+        if (b.binding == FIELD_BINDING_VISIBLE) b = texels(FIELD_BINDING_VISIBLE, naiveVisible_, VK_FORMAT_R32_UINT, 4);
 
-    const VkDescriptorSetLayout layouts[] = {setLayout, setLayout};
-    VkDescriptorSet sets[2];
-    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    // Two sets (GPU-driven and naive) of the layout above.
-    alloc.descriptorPool = createDescriptorPool(resources_, bindings, 2);
-    alloc.descriptorSetCount = 2;
-    alloc.pSetLayouts = layouts;
-    VK_CHECK(vkAllocateDescriptorSets(ctx_.device, &alloc, sets));
+    const VkDescriptorSetLayout setLayout = createSetLayout(resources_, drawTable);
+    const DescriptorTable tables[] = {drawTable, naiveTable};
+    const std::vector<VkDescriptorSet> sets = createSets(resources_, setLayout, tables);
     drawSet_ = sets[0];
     naiveSet_ = sets[1];
-
-    const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
-    auto view = [&](const Buffer& buffer, VkFormat format, uint32_t bytes) {
-        return createTexelView(resources_, buffer, format, bytes);
-    };
-    const VkBufferView instances = view(instances_, uint4, 16), vertices = view(vertices_, uint4, 16),
-                       models = view(models_, uint4, 16), terrain = view(terrainVertices_, uint4, 16),
-                       skeletons = view(motion_.pass.skeletons, uint4, 16),
-                       poses = view(motion_.pass.poses, uint4, 16),
-                       instanceSkeleton = view(motion_.instanceSkeleton, VK_FORMAT_R32_UINT, 4),
-                       outlines = view(outlines_, uint4, 16);
-    const VkDescriptorBufferInfo frame{uniforms_.buffer, 0, VK_WHOLE_SIZE};
-    const VkDescriptorImageInfo atlasColor{atlas_.sampler, atlas_.color.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    const VkDescriptorImageInfo atlasNormal{atlas_.sampler, atlas_.normalDepth.view,
-                                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    const VkDescriptorImageInfo shadow{shadow_.sampler, shadow_.depth.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    for (VkDescriptorSet set : sets) {
-        const VkBufferView visible = view(set == drawSet_ ? cull_.visible : naiveVisible_, VK_FORMAT_R32_UINT, 4);
-        // Indexed by binding, like `images`; the frame is the one plain buffer.
-        const VkBufferView views[] = {VK_NULL_HANDLE, instances,      visible, vertices,  models, VK_NULL_HANDLE,
-                                      VK_NULL_HANDLE, VK_NULL_HANDLE, terrain, skeletons, poses,  instanceSkeleton,
-                                      outlines};
-        const VkDescriptorImageInfo* images[] = {nullptr, nullptr, nullptr, nullptr, nullptr, &atlasColor,
-                                                 &atlasNormal, &shadow, nullptr, nullptr, nullptr, nullptr, nullptr};
-        VkWriteDescriptorSet writes[kBindings];
-        for (uint32_t i = 0; i < kBindings; ++i) {
-            writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-            writes[i].dstSet = set;
-            writes[i].dstBinding = bindings[i].binding;
-            writes[i].descriptorCount = 1;
-            writes[i].descriptorType = bindings[i].descriptorType;
-            if (images[i]) writes[i].pImageInfo = images[i];
-            else if (views[i]) writes[i].pTexelBufferView = &views[i];
-            else writes[i].pBufferInfo = &frame;
-        }
-        vkUpdateDescriptorSets(ctx_.device, kBindings, writes, 0, nullptr);
-    }
-
-    const VkPushConstantRange push{kDrawStages, 0, sizeof(uint32_t)};
-    VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    pipelineLayoutInfo.setLayoutCount = 1;
-    pipelineLayoutInfo.pSetLayouts = &setLayout;
-    pipelineLayoutInfo.pushConstantRangeCount = 1;
-    pipelineLayoutInfo.pPushConstantRanges = &push;
-    VK_CHECK(vkCreatePipelineLayout(ctx_.device, &pipelineLayoutInfo, nullptr, &pipelineLayout_));
-    resources_.own(pipelineLayout_);
+    pipelineLayout_ = createPipelineLayout(resources_, setLayout, {kDrawStages, 0, sizeof(uint32_t)});
 }
 
 void FieldRenderer::createPipelines() {
@@ -261,7 +210,8 @@ void FieldRenderer::createPipelines() {
         VkShaderModule vertex, fragment;
     };
     const Stages sky{createShaderModule(modules, spirv_sky_vert), createShaderModule(modules, spirv_sky_frag)};
-    const Stages terrain{createShaderModule(modules, spirv_terrain_vert), createShaderModule(modules, spirv_terrain_frag)};
+    const Stages terrain{createShaderModule(modules, spirv_terrain_vert),
+                         createShaderModule(modules, spirv_terrain_frag)};
     const Stages plant{createShaderModule(modules, spirv_plant_vert), createShaderModule(modules, spirv_plant_frag)};
     const Stages impostor{createShaderModule(modules, spirv_impostor_vert),
                           createShaderModule(modules, spirv_impostor_frag)};

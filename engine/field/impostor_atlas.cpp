@@ -1,7 +1,7 @@
 #include "engine/field/impostor_atlas.h"
 
+#include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
-#include "engine/vk/vk_check.h"
 #include "shaders/impostor_bake_frag.spv.h"
 #include "shaders/impostor_bake_vert.spv.h"
 
@@ -21,13 +21,6 @@ constexpr VkFormat kAtlasColorFormat = VK_FORMAT_R8G8B8A8_SRGB;
 constexpr VkFormat kAtlasNormalFormat = VK_FORMAT_R8G8B8A8_UNORM;
 constexpr VkFormat kBakeDepthFormat = VK_FORMAT_D32_SFLOAT;
 constexpr VkSampleCountFlagBits kBakeSamples = VK_SAMPLE_COUNT_4_BIT;
-
-// shaders/impostor_bake.vert's push constants.
-struct BakePush {
-    glm::vec4 right;  // right axis / half width
-    glm::vec4 toView; // view direction / half depth
-    glm::vec4 height; // x bottom, y 1 / (top - bottom)
-};
 
 uint32_t mipCount(uint32_t size) {
     uint32_t levels = 1;
@@ -214,39 +207,12 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
                                         .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
                                         .samples = samples});
 
-    VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT};
-    VkDescriptorSetLayoutCreateInfo setLayoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setLayoutInfo.bindingCount = 1;
-    setLayoutInfo.pBindings = &binding;
-    VkDescriptorSetLayout setLayout;
-    VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &setLayoutInfo, nullptr, &setLayout));
-    scratch.own(setLayout);
-
-    VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(BakePush)};
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &setLayout;
-    layoutInfo.pushConstantRangeCount = 1;
-    layoutInfo.pPushConstantRanges = &pushRange;
-    VkPipelineLayout pipelineLayout;
-    VK_CHECK(vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &pipelineLayout));
-    scratch.own(pipelineLayout);
-
-    const VkDescriptorPool descriptorPool = createDescriptorPool(scratch, {&binding, 1}, 1);
-    VkDescriptorSetAllocateInfo setAlloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    setAlloc.descriptorPool = descriptorPool;
-    setAlloc.descriptorSetCount = 1;
-    setAlloc.pSetLayouts = &setLayout;
-    VkDescriptorSet descriptorSet;
-    VK_CHECK(vkAllocateDescriptorSets(ctx.device, &setAlloc, &descriptorSet));
-    VkDescriptorBufferInfo vertexInfo{vertices.buffer, 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = descriptorSet;
-    write.dstBinding = 0;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    write.pBufferInfo = &vertexInfo;
-    vkUpdateDescriptorSets(ctx.device, 1, &write, 0, nullptr);
+    const DescriptorBinding table[] = {
+        storageBuffer(IMPOSTOR_BAKE_BINDING_VERTICES, VK_SHADER_STAGE_VERTEX_BIT, vertices)};
+    const VkDescriptorSetLayout setLayout = createSetLayout(scratch, table);
+    const VkDescriptorSet descriptorSet = createSet(scratch, setLayout, table);
+    const VkPipelineLayout pipelineLayout =
+        createPipelineLayout(scratch, setLayout, {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(gpu::ImpostorBakePush)});
 
     VkPipeline pipeline =
         createBakePipeline(scratch, pipelineLayout, createShaderModule(scratch, spirv_impostor_bake_vert),
@@ -325,7 +291,7 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
                 vkCmdSetViewport(cmd, 0, 1, &viewport);
                 vkCmdSetScissor(cmd, 0, 1, &scissor);
 
-                BakePush push;
+                gpu::ImpostorBakePush push;
                 push.right = glm::vec4(impostorRightAxis(f, settings.frames) / quad.x, 0.0f);
                 push.toView = glm::vec4(impostorViewDirection(f, settings.frames) / quad.w, 0.0f);
                 push.height = {quad.y, 1.0f / (quad.z - quad.y), 0.0f, 0.0f};

@@ -1,7 +1,6 @@
 #include "engine/physics/physics_pass.h"
 
 #include "engine/vk/pipeline.h"
-#include "engine/vk/vk_check.h"
 
 #include "shaders/physics_comp.spv.h"
 #include "shaders/pose_comp.spv.h"
@@ -112,35 +111,24 @@ PhysicsPass createPhysicsPass(GpuResources& owner, const SkeletonSet& set) {
     }
 
     const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
-    const VkBufferView views[] = {createTexelView(owner, pass.params, uint4, 16),
-                                  createTexelView(owner, pass.skeletons, uint4, 16),
-                                  createTexelView(owner, pass.jointSkeleton, VK_FORMAT_R32_UINT, 4),
-                                  createTexelView(owner, pass.jointOrder, VK_FORMAT_R32_UINT, 4),
-                                  createTexelView(owner, pass.states, uint4, 16),
-                                  createTexelView(owner, pass.poses, uint4, 16)};
-    const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-    // Binding order of shaders/physics_bindings.glsl.
-    const ComputeBinding bindings[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, pass.uniforms.buffer},
-                                       {texels, VK_NULL_HANDLE, views[0]},
-                                       {texels, VK_NULL_HANDLE, views[1]},
-                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pass.states.buffer},
-                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pass.poses.buffer},
-                                       {texels, VK_NULL_HANDLE, views[2]},
-                                       {texels, VK_NULL_HANDLE, views[3]},
-                                       {texels, VK_NULL_HANDLE, views[4]},
-                                       {texels, VK_NULL_HANDLE, views[5]}};
-    pass.set = createComputeSet(owner, bindings);
-    // The set's layout plus the pose level (uvec2 push constants; physics.comp declares none).
-    const VkPushConstantRange levelRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(glm::uvec2)};
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &pass.set.setLayout;
-    layoutInfo.pushConstantRangeCount = 1;
-    layoutInfo.pPushConstantRanges = &levelRange;
-    VK_CHECK(vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &pass.layout));
-    owner.own(pass.layout);
-    pass.physicsPipeline = createComputePipeline(owner, pass.layout, spirv_physics_comp);
-    pass.posePipeline = createComputePipeline(owner, pass.layout, spirv_pose_comp);
+    const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+    auto texels = [&](uint32_t binding, const Buffer& buffer, VkFormat format, uint32_t texelBytes) {
+        return texelBuffer(binding, compute, createTexelView(owner, buffer, format, texelBytes));
+    };
+    const DescriptorBinding bindings[] = {
+        uniformBuffer(PHYSICS_BINDING_UNIFORMS, compute, pass.uniforms),
+        texels(PHYSICS_BINDING_PARAMS, pass.params, uint4, 16),
+        texels(PHYSICS_BINDING_SKELETONS, pass.skeletons, uint4, 16),
+        storageBuffer(PHYSICS_BINDING_STATES, compute, pass.states),
+        storageBuffer(PHYSICS_BINDING_POSES, compute, pass.poses),
+        texels(PHYSICS_BINDING_JOINT_SKELETON, pass.jointSkeleton, VK_FORMAT_R32_UINT, 4),
+        texels(PHYSICS_BINDING_JOINT_ORDER, pass.jointOrder, VK_FORMAT_R32_UINT, 4),
+        texels(PHYSICS_BINDING_STATE_TEXELS, pass.states, uint4, 16),
+        texels(PHYSICS_BINDING_POSE_TEXELS, pass.poses, uint4, 16)};
+    // The pose level is a uvec2 push constant (physics.comp declares none).
+    pass.set = createComputeSet(owner, bindings, sizeof(glm::uvec2));
+    pass.physicsPipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_physics_comp);
+    pass.posePipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_pose_comp);
     return pass;
 }
 
@@ -162,8 +150,7 @@ void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, GpuTimer* t
                   kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     if (pass.jointCount == 0) return;
 
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout, 0, 1, &pass.set.descriptorSet, 0,
-                            nullptr);
+    bindComputeSet(cmd, pass.set);
     if (timer) beginScope(cmd, *timer, "physics");
     // The sub-step count is what setPhysicsUniforms wrote for this frame.
     const uint32_t subSteps = static_cast<const gpu::PhysicsUniforms*>(pass.uniforms.mapped)->counts.z;
@@ -187,7 +174,7 @@ void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, GpuTimer* t
                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kShaderReads);
         }
         const glm::uvec2 level = pass.levels[d]; // never empty: a joint at depth d > 0 has a parent at d − 1
-        vkCmdPushConstants(cmd, pass.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(level), &level);
+        vkCmdPushConstants(cmd, pass.set.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(level), &level);
         dispatchJoints(cmd, pass, level.y);
     }
     if (timer) endScope(cmd, *timer);

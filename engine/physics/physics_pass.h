@@ -16,8 +16,7 @@
 namespace pf {
 
 struct PhysicsPass {
-    ComputeSet set; // shaders/physics_bindings.glsl: the buffers below, read through texel views
-    VkPipelineLayout layout = VK_NULL_HANDLE; // set's descriptor set and the pose level's push constants
+    ComputeSet set; // PHYSICS_BINDING_*: the buffers below; its pipeline layout has the pose level's push constants
     VkPipeline physicsPipeline = VK_NULL_HANDLE;
     VkPipeline posePipeline = VK_NULL_HANDLE;
 

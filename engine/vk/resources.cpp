@@ -39,26 +39,13 @@ Buffer createDeviceBufferWithData(GpuResources& owner, const void* data, VkDevic
     GpuResources scratch(owner.ctx());
     Buffer staging = createHostBuffer(scratch, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     std::memcpy(staging.mapped, data, size);
-    Buffer out = createBuffer(owner, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    Buffer out =
+        createBuffer(owner, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     submitAndWait(owner.ctx(), [&](VkCommandBuffer cmd) {
         VkBufferCopy region{0, 0, size};
         vkCmdCopyBuffer(cmd, staging.buffer, out.buffer, 1, &region);
     });
     return out;
-}
-
-VkDescriptorPool createDescriptorPool(GpuResources& owner, std::span<const VkDescriptorSetLayoutBinding> bindings,
-                                      uint32_t sets) {
-    // One pool size per binding: the pool sums them by type.
-    std::vector<VkDescriptorPoolSize> sizes;
-    for (const VkDescriptorSetLayoutBinding& b : bindings) sizes.push_back({b.descriptorType, b.descriptorCount * sets});
-    VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    info.maxSets = sets;
-    info.poolSizeCount = uint32_t(sizes.size());
-    info.pPoolSizes = sizes.data();
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateDescriptorPool(owner.ctx().device, &info, nullptr, &pool));
-    return owner.own(pool);
 }
 
 VkBufferView createTexelView(GpuResources& owner, const Buffer& buffer, VkFormat format, uint32_t texelBytes) {

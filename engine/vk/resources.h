@@ -4,7 +4,6 @@
 #include "engine/vk/gpu_resources.h"
 
 #include <functional>
-#include <span>
 
 namespace pf {
 
@@ -52,11 +51,6 @@ struct ImageDesc {
 Image createImage(GpuResources& owner, const ImageDesc& desc);
 
 VkSampler createSampler(GpuResources& owner, const VkSamplerCreateInfo& info);
-
-// A descriptor pool with room for exactly `sets` sets of the layout made of
-// `bindings`: the sizes are counted from the bindings, not by hand.
-VkDescriptorPool createDescriptorPool(GpuResources& owner, std::span<const VkDescriptorSetLayoutBinding> bindings,
-                                      uint32_t sets);
 
 // A primary command buffer from the context's pool.
 VkCommandBuffer allocateCommandBuffer(const GpuContext& ctx);

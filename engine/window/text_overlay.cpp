@@ -1,7 +1,8 @@
 #include "engine/window/text_overlay.h"
 
+#include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
-#include "engine/vk/vk_check.h"
+#include "shaders/text_layouts.h"
 
 #include <glm/glm.hpp>
 
@@ -18,11 +19,7 @@
 namespace pf {
 namespace {
 
-// Matches OverlayRect in shaders/text.vert (std430: two vec4).
-struct OverlayRect {
-    glm::vec4 bounds; // x0, y0, x1, y1 in framebuffer pixels, y down
-    glm::vec4 color;  // linear rgba
-};
+using gpu::OverlayRect;
 
 // The most strokes (quads) any stb_easy_font glyph is made of.
 constexpr uint32_t kMaxQuadsPerCharacter = 11;
@@ -43,44 +40,15 @@ static_assert(sizeof(StbVertex) == 16);
 } // namespace
 
 TextOverlay createTextOverlay(GpuResources& owner) {
-    const GpuContext& ctx = owner.ctx();
     TextOverlay overlay;
     overlay.rects = createHostBuffer(owner, kMaxOverlayRects * sizeof(OverlayRect), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 
-    const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT,
-                                               nullptr};
-    VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    layoutInfo.bindingCount = 1;
-    layoutInfo.pBindings = &binding;
-    VkDescriptorSetLayout setLayout;
-    VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &layoutInfo, nullptr, &setLayout));
-    owner.own(setLayout);
+    const DescriptorBinding table[] = {storageBuffer(TEXT_BINDING_RECTS, VK_SHADER_STAGE_VERTEX_BIT, overlay.rects)};
+    const VkDescriptorSetLayout setLayout = createSetLayout(owner, table);
+    overlay.descriptorSet = createSet(owner, setLayout, table);
+    overlay.pipelineLayout = createPipelineLayout(owner, setLayout, {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::vec2)});
 
-    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = createDescriptorPool(owner, {&binding, 1}, 1);
-    alloc.descriptorSetCount = 1;
-    alloc.pSetLayouts = &setLayout;
-    VK_CHECK(vkAllocateDescriptorSets(ctx.device, &alloc, &overlay.descriptorSet));
-
-    const VkDescriptorBufferInfo bufferInfo{overlay.rects.buffer, 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = overlay.descriptorSet;
-    write.dstBinding = 0;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    write.pBufferInfo = &bufferInfo;
-    vkUpdateDescriptorSets(ctx.device, 1, &write, 0, nullptr);
-
-    const VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::vec2)};
-    VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    pipelineLayoutInfo.setLayoutCount = 1;
-    pipelineLayoutInfo.pSetLayouts = &setLayout;
-    pipelineLayoutInfo.pushConstantRangeCount = 1;
-    pipelineLayoutInfo.pPushConstantRanges = &pushRange;
-    VK_CHECK(vkCreatePipelineLayout(ctx.device, &pipelineLayoutInfo, nullptr, &overlay.pipelineLayout));
-    owner.own(overlay.pipelineLayout);
-
-    GpuResources modules(ctx);
+    GpuResources modules(owner.ctx());
     GraphicsPipelineDesc desc;
     desc.vertex = createShaderModule(modules, spirv_text_vert);
     desc.fragment = createShaderModule(modules, spirv_text_frag);

@@ -480,50 +480,19 @@ TEST_F(CullPassTest, IndirectDrawsOfEveryPathAreValid) {
     run(uniformsFor(kStart, 0, true));
 
     const VkExtent2D extent{16, 16};
-    Image target = createImage(
-        resources, {.extent = extent, .format = VK_FORMAT_R8G8B8A8_UNORM, .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
+    Image target = createImage(resources, {.extent = extent,
+                                           .format = VK_FORMAT_R8G8B8A8_UNORM,
+                                           .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
     const std::vector<uint32_t> indices(4096, 0); // every triangle degenerate: cheap to "draw"
     Buffer indexBuffer = createDeviceBufferWithData(resources, indices.data(), indices.size() * 4,
                                                     VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     Buffer frame = createHostBuffer(resources, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(frame.mapped, 0, sizeof(gpu::FrameUniforms));
 
-    VkDescriptorSetLayoutBinding binding{BINDING_FRAME_UNIFORMS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
-                                         VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setInfo.bindingCount = 1;
-    setInfo.pBindings = &binding;
-    VkDescriptorSetLayout setLayout;
-    VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &setInfo, nullptr, &setLayout));
-    resources.own(setLayout);
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &setLayout;
-    VkPipelineLayout layout;
-    VK_CHECK(vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &layout));
-    resources.own(layout);
-    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1};
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 1;
-    poolInfo.pPoolSizes = &poolSize;
-    VkDescriptorPool pool;
-    VK_CHECK(vkCreateDescriptorPool(ctx.device, &poolInfo, nullptr, &pool));
-    resources.own(pool);
-    VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocInfo.descriptorPool = pool;
-    allocInfo.descriptorSetCount = 1;
-    allocInfo.pSetLayouts = &setLayout;
-    VkDescriptorSet set;
-    VK_CHECK(vkAllocateDescriptorSets(ctx.device, &allocInfo, &set));
-    VkDescriptorBufferInfo bufferInfo{frame.buffer, 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = set;
-    write.dstBinding = BINDING_FRAME_UNIFORMS;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    write.pBufferInfo = &bufferInfo;
-    vkUpdateDescriptorSets(ctx.device, 1, &write, 0, nullptr);
+    const DescriptorBinding table[] = {uniformBuffer(BINDING_FRAME_UNIFORMS, VK_SHADER_STAGE_FRAGMENT_BIT, frame)};
+    const VkDescriptorSetLayout setLayout = createSetLayout(resources, table);
+    const VkDescriptorSet set = createSet(resources, setLayout, table);
+    const VkPipelineLayout layout = createPipelineLayout(resources, setLayout);
 
     GraphicsPipelineDesc desc;
     desc.vertex = createShaderModule(resources, spirv_sky_vert);
