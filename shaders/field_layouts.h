@@ -70,6 +70,14 @@ using uint = uint32_t;
 // Corners of the polygon a billboard quad is drawn as (engine/field/impostor_outline.h).
 #define OUTLINE_CORNERS 4
 
+// Texels of 16 bytes (R32G32B32A32_UINT views) each struct below takes in
+// the texel views the draw shaders read it through: the stride they index by.
+#define FIELD_INSTANCE_TEXELS 3
+#define PLANT_MODEL_TEXELS 7
+#define FIELD_VERTEX_TEXELS 4
+#define TERRAIN_VERTEX_TEXELS 2
+#define IMPOSTOR_OUTLINE_TEXELS (OUTLINE_CORNERS / 2) // per atlas layer: two uv corners a texel
+
 // Descriptor bindings of the cull pass (its own set 0).
 #define CULL_BINDING_UNIFORMS 0  // CullUniforms
 #define CULL_BINDING_INSTANCES 1 // FieldInstance[]
@@ -154,9 +162,10 @@ struct FieldFrame {
 
 #ifdef __cplusplus
 } // namespace gpu
-static_assert(sizeof(gpu::FieldInstance) == 48);
-static_assert(sizeof(gpu::PlantModel) == 7 * 16);
-static_assert(sizeof(gpu::FieldVertex) == 64);
+static_assert(sizeof(gpu::FieldInstance) == FIELD_INSTANCE_TEXELS * 16);
+static_assert(sizeof(gpu::PlantModel) == PLANT_MODEL_TEXELS * 16);
+static_assert(sizeof(gpu::FieldVertex) == FIELD_VERTEX_TEXELS * 16);
+static_assert(sizeof(gpu::TerrainVertex) == TERRAIN_VERTEX_TEXELS * 16);
 static_assert(sizeof(gpu::DrawTemplate) == 32);
 static_assert(sizeof(gpu::DrawCommand) == 20);
 static_assert(sizeof(gpu::CullUniforms) == 9 * 16);

@@ -23,7 +23,7 @@ layout(set = 0, binding = PHYSICS_BINDING_STATE_TEXELS) uniform usamplerBuffer s
 layout(set = 0, binding = PHYSICS_BINDING_POSE_TEXELS) uniform usamplerBuffer poseTexels;
 
 JointParams jointParamsAt(uint i) {
-    int t = int(i) * 6;
+    int t = int(i) * JOINT_PARAMS_TEXELS;
     JointParams p;
     p.restBase = floatTexel(paramTexels, t);
     p.restRotation = floatTexel(paramTexels, t + 1);
@@ -40,7 +40,8 @@ Skeleton skeletonOfJoint(uint joint) {
 }
 
 JointState stateAt(uint i) {
-    return JointState(floatTexel(stateTexels, int(i) * 2), floatTexel(stateTexels, int(i) * 2 + 1));
+    int t = int(i) * JOINT_STATE_TEXELS;
+    return JointState(floatTexel(stateTexels, t), floatTexel(stateTexels, t + 1));
 }
 
 JointPose poseAt(uint i) {

@@ -175,26 +175,27 @@ void FieldRenderer::uploadInstances() {
 // pass's lists, or every plant once.
 void FieldRenderer::createDescriptors() {
     const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
-    auto texels = [&](uint32_t binding, const Buffer& buffer, VkFormat format, uint32_t texelBytes) {
-        return texelBuffer(binding, kDrawStages, createTexelView(resources_, buffer, format, texelBytes));
+    const VkFormat uint1 = VK_FORMAT_R32_UINT;
+    auto texels = [&](uint32_t binding, const Buffer& buffer, VkFormat format) {
+        return texelBuffer(binding, kDrawStages, createTexelView(resources_, buffer, format));
     };
     const std::vector<DescriptorBinding> drawTable = {
         uniformBuffer(FIELD_BINDING_FRAME, kDrawStages, uniforms_),
-        texels(FIELD_BINDING_INSTANCES, instances_, uint4, 16),
-        texels(FIELD_BINDING_VISIBLE, cull_.visible, VK_FORMAT_R32_UINT, 4),
-        texels(FIELD_BINDING_VERTICES, vertices_, uint4, 16),
-        texels(FIELD_BINDING_MODELS, models_, uint4, 16),
+        texels(FIELD_BINDING_INSTANCES, instances_, uint4),
+        texels(FIELD_BINDING_VISIBLE, cull_.visible, uint1),
+        texels(FIELD_BINDING_VERTICES, vertices_, uint4),
+        texels(FIELD_BINDING_MODELS, models_, uint4),
         sampledImage(FIELD_BINDING_ATLAS_COLOR, kDrawStages, atlas_.sampler, atlas_.color.view),
         sampledImage(FIELD_BINDING_ATLAS_NORMAL, kDrawStages, atlas_.sampler, atlas_.normalDepth.view),
         sampledImage(FIELD_BINDING_SHADOW, kDrawStages, shadow_.sampler, shadow_.depth.view),
-        texels(FIELD_BINDING_TERRAIN, terrainVertices_, uint4, 16),
-        texels(FIELD_BINDING_SKELETONS, motion_.pass.skeletons, uint4, 16),
-        texels(FIELD_BINDING_POSES, motion_.pass.poses, uint4, 16),
-        texels(FIELD_BINDING_INSTANCE_SKELETON, motion_.instanceSkeleton, VK_FORMAT_R32_UINT, 4),
-        texels(FIELD_BINDING_IMPOSTOR_OUTLINES, outlines_, uint4, 16)};
+        texels(FIELD_BINDING_TERRAIN, terrainVertices_, uint4),
+        texels(FIELD_BINDING_SKELETONS, motion_.pass.skeletons, uint4),
+        texels(FIELD_BINDING_POSES, motion_.pass.poses, uint4),
+        texels(FIELD_BINDING_INSTANCE_SKELETON, motion_.instanceSkeleton, uint1),
+        texels(FIELD_BINDING_IMPOSTOR_OUTLINES, outlines_, uint4)};
     std::vector<DescriptorBinding> naiveTable = drawTable;
     for (DescriptorBinding& b : naiveTable)
-        if (b.binding == FIELD_BINDING_VISIBLE) b = texels(FIELD_BINDING_VISIBLE, naiveVisible_, VK_FORMAT_R32_UINT, 4);
+        if (b.binding == FIELD_BINDING_VISIBLE) b = texels(FIELD_BINDING_VISIBLE, naiveVisible_, uint1);
 
     const VkDescriptorSetLayout setLayout = createSetLayout(resources_, drawTable);
     const DescriptorTable tables[] = {drawTable, naiveTable};

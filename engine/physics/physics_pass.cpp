@@ -112,19 +112,19 @@ PhysicsPass createPhysicsPass(GpuResources& owner, const SkeletonSet& set) {
 
     const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-    auto texels = [&](uint32_t binding, const Buffer& buffer, VkFormat format, uint32_t texelBytes) {
-        return texelBuffer(binding, compute, createTexelView(owner, buffer, format, texelBytes));
+    const VkFormat uint1 = VK_FORMAT_R32_UINT;
+    auto texels = [&](uint32_t binding, const Buffer& buffer, VkFormat format) {
+        return texelBuffer(binding, compute, createTexelView(owner, buffer, format));
     };
-    const DescriptorBinding bindings[] = {
-        uniformBuffer(PHYSICS_BINDING_UNIFORMS, compute, pass.uniforms),
-        texels(PHYSICS_BINDING_PARAMS, pass.params, uint4, 16),
-        texels(PHYSICS_BINDING_SKELETONS, pass.skeletons, uint4, 16),
-        storageBuffer(PHYSICS_BINDING_STATES, compute, pass.states),
-        storageBuffer(PHYSICS_BINDING_POSES, compute, pass.poses),
-        texels(PHYSICS_BINDING_JOINT_SKELETON, pass.jointSkeleton, VK_FORMAT_R32_UINT, 4),
-        texels(PHYSICS_BINDING_JOINT_ORDER, pass.jointOrder, VK_FORMAT_R32_UINT, 4),
-        texels(PHYSICS_BINDING_STATE_TEXELS, pass.states, uint4, 16),
-        texels(PHYSICS_BINDING_POSE_TEXELS, pass.poses, uint4, 16)};
+    const DescriptorBinding bindings[] = {uniformBuffer(PHYSICS_BINDING_UNIFORMS, compute, pass.uniforms),
+                                          texels(PHYSICS_BINDING_PARAMS, pass.params, uint4),
+                                          texels(PHYSICS_BINDING_SKELETONS, pass.skeletons, uint4),
+                                          storageBuffer(PHYSICS_BINDING_STATES, compute, pass.states),
+                                          storageBuffer(PHYSICS_BINDING_POSES, compute, pass.poses),
+                                          texels(PHYSICS_BINDING_JOINT_SKELETON, pass.jointSkeleton, uint1),
+                                          texels(PHYSICS_BINDING_JOINT_ORDER, pass.jointOrder, uint1),
+                                          texels(PHYSICS_BINDING_STATE_TEXELS, pass.states, uint4),
+                                          texels(PHYSICS_BINDING_POSE_TEXELS, pass.poses, uint4)};
     // The pose level is a uvec2 push constant (physics.comp declares none).
     pass.set = createComputeSet(owner, bindings, sizeof(glm::uvec2));
     pass.physicsPipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_physics_comp);

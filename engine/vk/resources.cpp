@@ -9,6 +9,18 @@
 
 namespace pf {
 
+namespace {
+
+VkDeviceSize texelBytesOf(VkFormat format) {
+    switch (format) {
+    case VK_FORMAT_R32G32B32A32_UINT: return 16;
+    case VK_FORMAT_R32_UINT: return 4;
+    default: throw std::invalid_argument("texel views are R32G32B32A32_UINT or R32_UINT");
+    }
+}
+
+} // namespace
+
 Buffer createBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFlags usage,
                     VkMemoryPropertyFlags memoryFlags) {
     VkDevice device = owner.ctx().device;
@@ -48,7 +60,8 @@ Buffer createDeviceBufferWithData(GpuResources& owner, const void* data, VkDevic
     return out;
 }
 
-VkBufferView createTexelView(GpuResources& owner, const Buffer& buffer, VkFormat format, uint32_t texelBytes) {
+VkBufferView createTexelView(GpuResources& owner, const Buffer& buffer, VkFormat format) {
+    const VkDeviceSize texelBytes = texelBytesOf(format);
     const VkDeviceSize texels = buffer.size / texelBytes;
     const uint32_t limit = owner.ctx().properties.limits.maxTexelBufferElements;
     if (texels > limit)

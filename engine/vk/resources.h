@@ -30,12 +30,14 @@ Buffer createHostBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFla
 // A device-local buffer filled through a staging copy.
 Buffer createDeviceBufferWithData(GpuResources& owner, const void* data, VkDeviceSize size, VkBufferUsageFlags usage);
 
-// A view of a whole buffer as texels of `format` (`texelBytes` each), for
-// shaders that read it as a uniform texel buffer: lavapipe gathers a texel
-// for all SIMD lanes at once, where it reads a storage buffer at a
-// per-invocation index one float and one lane at a time. Throws when the
-// buffer holds more texels than the device's maxTexelBufferElements.
-VkBufferView createTexelView(GpuResources& owner, const Buffer& buffer, VkFormat format, uint32_t texelBytes);
+// A view of a whole buffer as texels of `format`, R32G32B32A32_UINT (16
+// bytes: a struct of N vec4/uvec4 members is N texels, its *_TEXELS stride
+// in shaders/*_layouts.h) or R32_UINT, for shaders that read it as a
+// uniform texel buffer: lavapipe gathers a texel for all SIMD lanes at once,
+// where it reads a storage buffer at a per-invocation index one float and
+// one lane at a time. Throws when the buffer holds more texels than the
+// device's maxTexelBufferElements.
+VkBufferView createTexelView(GpuResources& owner, const Buffer& buffer, VkFormat format);
 
 struct ImageDesc {
     VkExtent2D extent{};

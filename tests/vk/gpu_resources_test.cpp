@@ -22,7 +22,7 @@ TEST_F(GpuResourcesTest, BytesAreTheMemoryOfWhatItOwnsUntilDestroyed) {
                                             .mipLevels = 3,
                                             .layers = 2,
                                             .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
-    createTexelView(owner, buffer, VK_FORMAT_R32_UINT, 4);
+    createTexelView(owner, buffer, VK_FORMAT_R32_UINT);
     VkMemoryRequirements bufferMemory, imageMemory;
     vkGetBufferMemoryRequirements(ctx.device, buffer.buffer, &bufferMemory);
     vkGetImageMemoryRequirements(ctx.device, image.image, &imageMemory);
