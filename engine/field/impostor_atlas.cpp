@@ -31,13 +31,13 @@ uint32_t mipCount(uint32_t size) {
 // Destination of the frames' resolves, source and destination of the mip
 // blits, sampled by the billboards.
 Image createAtlasImage(GpuResources& owner, uint32_t size, VkFormat format, uint32_t layers, uint32_t mips) {
-    return createImage(owner, {.extent = {size, size},
-                               .format = format,
-                               .usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                                        VK_IMAGE_USAGE_SAMPLED_BIT,
-                               .mipLevels = mips,
-                               .layers = layers,
-                               .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
+    return createImage(
+        owner, {.extent = {size, size},
+                .format = format,
+                .usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                .mipLevels = mips,
+                .layers = layers,
+                .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
 }
 
 VkImageMemoryBarrier2 atlasBarrier(const Image& image, uint32_t baseMip, uint32_t mips, uint32_t layers,
@@ -124,18 +124,24 @@ std::vector<ImpostorOutline> readOutlines(const GpuContext& ctx, const ImpostorA
     GpuResources scratch(ctx);
     Buffer readback = createHostBuffer(scratch, layerBytes * atlas.layers, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-        const ImageTransition toSource{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
-                                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+        const ImageTransition toSource{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                       VK_ACCESS_2_NONE,
+                                       VK_PIPELINE_STAGE_2_COPY_BIT,
+                                       VK_ACCESS_2_TRANSFER_READ_BIT,
+                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
         pipelineBarrier(cmd, {atlasBarrier(atlas.color, mip, 1, atlas.layers, toSource)});
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, 0, atlas.layers};
         region.imageExtent = {size, size, 1};
         vkCmdCopyImageToBuffer(cmd, atlas.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1,
                                &region);
-        const ImageTransition toSampled{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-                                        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
-                                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+        const ImageTransition toSampled{VK_PIPELINE_STAGE_2_COPY_BIT,
+                                        VK_ACCESS_2_NONE,
+                                        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
         pipelineBarrier(cmd, {atlasBarrier(atlas.color, mip, 1, atlas.layers, toSampled)});
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
                       VK_ACCESS_2_HOST_READ_BIT);
@@ -200,12 +206,12 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
         scratch, {.extent = {size, size}, .format = kAtlasColorFormat, .usage = targetUsage, .samples = samples});
     Image targetNormal = createImage(
         scratch, {.extent = {size, size}, .format = kAtlasNormalFormat, .usage = targetUsage, .samples = samples});
-    Image depth = createImage(scratch, {.extent = {size, size},
-                                        .format = kBakeDepthFormat,
-                                        .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
-                                                 VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                                        .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
-                                        .samples = samples});
+    Image depth = createImage(
+        scratch, {.extent = {size, size},
+                  .format = kBakeDepthFormat,
+                  .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                  .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
+                  .samples = samples});
 
     const DescriptorBinding table[] = {
         storageBuffer(IMPOSTOR_BAKE_BINDING_VERTICES, VK_SHADER_STAGE_VERTEX_BIT, vertices)};
@@ -224,16 +230,17 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
         // Level 0 of every layer receives one frame's resolve (or copy);
         // its old contents are discarded.
-        const ImageTransition toDestination{VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+        const ImageTransition toDestination{VK_PIPELINE_STAGE_2_NONE,
+                                            VK_ACCESS_2_NONE,
                                             VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                                            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                                            VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                            VK_IMAGE_LAYOUT_UNDEFINED,
                                             VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
         pipelineBarrier(cmd, {atlasBarrier(atlas.color, 0, 1, layers, toDestination),
                               atlasBarrier(atlas.normalDepth, 0, 1, layers, toDestination)});
 
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout, 0, 1, &descriptorSet, 0,
-                                nullptr);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout, 0, 1, &descriptorSet, 0, nullptr);
         vkCmdBindIndexBuffer(cmd, indices.buffer, 0, VK_INDEX_TYPE_UINT32);
         const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
         const VkRect2D scissor{{0, 0}, {size, size}};
@@ -241,10 +248,12 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
         // Each frame clears the targets again: the previous frame's resolve
         // reads must be done before (write after read: execution only), and
         // its depth writes before the depth clear (write after write).
-        const ImageTransition targetToAttachment{
-            VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-            VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+        const ImageTransition targetToAttachment{VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                                 VK_ACCESS_2_NONE,
+                                                 VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                                 VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                                                 VK_IMAGE_LAYOUT_UNDEFINED,
+                                                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
         VkImageMemoryBarrier2 depthToAttachment = atlasBarrier(
             depth, 0, 1, 1,
             {VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
@@ -253,10 +262,12 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
              VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
         depthToAttachment.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
         // The frame's attachment writes must land before the resolve reads them.
-        const ImageTransition targetToSource{
-            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+        const ImageTransition targetToSource{VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                                             VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                             VK_ACCESS_2_TRANSFER_READ_BIT,
+                                             VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                             VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
 
         for (size_t m = 0; m < pool.models.size(); ++m) {
             const PlantModelInfo& model = pool.models[m];
@@ -310,8 +321,8 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
                 // A separate resolve rather than a resolve attachment on a
                 // layer view: lavapipe resolves those into layer 0.
                 const uint32_t layer = model.gpu.impostor.x + f;
-                for (const auto& [target, image] : {std::pair{&targetColor, &atlas.color},
-                                                    std::pair{&targetNormal, &atlas.normalDepth}}) {
+                for (const auto& [target, image] :
+                     {std::pair{&targetColor, &atlas.color}, std::pair{&targetNormal, &atlas.normalDepth}}) {
                     const VkImageSubresourceLayers src{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
                     const VkImageSubresourceLayers dst{VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
                     if (msaa) {
@@ -330,13 +341,15 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
         // Mips: level k is blitted from level k-1 (premultiplied values
         // average correctly). The resolves into level 0 must be done before
         // the first blit reads it; the other levels hold nothing yet.
-        const ImageTransition resolvedToSource{
-            VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
-        const ImageTransition emptyToDestination{VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+        const ImageTransition resolvedToSource{VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                               VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                               VK_PIPELINE_STAGE_2_BLIT_BIT,
+                                               VK_ACCESS_2_TRANSFER_READ_BIT,
+                                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+        const ImageTransition emptyToDestination{VK_PIPELINE_STAGE_2_NONE,     VK_ACCESS_2_NONE,
                                                  VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                                 VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
+                                                 VK_IMAGE_LAYOUT_UNDEFINED,    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
         std::vector<VkImageMemoryBarrier2> toBlit;
         for (const Image* image : {&atlas.color, &atlas.normalDepth}) {
             toBlit.push_back(atlasBarrier(*image, 0, 1, layers, resolvedToSource));
@@ -356,10 +369,10 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
                 vkCmdBlitImage(cmd, image->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image->image,
                                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
             // This level is the next blit's source: its writes must land first.
-            const ImageTransition writtenToSource{VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                                  VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-                                                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+            const ImageTransition writtenToSource{
+                VK_PIPELINE_STAGE_2_BLIT_BIT,         VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_BLIT_BIT,         VK_ACCESS_2_TRANSFER_READ_BIT,
+                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
             pipelineBarrier(cmd, {atlasBarrier(atlas.color, level, 1, layers, writtenToSource),
                                   atlasBarrier(atlas.normalDepth, level, 1, layers, writtenToSource)});
         }
@@ -368,7 +381,8 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
         // billboards sample them from fragment shaders.
         const ImageTransition toSampled{VK_PIPELINE_STAGE_2_BLIT_BIT,
                                         VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                                        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
                                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
         pipelineBarrier(cmd, {atlasBarrier(atlas.color, 0, mips, layers, toSampled),
