@@ -9,35 +9,35 @@
 #include "texels.glsl"
 
 // Everything the draw shaders read per vertex or per plant is a uniform
-// texel buffer (uint views, 16-byte texels unless said; texels.glsl says
-// why).
-layout(set = 0, binding = FIELD_BINDING_INSTANCES) uniform usamplerBuffer instanceTexels; // FieldInstance[], 3 each
+// texel buffer (uint views, 16-byte texels unless said, a struct's stride in
+// texels named in field_layouts.h; texels.glsl says why).
+layout(set = 0, binding = FIELD_BINDING_INSTANCES) uniform usamplerBuffer instanceTexels; // FieldInstance[]
 layout(set = 0, binding = FIELD_BINDING_VISIBLE) uniform usamplerBuffer visibleTexels;   // uint (4-byte texels)
-layout(set = 0, binding = FIELD_BINDING_VERTICES) uniform usamplerBuffer vertexTexels;   // FieldVertex[], 4 each
-layout(set = 0, binding = FIELD_BINDING_MODELS) uniform usamplerBuffer modelTexels;      // PlantModel[], 7 each
+layout(set = 0, binding = FIELD_BINDING_VERTICES) uniform usamplerBuffer vertexTexels;   // FieldVertex[]
+layout(set = 0, binding = FIELD_BINDING_MODELS) uniform usamplerBuffer modelTexels;      // PlantModel[]
 layout(set = 0, binding = FIELD_BINDING_ATLAS_COLOR) uniform sampler2DArray atlasColor;
 layout(set = 0, binding = FIELD_BINDING_ATLAS_NORMAL) uniform sampler2DArray atlasNormal;
 layout(set = 0, binding = FIELD_BINDING_SHADOW) uniform sampler2DShadow shadowMap;
-layout(set = 0, binding = FIELD_BINDING_TERRAIN) uniform usamplerBuffer terrainTexels;   // TerrainVertex[], 2 each
-layout(set = 0, binding = FIELD_BINDING_SKELETONS) uniform usamplerBuffer skeletonTexels; // Skeleton[], 3 each
-layout(set = 0, binding = FIELD_BINDING_POSES) uniform usamplerBuffer poseTexels;        // JointPose[], 2 each
+layout(set = 0, binding = FIELD_BINDING_TERRAIN) uniform usamplerBuffer terrainTexels;   // TerrainVertex[]
+layout(set = 0, binding = FIELD_BINDING_SKELETONS) uniform usamplerBuffer skeletonTexels; // Skeleton[]
+layout(set = 0, binding = FIELD_BINDING_POSES) uniform usamplerBuffer poseTexels;        // JointPose[]
 layout(set = 0, binding = FIELD_BINDING_INSTANCE_SKELETON) uniform usamplerBuffer instanceSkeletonTexels; // uint
-layout(set = 0, binding = FIELD_BINDING_IMPOSTOR_OUTLINES) uniform usamplerBuffer outlineTexels; // 4 per atlas layer
+layout(set = 0, binding = FIELD_BINDING_IMPOSTOR_OUTLINES) uniform usamplerBuffer outlineTexels; // per atlas layer
 
 FieldInstance fieldInstanceAt(uint i) {
-    int t = int(i) * 3;
+    int t = int(i) * FIELD_INSTANCE_TEXELS;
     return FieldInstance(floatTexel(instanceTexels, t), floatTexel(instanceTexels, t + 1),
                          texelFetch(instanceTexels, t + 2));
 }
 
 FieldVertex fieldVertexAt(uint i) {
-    int t = int(i) * 4;
+    int t = int(i) * FIELD_VERTEX_TEXELS;
     return FieldVertex(floatTexel(vertexTexels, t), floatTexel(vertexTexels, t + 1), floatTexel(vertexTexels, t + 2),
                        texelFetch(vertexTexels, t + 3));
 }
 
 PlantModel plantModelAt(uint i) {
-    int t = int(i) * 7;
+    int t = int(i) * PLANT_MODEL_TEXELS;
     PlantModel m;
     m.sphere = floatTexel(modelTexels, t);
     m.boxMin = floatTexel(modelTexels, t + 1);
@@ -52,12 +52,13 @@ PlantModel plantModelAt(uint i) {
 // Corner `corner` (0 … OUTLINE_CORNERS − 1) of the outline billboards of atlas layer `layer`
 // are drawn as (engine/field/impostor_outline.h): uv in the frame, v = 0 at the top.
 vec2 outlineCorner(uint layer, uint corner) {
-    vec4 pair = floatTexel(outlineTexels, int(layer * (OUTLINE_CORNERS / 2u) + corner / 2u));
+    vec4 pair = floatTexel(outlineTexels, int(layer * uint(IMPOSTOR_OUTLINE_TEXELS) + corner / 2u));
     return (corner & 1u) == 0u ? pair.xy : pair.zw;
 }
 
 TerrainVertex terrainVertexAt(uint i) {
-    return TerrainVertex(floatTexel(terrainTexels, int(i) * 2), floatTexel(terrainTexels, int(i) * 2 + 1));
+    int t = int(i) * TERRAIN_VERTEX_TEXELS;
+    return TerrainVertex(floatTexel(terrainTexels, t), floatTexel(terrainTexels, t + 1));
 }
 
 // Where the physics has moved joint `joint` of plant `instance` (plant

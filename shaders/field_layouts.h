@@ -4,6 +4,8 @@
 #ifndef PLANTFIELD_SHADERS_FIELD_LAYOUTS_H
 #define PLANTFIELD_SHADERS_FIELD_LAYOUTS_H
 
+#include "layouts.h"
+
 #ifdef __cplusplus
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -55,22 +57,33 @@ using uint = uint32_t;
 #define CULL_GROUP_SIZE 64
 
 // Descriptor bindings of the field's draw set (set 0).
-#define FIELD_BINDING_FRAME 0              // FrameUniforms (layouts.h) + FieldFrame
-#define FIELD_BINDING_INSTANCES 1          // FieldInstance[]
-#define FIELD_BINDING_VISIBLE 2            // uint[] visible entries, per (model, LOD) list
-#define FIELD_BINDING_VERTICES 3           // FieldVertex[]
-#define FIELD_BINDING_MODELS 4             // PlantModel[]
-#define FIELD_BINDING_ATLAS_COLOR 5        // sampler2DArray: impostor albedo (rgb) + coverage (a)
-#define FIELD_BINDING_ATLAS_NORMAL 6       // sampler2DArray: impostor normal (rgb·0.5+0.5) + depth (a)
-#define FIELD_BINDING_SHADOW 7             // sampler2DShadow: the sun's shadow map
-#define FIELD_BINDING_TERRAIN 8            // TerrainVertex[]
-#define FIELD_BINDING_SKELETONS 9          // Skeleton[] (physics_layouts.h)
-#define FIELD_BINDING_POSES 10             // JointPose[] of every simulated joint
-#define FIELD_BINDING_INSTANCE_SKELETON 11 // uint per instance: the Skeleton its vertices follow
-#define FIELD_BINDING_IMPOSTOR_OUTLINES 12 // per atlas layer, OUTLINE_CORNERS uv corners, two a texel
+#define FIELD_BINDING_FRAME BINDING_FRAME_UNIFORMS // FrameUniforms (layouts.h) + FieldFrame
+#define FIELD_BINDING_INSTANCES 1                  // FieldInstance[]
+#define FIELD_BINDING_VISIBLE 2                    // uint[] visible entries, per (model, LOD) list
+#define FIELD_BINDING_VERTICES 3                   // FieldVertex[]
+#define FIELD_BINDING_MODELS 4                     // PlantModel[]
+#define FIELD_BINDING_ATLAS_COLOR 5                // sampler2DArray: impostor albedo (rgb) + coverage (a)
+#define FIELD_BINDING_ATLAS_NORMAL 6               // sampler2DArray: impostor normal (rgb·0.5+0.5) + depth (a)
+#define FIELD_BINDING_SHADOW 7                     // sampler2DShadow: the sun's shadow map
+#define FIELD_BINDING_TERRAIN 8                    // TerrainVertex[]
+#define FIELD_BINDING_SKELETONS 9                  // Skeleton[] (physics_layouts.h)
+#define FIELD_BINDING_POSES 10                     // JointPose[] of every simulated joint
+#define FIELD_BINDING_INSTANCE_SKELETON 11         // uint per instance: the Skeleton its vertices follow
+#define FIELD_BINDING_IMPOSTOR_OUTLINES 12         // per atlas layer, OUTLINE_CORNERS uv corners, two a texel
+
+// Descriptor binding of the impostor bake (its own set 0).
+#define IMPOSTOR_BAKE_BINDING_VERTICES 0 // FieldVertex[]
 
 // Corners of the polygon a billboard quad is drawn as (engine/field/impostor_outline.h).
 #define OUTLINE_CORNERS 4
+
+// Texels of 16 bytes (R32G32B32A32_UINT views) each struct below takes in
+// the texel views the draw shaders read it through: the stride they index by.
+#define FIELD_INSTANCE_TEXELS 3
+#define PLANT_MODEL_TEXELS 7
+#define FIELD_VERTEX_TEXELS 4
+#define TERRAIN_VERTEX_TEXELS 2
+#define IMPOSTOR_OUTLINE_TEXELS (OUTLINE_CORNERS / 2) // per atlas layer: two uv corners a texel
 
 // Descriptor bindings of the cull pass (its own set 0).
 #define CULL_BINDING_UNIFORMS 0     // CullUniforms
@@ -139,6 +152,14 @@ struct CullUniforms {
     vec4 timing;  // x seconds since the previous frame, yzw 0
 };
 
+// The push constants of one impostor bake frame (engine/field/impostor_atlas.h):
+// the orthographic view from azimuth a, fitted to the model's box.
+struct ImpostorBakePush {
+    vec4 right;  // xyz (cos a, 0, -sin a) / half width
+    vec4 toView; // xyz (sin a, 0, cos a) / half depth
+    vec4 height; // x bottom, y 1 / (top - bottom)
+};
+
 // Field additions to the frame uniforms (after FrameUniforms in the same block).
 struct FieldFrame {
     mat4 sunViewProj; // world → shadow map clip space
@@ -152,13 +173,15 @@ struct FieldFrame {
 } // namespace gpu
 static_assert(LOD_COUNT <= 3, "PlantModel::lists holds one first entry per LOD and the capacity in a uvec4");
 static_assert(LOD_COUNT <= (1u << LOD_STATE_LOD_BITS) && LOD_STATE_LOD_MASK == (1u << LOD_STATE_LOD_BITS) - 1u);
-static_assert(sizeof(gpu::FieldInstance) == 48);
-static_assert(sizeof(gpu::PlantModel) == 7 * 16);
-static_assert(sizeof(gpu::FieldVertex) == 64);
+static_assert(sizeof(gpu::FieldInstance) == FIELD_INSTANCE_TEXELS * 16);
+static_assert(sizeof(gpu::PlantModel) == PLANT_MODEL_TEXELS * 16);
+static_assert(sizeof(gpu::FieldVertex) == FIELD_VERTEX_TEXELS * 16);
+static_assert(sizeof(gpu::TerrainVertex) == TERRAIN_VERTEX_TEXELS * 16);
 static_assert(sizeof(gpu::DrawTemplate) == 32);
 static_assert(sizeof(gpu::DrawCommand) == 20);
 static_assert(sizeof(gpu::CullUniforms) == 9 * 16);
 static_assert(sizeof(gpu::FieldFrame) == 64 + 3 * 16);
+static_assert(sizeof(gpu::ImpostorBakePush) == 3 * 16);
 #endif
 
 #endif

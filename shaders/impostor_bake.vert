@@ -4,15 +4,13 @@
 
 // One frame of the impostor bake (engine/field/impostor_atlas.h): a model's LOD0
 // mesh seen orthographically from azimuth a, fitted to the model's box.
-layout(set = 0, binding = 0, std430) readonly buffer Vertices {
+layout(set = 0, binding = IMPOSTOR_BAKE_BINDING_VERTICES, std430) readonly buffer Vertices {
     FieldVertex vertices[];
 };
 
-layout(push_constant) uniform BakePush {
-    vec4 right;  // xyz (cos a, 0, -sin a) / half width
-    vec4 toView; // xyz (sin a, 0, cos a) / half depth
-    vec4 height; // x bottom, y 1 / (top - bottom)
-} bake;
+layout(push_constant) uniform BakeBlock {
+    ImpostorBakePush bake;
+};
 
 layout(location = 0) out vec3 outNormal;
 layout(location = 1) out vec3 outAlbedo;

@@ -1,29 +1,29 @@
-// The descriptor set of shaders/physics.comp and shaders/pose.comp (built by
-// engine/physics/physics_pass.cpp in this order). What a pass only reads is bound
-// as a uint texel buffer (texels.glsl says why).
+// The descriptor set of shaders/physics.comp and shaders/pose.comp (bindings
+// named in physics_layouts.h, built by engine/physics/physics_pass.cpp). What
+// a pass only reads is bound as a uint texel buffer (texels.glsl says why).
 #ifndef PHYSICS_BINDINGS_GLSL
 #define PHYSICS_BINDINGS_GLSL
 #include "joint_physics.h"
 #include "texels.glsl"
 
-layout(set = 0, binding = 0, std140) uniform PhysicsBlock {
+layout(set = 0, binding = PHYSICS_BINDING_UNIFORMS, std140) uniform PhysicsBlock {
     PhysicsUniforms physics;
 };
-layout(set = 0, binding = 1) uniform usamplerBuffer paramTexels;    // JointParams[], 6 texels each
-layout(set = 0, binding = 2) uniform usamplerBuffer skeletonTexels; // Skeleton[], 3 texels each
-layout(set = 0, binding = 3, std430) buffer States {
+layout(set = 0, binding = PHYSICS_BINDING_PARAMS) uniform usamplerBuffer paramTexels;
+layout(set = 0, binding = PHYSICS_BINDING_SKELETONS) uniform usamplerBuffer skeletonTexels;
+layout(set = 0, binding = PHYSICS_BINDING_STATES, std430) buffer States {
     JointState states[];
 };
-layout(set = 0, binding = 4, std430) buffer Poses {
+layout(set = 0, binding = PHYSICS_BINDING_POSES, std430) buffer Poses {
     JointPose poses[];
 };
-layout(set = 0, binding = 5) uniform usamplerBuffer jointSkeletonTexels; // uint per simulated joint
-layout(set = 0, binding = 6) uniform usamplerBuffer jointOrderTexels;    // uint per simulated joint, level by level
-layout(set = 0, binding = 7) uniform usamplerBuffer stateTexels;         // the states, 2 texels each
-layout(set = 0, binding = 8) uniform usamplerBuffer poseTexels;          // the poses, 2 texels each
+layout(set = 0, binding = PHYSICS_BINDING_JOINT_SKELETON) uniform usamplerBuffer jointSkeletonTexels;
+layout(set = 0, binding = PHYSICS_BINDING_JOINT_ORDER) uniform usamplerBuffer jointOrderTexels;
+layout(set = 0, binding = PHYSICS_BINDING_STATE_TEXELS) uniform usamplerBuffer stateTexels;
+layout(set = 0, binding = PHYSICS_BINDING_POSE_TEXELS) uniform usamplerBuffer poseTexels;
 
 JointParams jointParamsAt(uint i) {
-    int t = int(i) * 6;
+    int t = int(i) * JOINT_PARAMS_TEXELS;
     JointParams p;
     p.restBase = floatTexel(paramTexels, t);
     p.restRotation = floatTexel(paramTexels, t + 1);
@@ -40,7 +40,8 @@ Skeleton skeletonOfJoint(uint joint) {
 }
 
 JointState stateAt(uint i) {
-    return JointState(floatTexel(stateTexels, int(i) * 2), floatTexel(stateTexels, int(i) * 2 + 1));
+    int t = int(i) * JOINT_STATE_TEXELS;
+    return JointState(floatTexel(stateTexels, t), floatTexel(stateTexels, t + 1));
 }
 
 JointPose poseAt(uint i) {

@@ -19,6 +19,25 @@ using uint = uint32_t;
 #endif
 
 #define PHYSICS_GROUP_SIZE 64
+
+// Descriptor bindings of the physics and pose passes (their set 0). What a
+// pass only reads is a uint texel buffer (texels.glsl says why).
+#define PHYSICS_BINDING_UNIFORMS 0       // PhysicsUniforms
+#define PHYSICS_BINDING_PARAMS 1         // JointParams[], texels
+#define PHYSICS_BINDING_SKELETONS 2      // Skeleton[], texels
+#define PHYSICS_BINDING_STATES 3         // JointState[], written
+#define PHYSICS_BINDING_POSES 4          // JointPose[], written
+#define PHYSICS_BINDING_JOINT_SKELETON 5 // uint per simulated joint: its Skeleton, texels
+#define PHYSICS_BINDING_JOINT_ORDER 6    // uint per simulated joint, level by level, texels
+#define PHYSICS_BINDING_STATE_TEXELS 7   // the states again, as texels
+#define PHYSICS_BINDING_POSE_TEXELS 8    // the poses again, as texels
+
+// Texels of 16 bytes (R32G32B32A32_UINT views) each struct below takes in
+// the texel views the passes and the draw shaders read it through.
+#define JOINT_PARAMS_TEXELS 6
+#define JOINT_STATE_TEXELS 2
+#define JOINT_POSE_TEXELS 2
+#define SKELETON_TEXELS 3
 #define JOINT_NO_PARENT 0xFFFFFFFFu
 // Skeleton::ids.w of a plant without a simulated skeleton: its vertices stay at rest.
 #define NO_SKELETON 0xFFFFFFFFu
@@ -79,10 +98,10 @@ struct PhysicsDispatch {
 
 #ifdef __cplusplus
 } // namespace gpu
-static_assert(sizeof(gpu::JointParams) == 6 * 16);
-static_assert(sizeof(gpu::JointState) == 32);
-static_assert(sizeof(gpu::JointPose) == 32);
-static_assert(sizeof(gpu::Skeleton) == 48);
+static_assert(sizeof(gpu::JointParams) == JOINT_PARAMS_TEXELS * 16);
+static_assert(sizeof(gpu::JointState) == JOINT_STATE_TEXELS * 16);
+static_assert(sizeof(gpu::JointPose) == JOINT_POSE_TEXELS * 16);
+static_assert(sizeof(gpu::Skeleton) == SKELETON_TEXELS * 16);
 static_assert(sizeof(gpu::PhysicsUniforms) == 64);
 static_assert(sizeof(gpu::PhysicsDispatch) == 8);
 #endif

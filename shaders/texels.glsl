@@ -14,12 +14,12 @@ vec4 floatTexel(usamplerBuffer b, int t) {
 
 // The physics arrays that both the physics passes and the draw shaders read.
 Skeleton skeletonFromTexels(usamplerBuffer skeletons, uint i) {
-    int t = int(i) * 3;
+    int t = int(i) * SKELETON_TEXELS;
     return Skeleton(texelFetch(skeletons, t), floatTexel(skeletons, t + 1), floatTexel(skeletons, t + 2));
 }
 
 JointPose poseFromTexels(usamplerBuffer poses, uint i) {
-    int t = int(i) * 2;
+    int t = int(i) * JOINT_POSE_TEXELS;
     return JointPose(floatTexel(poses, t), floatTexel(poses, t + 1));
 }
 

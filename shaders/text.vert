@@ -1,13 +1,11 @@
 #version 460
+#extension GL_GOOGLE_include_directive : require
+#include "text_layouts.h"
+
 // The text overlay's rectangles (stb_easy_font quads), pulled from a storage
 // buffer: six vertices, two triangles, a rectangle. Positions are pixels with
-// y down, as in the C++ OverlayRect of engine/window/text_overlay.cpp.
-struct OverlayRect {
-    vec4 bounds; // x0, y0, x1, y1 in pixels
-    vec4 color;  // linear rgba
-};
-
-layout(std430, set = 0, binding = 0) readonly buffer OverlayRects {
+// y down.
+layout(std430, set = 0, binding = TEXT_BINDING_RECTS) readonly buffer OverlayRects {
     OverlayRect rects[];
 };
 

@@ -1,7 +1,6 @@
 #include "engine/field/cull_pass.h"
 
 #include "engine/vk/pipeline.h"
-#include "engine/vk/vk_check.h"
 #include "shaders/lod_select.h"
 
 #include "shaders/build_draws_comp.spv.h"
@@ -17,13 +16,11 @@ namespace pf {
 
 namespace {
 
-constexpr uint32_t kBindingCount = 10;
-
 // Buffers of zero size are invalid; an empty field still gets valid ones.
 VkDeviceSize atLeastOneWord(VkDeviceSize bytes) { return std::max<VkDeviceSize>(bytes, 4); }
 
-Buffer createDeviceBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage) {
-    return createBuffer(ctx, atLeastOneWord(size), usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+Buffer createDeviceBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFlags usage) {
+    return createBuffer(owner, atLeastOneWord(size), usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                         VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
 }
 
@@ -56,7 +53,8 @@ void assignVisibleLists(std::span<gpu::PlantModel> models, std::span<const gpu::
     }
 }
 
-CullPass createCullPass(const GpuContext& ctx, const CullPassInputs& inputs) {
+CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
+    const GpuContext& ctx = owner.ctx();
     if (inputs.instanceCount > FIELD_MAX_INSTANCES)
         throw std::runtime_error("field of " + std::to_string(inputs.instanceCount) + " instances exceeds " +
                                  std::to_string(FIELD_MAX_INSTANCES));
@@ -78,24 +76,24 @@ CullPass createCullPass(const GpuContext& ctx, const CullPassInputs& inputs) {
 
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags indirect = storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
-    pass.uniforms = createHostBuffer(ctx, sizeof(gpu::CullUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    pass.uniforms = createHostBuffer(owner, sizeof(gpu::CullUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     if (pass.templateCount > 0)
         pass.templates =
-            createDeviceBufferWithData(ctx, inputs.templates.data(), inputs.templates.size_bytes(), storage);
+            createDeviceBufferWithData(owner, inputs.templates.data(), inputs.templates.size_bytes(), storage);
     else
-        pass.templates = createDeviceBuffer(ctx, 0, storage);
+        pass.templates = createDeviceBuffer(owner, 0, storage);
     pass.state =
-        createDeviceBuffer(ctx, VkDeviceSize(pass.instanceCount) * 4, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-    pass.counts = createDeviceBuffer(ctx, VkDeviceSize(pass.modelCount) * LOD_COUNT * 4,
+        createDeviceBuffer(owner, VkDeviceSize(pass.instanceCount) * 4, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    pass.counts = createDeviceBuffer(owner, VkDeviceSize(pass.modelCount) * LOD_COUNT * 4,
                                      storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     // Written here, read by the draw shaders through a texel view.
-    pass.visible = createDeviceBuffer(ctx, VkDeviceSize(pass.instanceCount) * LOD_COUNT * 4,
+    pass.visible = createDeviceBuffer(owner, VkDeviceSize(pass.instanceCount) * LOD_COUNT * 4,
                                       storage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
     pass.commands = createDeviceBuffer(
-        ctx, VkDeviceSize(DRAW_CLASS_COUNT) * pass.templateCount * sizeof(gpu::DrawCommand), indirect);
-    pass.drawCounts = createDeviceBuffer(ctx, DRAW_CLASS_COUNT * 4, indirect | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-    pass.allCommands = createDeviceBuffer(ctx, VkDeviceSize(pass.templateCount) * sizeof(gpu::DrawCommand), indirect);
-    pass.readback = createHostBuffer(ctx, (VkDeviceSize(pass.modelCount) * LOD_COUNT + DRAW_CLASS_COUNT) * 4,
+        owner, VkDeviceSize(DRAW_CLASS_COUNT) * pass.templateCount * sizeof(gpu::DrawCommand), indirect);
+    pass.drawCounts = createDeviceBuffer(owner, DRAW_CLASS_COUNT * 4, indirect | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    pass.allCommands = createDeviceBuffer(owner, VkDeviceSize(pass.templateCount) * sizeof(gpu::DrawCommand), indirect);
+    pass.readback = createHostBuffer(owner, (VkDeviceSize(pass.modelCount) * LOD_COUNT + DRAW_CLASS_COUNT) * 4,
                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 
     // Until a first frame resets it, every plant is settled at LOD 0.
@@ -107,26 +105,21 @@ CullPass createCullPass(const GpuContext& ctx, const CullPassInputs& inputs) {
                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     });
 
-    const VkBuffer buffers[kBindingCount] = {pass.uniforms.buffer,   inputs.instances->buffer, inputs.models->buffer,
-                                             pass.state.buffer,      pass.counts.buffer,       pass.visible.buffer,
-                                             pass.templates.buffer,  pass.commands.buffer,     pass.drawCounts.buffer,
-                                             pass.allCommands.buffer};
-    pass.set = createComputeSet(ctx, buffers);
-    pass.cullPipeline =
-        createComputePipeline(ctx.device, pass.set.pipelineLayout, createShaderModule(ctx.device, spirv_cull_comp));
-    pass.buildDrawsPipeline = createComputePipeline(ctx.device, pass.set.pipelineLayout,
-                                                    createShaderModule(ctx.device, spirv_build_draws_comp));
+    const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+    const DescriptorBinding bindings[] = {uniformBuffer(CULL_BINDING_UNIFORMS, compute, pass.uniforms),
+                                          storageBuffer(CULL_BINDING_INSTANCES, compute, *inputs.instances),
+                                          storageBuffer(CULL_BINDING_MODELS, compute, *inputs.models),
+                                          storageBuffer(CULL_BINDING_STATE, compute, pass.state),
+                                          storageBuffer(CULL_BINDING_COUNTS, compute, pass.counts),
+                                          storageBuffer(CULL_BINDING_VISIBLE, compute, pass.visible),
+                                          storageBuffer(CULL_BINDING_TEMPLATES, compute, pass.templates),
+                                          storageBuffer(CULL_BINDING_COMMANDS, compute, pass.commands),
+                                          storageBuffer(CULL_BINDING_DRAW_COUNTS, compute, pass.drawCounts),
+                                          storageBuffer(CULL_BINDING_ALL_COMMANDS, compute, pass.allCommands)};
+    pass.set = createComputeSet(owner, bindings);
+    pass.cullPipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_cull_comp);
+    pass.buildDrawsPipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_build_draws_comp);
     return pass;
-}
-
-void destroyCullPass(const GpuContext& ctx, CullPass& pass) {
-    vkDestroyPipeline(ctx.device, pass.cullPipeline, nullptr);
-    vkDestroyPipeline(ctx.device, pass.buildDrawsPipeline, nullptr);
-    destroyComputeSet(ctx, pass.set);
-    for (Buffer* b : {&pass.uniforms, &pass.templates, &pass.state, &pass.counts, &pass.visible, &pass.commands,
-                      &pass.drawCounts, &pass.allCommands, &pass.readback})
-        destroyBuffer(ctx, *b);
-    pass = {};
 }
 
 gpu::CullUniforms makeCullUniforms(const glm::mat4& viewProj, const glm::vec3& cameraPosition, float fovYRadians,

@@ -43,7 +43,7 @@ struct CullPassInputs {
 };
 
 struct CullPass {
-    ComputeSet set; // uniforms, then the storage buffers below
+    ComputeSet set; // CULL_BINDING_*: the uniforms, the inputs' buffers and the storage buffers below
     VkPipeline cullPipeline = VK_NULL_HANDLE;
     VkPipeline buildDrawsPipeline = VK_NULL_HANDLE;
 
@@ -66,9 +66,8 @@ struct CullPass {
 };
 
 // Templates must be sorted by draw class. Throws when there are more
-// instances than FIELD_MAX_INSTANCES.
-CullPass createCullPass(const GpuContext& ctx, const CullPassInputs& inputs);
-void destroyCullPass(const GpuContext& ctx, CullPass& pass);
+// instances than FIELD_MAX_INSTANCES. What the pass creates is owned by `owner`.
+CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs);
 
 // Per frame, before record: frustum, camera, forced LOD, delta time.
 // `firstFrame` resets every instance's LOD state to settled at its target LOD.

@@ -1,9 +1,9 @@
 #include "engine/field/field_renderer.h"
 
+#include "engine/vk/descriptors.h"
 #include "engine/vk/gpu_timer.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/target_pass.h"
-#include "engine/vk/vk_check.h"
 
 #include "shaders/impostor_frag.spv.h"
 #include "shaders/impostor_shadow_frag.spv.h"
@@ -51,9 +51,9 @@ struct Timed {
 };
 
 template <class T>
-Buffer uploadVector(const GpuContext& ctx, const std::vector<T>& data, VkBufferUsageFlags usage) {
+Buffer uploadVector(GpuResources& owner, const std::vector<T>& data, VkBufferUsageFlags usage) {
     if (data.empty()) throw std::runtime_error("field renderer: nothing to upload");
-    return createDeviceBufferWithData(ctx, data.data(), data.size() * sizeof(T), usage);
+    return createDeviceBufferWithData(owner, data.data(), data.size() * sizeof(T), usage);
 }
 
 // The drawn terrain keeps at most this many samples a side: far cells of a
@@ -81,36 +81,22 @@ bool nestedInColourPass(std::string_view pass) {
 }
 
 FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const FieldRenderSettings& settings)
-    : ctx_(ctx), content_(std::move(content)), settings_(settings) {
+    : ctx_(ctx), content_(std::move(content)), settings_(settings), resources_(ctx) {
     if (content_.plants.empty()) throw std::runtime_error("the scene places no plant");
     if (content_.plants.size() > FIELD_MAX_INSTANCES)
         throw std::runtime_error("at most " + std::to_string(FIELD_MAX_INSTANCES) + " plants can be drawn");
-    uniforms_ = createHostBuffer(ctx_, sizeof(FieldUniformBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    uniforms_ = createHostBuffer(resources_, sizeof(FieldUniformBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     uploadGeometry();
     uploadInstances();
-    motion_ = createFieldMotion(ctx_, content_);
-    shadow_ = createShadowMap(ctx_, settings_.shadowMapSize);
+    motion_ = createFieldMotion(resources_, content_);
+    shadow_ = createShadowMap(resources_, settings_.shadowMapSize);
     createDescriptors();
     createPipelines();
 }
 
 FieldRenderer::~FieldRenderer() {
-    VkDevice device = ctx_.device;
-    vkDeviceWaitIdle(device);
-    for (VkPipeline p : {pipelines_.sky, pipelines_.terrain, pipelines_.bark, pipelines_.foliage, pipelines_.impostor,
-                         pipelines_.plantShadow, pipelines_.impostorShadow})
-        vkDestroyPipeline(device, p, nullptr);
-    vkDestroyPipelineLayout(device, pipelineLayout_, nullptr);
-    vkDestroyDescriptorPool(device, descriptorPool_, nullptr);
-    for (VkBufferView view : texelViews_) vkDestroyBufferView(device, view, nullptr);
-    vkDestroyDescriptorSetLayout(device, setLayout_, nullptr);
-    destroyCullPass(ctx_, cull_);
-    destroyFieldMotion(ctx_, motion_);
-    destroyShadowMap(ctx_, shadow_);
-    destroyImpostorAtlas(ctx_, atlas_);
-    for (Buffer* b : {&uniforms_, &vertices_, &indices_, &models_, &instances_, &terrainVertices_, &terrainIndices_,
-                      &naiveVisible_, &outlines_})
-        destroyBuffer(ctx_, *b);
+    // resources_ then destroys what the last frame used.
+    vkDeviceWaitIdle(ctx_.device);
 }
 
 // Plant meshes and billboards in one vertex and one index pool, the
@@ -118,17 +104,17 @@ FieldRenderer::~FieldRenderer() {
 void FieldRenderer::uploadGeometry() {
     PlantModelPool& pool = content_.models;
     for (uint32_t quads = 1; quads <= 3; ++quads) billboards_[quads - 1] = appendBillboardMesh(pool, quads);
-    vertices_ = uploadVector(ctx_, pool.vertices, kStorageAndTexels);
-    indices_ = uploadVector(ctx_, pool.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-    atlas_ = bakeImpostorAtlas(ctx_, pool, vertices_, indices_, settings_.impostors);
-    outlines_ = uploadVector(ctx_, atlas_.outlines, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    vertices_ = uploadVector(resources_, pool.vertices, kStorageAndTexels);
+    indices_ = uploadVector(resources_, pool.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    atlas_ = bakeImpostorAtlas(resources_, pool, vertices_, indices_, settings_.impostors);
+    outlines_ = uploadVector(resources_, atlas_.outlines, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
 
     const TerrainMesh mesh = makeTerrainMesh(decimated(content_.terrain, kTerrainDrawSamples));
     std::vector<gpu::TerrainVertex> terrain(mesh.positions.size());
     for (size_t i = 0; i < terrain.size(); ++i)
         terrain[i] = {glm::vec4(mesh.positions[i], 0.0f), glm::vec4(mesh.normals[i], 0.0f)};
-    terrainVertices_ = uploadVector(ctx_, terrain, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-    terrainIndices_ = uploadVector(ctx_, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    terrainVertices_ = uploadVector(resources_, terrain, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    terrainIndices_ = uploadVector(resources_, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     terrainIndexCount_ = uint32_t(mesh.indices.size());
 }
 
@@ -147,12 +133,12 @@ void FieldRenderer::uploadInstances() {
     for (const PlantModelInfo& info : pool.models) models.push_back(info.gpu);
     assignVisibleLists(models, instances);
     for (size_t m = 0; m < pool.models.size(); ++m) pool.models[m].gpu.lists = models[m].lists;
-    models_ = uploadVector(ctx_, models, kStorageAndTexels);
-    instances_ = uploadVector(ctx_, instances, kStorageAndTexels);
+    models_ = uploadVector(resources_, models, kStorageAndTexels);
+    instances_ = uploadVector(resources_, instances, kStorageAndTexels);
 
     std::vector<uint32_t> naive(plantCount);
     for (uint32_t i = 0; i < plantCount; ++i) naive[i] = i | (VISIBLE_COVERAGE_MAX << VISIBLE_COVERAGE_SHIFT);
-    naiveVisible_ = uploadVector(ctx_, naive, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    naiveVisible_ = uploadVector(resources_, naive, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
 
     // Templates sorted by class: bark and foliage meshes of LOD0 and LOD1, then impostors.
     std::vector<gpu::DrawTemplate> templates;
@@ -175,108 +161,56 @@ void FieldRenderer::uploadInstances() {
     inputs.instanceCount = plantCount;
     inputs.modelCount = uint32_t(pool.models.size());
     inputs.templates = templates;
-    cull_ = createCullPass(ctx_, inputs);
+    cull_ = createCullPass(resources_, inputs);
 }
 
+// The draw set and the naive set differ only in the visible list: the cull
+// pass's lists, or every plant once.
 void FieldRenderer::createDescriptors() {
-    const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-    const VkDescriptorType image = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    const VkDescriptorSetLayoutBinding bindings[] = {
-        {FIELD_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_INSTANCES, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_VISIBLE, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_VERTICES, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_MODELS, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_ATLAS_COLOR, image, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_ATLAS_NORMAL, image, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_SHADOW, image, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_TERRAIN, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_SKELETONS, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_POSES, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_INSTANCE_SKELETON, texels, 1, kDrawStages, nullptr},
-        {FIELD_BINDING_IMPOSTOR_OUTLINES, texels, 1, kDrawStages, nullptr},
+    const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
+    const VkFormat uint1 = VK_FORMAT_R32_UINT;
+    auto texels = [&](uint32_t binding, const Buffer& buffer, VkFormat format) {
+        return texelBuffer(binding, kDrawStages, createTexelView(resources_, buffer, format));
     };
-    constexpr uint32_t kBindings = uint32_t(std::size(bindings));
-    VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    layoutInfo.bindingCount = kBindings;
-    layoutInfo.pBindings = bindings;
-    VK_CHECK(vkCreateDescriptorSetLayout(ctx_.device, &layoutInfo, nullptr, &setLayout_));
+    const std::vector<DescriptorBinding> drawTable = {
+        uniformBuffer(FIELD_BINDING_FRAME, kDrawStages, uniforms_),
+        texels(FIELD_BINDING_INSTANCES, instances_, uint4),
+        texels(FIELD_BINDING_VISIBLE, cull_.visible, uint1),
+        texels(FIELD_BINDING_VERTICES, vertices_, uint4),
+        texels(FIELD_BINDING_MODELS, models_, uint4),
+        sampledImage(FIELD_BINDING_ATLAS_COLOR, kDrawStages, atlas_.sampler, atlas_.color.view),
+        sampledImage(FIELD_BINDING_ATLAS_NORMAL, kDrawStages, atlas_.sampler, atlas_.normalDepth.view),
+        sampledImage(FIELD_BINDING_SHADOW, kDrawStages, shadow_.sampler, shadow_.depth.view),
+        texels(FIELD_BINDING_TERRAIN, terrainVertices_, uint4),
+        texels(FIELD_BINDING_SKELETONS, motion_.pass.skeletons, uint4),
+        texels(FIELD_BINDING_POSES, motion_.pass.poses, uint4),
+        texels(FIELD_BINDING_INSTANCE_SKELETON, motion_.instanceSkeleton, uint1),
+        texels(FIELD_BINDING_IMPOSTOR_OUTLINES, outlines_, uint4)};
+    std::vector<DescriptorBinding> naiveTable = drawTable;
+    for (DescriptorBinding& b : naiveTable)
+        if (b.binding == FIELD_BINDING_VISIBLE) b = texels(FIELD_BINDING_VISIBLE, naiveVisible_, uint1);
 
-    // Two sets (GPU-driven and naive) of the layout above.
-    descriptorPool_ = createDescriptorPool(ctx_, bindings, 2);
-
-    const VkDescriptorSetLayout layouts[] = {setLayout_, setLayout_};
-    VkDescriptorSet sets[2];
-    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = descriptorPool_;
-    alloc.descriptorSetCount = 2;
-    alloc.pSetLayouts = layouts;
-    VK_CHECK(vkAllocateDescriptorSets(ctx_.device, &alloc, sets));
+    const VkDescriptorSetLayout setLayout = createSetLayout(resources_, drawTable);
+    const DescriptorTable tables[] = {drawTable, naiveTable};
+    const std::vector<VkDescriptorSet> sets = createSets(resources_, setLayout, tables);
     drawSet_ = sets[0];
     naiveSet_ = sets[1];
-
-    const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
-    auto view = [&](const Buffer& buffer, VkFormat format, uint32_t bytes) {
-        texelViews_.push_back(createTexelView(ctx_, buffer, format, bytes));
-        return texelViews_.back();
-    };
-    const VkBufferView instances = view(instances_, uint4, 16), vertices = view(vertices_, uint4, 16),
-                       models = view(models_, uint4, 16), terrain = view(terrainVertices_, uint4, 16),
-                       skeletons = view(motion_.pass.skeletons, uint4, 16), poses = view(motion_.pass.poses, uint4, 16),
-                       instanceSkeleton = view(motion_.instanceSkeleton, VK_FORMAT_R32_UINT, 4),
-                       outlines = view(outlines_, uint4, 16);
-    const VkDescriptorBufferInfo frame{uniforms_.buffer, 0, VK_WHOLE_SIZE};
-    const VkDescriptorImageInfo atlasColor{atlas_.sampler, atlas_.color.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    const VkDescriptorImageInfo atlasNormal{atlas_.sampler, atlas_.normalDepth.view,
-                                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    const VkDescriptorImageInfo shadow{shadow_.sampler, shadow_.depth.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    for (VkDescriptorSet set : sets) {
-        const VkBufferView visible = view(set == drawSet_ ? cull_.visible : naiveVisible_, VK_FORMAT_R32_UINT, 4);
-        // Indexed by binding, like `images`; the frame is the one plain buffer.
-        const VkBufferView views[] = {VK_NULL_HANDLE, instances,        visible,        vertices, models,
-                                      VK_NULL_HANDLE, VK_NULL_HANDLE,   VK_NULL_HANDLE, terrain,  skeletons,
-                                      poses,          instanceSkeleton, outlines};
-        const VkDescriptorImageInfo* images[] = {nullptr, nullptr, nullptr, nullptr, nullptr, &atlasColor, &atlasNormal,
-                                                 &shadow, nullptr, nullptr, nullptr, nullptr, nullptr};
-        VkWriteDescriptorSet writes[kBindings];
-        for (uint32_t i = 0; i < kBindings; ++i) {
-            writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-            writes[i].dstSet = set;
-            writes[i].dstBinding = bindings[i].binding;
-            writes[i].descriptorCount = 1;
-            writes[i].descriptorType = bindings[i].descriptorType;
-            if (images[i])
-                writes[i].pImageInfo = images[i];
-            else if (views[i])
-                writes[i].pTexelBufferView = &views[i];
-            else
-                writes[i].pBufferInfo = &frame;
-        }
-        vkUpdateDescriptorSets(ctx_.device, kBindings, writes, 0, nullptr);
-    }
-
-    const VkPushConstantRange push{kDrawStages, 0, sizeof(uint32_t)};
-    VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    pipelineLayoutInfo.setLayoutCount = 1;
-    pipelineLayoutInfo.pSetLayouts = &setLayout_;
-    pipelineLayoutInfo.pushConstantRangeCount = 1;
-    pipelineLayoutInfo.pPushConstantRanges = &push;
-    VK_CHECK(vkCreatePipelineLayout(ctx_.device, &pipelineLayoutInfo, nullptr, &pipelineLayout_));
+    pipelineLayout_ = createPipelineLayout(resources_, setLayout, {kDrawStages, 0, sizeof(uint32_t)});
 }
 
 void FieldRenderer::createPipelines() {
-    VkDevice device = ctx_.device;
+    GpuResources modules(ctx_);
     struct Stages {
         VkShaderModule vertex, fragment;
     };
-    const Stages sky{createShaderModule(device, spirv_sky_vert), createShaderModule(device, spirv_sky_frag)};
-    const Stages terrain{createShaderModule(device, spirv_terrain_vert),
-                         createShaderModule(device, spirv_terrain_frag)};
-    const Stages plant{createShaderModule(device, spirv_plant_vert), createShaderModule(device, spirv_plant_frag)};
-    const Stages impostor{createShaderModule(device, spirv_impostor_vert),
-                          createShaderModule(device, spirv_impostor_frag)};
-    const VkShaderModule plantShadow = createShaderModule(device, spirv_plant_shadow_frag);
-    const VkShaderModule impostorShadow = createShaderModule(device, spirv_impostor_shadow_frag);
+    const Stages sky{createShaderModule(modules, spirv_sky_vert), createShaderModule(modules, spirv_sky_frag)};
+    const Stages terrain{createShaderModule(modules, spirv_terrain_vert),
+                         createShaderModule(modules, spirv_terrain_frag)};
+    const Stages plant{createShaderModule(modules, spirv_plant_vert), createShaderModule(modules, spirv_plant_frag)};
+    const Stages impostor{createShaderModule(modules, spirv_impostor_vert),
+                          createShaderModule(modules, spirv_impostor_frag)};
+    const VkShaderModule plantShadow = createShaderModule(modules, spirv_plant_shadow_frag);
+    const VkShaderModule impostorShadow = createShaderModule(modules, spirv_impostor_shadow_frag);
 
     GraphicsPipelineDesc desc;
     desc.layout = pipelineLayout_;
@@ -287,7 +221,7 @@ void FieldRenderer::createPipelines() {
         desc.vertex = s.vertex;
         desc.fragment = s.fragment;
         desc.cullMode = cull;
-        return createGraphicsPipeline(device, desc);
+        return createGraphicsPipeline(resources_, desc);
     };
     // The sky lies on the far plane (depth 1, the clear value): drawn last,
     // it fills what nothing else covered, and writes no depth.
@@ -308,13 +242,6 @@ void FieldRenderer::createPipelines() {
     desc.depthBiasSlope = 2.0f;
     pipelines_.plantShadow = make({plant.vertex, plantShadow}, VK_CULL_MODE_NONE);
     pipelines_.impostorShadow = make({impostor.vertex, impostorShadow}, VK_CULL_MODE_NONE);
-
-    for (const Stages& s : {sky, terrain, plant, impostor}) {
-        vkDestroyShaderModule(device, s.vertex, nullptr);
-        vkDestroyShaderModule(device, s.fragment, nullptr);
-    }
-    vkDestroyShaderModule(device, plantShadow, nullptr);
-    vkDestroyShaderModule(device, impostorShadow, nullptr);
 }
 
 void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
@@ -488,43 +415,6 @@ uint64_t FieldRenderer::naiveTriangles() const {
     return triangles;
 }
 
-VkDeviceSize FieldRenderer::gpuBytes() const {
-    VkDeviceSize bytes = 0;
-    for (const Buffer* b : {&uniforms_,
-                            &vertices_,
-                            &indices_,
-                            &models_,
-                            &instances_,
-                            &terrainVertices_,
-                            &terrainIndices_,
-                            &naiveVisible_,
-                            &outlines_,
-                            &cull_.uniforms,
-                            &cull_.templates,
-                            &cull_.state,
-                            &cull_.counts,
-                            &cull_.visible,
-                            &cull_.commands,
-                            &cull_.drawCounts,
-                            &cull_.allCommands,
-                            &cull_.readback,
-                            &motion_.pass.uniforms,
-                            &motion_.pass.params,
-                            &motion_.pass.skeletons,
-                            &motion_.pass.states,
-                            &motion_.pass.poses,
-                            &motion_.pass.jointSkeleton,
-                            &motion_.instanceSkeleton,
-                            &motion_.restStates,
-                            &motion_.restPoses})
-        bytes += b->size;
-    auto imageBytes = [](const Image& image, uint32_t layers, uint32_t bytesPerTexel, double mipFactor) {
-        return VkDeviceSize(double(image.extent.width) * image.extent.height * layers * bytesPerTexel * mipFactor);
-    };
-    bytes += imageBytes(atlas_.color, atlas_.layers, 4, 4.0 / 3.0) +
-             imageBytes(atlas_.normalDepth, atlas_.layers, 4, 4.0 / 3.0);
-    bytes += imageBytes(shadow_.depth, 1, 4, 1.0);
-    return bytes;
-}
+VkDeviceSize FieldRenderer::gpuBytes() const { return resources_.bytes(); }
 
 } // namespace pf

@@ -93,7 +93,7 @@ public:
     VkSampleCountFlagBits samples() const { return settings_.samples; }
     uint64_t naiveTriangles() const;                                     // what recordNaive draws in its colour pass
     uint32_t simulatedJoints() const { return motion_.pass.jointCount; } // shared copies and near plants' own
-    VkDeviceSize gpuBytes() const;                                       // buffers and images this renderer allocated
+    VkDeviceSize gpuBytes() const; // device memory this renderer and its passes hold
 
 private:
     struct Pipelines {
@@ -104,6 +104,7 @@ private:
     const GpuContext& ctx_;
     FieldContent content_;
     FieldRenderSettings settings_;
+    GpuResources resources_; // everything below is created into it
 
     Buffer uniforms_;
     Buffer vertices_, indices_;
@@ -118,9 +119,6 @@ private:
     CullPass cull_;
     FieldMotion motion_;
 
-    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
-    VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
-    std::vector<VkBufferView> texelViews_;      // of the buffers the draw shaders read (field_common.glsl)
     VkDescriptorSet drawSet_ = VK_NULL_HANDLE;  // visible = the cull pass's lists
     VkDescriptorSet naiveSet_ = VK_NULL_HANDLE; // visible = naiveVisible_
     VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;

@@ -1,7 +1,7 @@
 #include "engine/field/impostor_atlas.h"
 
+#include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
-#include "engine/vk/vk_check.h"
 #include "shaders/impostor_bake_frag.spv.h"
 #include "shaders/impostor_bake_vert.spv.h"
 
@@ -22,52 +22,22 @@ constexpr VkFormat kAtlasNormalFormat = VK_FORMAT_R8G8B8A8_UNORM;
 constexpr VkFormat kBakeDepthFormat = VK_FORMAT_D32_SFLOAT;
 constexpr VkSampleCountFlagBits kBakeSamples = VK_SAMPLE_COUNT_4_BIT;
 
-// shaders/impostor_bake.vert's push constants.
-struct BakePush {
-    glm::vec4 right;  // right axis / half width
-    glm::vec4 toView; // view direction / half depth
-    glm::vec4 height; // x bottom, y 1 / (top - bottom)
-};
-
 uint32_t mipCount(uint32_t size) {
     uint32_t levels = 1;
     while (size > 1) size /= 2, ++levels;
     return levels;
 }
 
-Image createAtlasImage(const GpuContext& ctx, uint32_t size, VkFormat format, uint32_t layers, uint32_t mips) {
-    Image out;
-    out.format = format;
-    out.extent = {size, size};
-    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = format;
-    info.extent = {size, size, 1};
-    info.mipLevels = mips;
-    info.arrayLayers = layers;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    // Destination of the frames' resolves, source and destination of the
-    // mip blits, sampled by the billboards.
-    info.usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VK_CHECK(vkCreateImage(ctx.device, &info, nullptr, &out.image));
-
-    VkMemoryRequirements req;
-    vkGetImageMemoryRequirements(ctx.device, out.image, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = findMemoryType(ctx, req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    VK_CHECK(vkAllocateMemory(ctx.device, &alloc, nullptr, &out.memory));
-    VK_CHECK(vkBindImageMemory(ctx.device, out.image, out.memory, 0));
-
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view.image = out.image;
-    view.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-    view.format = format;
-    view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, mips, 0, layers};
-    VK_CHECK(vkCreateImageView(ctx.device, &view, nullptr, &out.view));
-    return out;
+// Destination of the frames' resolves, source and destination of the mip
+// blits, sampled by the billboards.
+Image createAtlasImage(GpuResources& owner, uint32_t size, VkFormat format, uint32_t layers, uint32_t mips) {
+    return createImage(
+        owner, {.extent = {size, size},
+                .format = format,
+                .usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                .mipLevels = mips,
+                .layers = layers,
+                .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
 }
 
 VkImageMemoryBarrier2 atlasBarrier(const Image& image, uint32_t baseMip, uint32_t mips, uint32_t layers,
@@ -87,8 +57,8 @@ void pipelineBarrier(VkCommandBuffer cmd, const std::vector<VkImageMemoryBarrier
 
 // Two colour attachments (albedo, normal + depth), depth test, MSAA; the cull
 // mode is dynamic: back faces for bark, none for two-sided foliage.
-VkPipeline createBakePipeline(VkDevice device, VkPipelineLayout layout, VkShaderModule vertex, VkShaderModule fragment,
-                              VkSampleCountFlagBits samples) {
+VkPipeline createBakePipeline(GpuResources& owner, VkPipelineLayout layout, VkShaderModule vertex,
+                              VkShaderModule fragment, VkSampleCountFlagBits samples) {
     GraphicsPipelineDesc desc;
     desc.vertex = vertex;
     desc.fragment = fragment;
@@ -103,7 +73,7 @@ VkPipeline createBakePipeline(VkDevice device, VkPipelineLayout layout, VkShader
     // in the upright frame.
     desc.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     desc.depthCompare = VK_COMPARE_OP_LESS;
-    return createGraphicsPipeline(device, desc);
+    return createGraphicsPipeline(owner, desc);
 }
 
 uint32_t quadsOf(BillboardKind kind) {
@@ -151,7 +121,8 @@ std::vector<ImpostorOutline> readOutlines(const GpuContext& ctx, const ImpostorA
     const uint32_t mip = std::min(kOutlineMip, atlas.mipLevels - 1);
     const uint32_t size = std::max(atlas.settings.frameSize >> mip, 1u);
     const VkDeviceSize layerBytes = VkDeviceSize(size) * size * 4;
-    Buffer readback = createHostBuffer(ctx, layerBytes * atlas.layers, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    GpuResources scratch(ctx);
+    Buffer readback = createHostBuffer(scratch, layerBytes * atlas.layers, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
         const ImageTransition toSource{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                                        VK_ACCESS_2_NONE,
@@ -182,14 +153,14 @@ std::vector<ImpostorOutline> readOutlines(const GpuContext& ctx, const ImpostorA
         for (size_t t = 0; t < alpha.size(); ++t) alpha[t] = texels[layer * layerBytes + t * 4 + 3];
         outlines[layer] = impostorOutline(alpha, size, kOutlineMargin);
     }
-    destroyBuffer(ctx, readback);
     return outlines;
 }
 
 } // namespace
 
-ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, const Buffer& vertices,
+ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const Buffer& vertices,
                                 const Buffer& indices, const ImpostorSettings& settings) {
+    const GpuContext& ctx = owner.ctx();
     if (settings.frames == 0 || settings.frameSize == 0)
         throw std::runtime_error("impostor atlas: frames and frameSize must be positive");
     const uint64_t layerCount = uint64_t(pool.models.size()) * settings.frames;
@@ -206,8 +177,8 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
     atlas.layers = uint32_t(layerCount);
     atlas.mipLevels = mipCount(settings.frameSize);
     const uint32_t size = settings.frameSize;
-    atlas.color = createAtlasImage(ctx, size, kAtlasColorFormat, atlas.layers, atlas.mipLevels);
-    atlas.normalDepth = createAtlasImage(ctx, size, kAtlasNormalFormat, atlas.layers, atlas.mipLevels);
+    atlas.color = createAtlasImage(owner, size, kAtlasColorFormat, atlas.layers, atlas.mipLevels);
+    atlas.normalDepth = createAtlasImage(owner, size, kAtlasNormalFormat, atlas.layers, atlas.mipLevels);
 
     VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     samplerInfo.magFilter = VK_FILTER_LINEAR;
@@ -217,7 +188,7 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
     samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     samplerInfo.maxLod = VK_LOD_CLAMP_NONE;
-    VK_CHECK(vkCreateSampler(ctx.device, &samplerInfo, nullptr, &atlas.sampler));
+    atlas.sampler = createSampler(owner, samplerInfo);
 
     for (size_t m = 0; m < pool.models.size(); ++m) {
         gpu::PlantModel& model = pool.models[m].gpu;
@@ -229,50 +200,29 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
     // resolved or copied into the frame's layer after each frame.
     const VkSampleCountFlagBits samples = bakeSamples(ctx);
     const bool msaa = samples != VK_SAMPLE_COUNT_1_BIT;
+    GpuResources scratch(ctx); // what only the bake uses
     const VkImageUsageFlags targetUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    Image targetColor =
-        createImage(ctx, {size, size}, kAtlasColorFormat, targetUsage, samples, VK_IMAGE_ASPECT_COLOR_BIT);
-    Image targetNormal =
-        createImage(ctx, {size, size}, kAtlasNormalFormat, targetUsage, samples, VK_IMAGE_ASPECT_COLOR_BIT);
-    Image depth = createImage(ctx, {size, size}, kBakeDepthFormat,
-                              VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                              samples, VK_IMAGE_ASPECT_DEPTH_BIT);
+    Image targetColor = createImage(
+        scratch, {.extent = {size, size}, .format = kAtlasColorFormat, .usage = targetUsage, .samples = samples});
+    Image targetNormal = createImage(
+        scratch, {.extent = {size, size}, .format = kAtlasNormalFormat, .usage = targetUsage, .samples = samples});
+    Image depth = createImage(
+        scratch, {.extent = {size, size},
+                  .format = kBakeDepthFormat,
+                  .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                  .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
+                  .samples = samples});
 
-    VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT};
-    VkDescriptorSetLayoutCreateInfo setLayoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setLayoutInfo.bindingCount = 1;
-    setLayoutInfo.pBindings = &binding;
-    VkDescriptorSetLayout setLayout;
-    VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &setLayoutInfo, nullptr, &setLayout));
+    const DescriptorBinding table[] = {
+        storageBuffer(IMPOSTOR_BAKE_BINDING_VERTICES, VK_SHADER_STAGE_VERTEX_BIT, vertices)};
+    const VkDescriptorSetLayout setLayout = createSetLayout(scratch, table);
+    const VkDescriptorSet descriptorSet = createSet(scratch, setLayout, table);
+    const VkPipelineLayout pipelineLayout =
+        createPipelineLayout(scratch, setLayout, {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(gpu::ImpostorBakePush)});
 
-    VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(BakePush)};
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &setLayout;
-    layoutInfo.pushConstantRangeCount = 1;
-    layoutInfo.pPushConstantRanges = &pushRange;
-    VkPipelineLayout pipelineLayout;
-    VK_CHECK(vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &pipelineLayout));
-
-    const VkDescriptorPool descriptorPool = createDescriptorPool(ctx, {&binding, 1}, 1);
-    VkDescriptorSetAllocateInfo setAlloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    setAlloc.descriptorPool = descriptorPool;
-    setAlloc.descriptorSetCount = 1;
-    setAlloc.pSetLayouts = &setLayout;
-    VkDescriptorSet descriptorSet;
-    VK_CHECK(vkAllocateDescriptorSets(ctx.device, &setAlloc, &descriptorSet));
-    VkDescriptorBufferInfo vertexInfo{vertices.buffer, 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = descriptorSet;
-    write.dstBinding = 0;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    write.pBufferInfo = &vertexInfo;
-    vkUpdateDescriptorSets(ctx.device, 1, &write, 0, nullptr);
-
-    VkShaderModule vertexModule = createShaderModule(ctx.device, spirv_impostor_bake_vert);
-    VkShaderModule fragmentModule = createShaderModule(ctx.device, spirv_impostor_bake_frag);
-    VkPipeline pipeline = createBakePipeline(ctx.device, pipelineLayout, vertexModule, fragmentModule, samples);
+    VkPipeline pipeline =
+        createBakePipeline(scratch, pipelineLayout, createShaderModule(scratch, spirv_impostor_bake_vert),
+                           createShaderModule(scratch, spirv_impostor_bake_frag), samples);
 
     const uint32_t layers = atlas.layers;
     const uint32_t mips = atlas.mipLevels;
@@ -352,7 +302,7 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
                 vkCmdSetViewport(cmd, 0, 1, &viewport);
                 vkCmdSetScissor(cmd, 0, 1, &scissor);
 
-                BakePush push;
+                gpu::ImpostorBakePush push;
                 push.right = glm::vec4(impostorRightAxis(f, settings.frames) / quad.x, 0.0f);
                 push.toView = glm::vec4(impostorViewDirection(f, settings.frames) / quad.w, 0.0f);
                 push.height = {quad.y, 1.0f / (quad.z - quad.y), 0.0f, 0.0f};
@@ -439,24 +389,9 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
                               atlasBarrier(atlas.normalDepth, 0, mips, layers, toSampled)});
     });
 
-    vkDestroyPipeline(ctx.device, pipeline, nullptr);
-    vkDestroyShaderModule(ctx.device, vertexModule, nullptr);
-    vkDestroyShaderModule(ctx.device, fragmentModule, nullptr);
-    vkDestroyDescriptorPool(ctx.device, descriptorPool, nullptr);
-    vkDestroyPipelineLayout(ctx.device, pipelineLayout, nullptr);
-    vkDestroyDescriptorSetLayout(ctx.device, setLayout, nullptr);
-    destroyImage(ctx, depth);
-    destroyImage(ctx, targetNormal);
-    destroyImage(ctx, targetColor);
+    scratch.destroy();
     atlas.outlines = readOutlines(ctx, atlas);
     return atlas;
-}
-
-void destroyImpostorAtlas(const GpuContext& ctx, ImpostorAtlas& atlas) {
-    if (atlas.sampler) vkDestroySampler(ctx.device, atlas.sampler, nullptr);
-    destroyImage(ctx, atlas.color);
-    destroyImage(ctx, atlas.normalDepth);
-    atlas = {};
 }
 
 MeshRange appendBillboardMesh(PlantModelPool& pool, uint32_t quads) {

@@ -61,10 +61,9 @@ constexpr float kOutlineMargin = 2.0f;
 // storage buffer, indices as index buffer), writes each model's
 // gpu.impostor (first layer, frames, quads per billboard from its
 // BillboardKind) and gpu.impostorQuad, and leaves both images in
-// SHADER_READ_ONLY_OPTIMAL.
-ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, const Buffer& vertices,
+// SHADER_READ_ONLY_OPTIMAL. The images and the sampler are owned by `owner`.
+ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const Buffer& vertices,
                                 const Buffer& indices, const ImpostorSettings& settings = {});
-void destroyImpostorAtlas(const GpuContext& ctx, ImpostorAtlas& atlas);
 
 // Billboards for the pool's impostor draws: for quads q ∈ {1, 2, 3} the
 // vertices and indices the impostor vertex shader expands. Each quad is a

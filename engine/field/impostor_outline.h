@@ -25,6 +25,7 @@ static_assert(kOutlineCorners == 4, "the outline is a rectangle, corner order be
 // the top (the atlas's texture space). An empty frame has all corners at one
 // point (nothing is drawn).
 using ImpostorOutline = std::array<glm::vec2, kOutlineCorners>;
+static_assert(sizeof(ImpostorOutline) == IMPOSTOR_OUTLINE_TEXELS * 16, "uploaded as is, read as texels");
 
 // `alpha`: size × size coverage values of one frame at some mip level, row 0
 // at the top. Every texel with non-zero alpha, grown by `marginTexels` on

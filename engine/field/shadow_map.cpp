@@ -1,20 +1,19 @@
 #include "engine/field/shadow_map.h"
 
-#include "engine/vk/vk_check.h"
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 
 namespace pf {
 
-ShadowMap createShadowMap(const GpuContext& ctx, uint32_t size) {
+ShadowMap createShadowMap(GpuResources& owner, uint32_t size) {
     ShadowMap map;
     map.size = size;
-    map.depth = createImage(ctx, {size, size}, kShadowFormat,
-                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                            VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+    map.depth = createImage(owner, {.extent = {size, size},
+                                    .format = kShadowFormat,
+                                    .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                             VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                    .aspect = VK_IMAGE_ASPECT_DEPTH_BIT});
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     info.magFilter = info.minFilter = VK_FILTER_LINEAR;
     info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
@@ -23,11 +22,11 @@ ShadowMap createShadowMap(const GpuContext& ctx, uint32_t size) {
     info.compareEnable = VK_TRUE;
     info.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
     info.maxLod = 0.0f;
-    VK_CHECK(vkCreateSampler(ctx.device, &info, nullptr, &map.sampler));
+    map.sampler = createSampler(owner, info);
 
     // Sampled before the first shadow pass (e.g. a frame with shadows off):
     // start in the layout the shaders read, cleared to "lit".
-    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    submitAndWait(owner.ctx(), [&](VkCommandBuffer cmd) {
         imageBarrier(cmd, map.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT,
                      {VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                       VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL});
@@ -40,12 +39,6 @@ ShadowMap createShadowMap(const GpuContext& ctx, uint32_t size) {
                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
     });
     return map;
-}
-
-void destroyShadowMap(const GpuContext& ctx, ShadowMap& map) {
-    vkDestroySampler(ctx.device, map.sampler, nullptr);
-    destroyImage(ctx, map.depth);
-    map = {};
 }
 
 glm::mat4 sunViewProjection(const glm::vec3& sunDirection, const glm::vec3& focus, float radius, float depthRadius,

@@ -18,8 +18,8 @@ struct ShadowMap {
     uint32_t size = 0;
 };
 
-ShadowMap createShadowMap(const GpuContext& ctx, uint32_t size);
-void destroyShadowMap(const GpuContext& ctx, ShadowMap& map);
+// The image and sampler are owned by `owner`.
+ShadowMap createShadowMap(GpuResources& owner, uint32_t size);
 
 // An orthographic view along the sun over a square of half-size `radius`
 // around `focus`, `depthRadius` metres deep either side of it. Its origin is

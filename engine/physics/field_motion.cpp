@@ -36,8 +36,8 @@ std::vector<uint32_t> skeletonPerPlant(const FieldContent& content) {
 }
 
 template <class T>
-Buffer deviceCopyOf(const GpuContext& ctx, const std::vector<T>& data, VkBufferUsageFlags usage) {
-    return createDeviceBufferWithData(ctx, data.data(), std::max<size_t>(1, data.size()) * sizeof(T), usage);
+Buffer deviceCopyOf(GpuResources& owner, const std::vector<T>& data, VkBufferUsageFlags usage) {
+    return createDeviceBufferWithData(owner, data.data(), std::max<size_t>(1, data.size()) * sizeof(T), usage);
 }
 
 void copyWhole(VkCommandBuffer cmd, const Buffer& from, const Buffer& to) {
@@ -69,7 +69,7 @@ float sharedPhaseSpacing(const PhysicsSettings& settings) {
     return kGustWavelength / float(std::max(1u, settings.sharedPhases));
 }
 
-FieldMotion createFieldMotion(const GpuContext& ctx, const FieldContent& content) {
+FieldMotion createFieldMotion(GpuResources& owner, const FieldContent& content) {
     FieldMotion motion;
     motion.content = &content;
     motion.wind = content.scene.wind;
@@ -77,19 +77,14 @@ FieldMotion createFieldMotion(const GpuContext& ctx, const FieldContent& content
     SkeletonSet set = sharedSkeletons(content);
     motion.near = reserveNearSkeletons(set, content.models, content.plants, motion.settings.jointBudget);
     motion.grid = makePlantGrid(content.plants, content.scene.terrain.size, 16.0f);
-    motion.pass = createPhysicsPass(ctx, set);
+    motion.pass = createPhysicsPass(owner, set);
     motion.sharedOf = skeletonPerPlant(content);
-    motion.instanceSkeleton = createHostBuffer(ctx, std::max<size_t>(1, motion.sharedOf.size()) * sizeof(uint32_t),
+    motion.instanceSkeleton = createHostBuffer(owner, std::max<size_t>(1, motion.sharedOf.size()) * sizeof(uint32_t),
                                                VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
     std::copy(motion.sharedOf.begin(), motion.sharedOf.end(), static_cast<uint32_t*>(motion.instanceSkeleton.mapped));
-    motion.restStates = deviceCopyOf(ctx, set.states, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-    motion.restPoses = deviceCopyOf(ctx, set.poses, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    motion.restStates = deviceCopyOf(owner, set.states, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    motion.restPoses = deviceCopyOf(owner, set.poses, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     return motion;
-}
-
-void destroyFieldMotion(const GpuContext& ctx, FieldMotion& motion) {
-    destroyPhysicsPass(ctx, motion.pass);
-    for (Buffer* b : {&motion.instanceSkeleton, &motion.restStates, &motion.restPoses}) destroyBuffer(ctx, *b);
 }
 
 void advanceFieldMotion(FieldMotion& motion, double time, bool restart, const glm::vec3& camera, bool realTime) {

@@ -48,8 +48,8 @@ struct FieldMotion {
     FieldMotionFrame next;
 };
 
-FieldMotion createFieldMotion(const GpuContext& ctx, const FieldContent& content);
-void destroyFieldMotion(const GpuContext& ctx, FieldMotion& motion);
+// What the motion creates is owned by `owner`.
+FieldMotion createFieldMotion(GpuResources& owner, const FieldContent& content);
 
 // Plans the frame that brings the simulation to `time` (FieldMotion::next):
 // from rest at max(0, time − kSettleSeconds) when `restart`, when time went

@@ -1,7 +1,6 @@
 #include "engine/physics/physics_pass.h"
 
 #include "engine/vk/pipeline.h"
-#include "engine/vk/vk_check.h"
 
 #include "shaders/physics_comp.spv.h"
 #include "shaders/pose_comp.spv.h"
@@ -55,7 +54,7 @@ std::vector<uint32_t> jointsByDepth(const SkeletonSet& set, std::vector<glm::uve
 void recordPhysicsDispatch(VkCommandBuffer cmd, const PhysicsPass& pass, const gpu::PhysicsDispatch& dispatch) {
     if (dispatch.subSteps == 0) return;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.physicsPipeline);
-    vkCmdPushConstants(cmd, pass.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(dispatch), &dispatch);
+    vkCmdPushConstants(cmd, pass.set.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(dispatch), &dispatch);
     dispatchJoints(cmd, pass, pass.jointCount);
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
@@ -71,14 +70,15 @@ void recordPoseLevels(VkCommandBuffer cmd, const PhysicsPass& pass) {
                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kShaderReads);
         }
         const glm::uvec2 level = pass.levels[d]; // never empty: a joint at depth d > 0 has a parent at d − 1
-        vkCmdPushConstants(cmd, pass.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(level), &level);
+        vkCmdPushConstants(cmd, pass.set.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(level), &level);
         dispatchJoints(cmd, pass, level.y);
     }
 }
 
 } // namespace
 
-PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
+PhysicsPass createPhysicsPass(GpuResources& owner, const SkeletonSet& set) {
+    const GpuContext& ctx = owner.ctx();
     PhysicsPass pass;
     pass.skeletonCount = uint32_t(set.skeletons.size());
     pass.jointCount = uint32_t(set.states.size());
@@ -88,19 +88,19 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
     // Every array is read through a texel view; states and poses are also written.
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
     const VkBufferUsageFlags uploaded = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    pass.uniforms = createHostBuffer(ctx, sizeof(gpu::PhysicsUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-    pass.skeletons = createHostBuffer(ctx, bytesOf(set.skeletons), storage);
+    pass.uniforms = createHostBuffer(owner, sizeof(gpu::PhysicsUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    pass.skeletons = createHostBuffer(owner, bytesOf(set.skeletons), storage);
     if (!set.skeletons.empty())
         std::memcpy(pass.skeletons.mapped, set.skeletons.data(), set.skeletons.size() * sizeof(gpu::Skeleton));
     std::memset(pass.uniforms.mapped, 0, sizeof(gpu::PhysicsUniforms));
 
-    pass.params = createBuffer(ctx, bytesOf(set.params), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    pass.states = createBuffer(ctx, bytesOf(set.states), uploaded | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+    pass.params = createBuffer(owner, bytesOf(set.params), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    pass.states = createBuffer(owner, bytesOf(set.states), uploaded | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    pass.poses = createBuffer(ctx, bytesOf(set.poses), uploaded | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+    pass.poses = createBuffer(owner, bytesOf(set.poses), uploaded | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                               VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    pass.jointSkeleton = createBuffer(ctx, bytesOf(set.jointSkeleton), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    pass.jointOrder = createBuffer(ctx, bytesOf(order), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    pass.jointSkeleton = createBuffer(owner, bytesOf(set.jointSkeleton), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    pass.jointOrder = createBuffer(owner, bytesOf(order), uploaded, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
 
     // One staging buffer holds the five device-local arrays back to back.
     struct Upload {
@@ -117,7 +117,8 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
     VkDeviceSize stagingBytes = 0;
     for (const Upload& u : uploads) stagingBytes += u.bytes;
     if (stagingBytes > 0) {
-        Buffer staging = createHostBuffer(ctx, stagingBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        GpuResources scratch(ctx);
+        Buffer staging = createHostBuffer(scratch, stagingBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
             VkDeviceSize offset = 0;
             for (const Upload& u : uploads) {
@@ -133,53 +134,29 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
                           kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         });
-        destroyBuffer(ctx, staging);
     }
 
     const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
-    pass.views = {createTexelView(ctx, pass.params, uint4, 16),
-                  createTexelView(ctx, pass.skeletons, uint4, 16),
-                  createTexelView(ctx, pass.jointSkeleton, VK_FORMAT_R32_UINT, 4),
-                  createTexelView(ctx, pass.jointOrder, VK_FORMAT_R32_UINT, 4),
-                  createTexelView(ctx, pass.states, uint4, 16),
-                  createTexelView(ctx, pass.poses, uint4, 16)};
-    const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-    // Binding order of shaders/physics_bindings.glsl.
-    const ComputeBinding bindings[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, pass.uniforms.buffer},
-                                       {texels, VK_NULL_HANDLE, pass.views[0]},
-                                       {texels, VK_NULL_HANDLE, pass.views[1]},
-                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pass.states.buffer},
-                                       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, pass.poses.buffer},
-                                       {texels, VK_NULL_HANDLE, pass.views[2]},
-                                       {texels, VK_NULL_HANDLE, pass.views[3]},
-                                       {texels, VK_NULL_HANDLE, pass.views[4]},
-                                       {texels, VK_NULL_HANDLE, pass.views[5]}};
-    pass.set = createComputeSet(ctx, bindings);
-    // The set's layout plus 8 bytes of push constants: the physics dispatch or the pose level.
+    const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+    const VkFormat uint1 = VK_FORMAT_R32_UINT;
+    auto texels = [&](uint32_t binding, const Buffer& buffer, VkFormat format) {
+        return texelBuffer(binding, compute, createTexelView(owner, buffer, format));
+    };
+    const DescriptorBinding bindings[] = {uniformBuffer(PHYSICS_BINDING_UNIFORMS, compute, pass.uniforms),
+                                          texels(PHYSICS_BINDING_PARAMS, pass.params, uint4),
+                                          texels(PHYSICS_BINDING_SKELETONS, pass.skeletons, uint4),
+                                          storageBuffer(PHYSICS_BINDING_STATES, compute, pass.states),
+                                          storageBuffer(PHYSICS_BINDING_POSES, compute, pass.poses),
+                                          texels(PHYSICS_BINDING_JOINT_SKELETON, pass.jointSkeleton, uint1),
+                                          texels(PHYSICS_BINDING_JOINT_ORDER, pass.jointOrder, uint1),
+                                          texels(PHYSICS_BINDING_STATE_TEXELS, pass.states, uint4),
+                                          texels(PHYSICS_BINDING_POSE_TEXELS, pass.poses, uint4)};
+    // 8 bytes of push constants: the physics dispatch or the pose level.
     static_assert(sizeof(gpu::PhysicsDispatch) == sizeof(glm::uvec2));
-    const VkPushConstantRange levelRange{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(glm::uvec2)};
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &pass.set.setLayout;
-    layoutInfo.pushConstantRangeCount = 1;
-    layoutInfo.pPushConstantRanges = &levelRange;
-    VK_CHECK(vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &pass.layout));
-    pass.physicsPipeline =
-        createComputePipeline(ctx.device, pass.layout, createShaderModule(ctx.device, spirv_physics_comp));
-    pass.posePipeline = createComputePipeline(ctx.device, pass.layout, createShaderModule(ctx.device, spirv_pose_comp));
+    pass.set = createComputeSet(owner, bindings, sizeof(glm::uvec2));
+    pass.physicsPipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_physics_comp);
+    pass.posePipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_pose_comp);
     return pass;
-}
-
-void destroyPhysicsPass(const GpuContext& ctx, PhysicsPass& pass) {
-    vkDestroyPipeline(ctx.device, pass.physicsPipeline, nullptr);
-    vkDestroyPipeline(ctx.device, pass.posePipeline, nullptr);
-    vkDestroyPipelineLayout(ctx.device, pass.layout, nullptr);
-    destroyComputeSet(ctx, pass.set);
-    for (VkBufferView view : pass.views) vkDestroyBufferView(ctx.device, view, nullptr);
-    for (Buffer* b : {&pass.uniforms, &pass.params, &pass.skeletons, &pass.states, &pass.poses, &pass.jointSkeleton,
-                      &pass.jointOrder})
-        destroyBuffer(ctx, *b);
-    pass = {};
 }
 
 void setPhysicsUniforms(const PhysicsPass& pass, const gpu::PhysicsUniforms& uniforms) {
@@ -201,8 +178,7 @@ void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, std::span<c
                   kShaderReads | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     if (pass.jointCount == 0) return;
 
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout, 0, 1, &pass.set.descriptorSet, 0,
-                            nullptr);
+    bindComputeSet(cmd, pass.set);
     const gpu::PhysicsDispatch poseOnly{0.0f, 0};
     if (dispatches.empty()) dispatches = {&poseOnly, 1};
     if (timer) beginScope(cmd, *timer, "physics");
@@ -239,7 +215,8 @@ void readPhysicsState(const GpuContext& ctx, const PhysicsPass& pass, std::vecto
     if (pass.jointCount == 0) return;
     const VkDeviceSize stateBytes = VkDeviceSize(pass.jointCount) * sizeof(gpu::JointState);
     const VkDeviceSize poseBytes = VkDeviceSize(pass.jointCount) * sizeof(gpu::JointPose);
-    Buffer readback = createHostBuffer(ctx, stateBytes + poseBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    GpuResources scratch(ctx);
+    Buffer readback = createHostBuffer(scratch, stateBytes + poseBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
         // The last physics and pose dispatches wrote what is copied.
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
@@ -254,7 +231,6 @@ void readPhysicsState(const GpuContext& ctx, const PhysicsPass& pass, std::vecto
     });
     std::memcpy(states.data(), readback.mapped, stateBytes);
     std::memcpy(poses.data(), static_cast<const char*>(readback.mapped) + stateBytes, poseBytes);
-    destroyBuffer(ctx, readback);
 }
 
 } // namespace pf

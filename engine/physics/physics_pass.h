@@ -13,12 +13,12 @@
 
 #include <array>
 #include <span>
+#include <vector>
 
 namespace pf {
 
 struct PhysicsPass {
-    ComputeSet set; // shaders/physics_bindings.glsl: the buffers below, read through texel views
-    VkPipelineLayout layout = VK_NULL_HANDLE; // set's descriptor set and the pose level's push constants
+    ComputeSet set; // PHYSICS_BINDING_*: the buffers below; its pipeline layout has the pose level's push constants
     VkPipeline physicsPipeline = VK_NULL_HANDLE;
     VkPipeline posePipeline = VK_NULL_HANDLE;
 
@@ -29,8 +29,6 @@ struct PhysicsPass {
     Buffer poses;         // JointPose[] (read by the vertex shaders)
     Buffer jointSkeleton; // uint per simulated joint
     Buffer jointOrder;    // uint per simulated joint: the joints level after level (depth 0 first)
-    // Texel views: params, skeletons, jointSkeleton, jointOrder, states, poses.
-    std::array<VkBufferView, 6> views{};
 
     uint32_t skeletonCount = 0;
     uint32_t jointCount = 0;
@@ -39,8 +37,8 @@ struct PhysicsPass {
 };
 
 // Uploads the set (its states and poses as they are, normally at rest).
-PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set);
-void destroyPhysicsPass(const GpuContext& ctx, PhysicsPass& pass);
+// What the pass creates is owned by `owner`.
+PhysicsPass createPhysicsPass(GpuResources& owner, const SkeletonSet& set);
 
 // Per frame, while no frame using them is in flight. Each dispatch replaces
 // the time (windDetail.z) and sub-step count (counts.z) with its own.

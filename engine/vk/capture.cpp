@@ -8,7 +8,8 @@ RgbaImage captureFrame(const GpuContext& ctx, const RenderTarget& target,
                        const std::function<void(VkCommandBuffer, const RenderTarget&)>& record) {
     const VkExtent2D extent = target.extent;
     const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
-    Buffer readback = createHostBuffer(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    GpuResources scratch(ctx);
+    Buffer readback = createHostBuffer(scratch, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
         record(cmd, target);
@@ -24,7 +25,6 @@ RgbaImage captureFrame(const GpuContext& ctx, const RenderTarget& target,
 
     RgbaImage image{extent.width, extent.height, std::vector<uint8_t>(bytes)};
     std::memcpy(image.pixels.data(), readback.mapped, bytes);
-    destroyBuffer(ctx, readback);
     return image;
 }
 

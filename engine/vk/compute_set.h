@@ -1,33 +1,20 @@
-// The descriptor set and pipeline layout of a compute pass: buffers bound in
-// order, each as a uniform buffer, a storage buffer or a uniform texel
-// buffer — the shape of the cull and physics passes.
+// The descriptor set and pipeline layout of a compute pass, made from the
+// pass's table (descriptors.h): the shape of the cull and physics passes.
 #pragma once
 
-#include "engine/vk/resources.h"
-
-#include <span>
+#include "engine/vk/descriptors.h"
 
 namespace pf {
 
 struct ComputeSet {
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
+    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE; // the set, and push constants when the pass has them
     VkDescriptorSet descriptorSet = VK_NULL_HANDLE;
 };
 
-// Binding b of the set is bindings[b]: a whole buffer for uniform and
-// storage buffers, a view for texel buffers.
-struct ComputeBinding {
-    VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    VkBuffer buffer = VK_NULL_HANDLE;
-    VkBufferView view = VK_NULL_HANDLE;
-};
-
-ComputeSet createComputeSet(const GpuContext& ctx, std::span<const ComputeBinding> bindings);
-// buffers[0] is the uniform buffer, the rest storage buffers.
-ComputeSet createComputeSet(const GpuContext& ctx, std::span<const VkBuffer> buffers);
-void destroyComputeSet(const GpuContext& ctx, ComputeSet& set);
+// Owned by `owner`. `pushConstantBytes` > 0: the compute stage's push
+// constant range from offset 0.
+ComputeSet createComputeSet(GpuResources& owner, DescriptorTable table, uint32_t pushConstantBytes = 0);
 void bindComputeSet(VkCommandBuffer cmd, const ComputeSet& set);
 
 } // namespace pf

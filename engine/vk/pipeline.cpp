@@ -4,16 +4,16 @@
 
 namespace pf {
 
-VkShaderModule createShaderModule(VkDevice device, const uint32_t* code, size_t bytes) {
+VkShaderModule createShaderModule(GpuResources& owner, std::span<const uint32_t> spirv) {
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    info.codeSize = bytes;
-    info.pCode = code;
+    info.codeSize = spirv.size_bytes();
+    info.pCode = spirv.data();
     VkShaderModule module;
-    VK_CHECK(vkCreateShaderModule(device, &info, nullptr, &module));
-    return module;
+    VK_CHECK(vkCreateShaderModule(owner.ctx().device, &info, nullptr, &module));
+    return owner.own(module);
 }
 
-VkPipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& desc) {
+VkPipeline createGraphicsPipeline(GpuResources& owner, const GraphicsPipelineDesc& desc) {
     VkPipelineShaderStageCreateInfo stages[2]{};
     stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -85,21 +85,21 @@ VkPipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& d
     info.layout = desc.layout;
 
     VkPipeline pipeline;
-    VK_CHECK(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-    return pipeline;
+    VK_CHECK(vkCreateGraphicsPipelines(owner.ctx().device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    return owner.own(pipeline);
 }
 
-VkPipeline createComputePipeline(VkDevice device, VkPipelineLayout layout, VkShaderModule module) {
+VkPipeline createComputePipeline(GpuResources& owner, VkPipelineLayout layout, std::span<const uint32_t> spirv) {
+    GpuResources scratch(owner.ctx());
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    info.stage.module = module;
+    info.stage.module = createShaderModule(scratch, spirv);
     info.stage.pName = "main";
     info.layout = layout;
     VkPipeline pipeline;
-    VK_CHECK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-    vkDestroyShaderModule(device, module, nullptr);
-    return pipeline;
+    VK_CHECK(vkCreateComputePipelines(owner.ctx().device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    return owner.own(pipeline);
 }
 
 } // namespace pf

@@ -1,19 +1,16 @@
 // Shader modules and graphics pipelines for dynamic rendering.
 #pragma once
 
-#include <vulkan/vulkan.h>
+#include "engine/vk/gpu_resources.h"
 
-#include <cstddef>
 #include <cstdint>
+#include <span>
 
 namespace pf {
 
-VkShaderModule createShaderModule(VkDevice device, const uint32_t* code, size_t bytes);
-
-template <size_t N>
-VkShaderModule createShaderModule(VkDevice device, const uint32_t (&code)[N]) {
-    return createShaderModule(device, code, sizeof(code));
-}
+// Modules are needed only while pipelines are made: callers give them a
+// scratch owner that outlives those calls.
+VkShaderModule createShaderModule(GpuResources& owner, std::span<const uint32_t> spirv);
 
 struct GraphicsPipelineDesc {
     VkShaderModule vertex = VK_NULL_HANDLE;
@@ -41,11 +38,12 @@ struct GraphicsPipelineDesc {
     bool dynamicCullMode = false;
 };
 
-// A compute pipeline of `module`'s main; destroys the module.
-VkPipeline createComputePipeline(VkDevice device, VkPipelineLayout layout, VkShaderModule module);
+// Pipelines are owned by `owner`.
+// A compute pipeline of the shader's main.
+VkPipeline createComputePipeline(GpuResources& owner, VkPipelineLayout layout, std::span<const uint32_t> spirv);
 
 // Vertices are pulled from storage buffers, so there is no vertex input;
 // viewport and scissor are dynamic.
-VkPipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& desc);
+VkPipeline createGraphicsPipeline(GpuResources& owner, const GraphicsPipelineDesc& desc);
 
 } // namespace pf

@@ -23,25 +23,30 @@ RenderTarget createRenderTarget(const GpuContext& ctx, VkExtent2D extent, VkSamp
                                  " is outside what the device supports (1 to " + std::to_string(maxSize) +
                                  " per side)");
     RenderTarget target;
+    target.resources = GpuResources(ctx);
     target.extent = extent;
     target.samples = supportedSamples(ctx, samples);
     const bool msaa = target.samples != VK_SAMPLE_COUNT_1_BIT;
     if (msaa)
-        target.msaaColor = createImage(ctx, extent, kColorFormat,
-                                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                                       target.samples, VK_IMAGE_ASPECT_COLOR_BIT);
+        target.msaaColor = createImage(
+            target.resources, {.extent = extent,
+                               .format = kColorFormat,
+                               .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                               .samples = target.samples});
     target.color =
-        createImage(ctx, extent, kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                    VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
-    target.depth = createImage(ctx, extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, target.samples,
-                               VK_IMAGE_ASPECT_DEPTH_BIT);
+        createImage(target.resources, {.extent = extent,
+                                       .format = kColorFormat,
+                                       .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+    target.depth = createImage(target.resources, {.extent = extent,
+                                                  .format = kDepthFormat,
+                                                  .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                                                  .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
+                                                  .samples = target.samples});
     return target;
 }
 
-void destroyRenderTarget(const GpuContext& ctx, RenderTarget& target) {
-    destroyImage(ctx, target.msaaColor);
-    destroyImage(ctx, target.color);
-    destroyImage(ctx, target.depth);
+void destroyRenderTarget(RenderTarget& target) {
+    target.resources.destroy();
     target = {};
 }
 

@@ -11,6 +11,7 @@ constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_SRGB;
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
 struct RenderTarget {
+    GpuResources resources; // the images below
     VkExtent2D extent{};
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     Image msaaColor; // only when samples > 1
@@ -21,6 +22,6 @@ struct RenderTarget {
 // Throws when the size is zero or beyond the device's image limit. The
 // sample count is lowered to what the device supports.
 RenderTarget createRenderTarget(const GpuContext& ctx, VkExtent2D extent, VkSampleCountFlagBits samples);
-void destroyRenderTarget(const GpuContext& ctx, RenderTarget& target);
+void destroyRenderTarget(RenderTarget& target);
 
 } // namespace pf

@@ -11,84 +11,59 @@ namespace pf {
 
 namespace {
 
-VkDeviceMemory allocateMemory(const GpuContext& ctx, const VkMemoryRequirements& req, VkMemoryPropertyFlags flags) {
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = findMemoryType(ctx, req.memoryTypeBits, flags);
-    VkDeviceMemory memory;
-    VK_CHECK(vkAllocateMemory(ctx.device, &alloc, nullptr, &memory));
-    return memory;
+VkDeviceSize texelBytesOf(VkFormat format) {
+    switch (format) {
+    case VK_FORMAT_R32G32B32A32_UINT: return 16;
+    case VK_FORMAT_R32_UINT: return 4;
+    default: throw std::invalid_argument("texel views are R32G32B32A32_UINT or R32_UINT");
+    }
 }
 
 } // namespace
 
-uint32_t findMemoryType(const GpuContext& ctx, uint32_t typeBits, VkMemoryPropertyFlags flags) {
-    const VkPhysicalDeviceMemoryProperties& props = ctx.memoryProperties;
-    for (uint32_t i = 0; i < props.memoryTypeCount; ++i)
-        if ((typeBits & (1u << i)) && (props.memoryTypes[i].propertyFlags & flags) == flags) return i;
-    throw std::runtime_error("no Vulkan memory type with the required properties");
-}
-
-Buffer createBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
+Buffer createBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFlags usage,
                     VkMemoryPropertyFlags memoryFlags) {
+    VkDevice device = owner.ctx().device;
     Buffer out;
     out.size = size;
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = size;
     info.usage = usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    VK_CHECK(vkCreateBuffer(ctx.device, &info, nullptr, &out.buffer));
+    VK_CHECK(vkCreateBuffer(device, &info, nullptr, &out.buffer));
 
     VkMemoryRequirements req;
-    vkGetBufferMemoryRequirements(ctx.device, out.buffer, &req);
-    out.memory = allocateMemory(ctx, req, memoryFlags);
-    VK_CHECK(vkBindBufferMemory(ctx.device, out.buffer, out.memory, 0));
+    vkGetBufferMemoryRequirements(device, out.buffer, &req);
+    const VkDeviceMemory memory = owner.allocate(req, memoryFlags);
+    // Owned after its memory, so destroyed before it is freed.
+    owner.own(out.buffer);
+    VK_CHECK(vkBindBufferMemory(device, out.buffer, memory, 0));
     if (memoryFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
-        VK_CHECK(vkMapMemory(ctx.device, out.memory, 0, VK_WHOLE_SIZE, 0, &out.mapped));
+        VK_CHECK(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &out.mapped));
     return out;
 }
 
-Buffer createHostBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage) {
-    return createBuffer(ctx, size, usage, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+Buffer createHostBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFlags usage) {
+    return createBuffer(owner, size, usage, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
 }
 
-Buffer createDeviceBufferWithData(const GpuContext& ctx, const void* data, VkDeviceSize size,
-                                  VkBufferUsageFlags usage) {
-    Buffer staging = createHostBuffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+Buffer createDeviceBufferWithData(GpuResources& owner, const void* data, VkDeviceSize size, VkBufferUsageFlags usage) {
+    GpuResources scratch(owner.ctx());
+    Buffer staging = createHostBuffer(scratch, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     std::memcpy(staging.mapped, data, size);
-    Buffer out = createBuffer(ctx, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    Buffer out =
+        createBuffer(owner, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    submitAndWait(owner.ctx(), [&](VkCommandBuffer cmd) {
         VkBufferCopy region{0, 0, size};
         vkCmdCopyBuffer(cmd, staging.buffer, out.buffer, 1, &region);
     });
-    destroyBuffer(ctx, staging);
     return out;
 }
 
-void destroyBuffer(const GpuContext& ctx, Buffer& buffer) {
-    if (buffer.buffer) vkDestroyBuffer(ctx.device, buffer.buffer, nullptr);
-    if (buffer.memory) vkFreeMemory(ctx.device, buffer.memory, nullptr);
-    buffer = {};
-}
-
-VkDescriptorPool createDescriptorPool(const GpuContext& ctx, std::span<const VkDescriptorSetLayoutBinding> bindings,
-                                      uint32_t sets) {
-    // One pool size per binding: the pool sums them by type.
-    std::vector<VkDescriptorPoolSize> sizes;
-    for (const VkDescriptorSetLayoutBinding& b : bindings)
-        sizes.push_back({b.descriptorType, b.descriptorCount * sets});
-    VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    info.maxSets = sets;
-    info.poolSizeCount = uint32_t(sizes.size());
-    info.pPoolSizes = sizes.data();
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateDescriptorPool(ctx.device, &info, nullptr, &pool));
-    return pool;
-}
-
-VkBufferView createTexelView(const GpuContext& ctx, const Buffer& buffer, VkFormat format, uint32_t texelBytes) {
+VkBufferView createTexelView(GpuResources& owner, const Buffer& buffer, VkFormat format) {
+    const VkDeviceSize texelBytes = texelBytesOf(format);
     const VkDeviceSize texels = buffer.size / texelBytes;
-    const uint32_t limit = ctx.properties.limits.maxTexelBufferElements;
+    const uint32_t limit = owner.ctx().properties.limits.maxTexelBufferElements;
     if (texels > limit)
         throw std::runtime_error("a texel buffer of " + std::to_string(texels) + " texels is more than this device's " +
                                  "maxTexelBufferElements (" + std::to_string(limit) + ")");
@@ -98,47 +73,49 @@ VkBufferView createTexelView(const GpuContext& ctx, const Buffer& buffer, VkForm
     info.offset = 0;
     info.range = texels * texelBytes;
     VkBufferView view = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateBufferView(ctx.device, &info, nullptr, &view));
-    return view;
+    VK_CHECK(vkCreateBufferView(owner.ctx().device, &info, nullptr, &view));
+    return owner.own(view);
 }
 
-Image createImage(const GpuContext& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                  VkSampleCountFlagBits samples, VkImageAspectFlags aspect) {
+Image createImage(GpuResources& owner, const ImageDesc& desc) {
+    VkDevice device = owner.ctx().device;
     Image out;
-    out.format = format;
-    out.extent = extent;
-    out.samples = samples;
+    out.format = desc.format;
+    out.extent = desc.extent;
+    out.samples = desc.samples;
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = format;
-    info.extent = {extent.width, extent.height, 1};
-    info.mipLevels = 1;
-    info.arrayLayers = 1;
-    info.samples = samples;
+    info.format = desc.format;
+    info.extent = {desc.extent.width, desc.extent.height, 1};
+    info.mipLevels = desc.mipLevels;
+    info.arrayLayers = desc.layers;
+    info.samples = desc.samples;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = usage;
+    info.usage = desc.usage;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VK_CHECK(vkCreateImage(ctx.device, &info, nullptr, &out.image));
+    VK_CHECK(vkCreateImage(device, &info, nullptr, &out.image));
 
     VkMemoryRequirements req;
-    vkGetImageMemoryRequirements(ctx.device, out.image, &req);
-    out.memory = allocateMemory(ctx, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    VK_CHECK(vkBindImageMemory(ctx.device, out.image, out.memory, 0));
+    vkGetImageMemoryRequirements(device, out.image, &req);
+    const VkDeviceMemory memory = owner.allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    // Owned after its memory, so destroyed before it is freed.
+    owner.own(out.image);
+    VK_CHECK(vkBindImageMemory(device, out.image, memory, 0));
 
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     view.image = out.image;
-    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    view.format = format;
-    view.subresourceRange = {aspect, 0, 1, 0, 1};
-    VK_CHECK(vkCreateImageView(ctx.device, &view, nullptr, &out.view));
+    view.viewType = desc.viewType;
+    view.format = desc.format;
+    view.subresourceRange = {desc.aspect, 0, desc.mipLevels, 0, desc.layers};
+    VK_CHECK(vkCreateImageView(device, &view, nullptr, &out.view));
+    owner.own(out.view);
     return out;
 }
 
-void destroyImage(const GpuContext& ctx, Image& image) {
-    if (image.view) vkDestroyImageView(ctx.device, image.view, nullptr);
-    if (image.image) vkDestroyImage(ctx.device, image.image, nullptr);
-    if (image.memory) vkFreeMemory(ctx.device, image.memory, nullptr);
-    image = {};
+VkSampler createSampler(GpuResources& owner, const VkSamplerCreateInfo& info) {
+    VkSampler sampler = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateSampler(owner.ctx().device, &info, nullptr, &sampler));
+    return owner.own(sampler);
 }
 
 VkCommandBuffer allocateCommandBuffer(const GpuContext& ctx) {

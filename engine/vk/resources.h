@@ -1,54 +1,58 @@
 // Buffers, images, one-shot command submission and the barriers between them.
 #pragma once
 
-#include "engine/vk/device.h"
+#include "engine/vk/gpu_resources.h"
 
 #include <functional>
-#include <span>
 
 namespace pf {
 
 struct Buffer {
     VkBuffer buffer = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
     VkDeviceSize size = 0;
     void* mapped = nullptr; // persistently mapped when host visible
 };
 
 struct Image {
     VkImage image = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE; // of every mip level and layer
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkExtent2D extent{};
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
 };
 
-uint32_t findMemoryType(const GpuContext& ctx, uint32_t typeBits, VkMemoryPropertyFlags flags);
-
-Buffer createBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
+// Every buffer, view, image and sampler below is owned by `owner`, which
+// destroys it.
+Buffer createBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFlags usage,
                     VkMemoryPropertyFlags memoryFlags);
 // A host-visible, coherent, mapped buffer for data the CPU writes or reads.
-Buffer createHostBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage);
+Buffer createHostBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFlags usage);
 // A device-local buffer filled through a staging copy.
-Buffer createDeviceBufferWithData(const GpuContext& ctx, const void* data, VkDeviceSize size, VkBufferUsageFlags usage);
-void destroyBuffer(const GpuContext& ctx, Buffer& buffer);
+Buffer createDeviceBufferWithData(GpuResources& owner, const void* data, VkDeviceSize size, VkBufferUsageFlags usage);
 
-// A descriptor pool with room for exactly `sets` sets of the layout made of
-// `bindings`: the sizes are counted from the bindings, not by hand.
-VkDescriptorPool createDescriptorPool(const GpuContext& ctx, std::span<const VkDescriptorSetLayoutBinding> bindings,
-                                      uint32_t sets);
+// A view of a whole buffer as texels of `format`, R32G32B32A32_UINT (16
+// bytes: a struct of N vec4/uvec4 members is N texels, its *_TEXELS stride
+// in shaders/*_layouts.h) or R32_UINT, for shaders that read it as a
+// uniform texel buffer: lavapipe gathers a texel for all SIMD lanes at once,
+// where it reads a storage buffer at a per-invocation index one float and
+// one lane at a time. Throws when the buffer holds more texels than the
+// device's maxTexelBufferElements.
+VkBufferView createTexelView(GpuResources& owner, const Buffer& buffer, VkFormat format);
 
-// A view of a whole buffer as texels of `format` (`texelBytes` each), for
-// shaders that read it as a uniform texel buffer: lavapipe gathers a texel
-// for all SIMD lanes at once, where it reads a storage buffer at a
-// per-invocation index one float and one lane at a time. Throws when the
-// buffer holds more texels than the device's maxTexelBufferElements.
-VkBufferView createTexelView(const GpuContext& ctx, const Buffer& buffer, VkFormat format, uint32_t texelBytes);
+struct ImageDesc {
+    VkExtent2D extent{};
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkImageUsageFlags usage = 0;
+    VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    uint32_t mipLevels = 1;
+    uint32_t layers = 1;
+    VkImageViewType viewType = VK_IMAGE_VIEW_TYPE_2D;
+};
+// A device-local 2D image (or array) and its view.
+Image createImage(GpuResources& owner, const ImageDesc& desc);
 
-Image createImage(const GpuContext& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
-                  VkSampleCountFlagBits samples, VkImageAspectFlags aspect);
-void destroyImage(const GpuContext& ctx, Image& image);
+VkSampler createSampler(GpuResources& owner, const VkSamplerCreateInfo& info);
 
 // A primary command buffer from the context's pool.
 VkCommandBuffer allocateCommandBuffer(const GpuContext& ctx);

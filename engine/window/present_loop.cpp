@@ -48,7 +48,7 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
     auto rebuild = [&] {
         vkDeviceWaitIdle(ctx.device);
         swapchain = createSwapchain(ctx, surface, window.framebufferExtent(), swapchain);
-        destroyRenderTarget(ctx, target);
+        destroyRenderTarget(target);
         target = createRenderTarget(ctx, swapchain.extent, options.samples);
     };
 
@@ -149,7 +149,7 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
     vkDestroyFence(ctx.device, frameDone, nullptr);
     vkDestroySemaphore(ctx.device, imageAcquired, nullptr);
     vkFreeCommandBuffers(ctx.device, ctx.commandPool, 1, &cmd);
-    destroyRenderTarget(ctx, target);
+    destroyRenderTarget(target);
     destroySwapchain(ctx, swapchain);
     return stats;
 }

@@ -1,7 +1,8 @@
 #include "engine/window/text_overlay.h"
 
+#include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
-#include "engine/vk/vk_check.h"
+#include "shaders/text_layouts.h"
 
 #include <glm/glm.hpp>
 
@@ -18,11 +19,7 @@
 namespace pf {
 namespace {
 
-// Matches OverlayRect in shaders/text.vert (std430: two vec4).
-struct OverlayRect {
-    glm::vec4 bounds; // x0, y0, x1, y1 in framebuffer pixels, y down
-    glm::vec4 color;  // linear rgba
-};
+using gpu::OverlayRect;
 
 // The most strokes (quads) any stb_easy_font glyph is made of.
 constexpr uint32_t kMaxQuadsPerCharacter = 11;
@@ -42,62 +39,25 @@ static_assert(sizeof(StbVertex) == 16);
 
 } // namespace
 
-TextOverlay createTextOverlay(const GpuContext& ctx) {
+TextOverlay createTextOverlay(GpuResources& owner) {
     TextOverlay overlay;
-    overlay.rects = createHostBuffer(ctx, kMaxOverlayRects * sizeof(OverlayRect), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    overlay.rects = createHostBuffer(owner, kMaxOverlayRects * sizeof(OverlayRect), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 
-    const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT,
-                                               nullptr};
-    VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    layoutInfo.bindingCount = 1;
-    layoutInfo.pBindings = &binding;
-    VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &layoutInfo, nullptr, &overlay.setLayout));
+    const DescriptorBinding table[] = {storageBuffer(TEXT_BINDING_RECTS, VK_SHADER_STAGE_VERTEX_BIT, overlay.rects)};
+    const VkDescriptorSetLayout setLayout = createSetLayout(owner, table);
+    overlay.descriptorSet = createSet(owner, setLayout, table);
+    overlay.pipelineLayout = createPipelineLayout(owner, setLayout, {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::vec2)});
 
-    overlay.descriptorPool = createDescriptorPool(ctx, {&binding, 1}, 1);
-
-    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = overlay.descriptorPool;
-    alloc.descriptorSetCount = 1;
-    alloc.pSetLayouts = &overlay.setLayout;
-    VK_CHECK(vkAllocateDescriptorSets(ctx.device, &alloc, &overlay.descriptorSet));
-
-    const VkDescriptorBufferInfo bufferInfo{overlay.rects.buffer, 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = overlay.descriptorSet;
-    write.dstBinding = 0;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    write.pBufferInfo = &bufferInfo;
-    vkUpdateDescriptorSets(ctx.device, 1, &write, 0, nullptr);
-
-    const VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::vec2)};
-    VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    pipelineLayoutInfo.setLayoutCount = 1;
-    pipelineLayoutInfo.pSetLayouts = &overlay.setLayout;
-    pipelineLayoutInfo.pushConstantRangeCount = 1;
-    pipelineLayoutInfo.pPushConstantRanges = &pushRange;
-    VK_CHECK(vkCreatePipelineLayout(ctx.device, &pipelineLayoutInfo, nullptr, &overlay.pipelineLayout));
-
+    GpuResources modules(owner.ctx());
     GraphicsPipelineDesc desc;
-    desc.vertex = createShaderModule(ctx.device, spirv_text_vert);
-    desc.fragment = createShaderModule(ctx.device, spirv_text_frag);
+    desc.vertex = createShaderModule(modules, spirv_text_vert);
+    desc.fragment = createShaderModule(modules, spirv_text_frag);
     desc.layout = overlay.pipelineLayout;
     desc.colorFormat = kColorFormat;
     desc.cullMode = VK_CULL_MODE_NONE;
     desc.depthTest = desc.depthWrite = false;
-    overlay.pipeline = createGraphicsPipeline(ctx.device, desc);
-    vkDestroyShaderModule(ctx.device, desc.vertex, nullptr);
-    vkDestroyShaderModule(ctx.device, desc.fragment, nullptr);
+    overlay.pipeline = createGraphicsPipeline(owner, desc);
     return overlay;
-}
-
-void destroyTextOverlay(const GpuContext& ctx, TextOverlay& overlay) {
-    vkDestroyPipeline(ctx.device, overlay.pipeline, nullptr);
-    vkDestroyPipelineLayout(ctx.device, overlay.pipelineLayout, nullptr);
-    vkDestroyDescriptorPool(ctx.device, overlay.descriptorPool, nullptr);
-    vkDestroyDescriptorSetLayout(ctx.device, overlay.setLayout, nullptr);
-    destroyBuffer(ctx, overlay.rects);
-    overlay = {};
 }
 
 void setOverlayText(TextOverlay& overlay, const std::string& lines) {

@@ -18,16 +18,14 @@ constexpr float kOverlayMargin = 8.0f; // framebuffer pixels from the top-left c
 struct TextOverlay {
     Buffer rects;           // host-visible storage buffer of rectangles
     uint32_t rectCount = 0; // shadows and glyph strokes of the current text
-    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
     VkDescriptorSet descriptorSet = VK_NULL_HANDLE;
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;
 };
 
-// Draws into kColorFormat images (RenderTarget::color).
-TextOverlay createTextOverlay(const GpuContext& ctx);
-void destroyTextOverlay(const GpuContext& ctx, TextOverlay& overlay);
+// Draws into kColorFormat images (RenderTarget::color). What the overlay
+// creates is owned by `owner`.
+TextOverlay createTextOverlay(GpuResources& owner);
 
 // Replaces the text; '\n' starts a new line, characters outside printable
 // ASCII show as '?'. Writes the host-visible buffer directly, so call it only

@@ -149,17 +149,19 @@ protected:
     void create(const Field& f) {
         field = &f;
         const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-        instances = createDeviceBufferWithData(ctx, f.instances.data(), f.instances.size() * sizeof(gpu::FieldInstance),
-                                               storage);
-        models = createDeviceBufferWithData(ctx, f.models.data(), f.models.size() * sizeof(gpu::PlantModel), storage);
+        instances = createDeviceBufferWithData(resources, f.instances.data(),
+                                               f.instances.size() * sizeof(gpu::FieldInstance), storage);
+        models =
+            createDeviceBufferWithData(resources, f.models.data(), f.models.size() * sizeof(gpu::PlantModel), storage);
         CullPassInputs inputs;
         inputs.instances = &instances;
         inputs.models = &models;
         inputs.instanceCount = uint32_t(f.instances.size());
         inputs.modelCount = uint32_t(f.models.size());
         inputs.templates = f.templates;
-        pass = createCullPass(ctx, inputs);
-        host = createHostBuffer(ctx, pass.visible.size + pass.commands.size + pass.allCommands.size + pass.state.size,
+        pass = createCullPass(resources, inputs);
+        host = createHostBuffer(resources,
+                                pass.visible.size + pass.commands.size + pass.allCommands.size + pass.state.size,
                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT);
         VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
         queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
@@ -168,13 +170,7 @@ protected:
     }
 
     void TearDown() override {
-        if (ctx.device) {
-            destroyCullPass(ctx, pass);
-            destroyBuffer(ctx, instances);
-            destroyBuffer(ctx, models);
-            destroyBuffer(ctx, host);
-            vkDestroyQueryPool(ctx.device, queries, nullptr);
-        }
+        if (ctx.device) vkDestroyQueryPool(ctx.device, queries, nullptr);
         test::GpuTest::TearDown();
     }
 
@@ -485,58 +481,28 @@ TEST_F(CullPassTest, IndirectDrawsOfEveryPathAreValid) {
     run(uniformsFor(kStart, 0, true));
 
     const VkExtent2D extent{16, 16};
-    Image target = createImage(ctx, extent, VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
-                               VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+    Image target = createImage(
+        resources,
+        {.extent = extent, .format = VK_FORMAT_R8G8B8A8_UNORM, .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
     const std::vector<uint32_t> indices(4096, 0); // every triangle degenerate: cheap to "draw"
     Buffer indexBuffer =
-        createDeviceBufferWithData(ctx, indices.data(), indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-    Buffer frame = createHostBuffer(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+        createDeviceBufferWithData(resources, indices.data(), indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    Buffer frame = createHostBuffer(resources, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(frame.mapped, 0, sizeof(gpu::FrameUniforms));
 
-    VkDescriptorSetLayoutBinding binding{BINDING_FRAME_UNIFORMS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
-                                         VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setInfo.bindingCount = 1;
-    setInfo.pBindings = &binding;
-    VkDescriptorSetLayout setLayout;
-    VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &setInfo, nullptr, &setLayout));
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &setLayout;
-    VkPipelineLayout layout;
-    VK_CHECK(vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &layout));
-    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1};
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 1;
-    poolInfo.pPoolSizes = &poolSize;
-    VkDescriptorPool pool;
-    VK_CHECK(vkCreateDescriptorPool(ctx.device, &poolInfo, nullptr, &pool));
-    VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocInfo.descriptorPool = pool;
-    allocInfo.descriptorSetCount = 1;
-    allocInfo.pSetLayouts = &setLayout;
-    VkDescriptorSet set;
-    VK_CHECK(vkAllocateDescriptorSets(ctx.device, &allocInfo, &set));
-    VkDescriptorBufferInfo bufferInfo{frame.buffer, 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = set;
-    write.dstBinding = BINDING_FRAME_UNIFORMS;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    write.pBufferInfo = &bufferInfo;
-    vkUpdateDescriptorSets(ctx.device, 1, &write, 0, nullptr);
+    const DescriptorBinding table[] = {uniformBuffer(BINDING_FRAME_UNIFORMS, VK_SHADER_STAGE_FRAGMENT_BIT, frame)};
+    const VkDescriptorSetLayout setLayout = createSetLayout(resources, table);
+    const VkDescriptorSet set = createSet(resources, setLayout, table);
+    const VkPipelineLayout layout = createPipelineLayout(resources, setLayout);
 
     GraphicsPipelineDesc desc;
-    desc.vertex = createShaderModule(ctx.device, spirv_sky_vert);
-    desc.fragment = createShaderModule(ctx.device, spirv_sky_frag);
+    desc.vertex = createShaderModule(resources, spirv_sky_vert);
+    desc.fragment = createShaderModule(resources, spirv_sky_frag);
     desc.layout = layout;
     desc.colorFormat = target.format;
     desc.depthTest = false;
     desc.depthWrite = false;
-    VkPipeline pipeline = createGraphicsPipeline(ctx.device, desc);
-    vkDestroyShaderModule(ctx.device, desc.vertex, nullptr);
-    vkDestroyShaderModule(ctx.device, desc.fragment, nullptr);
+    VkPipeline pipeline = createGraphicsPipeline(resources, desc);
 
     const bool hasCount = ctx.drawIndirectCount, hasMulti = ctx.multiDrawIndirect;
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
@@ -574,14 +540,6 @@ TEST_F(CullPassTest, IndirectDrawsOfEveryPathAreValid) {
     ctx.drawIndirectCount = hasCount;
     ctx.multiDrawIndirect = hasMulti;
     EXPECT_TRUE(hasCount) << "lavapipe has drawIndirectCount; the count path went untested";
-
-    vkDestroyPipeline(ctx.device, pipeline, nullptr);
-    vkDestroyDescriptorPool(ctx.device, pool, nullptr);
-    vkDestroyPipelineLayout(ctx.device, layout, nullptr);
-    vkDestroyDescriptorSetLayout(ctx.device, setLayout, nullptr);
-    destroyBuffer(ctx, frame);
-    destroyBuffer(ctx, indexBuffer);
-    destroyImage(ctx, target);
 }
 
 TEST_F(CullPassTest, TwoRunsGiveIdenticalLists) {

@@ -77,7 +77,9 @@ PlantModelPool testPool() {
 // Mip `level` of every layer, tightly packed, 4 bytes a texel.
 std::vector<uint8_t> readLayers(const GpuContext& ctx, const Image& image, uint32_t layers, uint32_t level) {
     const uint32_t size = std::max(image.extent.width >> level, 1u);
-    Buffer readback = createHostBuffer(ctx, VkDeviceSize(size) * size * 4 * layers, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    GpuResources scratch(ctx);
+    Buffer readback =
+        createHostBuffer(scratch, VkDeviceSize(size) * size * 4 * layers, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
         auto barrier = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 src, VkAccessFlags2 srcAccess,
                            VkPipelineStageFlags2 dst, VkAccessFlags2 dstAccess) {
@@ -103,7 +105,6 @@ std::vector<uint8_t> readLayers(const GpuContext& ctx, const Image& image, uint3
     });
     std::vector<uint8_t> out(readback.size);
     std::memcpy(out.data(), readback.mapped, out.size());
-    destroyBuffer(ctx, readback);
     return out;
 }
 
@@ -120,20 +121,14 @@ protected:
         GpuTest::SetUp();
         pool = testPool();
         vertices =
-            createDeviceBufferWithData(ctx, pool.vertices.data(), pool.vertices.size() * sizeof(gpu::FieldVertex),
+            createDeviceBufferWithData(resources, pool.vertices.data(), pool.vertices.size() * sizeof(gpu::FieldVertex),
                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-        indices = createDeviceBufferWithData(ctx, pool.indices.data(), pool.indices.size() * sizeof(uint32_t),
+        indices = createDeviceBufferWithData(resources, pool.indices.data(), pool.indices.size() * sizeof(uint32_t),
                                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-    }
-    void TearDown() override {
-        destroyImpostorAtlas(ctx, atlas);
-        destroyBuffer(ctx, vertices);
-        destroyBuffer(ctx, indices);
-        GpuTest::TearDown();
     }
     void bake() {
         auto start = std::chrono::steady_clock::now();
-        atlas = bakeImpostorAtlas(ctx, pool, vertices, indices, {kSize, kFrames});
+        atlas = bakeImpostorAtlas(resources, pool, vertices, indices, {kSize, kFrames});
         bakeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         color = readLayers(ctx, atlas.color, atlas.layers, 0);
         normal = readLayers(ctx, atlas.normalDepth, atlas.layers, 0);
@@ -297,7 +292,6 @@ TEST_F(ImpostorTest, OutlinesHoldAllCoverageAndCutTheEmptyFrame) {
 TEST_F(ImpostorTest, TwoBakesAreIdentical) {
     bake();
     std::vector<uint8_t> firstColor = color, firstNormal = normal;
-    destroyImpostorAtlas(ctx, atlas);
     bake();
     EXPECT_TRUE(firstColor == color);
     EXPECT_TRUE(firstNormal == normal);

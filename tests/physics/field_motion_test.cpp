@@ -39,17 +39,16 @@ protected:
 };
 
 TEST_F(FieldMotionTest, PreparingAFrameRunsNoPhysics) {
-    FieldMotion motion = createFieldMotion(ctx, content);
+    FieldMotion motion = createFieldMotion(resources, content);
     const Snapshot rest = snapshot(motion);
     advanceFieldMotion(motion, 3.0, true, camera, false);
     EXPECT_TRUE(snapshot(motion) == rest) << "advanceFieldMotion stepped the simulation itself";
     EXPECT_TRUE(motion.next.restart);
     EXPECT_FALSE(motion.next.ownStates.empty()) << "the camera stands by the broadleaf";
-    destroyFieldMotion(ctx, motion);
 }
 
 TEST_F(FieldMotionTest, PlanCoversEveryStepFromRestInFrameSizedDispatches) {
-    FieldMotion motion = createFieldMotion(ctx, content);
+    FieldMotion motion = createFieldMotion(resources, content);
     const double time = 7.5; // from rest at 2.5 s
     advanceFieldMotion(motion, time, true, camera, false);
     const PhysicsSettings& settings = content.scene.physics;
@@ -62,12 +61,11 @@ TEST_F(FieldMotionTest, PlanCoversEveryStepFromRestInFrameSizedDispatches) {
     }
     EXPECT_EQ(step, subStepsUntil(time, settings));
     EXPECT_EQ(motion.simulatedStep, step);
-    destroyFieldMotion(ctx, motion);
 }
 
 TEST_F(FieldMotionTest, OneRecordedFrameEqualsItsDispatchesSubmittedOneByOne) {
-    FieldMotion recorded = createFieldMotion(ctx, content);
-    FieldMotion oneByOne = createFieldMotion(ctx, content);
+    FieldMotion recorded = createFieldMotion(resources, content);
+    FieldMotion oneByOne = createFieldMotion(resources, content);
     const Snapshot rest = snapshot(recorded);
     advanceFieldMotion(recorded, 2.0, true, camera, false);
     advanceFieldMotion(oneByOne, 2.0, true, camera, false);
@@ -87,8 +85,6 @@ TEST_F(FieldMotionTest, OneRecordedFrameEqualsItsDispatchesSubmittedOneByOne) {
     const Snapshot a = snapshot(recorded), b = snapshot(oneByOne);
     EXPECT_FALSE(a == rest) << "two seconds of gusts moved nothing";
     EXPECT_TRUE(a == b) << "one command buffer and one submit per dispatch disagree";
-    destroyFieldMotion(ctx, recorded);
-    destroyFieldMotion(ctx, oneByOne);
 }
 
 } // namespace

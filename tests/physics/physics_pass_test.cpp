@@ -154,7 +154,7 @@ class PhysicsPassTest : public test::GpuTest {};
 TEST_F(PhysicsPassTest, MatchesCpuReferenceAfter600SubStepsInGustyWind) {
     SkeletonSet cpu = makeForest(4);
     ASSERT_GT(cpu.states.size(), 100u);
-    PhysicsPass pass = createPhysicsPass(ctx, cpu);
+    PhysicsPass pass = createPhysicsPass(resources, cpu);
     const Wind wind = gustyWind();
     const PhysicsSettings settings;
     const uint32_t joints = uint32_t(cpu.states.size()), skeletons = uint32_t(cpu.skeletons.size());
@@ -170,7 +170,6 @@ TEST_F(PhysicsPassTest, MatchesCpuReferenceAfter600SubStepsInGustyWind) {
     std::vector<gpu::JointState> states;
     std::vector<gpu::JointPose> poses;
     readPhysicsState(ctx, pass, states, poses);
-    destroyPhysicsPass(ctx, pass);
     ASSERT_EQ(states.size(), joints);
 
     float stateDeviation = 0, poseDeviation = 0, translationDeviation = 0, largestBend = 0;
@@ -192,7 +191,7 @@ TEST_F(PhysicsPassTest, MatchesCpuReferenceAfter600SubStepsInGustyWind) {
 
 TEST_F(PhysicsPassTest, RestInRestOutWithZeroSubSteps) {
     SkeletonSet cpu = makeForest(2);
-    PhysicsPass pass = createPhysicsPass(ctx, cpu);
+    PhysicsPass pass = createPhysicsPass(resources, cpu);
     const uint32_t joints = uint32_t(cpu.states.size());
     runFrame(ctx, pass,
              makePhysicsUniforms(gustyWind(), PhysicsSettings{}, 3.0f, 1.0f / 240.0f, 0, uint32_t(cpu.skeletons.size()),
@@ -201,7 +200,6 @@ TEST_F(PhysicsPassTest, RestInRestOutWithZeroSubSteps) {
     std::vector<gpu::JointState> states;
     std::vector<gpu::JointPose> poses;
     readPhysicsState(ctx, pass, states, poses);
-    destroyPhysicsPass(ctx, pass);
     ASSERT_EQ(states.size(), joints);
     for (uint32_t j = 0; j < joints; ++j) {
         EXPECT_EQ(states[j].rotation, glm::vec4(0, 0, 0, 1)) << "joint " << j;
@@ -213,12 +211,11 @@ TEST_F(PhysicsPassTest, RestInRestOutWithZeroSubSteps) {
 }
 
 TEST_F(PhysicsPassTest, EmptySetRecordsNothing) {
-    PhysicsPass pass = createPhysicsPass(ctx, SkeletonSet{});
+    PhysicsPass pass = createPhysicsPass(resources, SkeletonSet{});
     runFrame(ctx, pass, makePhysicsUniforms(gustyWind(), PhysicsSettings{}, 0.0f, 1.0f / 240.0f, kStepsPerFrame, 0, 0));
     std::vector<gpu::JointState> states(3);
     std::vector<gpu::JointPose> poses(3);
     readPhysicsState(ctx, pass, states, poses);
-    destroyPhysicsPass(ctx, pass);
     EXPECT_TRUE(states.empty());
     EXPECT_TRUE(poses.empty());
 }
@@ -232,7 +229,7 @@ TEST_F(PhysicsPassTest, MillionJointsDispatchRuns) {
         addSkeleton(set, 0, 0, perTree, glm::vec3(float(t % 1000), 0, float(t / 1000)), 0.1f * float(t), 1.0f);
     const uint32_t joints = uint32_t(set.states.size());
     ASSERT_GE(joints, 1000000u);
-    PhysicsPass pass = createPhysicsPass(ctx, set);
+    PhysicsPass pass = createPhysicsPass(resources, set);
     const gpu::PhysicsUniforms u =
         makePhysicsUniforms(gustyWind(), PhysicsSettings{}, 0.0f, 1.0f / 240.0f, kStepsPerFrame, trees, joints);
     runFrame(ctx, pass, u); // pipelines warm up
@@ -243,7 +240,6 @@ TEST_F(PhysicsPassTest, MillionJointsDispatchRuns) {
     std::vector<gpu::JointState> states;
     std::vector<gpu::JointPose> poses;
     readPhysicsState(ctx, pass, states, poses);
-    destroyPhysicsPass(ctx, pass);
     ASSERT_EQ(states.size(), joints);
     for (uint32_t j = 0; j < joints; j += 997) {
         ASSERT_TRUE(std::isfinite(states[j].rotation.x) && std::isfinite(poses[j].translation.y)) << "joint " << j;

@@ -18,7 +18,7 @@ FieldShotResult renderField(const GpuContext& ctx, const FieldShot& shot) {
         result.image =
             captureFrame(ctx, target, [&](VkCommandBuffer cmd, const RenderTarget& t) { renderer.record(cmd, t); });
         result.stats = renderer.readStats();
-        destroyRenderTarget(ctx, target);
+        destroyRenderTarget(target);
     }
     return result;
 }

@@ -9,6 +9,7 @@ void GpuTest::SetUp() {
 }
 
 void GpuTest::TearDown() {
+    resources.destroy();
     // Destroying first lets the layer report leaked objects as well.
     destroyContext(ctx);
     if (!ctx.validationLog) return;

@@ -2,7 +2,7 @@
 // validation layer is always on: any validation message fails the test.
 #pragma once
 
-#include "engine/vk/device.h"
+#include "engine/vk/gpu_resources.h"
 
 #include <gtest/gtest.h>
 
@@ -14,6 +14,8 @@ protected:
     void TearDown() override;
 
     GpuContext ctx;
+    // Owns what a test creates; destroyed before the context.
+    GpuResources resources{ctx};
 };
 
 } // namespace pf::test

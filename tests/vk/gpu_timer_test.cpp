@@ -22,7 +22,8 @@ TEST_F(GpuTimerTest, TwoScopesAroundFillsReportTimesInOrder) {
         GTEST_SKIP() << "the queue family writes no timestamps";
     }
     constexpr VkDeviceSize kBytes = 16u << 20;
-    Buffer buffer = createBuffer(ctx, kBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    Buffer buffer =
+        createBuffer(resources, kBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
 
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
         resetGpuTimer(cmd, timer);
@@ -46,7 +47,6 @@ TEST_F(GpuTimerTest, TwoScopesAroundFillsReportTimesInOrder) {
         EXPECT_GE(t.milliseconds, 0.0) << t.name;
         EXPECT_LT(t.milliseconds, 10000.0) << t.name; // a wrapped or garbage timestamp would be huge
     }
-    destroyBuffer(ctx, buffer);
     destroyGpuTimer(ctx, timer);
 }
 

@@ -23,11 +23,12 @@ protected:
     // Clears a target, leaves it as the renderer would (TRANSFER_SRC), draws
     // the overlay when `text` is given, and reads the pixels back.
     RgbaImage render(const std::string* text) {
-        TextOverlay overlay = createTextOverlay(ctx);
+        GpuResources scratch(ctx);
+        TextOverlay overlay = createTextOverlay(scratch);
         if (text) setOverlayText(overlay, *text);
         RenderTarget target = createRenderTarget(ctx, kExtent, VK_SAMPLE_COUNT_1_BIT);
         const VkDeviceSize bytes = VkDeviceSize(kExtent.width) * kExtent.height * 4;
-        Buffer readback = createHostBuffer(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+        Buffer readback = createHostBuffer(scratch, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
             const VkImage image = target.color.image;
@@ -68,9 +69,7 @@ protected:
 
         RgbaImage image{kExtent.width, kExtent.height, std::vector<uint8_t>(bytes)};
         std::memcpy(image.pixels.data(), readback.mapped, bytes);
-        destroyBuffer(ctx, readback);
-        destroyRenderTarget(ctx, target);
-        destroyTextOverlay(ctx, overlay);
+        destroyRenderTarget(target);
         return image;
     }
 };
@@ -111,14 +110,13 @@ TEST_F(TextOverlayTest, EmptyTextLeavesTheImageUnchanged) {
 }
 
 TEST_F(TextOverlayTest, UnprintableAndOverlongTextIsSafe) {
-    TextOverlay overlay = createTextOverlay(ctx);
+    TextOverlay overlay = createTextOverlay(resources);
     setOverlayText(overlay, "tab\there \x80\xff\r\n");
     EXPECT_GT(overlay.rectCount, 0u);
     setOverlayText(overlay, std::string(10 * kMaxOverlayCharacters, 'W'));
     const uint32_t capped = overlay.rectCount;
     setOverlayText(overlay, std::string(kMaxOverlayCharacters, 'W'));
     EXPECT_EQ(overlay.rectCount, capped);
-    destroyTextOverlay(ctx, overlay);
 }
 
 } // namespace

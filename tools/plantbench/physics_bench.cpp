@@ -84,7 +84,8 @@ void BM_GpuPhysicsPose(benchmark::State& state) {
     const Models& models = defaultModels();
     const GpuContext& ctx = benchContext();
     const SkeletonSet set = cloneForest(models.pool, uint32_t(state.range(0)));
-    PhysicsPass pass = createPhysicsPass(ctx, set);
+    GpuResources resources(ctx);
+    PhysicsPass pass = createPhysicsPass(resources, set);
     GpuTimer timer = createGpuTimer(ctx, 3); // physics+pose, and inside it physics and pose
     if (!timer.supported) state.SkipWithError("the queue writes no timestamps");
     uint64_t frame = 0;
@@ -111,7 +112,6 @@ void BM_GpuPhysicsPose(benchmark::State& state) {
     state.counters["physics_ms"] = benchmark::Counter(physicsMs, benchmark::Counter::kAvgIterations);
     state.counters["pose_ms"] = benchmark::Counter(poseMs, benchmark::Counter::kAvgIterations);
     destroyGpuTimer(ctx, timer);
-    destroyPhysicsPass(ctx, pass);
 }
 
 void BM_CpuReference(benchmark::State& state) {

@@ -38,20 +38,19 @@ double msSince(Clock::time_point start) {
 // The render target, the host buffer its captures go to and the timer of
 // one count, released however the count ends.
 struct FrameResources {
+    FrameResources(const GpuContext& ctx, VkExtent2D extent, VkSampleCountFlagBits samples)
+        : ctx(ctx), resources(ctx), target(createRenderTarget(ctx, extent, samples)),
+          capture(createHostBuffer(resources, VkDeviceSize(extent.width) * extent.height * 4,
+                                   VK_BUFFER_USAGE_TRANSFER_DST_BIT)),
+          timer(createGpuTimer(ctx, uint32_t(kPassCount))) {}
+    ~FrameResources() { destroyGpuTimer(ctx, timer); }
+
     const GpuContext& ctx;
+    GpuResources resources; // the capture buffer
     RenderTarget target;
     Buffer capture;
     GpuTimer timer;
-    ~FrameResources() {
-        destroyGpuTimer(ctx, timer);
-        destroyBuffer(ctx, capture);
-        destroyRenderTarget(ctx, target);
-    }
 };
-
-Buffer createCaptureBuffer(const GpuContext& ctx, VkExtent2D extent) {
-    return createHostBuffer(ctx, VkDeviceSize(extent.width) * extent.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-}
 
 // What engine/vk/capture.cpp records after a frame: the resolved image (left in
 // TRANSFER_SRC_OPTIMAL by the renderer) copied to a host buffer and made
@@ -144,8 +143,7 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
     settings.shadows = o.shadows;
     showProgress(progress, 0.0, "uploading the field and baking impostors");
     FieldRenderer renderer(ctx, std::move(content), settings);
-    FrameResources frame{ctx, createRenderTarget(ctx, {o.width, o.height}, renderer.samples()),
-                         createCaptureBuffer(ctx, {o.width, o.height}), createGpuTimer(ctx, uint32_t(kPassCount))};
+    FrameResources frame(ctx, {o.width, o.height}, renderer.samples());
 
     FieldView view;
     view.camera = cameraAt(scene.camera, o.time);

@@ -91,7 +91,7 @@ int runHeadless(const PlantfieldOptions& o) {
                      o.size.height, ctx.properties.deviceName, stats.instances, plantsPerLodText(stats).c_str(),
                      double(stats.triangles) / 1e6, o.capturePath.empty() ? "" : " -> ", o.capturePath.c_str());
         destroyGpuTimer(ctx, timer);
-        destroyRenderTarget(ctx, target);
+        destroyRenderTarget(target);
     }
     destroyContext(ctx);
     return 0;

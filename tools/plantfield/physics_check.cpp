@@ -49,7 +49,8 @@ int runPhysicsCheck(const PlantfieldOptions& o) {
 
     GpuContext ctx;
     createHeadlessContext(ctx, gpuOptions(o));
-    PhysicsPass pass = createPhysicsPass(ctx, cpu);
+    GpuResources resources(ctx);
+    PhysicsPass pass = createPhysicsPass(resources, cpu);
     GpuTimer timer = createGpuTimer(ctx, 1);
 
     // GPU time: the timestamps around each frame's passes, summed; wall
@@ -80,7 +81,7 @@ int runPhysicsCheck(const PlantfieldOptions& o) {
     std::vector<gpu::JointPose> poses;
     readPhysicsState(ctx, pass, states, poses);
     destroyGpuTimer(ctx, timer);
-    destroyPhysicsPass(ctx, pass);
+    resources.destroy();
     destroyContext(ctx);
 
     double deviation = 0.0;

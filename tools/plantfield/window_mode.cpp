@@ -43,7 +43,8 @@ int runWindow(const PlantfieldOptions& o) {
     PresentStats presented;
     {
         FieldRenderer renderer(ctx, std::move(content), renderSettings(o));
-        TextOverlay overlay = createTextOverlay(ctx);
+        GpuResources overlayResources(ctx); // destroyed at the end of this block, after the loop's last wait
+        TextOverlay overlay = createTextOverlay(overlayResources);
         GpuTimer timer = createGpuTimer(ctx, 16);
         WindowInputState inputState;
         bool freeFlight = false;
@@ -79,7 +80,6 @@ int runWindow(const PlantfieldOptions& o) {
         loop.titleSuffix = [&] { return " - " + std::to_string(stats.instances) + " plants"; };
         presented = runPresentLoop(ctx, window, surface, loop);
         destroyGpuTimer(ctx, timer);
-        destroyTextOverlay(ctx, overlay);
     }
     std::fprintf(stderr, "plantfield: %u frames in %.2f s (%.1f fps) on %s\n", presented.frames, presented.seconds,
                  presented.seconds > 0 ? presented.frames / presented.seconds : 0.0, ctx.properties.deviceName);

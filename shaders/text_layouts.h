@@ -1,0 +1,26 @@
+// GPU data of the window's text overlay (engine/window/text_overlay.h),
+// shared by GLSL and C++ like layouts.h.
+#ifndef PLANTFIELD_SHADERS_TEXT_LAYOUTS_H
+#define PLANTFIELD_SHADERS_TEXT_LAYOUTS_H
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+namespace gpu {
+using vec4 = glm::vec4;
+#endif
+
+// The overlay's one descriptor binding (set 0).
+#define TEXT_BINDING_RECTS 0 // OverlayRect[]
+
+// One stb_easy_font quad (or its shadow) in framebuffer pixels, y down.
+struct OverlayRect {
+    vec4 bounds; // x0, y0, x1, y1
+    vec4 color;  // linear rgba
+};
+
+#ifdef __cplusplus
+} // namespace gpu
+static_assert(sizeof(gpu::OverlayRect) == 2 * 16);
+#endif
+
+#endif
