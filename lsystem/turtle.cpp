@@ -26,7 +26,7 @@ void rotate(TurtleState& s, glm::vec3 axis, float degrees) {
 // ABOP's $: L = V x H / |V x H| with V the world up (+Y).
 void rollHorizontal(TurtleState& s) {
     const glm::vec3 horizontalLeft = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), s.heading);
-    if (glm::length(horizontalLeft) < 1e-6f) return;  // heading vertical: any roll is horizontal
+    if (glm::length(horizontalLeft) < 1e-6f) return; // heading vertical: any roll is horizontal
     s.left = glm::normalize(horizontalLeft);
     s.up = glm::cross(s.heading, s.left);
 }
@@ -36,7 +36,7 @@ void bendTowardTropism(TurtleState& s) {
     if (s.elasticity == 0.0f) return;
     const glm::vec3 axis = glm::cross(s.heading, s.tropism);
     const float sine = glm::length(axis);
-    if (!(sine > 1e-6f)) return;  // parallel to T (or NaN): no defined bend
+    if (!(sine > 1e-6f)) return; // parallel to T (or NaN): no defined bend
     rotate(s, axis / sine, glm::degrees(s.elasticity * sine));
 }
 
@@ -76,7 +76,7 @@ void closePolygon(TurtleStack& stack, PlantAssetBuilder& out) {
 void drawSegment(std::span<const float> p, TurtleState& s, TurtleStack& stack, PlantAssetBuilder& out) {
     const float length = p.empty() ? s.length : p[0];
     if (!stack.polygons.empty()) {
-        move(s, stack, length);  // a polygon's outline, not a branch
+        move(s, stack, length); // a polygon's outline, not a branch
         return;
     }
     const float startWidth = s.width;
@@ -97,7 +97,7 @@ size_t endOfBranch(const ModuleString& string, size_t i) {
     return i;
 }
 
-}  // namespace
+} // namespace
 
 TurtleSettings turtleSettings(const Grammar& grammar) {
     TurtleSettings settings;
@@ -131,7 +131,7 @@ TurtleCommand turtleCommand(const std::string& name) {
         {"|", TurtleAction::TurnAround},    {"$", TurtleAction::RollHorizontal},
         {"[", TurtleAction::Push},          {"]", TurtleAction::Pop},
         {"!", TurtleAction::Width},         {";", TurtleAction::Material},
-        {"'", TurtleAction::Material},  {"%", TurtleAction::Cut},
+        {"'", TurtleAction::Material},      {"%", TurtleAction::Cut},
         {"@Lm", TurtleAction::ScaleLength}, {"@La", TurtleAction::AddLength},
         {"@Ls", TurtleAction::SetLength},   {"@Am", TurtleAction::ScaleAngle},
         {"@Aa", TurtleAction::AddAngle},    {"@As", TurtleAction::SetAngle},
@@ -153,57 +153,67 @@ std::vector<TurtleCommand> turtleCommands(const SymbolTable& symbols) {
     return commands;
 }
 
-void applyModule(const TurtleCommand& command, std::span<const float> p, const TurtleSettings& settings,
-                 TurtleState& s, TurtleStack& stack, PlantAssetBuilder& out) {
+void applyModule(const TurtleCommand& command, std::span<const float> p, const TurtleSettings& settings, TurtleState& s,
+                 TurtleStack& stack, PlantAssetBuilder& out) {
     const float angle = p.empty() ? s.angle : p[0];
     // Of the length, angle, width and material modules: bare ones change nothing.
     const float factor = p.empty() ? 1.0f : p[0];
     const float amount = p.empty() ? 0.0f : p[0];
     switch (command.action) {
-        case TurtleAction::None:
-        case TurtleAction::Cut: break;  // interpretModules skips the branch
-        case TurtleAction::Draw: drawSegment(p, s, stack, out); break;
-        case TurtleAction::Move: move(s, stack, p.empty() ? s.length : p[0]); break;
-        case TurtleAction::Yaw: rotate(s, s.up, angle); break;
-        case TurtleAction::YawBack: rotate(s, s.up, -angle); break;
-        case TurtleAction::Pitch: rotate(s, s.left, angle); break;
-        case TurtleAction::PitchBack: rotate(s, s.left, -angle); break;
-        case TurtleAction::Roll: rotate(s, s.heading, angle); break;
-        case TurtleAction::RollBack: rotate(s, s.heading, -angle); break;
-        case TurtleAction::TurnAround: rotate(s, s.up, 180.0f); break;
-        case TurtleAction::RollHorizontal: rollHorizontal(s); break;
-        case TurtleAction::Push: stack.branches.push_back(s); break;
-        case TurtleAction::Pop:
-            if (!stack.branches.empty()) {
-                s = stack.branches.back();
-                stack.branches.pop_back();
-            }
-            break;
-        case TurtleAction::Width: s.width = p.empty() ? s.width * settings.widthFactor : p[0]; break;
-        case TurtleAction::Material:
-            s.material = materialIndex(p.empty() ? static_cast<float>(s.material) + 1.0f : p[0]);
-            break;
-        case TurtleAction::ScaleLength: s.length *= factor; break;
-        case TurtleAction::AddLength: s.length += amount; break;
-        case TurtleAction::SetLength: if (!p.empty()) s.length = p[0]; break;
-        case TurtleAction::ScaleAngle: s.angle *= factor; break;
-        case TurtleAction::AddAngle: s.angle += amount; break;
-        case TurtleAction::SetAngle: if (!p.empty()) s.angle = p[0]; break;
-        case TurtleAction::ScaleWidth: s.width *= factor; break;
-        case TurtleAction::AddWidth: s.width += amount; break;
-        case TurtleAction::AddMaterial: s.material = materialIndex(static_cast<float>(s.material) + amount); break;
-        case TurtleAction::Stiffness: if (!p.empty()) s.stiffness = p[0]; break;
-        case TurtleAction::Elasticity: if (!p.empty()) s.elasticity = p[0]; break;
-        case TurtleAction::TropismVector: if (p.size() >= 3) s.tropism = {p[0], p[1], p[2]}; break;
-        case TurtleAction::Sphere:
-            out.addSphere(frameOf(s), 0.5f * (p.empty() ? s.width : p[0]), s.material, s.joint);
-            break;
-        case TurtleAction::Surface:
-            out.addSurface(command.surface, frameOf(s), p.empty() ? 1.0f : p[0], s.material, s.joint);
-            break;
-        case TurtleAction::PolygonBegin: stack.polygons.push_back({frameOf(s), s.material, s.joint, {}}); break;
-        case TurtleAction::PolygonVertex: addVertex(stack, s.position); break;
-        case TurtleAction::PolygonEnd: closePolygon(stack, out); break;
+    case TurtleAction::None:
+    case TurtleAction::Cut: break; // interpretModules skips the branch
+    case TurtleAction::Draw: drawSegment(p, s, stack, out); break;
+    case TurtleAction::Move: move(s, stack, p.empty() ? s.length : p[0]); break;
+    case TurtleAction::Yaw: rotate(s, s.up, angle); break;
+    case TurtleAction::YawBack: rotate(s, s.up, -angle); break;
+    case TurtleAction::Pitch: rotate(s, s.left, angle); break;
+    case TurtleAction::PitchBack: rotate(s, s.left, -angle); break;
+    case TurtleAction::Roll: rotate(s, s.heading, angle); break;
+    case TurtleAction::RollBack: rotate(s, s.heading, -angle); break;
+    case TurtleAction::TurnAround: rotate(s, s.up, 180.0f); break;
+    case TurtleAction::RollHorizontal: rollHorizontal(s); break;
+    case TurtleAction::Push: stack.branches.push_back(s); break;
+    case TurtleAction::Pop:
+        if (!stack.branches.empty()) {
+            s = stack.branches.back();
+            stack.branches.pop_back();
+        }
+        break;
+    case TurtleAction::Width: s.width = p.empty() ? s.width * settings.widthFactor : p[0]; break;
+    case TurtleAction::Material:
+        s.material = materialIndex(p.empty() ? static_cast<float>(s.material) + 1.0f : p[0]);
+        break;
+    case TurtleAction::ScaleLength: s.length *= factor; break;
+    case TurtleAction::AddLength: s.length += amount; break;
+    case TurtleAction::SetLength:
+        if (!p.empty()) s.length = p[0];
+        break;
+    case TurtleAction::ScaleAngle: s.angle *= factor; break;
+    case TurtleAction::AddAngle: s.angle += amount; break;
+    case TurtleAction::SetAngle:
+        if (!p.empty()) s.angle = p[0];
+        break;
+    case TurtleAction::ScaleWidth: s.width *= factor; break;
+    case TurtleAction::AddWidth: s.width += amount; break;
+    case TurtleAction::AddMaterial: s.material = materialIndex(static_cast<float>(s.material) + amount); break;
+    case TurtleAction::Stiffness:
+        if (!p.empty()) s.stiffness = p[0];
+        break;
+    case TurtleAction::Elasticity:
+        if (!p.empty()) s.elasticity = p[0];
+        break;
+    case TurtleAction::TropismVector:
+        if (p.size() >= 3) s.tropism = {p[0], p[1], p[2]};
+        break;
+    case TurtleAction::Sphere:
+        out.addSphere(frameOf(s), 0.5f * (p.empty() ? s.width : p[0]), s.material, s.joint);
+        break;
+    case TurtleAction::Surface:
+        out.addSurface(command.surface, frameOf(s), p.empty() ? 1.0f : p[0], s.material, s.joint);
+        break;
+    case TurtleAction::PolygonBegin: stack.polygons.push_back({frameOf(s), s.material, s.joint, {}}); break;
+    case TurtleAction::PolygonVertex: addVertex(stack, s.position); break;
+    case TurtleAction::PolygonEnd: closePolygon(stack, out); break;
     }
 }
 
@@ -234,4 +244,4 @@ PlantAsset plantFromGrammar(const Grammar& grammar, const ModuleString& derived,
     return interpretPlant(applyInterpretation(grammar, derived), grammar.symbols, settings, surfaces);
 }
 
-}  // namespace lsys
+} // namespace lsys

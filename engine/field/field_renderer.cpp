@@ -158,7 +158,8 @@ void FieldRenderer::uploadInstances() {
     };
     for (uint32_t drawClass : {uint32_t(DRAW_BARK), uint32_t(DRAW_FOLIAGE)})
         for (uint32_t m = 0; m < pool.models.size(); ++m)
-            for (uint32_t lod = 0; lod < kMeshLodCount; ++lod) add(pool.models[m].meshes[lod][drawClass], drawClass, m, lod);
+            for (uint32_t lod = 0; lod < kMeshLodCount; ++lod)
+                add(pool.models[m].meshes[lod][drawClass], drawClass, m, lod);
     for (uint32_t m = 0; m < pool.models.size(); ++m)
         add(billboards_[pool.models[m].gpu.impostor.z - 1], DRAW_IMPOSTOR, m, LOD_IMPOSTOR);
 
@@ -309,11 +310,15 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
         Timed scope(cmd, timer, "plants");
         vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.bark);
-        if (naive) drawPlantsNaive(cmd, true, false);
-        else drawClassIndirect(cmd, ctx_, cull_, DRAW_BARK);
+        if (naive)
+            drawPlantsNaive(cmd, true, false);
+        else
+            drawClassIndirect(cmd, ctx_, cull_, DRAW_BARK);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.foliage);
-        if (naive) drawPlantsNaive(cmd, false, true);
-        else drawClassIndirect(cmd, ctx_, cull_, DRAW_FOLIAGE);
+        if (naive)
+            drawPlantsNaive(cmd, false, true);
+        else
+            drawClassIndirect(cmd, ctx_, cull_, DRAW_FOLIAGE);
     }
     {
         Timed scope(cmd, timer, "impostors");
@@ -398,12 +403,11 @@ FieldFrameStats FieldRenderer::readStats() const {
 uint64_t FieldRenderer::naiveTriangles() const {
     uint64_t triangles = 0;
     const PlantModelPool& pool = content_.models;
-    for (const PlantInstance& p : content_.plants) triangles += pool.models[pool.modelOf(p.species, p.variant)].triangles(LOD_FULL);
+    for (const PlantInstance& p : content_.plants)
+        triangles += pool.models[pool.modelOf(p.species, p.variant)].triangles(LOD_FULL);
     return triangles;
 }
 
-VkDeviceSize FieldRenderer::gpuBytes() const {
-    return resources_.bytes();
-}
+VkDeviceSize FieldRenderer::gpuBytes() const { return resources_.bytes(); }
 
 } // namespace pf

@@ -73,13 +73,13 @@ uint32_t atlasLayers(const GpuContext& ctx, const PlantModelPool& pool, const Im
 // Destination of the frames' resolves, source and destination of the mip
 // blits, sampled by the billboards.
 Image createAtlasImage(GpuResources& owner, uint32_t size, VkFormat format, uint32_t layers, uint32_t mips) {
-    return createImage(owner, {.extent = {size, size},
-                               .format = format,
-                               .usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                                        VK_IMAGE_USAGE_SAMPLED_BIT,
-                               .mipLevels = mips,
-                               .layers = layers,
-                               .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
+    return createImage(
+        owner, {.extent = {size, size},
+                .format = format,
+                .usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                .mipLevels = mips,
+                .layers = layers,
+                .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
 }
 
 // Both images with their full mip chains, and the billboards' sampler.
@@ -131,12 +131,12 @@ BakeTargets createBakeTargets(GpuResources& owner, uint32_t size) {
         owner, {.extent = {size, size}, .format = kAtlasColorFormat, .usage = usage, .samples = targets.samples});
     targets.normalDepth = createImage(
         owner, {.extent = {size, size}, .format = kAtlasNormalFormat, .usage = usage, .samples = targets.samples});
-    targets.depth = createImage(owner, {.extent = {size, size},
-                                        .format = kBakeDepthFormat,
-                                        .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
-                                                 VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                                        .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
-                                        .samples = targets.samples});
+    targets.depth = createImage(
+        owner, {.extent = {size, size},
+                .format = kBakeDepthFormat,
+                .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
+                .samples = targets.samples});
     return targets;
 }
 
@@ -182,16 +182,18 @@ void beginBakeFrame(VkCommandBuffer cmd, const BakeTargets& targets) {
     // Each frame clears the targets again: the previous frame's resolve
     // reads must be done before (write after read: execution only), and
     // its depth writes before the depth clear (write after write).
-    const ImageTransition toAttachment{
-        VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-        VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkImageMemoryBarrier2 depthToAttachment = atlasBarrier(
-        targets.depth, 0, 1, 1,
-        {VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-         VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-         VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
+    const ImageTransition toAttachment{VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                       VK_ACCESS_2_NONE,
+                                       VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                                       VK_IMAGE_LAYOUT_UNDEFINED,
+                                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkImageMemoryBarrier2 depthToAttachment =
+        atlasBarrier(targets.depth, 0, 1, 1,
+                     {VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
     depthToAttachment.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
     pipelineBarrier(cmd, {atlasBarrier(targets.color, 0, 1, 1, toAttachment),
                           atlasBarrier(targets.normalDepth, 0, 1, 1, toAttachment), depthToAttachment});
@@ -248,12 +250,14 @@ void drawBakeFrame(VkCommandBuffer cmd, const BakePipeline& bake, const PlantMod
 void resolveBakeFrame(VkCommandBuffer cmd, const BakeTargets& targets, const ImpostorAtlas& atlas, uint32_t layer) {
     vkCmdEndRendering(cmd);
     // The frame's attachment writes must land before the resolve reads them.
-    const ImageTransition toSource{
-        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-        VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
-    pipelineBarrier(cmd, {atlasBarrier(targets.color, 0, 1, 1, toSource),
-                          atlasBarrier(targets.normalDepth, 0, 1, 1, toSource)});
+    const ImageTransition toSource{VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                                   VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                   VK_ACCESS_2_TRANSFER_READ_BIT,
+                                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                   VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+    pipelineBarrier(
+        cmd, {atlasBarrier(targets.color, 0, 1, 1, toSource), atlasBarrier(targets.normalDepth, 0, 1, 1, toSource)});
     // A separate resolve rather than a resolve attachment on a layer view:
     // lavapipe resolves those into layer 0.
     const uint32_t size = targets.size;
@@ -278,9 +282,11 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
                       const BakePipeline& bake, const PlantModelPool& pool, const Buffer& indices) {
     // Level 0 of every layer receives one frame's resolve (or copy); its old
     // contents are discarded.
-    const ImageTransition toDestination{VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+    const ImageTransition toDestination{VK_PIPELINE_STAGE_2_NONE,
+                                        VK_ACCESS_2_NONE,
                                         VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                                        VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                                        VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                        VK_IMAGE_LAYOUT_UNDEFINED,
                                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
     pipelineBarrier(cmd, {atlasBarrier(atlas.color, 0, 1, atlas.layers, toDestination),
                           atlasBarrier(atlas.normalDepth, 0, 1, atlas.layers, toDestination)});
@@ -304,13 +310,15 @@ void recordMipChain(VkCommandBuffer cmd, const ImpostorAtlas& atlas) {
     const uint32_t layers = atlas.layers, mips = atlas.mipLevels, size = atlas.settings.frameSize;
     // The resolves into level 0 must be done before the first blit reads
     // it; the other levels hold nothing yet.
-    const ImageTransition resolvedToSource{
-        VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-        VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
-    const ImageTransition emptyToDestination{VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+    const ImageTransition resolvedToSource{VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                           VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                           VK_PIPELINE_STAGE_2_BLIT_BIT,
+                                           VK_ACCESS_2_TRANSFER_READ_BIT,
+                                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+    const ImageTransition emptyToDestination{VK_PIPELINE_STAGE_2_NONE,     VK_ACCESS_2_NONE,
                                              VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                             VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
+                                             VK_IMAGE_LAYOUT_UNDEFINED,    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
     std::vector<VkImageMemoryBarrier2> toBlit;
     for (const Image* image : {&atlas.color, &atlas.normalDepth}) {
         toBlit.push_back(atlasBarrier(*image, 0, 1, layers, resolvedToSource));
@@ -330,10 +338,9 @@ void recordMipChain(VkCommandBuffer cmd, const ImpostorAtlas& atlas) {
             vkCmdBlitImage(cmd, image->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image->image,
                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
         // This level is the next blit's source: its writes must land first.
-        const ImageTransition writtenToSource{VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                              VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-                                              VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                              VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+        const ImageTransition writtenToSource{
+            VK_PIPELINE_STAGE_2_BLIT_BIT,  VK_ACCESS_2_TRANSFER_WRITE_BIT,       VK_PIPELINE_STAGE_2_BLIT_BIT,
+            VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
         pipelineBarrier(cmd, {atlasBarrier(atlas.color, level, 1, layers, writtenToSource),
                               atlasBarrier(atlas.normalDepth, level, 1, layers, writtenToSource)});
     }
@@ -342,8 +349,10 @@ void recordMipChain(VkCommandBuffer cmd, const ImpostorAtlas& atlas) {
     // billboards sample them from fragment shaders.
     const ImageTransition toSampled{VK_PIPELINE_STAGE_2_BLIT_BIT,
                                     VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
-                                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+                                    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                    VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     pipelineBarrier(cmd, {atlasBarrier(atlas.color, 0, mips, layers, toSampled),
                           atlasBarrier(atlas.normalDepth, 0, mips, layers, toSampled)});
 }
@@ -357,18 +366,24 @@ std::vector<ImpostorOutline> readOutlines(const GpuContext& ctx, const ImpostorA
     GpuResources scratch(ctx);
     Buffer readback = createHostBuffer(scratch, layerBytes * atlas.layers, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-        const ImageTransition toSource{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
-                                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+        const ImageTransition toSource{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                       VK_ACCESS_2_NONE,
+                                       VK_PIPELINE_STAGE_2_COPY_BIT,
+                                       VK_ACCESS_2_TRANSFER_READ_BIT,
+                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
         pipelineBarrier(cmd, {atlasBarrier(atlas.color, mip, 1, atlas.layers, toSource)});
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, 0, atlas.layers};
         region.imageExtent = {size, size, 1};
         vkCmdCopyImageToBuffer(cmd, atlas.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1,
                                &region);
-        const ImageTransition toSampled{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-                                        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
-                                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+        const ImageTransition toSampled{VK_PIPELINE_STAGE_2_COPY_BIT,
+                                        VK_ACCESS_2_NONE,
+                                        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
         pipelineBarrier(cmd, {atlasBarrier(atlas.color, mip, 1, atlas.layers, toSampled)});
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
                       VK_ACCESS_2_HOST_READ_BIT);

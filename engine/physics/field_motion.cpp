@@ -18,8 +18,7 @@ SkeletonSet sharedSkeletons(const FieldContent& content) {
     for (uint32_t m = 0; m < pool.models.size(); ++m)
         for (uint32_t phase = 0; phase < phases; ++phase)
             addSkeleton(set, m, pool.models[m].firstJoint, pool.models[m].joints,
-                        along * (float(phase) * sharedPhaseSpacing(content.scene.physics)), 0.0f,
-                        1.0f);
+                        along * (float(phase) * sharedPhaseSpacing(content.scene.physics)), 0.0f, 1.0f);
     return set;
 }
 
@@ -30,7 +29,7 @@ std::vector<uint32_t> skeletonPerPlant(const FieldContent& content) {
     for (size_t i = 0; i < skeleton.size(); ++i) {
         const PlantInstance& p = content.plants[i];
         const uint32_t phase =
-            std::min(phases - 1, uint32_t(p.windPhase / (2.0f * std::numbers::pi_v<float>) * float(phases)));
+            std::min(phases - 1, uint32_t(p.windPhase / (2.0f * std::numbers::pi_v<float>)*float(phases)));
         skeleton[i] = content.models.modelOf(p.species, p.variant) * phases + phase;
     }
     return skeleton;
@@ -46,7 +45,6 @@ void copyWhole(VkCommandBuffer cmd, const Buffer& from, const Buffer& to) {
     vkCmdCopyBuffer(cmd, from.buffer, to.buffer, 1, &region);
 }
 
-
 // The near-plant changes of a frame: plants repointed (host-visible), own
 // skeletons started from their shared copy's states and poses.
 void applyNearChanges(const GpuContext& ctx, FieldMotion& motion, const NearChanges& changes) {
@@ -57,14 +55,15 @@ void applyNearChanges(const GpuContext& ctx, FieldMotion& motion, const NearChan
     std::vector<VkBufferCopy> states, poses;
     for (const auto& [own, shared] : changes.startFrom) {
         const uint32_t joints = skeletons[own].ids.z;
-        states.push_back({skeletons[shared].ids.w * sizeof(gpu::JointState), skeletons[own].ids.w * sizeof(gpu::JointState),
-                          joints * sizeof(gpu::JointState)});
-        poses.push_back({skeletons[shared].ids.w * sizeof(gpu::JointPose), skeletons[own].ids.w * sizeof(gpu::JointPose),
-                         joints * sizeof(gpu::JointPose)});
+        states.push_back({skeletons[shared].ids.w * sizeof(gpu::JointState),
+                          skeletons[own].ids.w * sizeof(gpu::JointState), joints * sizeof(gpu::JointState)});
+        poses.push_back({skeletons[shared].ids.w * sizeof(gpu::JointPose),
+                         skeletons[own].ids.w * sizeof(gpu::JointPose), joints * sizeof(gpu::JointPose)});
     }
     // Within one buffer: source and destination ranges never overlap (different skeletons).
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-        vkCmdCopyBuffer(cmd, motion.pass.states.buffer, motion.pass.states.buffer, uint32_t(states.size()), states.data());
+        vkCmdCopyBuffer(cmd, motion.pass.states.buffer, motion.pass.states.buffer, uint32_t(states.size()),
+                        states.data());
         vkCmdCopyBuffer(cmd, motion.pass.poses.buffer, motion.pass.poses.buffer, uint32_t(poses.size()), poses.data());
     });
 }
@@ -93,8 +92,8 @@ FieldMotion createFieldMotion(GpuResources& owner, const FieldContent& content) 
     return motion;
 }
 
-void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart,
-                        const glm::vec3& camera, bool realTime) {
+void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart, const glm::vec3& camera,
+                        bool realTime) {
     const double dt = motion.settings.subStep;
     // Whole sub-steps from time 0, so a time is reached the same way from anywhere.
     const uint64_t target = subStepsUntil(time, motion.settings);
@@ -111,7 +110,8 @@ void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time,
     }
     applyNearChanges(ctx, motion,
                      updateNearSkeletons(motion.near, motion.grid, motion.content->plants, motion.content->models,
-                                         motion.sharedOf, camera, static_cast<gpu::Skeleton*>(motion.pass.skeletons.mapped)));
+                                         motion.sharedOf, camera,
+                                         static_cast<gpu::Skeleton*>(motion.pass.skeletons.mapped)));
     if (realTime && !restart && target - motion.simulatedStep > kMaxFrameGapSubSteps)
         motion.simulatedStep = target - kMaxFrameGapSubSteps;
     uint64_t steps = target - motion.simulatedStep;

@@ -7,9 +7,9 @@
 // Impostors sway in their vertex shader instead.
 #pragma once
 
-#include "engine/scene/field_content.h"
 #include "engine/physics/near_skeletons.h"
 #include "engine/physics/physics_pass.h"
+#include "engine/scene/field_content.h"
 
 namespace pf {
 
@@ -26,16 +26,16 @@ inline constexpr uint32_t kMaxFrameGapSubSteps = 4 * kFrameSubSteps;
 struct FieldMotion {
     const FieldContent* content = nullptr; // outlives the motion (the renderer owns both)
     PhysicsPass pass;
-    Buffer instanceSkeleton; // host-visible uint per plant: the skeleton its vertices follow
+    Buffer instanceSkeleton;        // host-visible uint per plant: the skeleton its vertices follow
     std::vector<uint32_t> sharedOf; // per plant: the shared copy it follows when it has no own skeleton
     PlantGrid grid;
     NearSkeletons near;
-    Buffer restStates;       // copied over the states to restart at rest
+    Buffer restStates; // copied over the states to restart at rest
     Buffer restPoses;
     Wind wind;
     PhysicsSettings settings;
-    uint64_t simulatedStep = 0;  // sub-steps from time 0 the states will be at after the recorded ones
-    uint32_t frameSubSteps = 0;  // steps the next recordFieldMotion takes
+    uint64_t simulatedStep = 0; // sub-steps from time 0 the states will be at after the recorded ones
+    uint32_t frameSubSteps = 0; // steps the next recordFieldMotion takes
 };
 
 // What the motion creates is owned by `owner`.
@@ -47,8 +47,8 @@ FieldMotion createFieldMotion(GpuResources& owner, const FieldContent& content);
 // frame. Call while no frame is in flight.
 // Near plants are those around `camera`. `realTime` caps the steps between
 // frames (kMaxFrameGapSubSteps); captures and sequences simulate every step.
-void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart,
-                        const glm::vec3& camera, bool realTime);
+void advanceFieldMotion(const GpuContext& ctx, FieldMotion& motion, double time, bool restart, const glm::vec3& camera,
+                        bool realTime);
 // The physics and pose passes of the frame (timer scopes "physics", "pose").
 void recordFieldMotion(VkCommandBuffer cmd, const FieldMotion& motion, GpuTimer* timer = nullptr);
 

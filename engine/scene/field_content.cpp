@@ -58,7 +58,8 @@ void appendExplicit(const Scene& scene, const Heightfield& terrain, size_t speci
     for (size_t i = 0; i < species.placement.instances.size(); ++i) {
         const PlacedPlant& placed = species.placement.instances[i];
         PlantInstance plant;
-        plant.position = {placed.position.x, heightAt(terrain, placed.position.x, placed.position.y), placed.position.y};
+        plant.position = {placed.position.x, heightAt(terrain, placed.position.x, placed.position.y),
+                          placed.position.y};
         plant.rotation = glm::radians(placed.rotationDegrees);
         plant.scale = placed.scale;
         plant.species = uint32_t(speciesIndex);
@@ -81,7 +82,8 @@ std::vector<PlantInstance> placePlants(const Scene& scene, const Heightfield& te
     const std::vector<PlacementRule> rules = placementRules(scene);
     const uint64_t seed = placementSeed(scene, 0);
     std::vector<PlantInstance> generated;
-    if (!rules.empty()) generated = count ? scaleToCount(terrain, rules, *count, seed) : placeSpecies(terrain, rules, seed);
+    if (!rules.empty())
+        generated = count ? scaleToCount(terrain, rules, *count, seed) : placeSpecies(terrain, rules, seed);
 
     // Group by species in scene order: generated plants are already grouped
     // by rule, and rules follow scene order; explicit species slot in.

@@ -17,8 +17,9 @@ DescriptorBinding texelBuffer(uint32_t binding, VkShaderStageFlags stages, VkBuf
 }
 
 DescriptorBinding sampledImage(uint32_t binding, VkShaderStageFlags stages, VkSampler sampler, VkImageView view) {
-    return {binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages, VK_NULL_HANDLE, VK_NULL_HANDLE,
-            {sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
+    return {binding,        VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+            stages,         VK_NULL_HANDLE,
+            VK_NULL_HANDLE, {sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
 }
 
 VkDescriptorSetLayout createSetLayout(GpuResources& owner, DescriptorTable table) {
@@ -63,8 +64,7 @@ VkDescriptorSet createSet(GpuResources& owner, VkDescriptorSetLayout layout, Des
     return createSets(owner, layout, {&table, 1}).front();
 }
 
-VkPipelineLayout createPipelineLayout(GpuResources& owner, VkDescriptorSetLayout setLayout,
-                                      VkPushConstantRange push) {
+VkPipelineLayout createPipelineLayout(GpuResources& owner, VkDescriptorSetLayout setLayout, VkPushConstantRange push) {
     VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     info.setLayoutCount = 1;
     info.pSetLayouts = &setLayout;

@@ -22,8 +22,7 @@ Handle as(uint64_t handle) {
 
 } // namespace
 
-GpuResources::GpuResources(GpuResources&& other) noexcept
-    : ctx_(other.ctx_), owned_(std::exchange(other.owned_, {})) {}
+GpuResources::GpuResources(GpuResources&& other) noexcept : ctx_(other.ctx_), owned_(std::exchange(other.owned_, {})) {}
 
 GpuResources& GpuResources::operator=(GpuResources&& other) noexcept {
     if (this != &other) {

@@ -14,16 +14,26 @@ namespace pf {
 
 template <class Handle>
 constexpr VkObjectType kOwnedObjectType = VK_OBJECT_TYPE_UNKNOWN;
-template <> constexpr VkObjectType kOwnedObjectType<VkBuffer> = VK_OBJECT_TYPE_BUFFER;
-template <> constexpr VkObjectType kOwnedObjectType<VkBufferView> = VK_OBJECT_TYPE_BUFFER_VIEW;
-template <> constexpr VkObjectType kOwnedObjectType<VkImage> = VK_OBJECT_TYPE_IMAGE;
-template <> constexpr VkObjectType kOwnedObjectType<VkImageView> = VK_OBJECT_TYPE_IMAGE_VIEW;
-template <> constexpr VkObjectType kOwnedObjectType<VkSampler> = VK_OBJECT_TYPE_SAMPLER;
-template <> constexpr VkObjectType kOwnedObjectType<VkShaderModule> = VK_OBJECT_TYPE_SHADER_MODULE;
-template <> constexpr VkObjectType kOwnedObjectType<VkPipeline> = VK_OBJECT_TYPE_PIPELINE;
-template <> constexpr VkObjectType kOwnedObjectType<VkPipelineLayout> = VK_OBJECT_TYPE_PIPELINE_LAYOUT;
-template <> constexpr VkObjectType kOwnedObjectType<VkDescriptorSetLayout> = VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT;
-template <> constexpr VkObjectType kOwnedObjectType<VkDescriptorPool> = VK_OBJECT_TYPE_DESCRIPTOR_POOL;
+template <>
+constexpr VkObjectType kOwnedObjectType<VkBuffer> = VK_OBJECT_TYPE_BUFFER;
+template <>
+constexpr VkObjectType kOwnedObjectType<VkBufferView> = VK_OBJECT_TYPE_BUFFER_VIEW;
+template <>
+constexpr VkObjectType kOwnedObjectType<VkImage> = VK_OBJECT_TYPE_IMAGE;
+template <>
+constexpr VkObjectType kOwnedObjectType<VkImageView> = VK_OBJECT_TYPE_IMAGE_VIEW;
+template <>
+constexpr VkObjectType kOwnedObjectType<VkSampler> = VK_OBJECT_TYPE_SAMPLER;
+template <>
+constexpr VkObjectType kOwnedObjectType<VkShaderModule> = VK_OBJECT_TYPE_SHADER_MODULE;
+template <>
+constexpr VkObjectType kOwnedObjectType<VkPipeline> = VK_OBJECT_TYPE_PIPELINE;
+template <>
+constexpr VkObjectType kOwnedObjectType<VkPipelineLayout> = VK_OBJECT_TYPE_PIPELINE_LAYOUT;
+template <>
+constexpr VkObjectType kOwnedObjectType<VkDescriptorSetLayout> = VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT;
+template <>
+constexpr VkObjectType kOwnedObjectType<VkDescriptorPool> = VK_OBJECT_TYPE_DESCRIPTOR_POOL;
 
 class GpuResources {
 public:

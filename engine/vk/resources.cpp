@@ -147,7 +147,8 @@ void submitAndWait(const GpuContext& ctx, const std::function<void(VkCommandBuff
     vkFreeCommandBuffers(ctx.device, ctx.commandPool, 1, &cmd);
 }
 
-VkImageMemoryBarrier2 imageMemoryBarrier(VkImage image, const VkImageSubresourceRange& range, const ImageTransition& t) {
+VkImageMemoryBarrier2 imageMemoryBarrier(VkImage image, const VkImageSubresourceRange& range,
+                                         const ImageTransition& t) {
     VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
     barrier.srcStageMask = t.srcStage;
     barrier.srcAccessMask = t.srcAccess;

@@ -142,7 +142,8 @@ TEST(PlantbenchCli, SmallSweepWritesJsonAndCsvWithEveryPass) {
     const fs::path json = dir / "sweep.json", csv = dir / "sweep.csv";
     const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
                                        " --validation --counts 50,200 --frames 2 --warmup 1 --size 160x90"
-                                       " --compare naive --json " + json.string() + " --csv " + csv.string());
+                                       " --compare naive --json " +
+                                       json.string() + " --csv " + csv.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("ratio"), std::string::npos) << "no summary table:\n" << r.output;
@@ -164,7 +165,8 @@ TEST(PlantbenchCli, SmallSweepWritesJsonAndCsvWithEveryPass) {
         for (const char* statistic : {"median", "p95"}) {
             const std::string name = "gpu_" + pass + "_ms_" + statistic;
             ASSERT_LT(column(name), rows[0].size()) << name;
-            for (size_t i = 1; i < rows.size(); ++i) EXPECT_FALSE(rows[i][column(name)].empty()) << name << " row " << i;
+            for (size_t i = 1; i < rows.size(); ++i)
+                EXPECT_FALSE(rows[i][column(name)].empty()) << name << " row " << i;
         }
     ASSERT_LT(column("joints_simulated"), rows[0].size());
     EXPECT_EQ(rows[1][0], "50");
@@ -179,8 +181,8 @@ TEST(PlantbenchCli, SmallSweepWritesJsonAndCsvWithEveryPass) {
 
 TEST(PlantbenchCli, DefaultSceneSweepMatchesCounts) {
     const fs::path json = scratchDir("default") / "sweep.json";
-    const CommandResult r = runCommand(kPlantbench + " --counts 100,300 --frames 2 --warmup 1 --size 160x90 --json " +
-                                       json.string());
+    const CommandResult r =
+        runCommand(kPlantbench + " --counts 100,300 --frames 2 --warmup 1 --size 160x90 --json " + json.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     expectWellFormedSweep(nlohmann::json::parse(readText(json)), kDefaultScene, {100, 300}, false);
 }
@@ -189,7 +191,8 @@ TEST(PlantbenchCli, NaiveAboveNaiveMaxIsSkippedWithANote) {
     const fs::path json = scratchDir("naive-max") / "sweep.json";
     const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
                                        " --counts 30,60 --frames 1 --warmup 0 --size 64x64 --compare naive"
-                                       " --naive-max 40 --json " + json.string());
+                                       " --naive-max 40 --json " +
+                                       json.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const nlohmann::json j = nlohmann::json::parse(readText(json));
     EXPECT_TRUE(j["results"][0]["naive"].is_object());
@@ -202,9 +205,9 @@ TEST(PlantbenchCli, PlotWritesReadablePng) {
     ASSERT_EQ(runCommand("command -v gnuplot").exitCode, 0) << "gnuplot is missing: run tools/deps.sh";
     const fs::path dir = scratchDir("plot");
     const fs::path png = dir / "sweep.png";
-    const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
-                                       " --counts 20,40 --frames 1 --warmup 0 --size 64x64 --compare naive --plot " +
-                                       png.string());
+    const CommandResult r =
+        runCommand(kPlantbench + " " + kSmallScene +
+                   " --counts 20,40 --frames 1 --warmup 0 --size 64x64 --compare naive --plot " + png.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const RgbaImage image = readPng(png.string());
     EXPECT_GE(image.width, 800u);
@@ -243,8 +246,8 @@ TEST(PlantbenchCli, MalformedSceneFailsClearlyWithoutWriting) {
     const fs::path dir = scratchDir("bad-scene");
     const fs::path scene = dir / "broken.json";
     std::ofstream(scene) << "{\n  \"species\": [ { \"name\": 3 } ]\n}\n";
-    const CommandResult r = runCommand(kPlantbench + " " + scene.string() + " --counts 10 --json " +
-                                       (dir / "out.json").string());
+    const CommandResult r =
+        runCommand(kPlantbench + " " + scene.string() + " --counts 10 --json " + (dir / "out.json").string());
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("broken.json:"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(dir / "out.json"));

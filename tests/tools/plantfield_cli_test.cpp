@@ -52,7 +52,8 @@ TEST(PlantfieldCli, CaptureWritesPngOfRequestedSize) {
 TEST(PlantfieldCli, SameInputsGiveBitIdenticalPng) {
     const fs::path dir = scratchDir("determinism");
     for (const char* name : {"a.png", "b.png"})
-        ASSERT_EQ(runCommand(kPlantfield + " --capture " + (dir / name).string() + " --size 320x200 --time 2").exitCode, 0);
+        ASSERT_EQ(runCommand(kPlantfield + " --capture " + (dir / name).string() + " --size 320x200 --time 2").exitCode,
+                  0);
     const auto read = [](const fs::path& p) {
         std::ifstream in(p, std::ios::binary);
         return std::string(std::istreambuf_iterator<char>(in), {});
@@ -66,7 +67,8 @@ class PlantfieldBadFlags : public ::testing::TestWithParam<BadInvocation> {};
 
 TEST_P(PlantfieldBadFlags, FailsClearlyWithoutWriting) {
     // One folder per case: ctest runs the cases in parallel.
-    expectFailsClearlyWithoutWriting(kPlantfield, GetParam(), scratchDir(std::string("bad-") + GetParam().name), "out.png");
+    expectFailsClearlyWithoutWriting(kPlantfield, GetParam(), scratchDir(std::string("bad-") + GetParam().name),
+                                     "out.png");
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -22,7 +22,8 @@ TEST_F(GpuTimerTest, TwoScopesAroundFillsReportTimesInOrder) {
         GTEST_SKIP() << "the queue family writes no timestamps";
     }
     constexpr VkDeviceSize kBytes = 16u << 20;
-    Buffer buffer = createBuffer(resources, kBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    Buffer buffer =
+        createBuffer(resources, kBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
 
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
         resetGpuTimer(cmd, timer);

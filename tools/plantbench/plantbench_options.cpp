@@ -2,8 +2,8 @@
 
 #include "tools/plantfield/options.h"
 
-#include "engine/vk/device.h"
 #include "engine/image/image.h"
+#include "engine/vk/device.h"
 #include "shaders/field_layouts.h"
 
 #include <CLI/CLI.hpp>
@@ -38,8 +38,8 @@ std::optional<std::vector<uint64_t>> parseCounts(const std::string& text, uint64
             return std::nullopt;
         }
         if (count > maxCount) {
-            *problem = std::to_string(count) + " is above the most plants a field can hold (" +
-                       std::to_string(maxCount) + ")";
+            *problem =
+                std::to_string(count) + " is above the most plants a field can hold (" + std::to_string(maxCount) + ")";
             return std::nullopt;
         }
         counts.push_back(count);
@@ -84,21 +84,26 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     app.add_option("scene", o.scenePath, "Scene file (.json)")->default_str("data/scenes/default.json");
     app.add_option("--counts", countsText, "Plant counts to measure, comma-separated, e.g. 1000,10000,100000")
         ->required();
-    app.add_option("--frames", o.frames, "Measured frames per count")->check(CLI::Range(1u, 100000u))
+    app.add_option("--frames", o.frames, "Measured frames per count")
+        ->check(CLI::Range(1u, 100000u))
         ->default_val(o.frames);
     app.add_option("--warmup", o.warmup, "Frames rendered before measuring (shaders compile on the first)")
-        ->check(CLI::Range(0u, 100000u))->default_val(o.warmup);
+        ->check(CLI::Range(0u, 100000u))
+        ->default_val(o.warmup);
     app.add_option("--size", sizeText, "Render size as WIDTHxHEIGHT (1 to 16384 per side)")->default_str(sizeText);
-    app.add_option("--samples", o.samples, "Multisample anti-aliasing samples")->check(CLI::IsMember({1, 2, 4, 8}))
+    app.add_option("--samples", o.samples, "Multisample anti-aliasing samples")
+        ->check(CLI::IsMember({1, 2, 4, 8}))
         ->default_val(o.samples);
     app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
     app.add_option("--time", o.time, "Scene time of the camera on the scene's camera path, seconds")
-        ->check(CLI::NonNegativeNumber)->default_val(o.time);
+        ->check(CLI::NonNegativeNumber)
+        ->default_val(o.time);
     std::string compare;
     app.add_option("--compare", compare, "Also render every count the naive way (full detail, one draw per plant)")
         ->check(CLI::IsMember({"naive"}));
     app.add_option("--naive-max", o.naiveMax, "Skip the naive path above this many plants")
-        ->check(CLI::PositiveNumber)->default_val(o.naiveMax);
+        ->check(CLI::PositiveNumber)
+        ->default_val(o.naiveMax);
     app.add_option("--json", o.jsonPath, "Write the results as JSON to this file");
     app.add_option("--csv", o.csvPath, "Write one row per count as CSV to this file");
     app.add_option("--plot", o.plotPath, "Draw ms per pass against plants (log-log) to this PNG with gnuplot");
@@ -129,7 +134,9 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     if (!counts) return fail("invalid --counts '" + countsText + "': " + problem);
     o.counts = *counts;
     const std::optional<ImageSize> size = parseImageSize(sizeText);
-    if (!size) return fail("invalid --size '" + sizeText + "': expected WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720");
+    if (!size)
+        return fail("invalid --size '" + sizeText +
+                    "': expected WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720");
     o.width = size->width;
     o.height = size->height;
     o.compareNaive = compare == "naive";

@@ -40,9 +40,7 @@ std::optional<double> medianOf(const std::optional<Spread>& s) {
     return s ? std::optional<double>(s->median) : std::nullopt;
 }
 
-std::optional<double> p95Of(const std::optional<Spread>& s) {
-    return s ? std::optional<double>(s->p95) : std::nullopt;
-}
+std::optional<double> p95Of(const std::optional<Spread>& s) { return s ? std::optional<double>(s->p95) : std::nullopt; }
 
 nlohmann::json spreadJson(const std::optional<Spread>& s) {
     if (!s) return nullptr;
@@ -148,7 +146,8 @@ std::string sweepCsv(const SweepResult& result) {
     std::ostringstream csv;
     csv << "count,instances,frame_ms_median,frame_ms_p95,cpu_ms_median,cpu_ms_p95";
     for (const char* pass : kBenchPasses) csv << ",gpu_" << pass << "_ms_median,gpu_" << pass << "_ms_p95";
-    csv << ",plants_full,plants_reduced,plants_impostor,culled,triangles,joints_simulated,draws_bark,draws_foliage,draws_impostor"
+    csv << ",plants_full,plants_reduced,plants_impostor,culled,triangles,joints_simulated,draws_bark,draws_foliage,"
+           "draws_impostor"
            ",gpu_memory_bytes,naive_frame_ms_median,naive_frame_ms_p95,naive_triangles,ratio\n";
     auto ms = [](const std::optional<double>& v) { return v ? fixed(*v, 4) : std::string(); };
     for (const CountResult& r : result.counts) {

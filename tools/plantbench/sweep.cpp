@@ -25,9 +25,7 @@ std::optional<Spread> spreadOf(std::vector<double> samples) {
     return s;
 }
 
-bool nestedInColour(size_t pass) {
-    return pass < std::size(kFieldPasses) && nestedInColourPass(kFieldPasses[pass]);
-}
+bool nestedInColour(size_t pass) { return pass < std::size(kFieldPasses) && nestedInColourPass(kFieldPasses[pass]); }
 
 namespace {
 
@@ -77,9 +75,9 @@ constexpr double kFrameSeconds = 1.0 / 60.0;
 
 // Warm-up then measured frames of one path, every frame from the same camera
 // while the scene time runs on from `view.time`, so the physics has steps to take.
-PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRenderer& renderer,
-                      FrameResources& frame, const FieldView& view, Path path, const SweepProgress& progress,
-                      double progressStart, double progressSpan) {
+PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRenderer& renderer, FrameResources& frame,
+                      const FieldView& view, Path path, const SweepProgress& progress, double progressStart,
+                      double progressSpan) {
     std::vector<double> frameMs, cpuMs;
     std::array<std::vector<double>, kPassCount> gpuMs;
     const uint32_t all = o.warmup + o.frames;
@@ -124,15 +122,17 @@ void refuseIf(const std::string& problem) {
     if (!problem.empty()) throw std::runtime_error(problem);
 }
 
-CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scene& scene, uint64_t count,
-                         bool budget, const HeapCapacity& heap, const SweepProgress& progress) {
+CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scene& scene, uint64_t count, bool budget,
+                         const HeapCapacity& heap, const SweepProgress& progress) {
     CountResult r;
     r.count = count;
     const Clock::time_point buildStart = Clock::now();
-    FieldContent content = buildFieldContent(scene, size_t(count), [&](size_t done, size_t all, const std::string& name) {
-        showProgress(progress, 0.0, "building plant models " + std::to_string(done) + "/" + std::to_string(all) +
-                                        " (" + name + ")");
-    });
+    FieldContent content =
+        buildFieldContent(scene, size_t(count), [&](size_t done, size_t all, const std::string& name) {
+            showProgress(progress, 0.0,
+                         "building plant models " + std::to_string(done) + "/" + std::to_string(all) + " (" + name +
+                             ")");
+        });
     r.buildSeconds = std::chrono::duration<double>(Clock::now() - buildStart).count();
     // Again with the model pool's size, now known.
     refuseIf(gpuMemoryProblem(count, estimatedFieldBytes(count, &content.models, o.width, o.height, o.samples),
@@ -159,8 +159,8 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
         r.naive = measurePath(o, ctx, renderer, frame, view, Path::Naive, progress, drivenSpan, 1.0 - drivenSpan);
         r.naiveTriangles = renderer.naiveTriangles();
     } else if (o.compareNaive) {
-        r.note = "naive skipped: " + std::to_string(count) + " plants is above --naive-max " +
-                 std::to_string(o.naiveMax);
+        r.note =
+            "naive skipped: " + std::to_string(count) + " plants is above --naive-max " + std::to_string(o.naiveMax);
     }
     return r;
 }
@@ -196,10 +196,10 @@ void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, S
                                      " plants the host ran out of memory: measure fewer plants");
         } catch (const std::runtime_error& e) {
             const bool outOfGpuMemory = std::strstr(e.what(), "VK_ERROR_OUT_OF_DEVICE_MEMORY") != nullptr;
-            throw std::runtime_error("at " + std::to_string(o.counts[i]) + " plants " +
-                                     (outOfGpuMemory ? "the device ran out of GPU memory (measure fewer plants): "
-                                                     : "the frame failed: ") +
-                                     e.what());
+            throw std::runtime_error(
+                "at " + std::to_string(o.counts[i]) + " plants " +
+                (outOfGpuMemory ? "the device ran out of GPU memory (measure fewer plants): " : "the frame failed: ") +
+                e.what());
         }
         finishCount(progress, result.counts.back());
     }

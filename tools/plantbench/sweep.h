@@ -6,9 +6,9 @@
 
 #include "plantbench_options.h"
 
-#include "engine/vk/device.h"
 #include "engine/field/field_renderer.h"
 #include "engine/scene/scene.h"
+#include "engine/vk/device.h"
 
 #include <algorithm>
 #include <array>
@@ -44,22 +44,22 @@ std::optional<Spread> spreadOf(std::vector<double> samples);
 
 // What one path (GPU-driven or naive) measured over its frames.
 struct PathTimes {
-    Spread frameMs; // wall time of a frame: set the view, record, submit, wait
-    Spread cpuMs;   // host time to set the view and record the command buffer
+    Spread frameMs;                                      // wall time of a frame: set the view, record, submit, wait
+    Spread cpuMs;                                        // host time to set the view and record the command buffer
     std::array<std::optional<Spread>, kPassCount> gpuMs; // per kBenchPasses entry
 };
 
 struct CountResult {
-    uint64_t count = 0;              // requested
-    PathTimes driven;                // the GPU-driven frame (FieldRenderer::record)
-    FieldFrameStats stats;           // of the last measured GPU-driven frame
-    uint64_t gpuMemoryBytes = 0;     // after the frames, from the sweep's memory source
-    uint64_t rendererBytes = 0;      // FieldRenderer::gpuBytes()
-    std::optional<PathTimes> naive;  // with --compare naive, unless skipped
+    uint64_t count = 0;             // requested
+    PathTimes driven;               // the GPU-driven frame (FieldRenderer::record)
+    FieldFrameStats stats;          // of the last measured GPU-driven frame
+    uint64_t gpuMemoryBytes = 0;    // after the frames, from the sweep's memory source
+    uint64_t rendererBytes = 0;     // FieldRenderer::gpuBytes()
+    std::optional<PathTimes> naive; // with --compare naive, unless skipped
     uint64_t naiveTriangles = 0;
-    uint64_t jointsSimulated = 0;    // FieldRenderer::simulatedJoints(): joints the physics pass steps
-    std::string note;                // why naive was skipped, or empty
-    double buildSeconds = 0.0;       // CPU build of the field (not part of any frame)
+    uint64_t jointsSimulated = 0; // FieldRenderer::simulatedJoints(): joints the physics pass steps
+    std::string note;             // why naive was skipped, or empty
+    double buildSeconds = 0.0;    // CPU build of the field (not part of any frame)
 };
 
 struct SweepResult {

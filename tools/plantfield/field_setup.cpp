@@ -37,8 +37,8 @@ FieldContent loadFieldContent(const PlantfieldOptions& o) {
     });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "plantfield: %s: %zu plants of %zu species, %zu models, built in %.1f s\n",
-                 o.scenePath.c_str(), content.plants.size(), content.scene.species.size(),
-                 content.models.models.size(), seconds);
+                 o.scenePath.c_str(), content.plants.size(), content.scene.species.size(), content.models.models.size(),
+                 seconds);
     return content;
 }
 

@@ -2,9 +2,9 @@
 #include "field_setup.h"
 #include "modes.h"
 
+#include "engine/image/image.h"
 #include "engine/vk/capture.h"
 #include "engine/vk/gpu_timer.h"
-#include "engine/image/image.h"
 
 #include <nlohmann/json.hpp>
 
@@ -19,8 +19,7 @@ namespace pf {
 namespace {
 
 nlohmann::json statsJson(const PlantfieldOptions& o, const GpuContext& ctx, const FieldRenderer& renderer,
-                         const FieldFrameStats& stats, const std::vector<ScopeTime>& gpu, double time,
-                         double wallMs) {
+                         const FieldFrameStats& stats, const std::vector<ScopeTime>& gpu, double time, double wallMs) {
     const uint32_t drawn = stats.plantsPerLod[0] + stats.plantsPerLod[1] + stats.plantsPerLod[2];
     nlohmann::json j;
     j["scene"] = o.scenePath;
@@ -81,9 +80,8 @@ int runHeadless(const PlantfieldOptions& o) {
             time = o.time + i * step;
             renderer.setView(pathView(o, scene, time, i == 0 ? 0.0 : step, i == 0), extent);
             const auto start = std::chrono::steady_clock::now();
-            const RgbaImage image = captureFrame(ctx, target, [&](VkCommandBuffer cmd, const RenderTarget& t) {
-                renderer.record(cmd, t, &timer);
-            });
+            const RgbaImage image = captureFrame(
+                ctx, target, [&](VkCommandBuffer cmd, const RenderTarget& t) { renderer.record(cmd, t, &timer); });
             wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             if (!o.outDir.empty()) {
                 writePng(framePath(o.outDir, i), image);
@@ -95,7 +93,8 @@ int runHeadless(const PlantfieldOptions& o) {
         const FieldFrameStats stats = renderer.readStats();
         if (o.stats)
             std::cout << statsJson(o, ctx, renderer, stats, readGpuTimer(ctx, timer), time, wallMs).dump(2) << "\n";
-        std::fprintf(stderr, "plantfield: %ux%u on %s: %u plants, %u full, %u reduced, %u impostors, %.1f M triangles%s%s\n",
+        std::fprintf(stderr,
+                     "plantfield: %ux%u on %s: %u plants, %u full, %u reduced, %u impostors, %.1f M triangles%s%s\n",
                      o.size.width, o.size.height, ctx.properties.deviceName, stats.instances, stats.plantsPerLod[0],
                      stats.plantsPerLod[1], stats.plantsPerLod[2], double(stats.triangles) / 1e6,
                      o.capturePath.empty() ? "" : " -> ", o.capturePath.c_str());
