@@ -1,0 +1,422 @@
+// The impostor bake (impostor_atlas.h): every model drawn from every frame
+// direction into MSAA targets, resolved into its atlas layers, the mip
+// chains blitted, and the outlines read back.
+#include "engine/field/impostor_atlas.h"
+
+#include "engine/vk/descriptors.h"
+#include "engine/vk/pipeline.h"
+#include "shaders/impostor_bake_frag.spv.h"
+#include "shaders/impostor_bake_vert.spv.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pf {
+namespace {
+
+constexpr VkFormat kAtlasColorFormat = VK_FORMAT_R8G8B8A8_SRGB;
+constexpr VkFormat kAtlasNormalFormat = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat kBakeDepthFormat = VK_FORMAT_D32_SFLOAT;
+constexpr VkSampleCountFlagBits kBakeSamples = VK_SAMPLE_COUNT_4_BIT;
+
+uint32_t mipCount(uint32_t size) {
+    uint32_t levels = 1;
+    while (size > 1) size /= 2, ++levels;
+    return levels;
+}
+
+uint32_t quadsOf(BillboardKind kind) {
+    switch (kind) {
+    case BillboardKind::Single: return 1;
+    case BillboardKind::Double: return 2;
+    case BillboardKind::Triple: return 3;
+    }
+    return 2;
+}
+
+// 4× MSAA where the device has it for both formats and depth, else none.
+VkSampleCountFlagBits bakeSamples(const GpuContext& ctx) {
+    const VkPhysicalDeviceLimits& limits = ctx.properties.limits;
+    VkSampleCountFlags supported = limits.framebufferColorSampleCounts & limits.framebufferDepthSampleCounts;
+    return (supported & kBakeSamples) ? kBakeSamples : VK_SAMPLE_COUNT_1_BIT;
+}
+
+VkImageMemoryBarrier2 atlasBarrier(const Image& image, uint32_t baseMip, uint32_t mips, uint32_t layers,
+                                   const ImageTransition& t) {
+    return imageMemoryBarrier(image.image, {VK_IMAGE_ASPECT_COLOR_BIT, baseMip, mips, 0, layers}, t);
+}
+
+void pipelineBarrier(VkCommandBuffer cmd, const std::vector<VkImageMemoryBarrier2>& images) {
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.imageMemoryBarrierCount = uint32_t(images.size());
+    dep.pImageMemoryBarriers = images.data();
+    vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+// The atlas's layer count, after checking the atlas fits the device.
+uint32_t atlasLayers(const GpuContext& ctx, const PlantModelPool& pool, const ImpostorSettings& settings) {
+    if (settings.frames == 0 || settings.frameSize == 0)
+        throw std::runtime_error("impostor atlas: frames and frameSize must be positive");
+    const uint64_t layerCount = uint64_t(pool.models.size()) * settings.frames;
+    if (layerCount == 0) throw std::runtime_error("impostor atlas: the pool has no models");
+    if (layerCount > ctx.properties.limits.maxImageArrayLayers)
+        throw std::runtime_error("impostor atlas: " + std::to_string(layerCount) + " layers exceed the device's " +
+                                 std::to_string(ctx.properties.limits.maxImageArrayLayers));
+    if (settings.frameSize > ctx.properties.limits.maxImageDimension2D)
+        throw std::runtime_error("impostor atlas: frameSize " + std::to_string(settings.frameSize) +
+                                 " exceeds the device's image limit");
+    return uint32_t(layerCount);
+}
+
+// Destination of the frames' resolves, source and destination of the mip
+// blits, sampled by the billboards.
+Image createAtlasImage(GpuResources& owner, uint32_t size, VkFormat format, uint32_t layers, uint32_t mips) {
+    return createImage(
+        owner, {.extent = {size, size},
+                .format = format,
+                .usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                .mipLevels = mips,
+                .layers = layers,
+                .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
+}
+
+// Both images with their full mip chains, and the billboards' sampler.
+ImpostorAtlas createAtlas(GpuResources& owner, const ImpostorSettings& settings, uint32_t layers) {
+    ImpostorAtlas atlas;
+    atlas.settings = settings;
+    atlas.layers = layers;
+    atlas.mipLevels = mipCount(settings.frameSize);
+    atlas.color = createAtlasImage(owner, settings.frameSize, kAtlasColorFormat, layers, atlas.mipLevels);
+    atlas.normalDepth = createAtlasImage(owner, settings.frameSize, kAtlasNormalFormat, layers, atlas.mipLevels);
+
+    VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    samplerInfo.magFilter = VK_FILTER_LINEAR;
+    samplerInfo.minFilter = VK_FILTER_LINEAR;
+    samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    samplerInfo.maxLod = VK_LOD_CLAMP_NONE;
+    atlas.sampler = createSampler(owner, samplerInfo);
+    return atlas;
+}
+
+// Each model's first layer, frames, quads per billboard and baked box.
+void assignImpostorLayers(PlantModelPool& pool, const ImpostorSettings& settings) {
+    for (size_t m = 0; m < pool.models.size(); ++m) {
+        gpu::PlantModel& model = pool.models[m].gpu;
+        model.impostor = {uint32_t(m) * settings.frames, settings.frames, quadsOf(pool.models[m].billboard), 0};
+        model.impostorQuad = impostorQuadOf(model);
+    }
+}
+
+// The images every frame is drawn into (MSAA when the device has it), then
+// resolved or copied into the frame's layer.
+struct BakeTargets {
+    Image color;
+    Image normalDepth;
+    Image depth;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    uint32_t size = 0;
+};
+
+BakeTargets createBakeTargets(GpuResources& owner, uint32_t size) {
+    BakeTargets targets;
+    targets.samples = bakeSamples(owner.ctx());
+    targets.size = size;
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    targets.color = createImage(
+        owner, {.extent = {size, size}, .format = kAtlasColorFormat, .usage = usage, .samples = targets.samples});
+    targets.normalDepth = createImage(
+        owner, {.extent = {size, size}, .format = kAtlasNormalFormat, .usage = usage, .samples = targets.samples});
+    targets.depth = createImage(
+        owner, {.extent = {size, size},
+                .format = kBakeDepthFormat,
+                .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
+                .samples = targets.samples});
+    return targets;
+}
+
+// shaders/impostor_bake.vert and .frag reading the vertex pool, with the
+// frame's view as push constants: two colour attachments (albedo, normal +
+// depth), depth test, MSAA; the cull mode is dynamic: back faces for bark,
+// none for two-sided foliage.
+struct BakePipeline {
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+};
+
+BakePipeline createBakePipeline(GpuResources& owner, const Buffer& vertices, VkSampleCountFlagBits samples) {
+    const DescriptorBinding table[] = {
+        storageBuffer(IMPOSTOR_BAKE_BINDING_VERTICES, VK_SHADER_STAGE_VERTEX_BIT, vertices)};
+    const VkDescriptorSetLayout setLayout = createSetLayout(owner, table);
+    BakePipeline bake;
+    bake.set = createSet(owner, setLayout, table);
+    bake.layout =
+        createPipelineLayout(owner, setLayout, {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(gpu::ImpostorBakePush)});
+
+    GpuResources modules(owner.ctx());
+    GraphicsPipelineDesc desc;
+    desc.vertex = createShaderModule(modules, spirv_impostor_bake_vert);
+    desc.fragment = createShaderModule(modules, spirv_impostor_bake_frag);
+    desc.layout = bake.layout;
+    desc.colorFormat = kAtlasColorFormat;
+    desc.secondColorFormat = kAtlasNormalFormat;
+    desc.depthFormat = kBakeDepthFormat;
+    desc.samples = samples;
+    desc.dynamicCullMode = true;
+    // The bake projection is a right-handed view with +y at row 0, so
+    // triangles counter-clockwise seen from outside stay counter-clockwise
+    // in the upright frame.
+    desc.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    desc.depthCompare = VK_COMPARE_OP_LESS;
+    bake.pipeline = createGraphicsPipeline(owner, desc);
+    return bake;
+}
+
+void beginBakeFrame(VkCommandBuffer cmd, const BakeTargets& targets) {
+    // Each frame clears the targets again: the previous frame's resolve
+    // reads must be done before (write after read: execution only), and
+    // its depth writes before the depth clear (write after write).
+    const ImageTransition toAttachment{VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                       VK_ACCESS_2_NONE,
+                                       VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                                       VK_IMAGE_LAYOUT_UNDEFINED,
+                                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkImageMemoryBarrier2 depthToAttachment =
+        atlasBarrier(targets.depth, 0, 1, 1,
+                     {VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
+    depthToAttachment.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+    pipelineBarrier(cmd, {atlasBarrier(targets.color, 0, 1, 1, toAttachment),
+                          atlasBarrier(targets.normalDepth, 0, 1, 1, toAttachment), depthToAttachment});
+
+    VkRenderingAttachmentInfo colors[2]{};
+    const VkImageView views[2] = {targets.color.view, targets.normalDepth.view};
+    for (int i = 0; i < 2; ++i) {
+        colors[i] = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        colors[i].imageView = views[i];
+        colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        colors[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}}; // background: coverage 0
+    }
+    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depth.imageView = targets.depth.view;
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    depth.clearValue.depthStencil = {1.0f, 0};
+    const VkRect2D area{{0, 0}, {targets.size, targets.size}};
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = area;
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 2;
+    rendering.pColorAttachments = colors;
+    rendering.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &rendering);
+    const VkViewport viewport{0.0f, 0.0f, float(targets.size), float(targets.size), 0.0f, 1.0f};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &area);
+}
+
+// Frame f of a model: its LOD0 mesh seen from the frame's direction.
+void drawBakeFrame(VkCommandBuffer cmd, const BakePipeline& bake, const PlantModelInfo& model, uint32_t f,
+                   uint32_t frames) {
+    const glm::vec4 quad = model.gpu.impostorQuad;
+    gpu::ImpostorBakePush push;
+    push.right = glm::vec4(impostorRightAxis(f, frames) / quad.x, 0.0f);
+    push.toView = glm::vec4(impostorViewDirection(f, frames) / quad.w, 0.0f);
+    push.height = {quad.y, 1.0f / (quad.z - quad.y), 0.0f, 0.0f};
+    vkCmdPushConstants(cmd, bake.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(push), &push);
+    const VkCullModeFlags cull[kMeshClassCount] = {VK_CULL_MODE_BACK_BIT, VK_CULL_MODE_NONE};
+    for (uint32_t c = 0; c < kMeshClassCount; ++c) {
+        const MeshRange& mesh = model.meshes[LOD_FULL][c];
+        if (mesh.indexCount == 0) continue;
+        vkCmdSetCullMode(cmd, cull[c]);
+        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, mesh.firstIndex, int32_t(mesh.vertexOffset), 0);
+    }
+}
+
+// Ends the frame and resolves (or copies) both targets into mip 0 of
+// `layer`, which is in TRANSFER_DST_OPTIMAL.
+void resolveBakeFrame(VkCommandBuffer cmd, const BakeTargets& targets, const ImpostorAtlas& atlas, uint32_t layer) {
+    vkCmdEndRendering(cmd);
+    // The frame's attachment writes must land before the resolve reads them.
+    const ImageTransition toSource{VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                                   VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                   VK_ACCESS_2_TRANSFER_READ_BIT,
+                                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                   VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+    pipelineBarrier(
+        cmd, {atlasBarrier(targets.color, 0, 1, 1, toSource), atlasBarrier(targets.normalDepth, 0, 1, 1, toSource)});
+    // A separate resolve rather than a resolve attachment on a layer view:
+    // lavapipe resolves those into layer 0.
+    const uint32_t size = targets.size;
+    for (const auto& [target, image] :
+         {std::pair{&targets.color, &atlas.color}, std::pair{&targets.normalDepth, &atlas.normalDepth}}) {
+        const VkImageSubresourceLayers src{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        const VkImageSubresourceLayers dst{VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
+        if (targets.samples != VK_SAMPLE_COUNT_1_BIT) {
+            VkImageResolve region{src, {}, dst, {}, {size, size, 1}};
+            vkCmdResolveImage(cmd, target->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image->image,
+                              VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        } else {
+            VkImageCopy region{src, {}, dst, {}, {size, size, 1}};
+            vkCmdCopyImage(cmd, target->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image->image,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        }
+    }
+}
+
+// Every model from every direction into mip 0 of its layers.
+void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const BakeTargets& targets,
+                      const BakePipeline& bake, const PlantModelPool& pool, const Buffer& indices) {
+    // Level 0 of every layer receives one frame's resolve (or copy); its old
+    // contents are discarded.
+    const ImageTransition toDestination{VK_PIPELINE_STAGE_2_NONE,
+                                        VK_ACCESS_2_NONE,
+                                        VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                        VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                        VK_IMAGE_LAYOUT_UNDEFINED,
+                                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
+    pipelineBarrier(cmd, {atlasBarrier(atlas.color, 0, 1, atlas.layers, toDestination),
+                          atlasBarrier(atlas.normalDepth, 0, 1, atlas.layers, toDestination)});
+
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.layout, 0, 1, &bake.set, 0, nullptr);
+    vkCmdBindIndexBuffer(cmd, indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+    const uint32_t frames = atlas.settings.frames;
+    for (const PlantModelInfo& model : pool.models) {
+        for (uint32_t f = 0; f < frames; ++f) {
+            beginBakeFrame(cmd, targets);
+            drawBakeFrame(cmd, bake, model, f, frames);
+            resolveBakeFrame(cmd, targets, atlas, model.gpu.impostor.x + f);
+        }
+    }
+}
+
+// Mips: level k is blitted from level k-1 (premultiplied values average
+// correctly); then every level is left for the billboards' fragment shaders.
+void recordMipChain(VkCommandBuffer cmd, const ImpostorAtlas& atlas) {
+    const uint32_t layers = atlas.layers, mips = atlas.mipLevels, size = atlas.settings.frameSize;
+    // The resolves into level 0 must be done before the first blit reads
+    // it; the other levels hold nothing yet.
+    const ImageTransition resolvedToSource{VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                           VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                           VK_PIPELINE_STAGE_2_BLIT_BIT,
+                                           VK_ACCESS_2_TRANSFER_READ_BIT,
+                                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+    const ImageTransition emptyToDestination{VK_PIPELINE_STAGE_2_NONE,     VK_ACCESS_2_NONE,
+                                             VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                             VK_IMAGE_LAYOUT_UNDEFINED,    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
+    std::vector<VkImageMemoryBarrier2> toBlit;
+    for (const Image* image : {&atlas.color, &atlas.normalDepth}) {
+        toBlit.push_back(atlasBarrier(*image, 0, 1, layers, resolvedToSource));
+        if (mips > 1) toBlit.push_back(atlasBarrier(*image, 1, mips - 1, layers, emptyToDestination));
+    }
+    pipelineBarrier(cmd, toBlit);
+
+    for (uint32_t level = 1; level < mips; ++level) {
+        const int32_t from = int32_t(std::max(size >> (level - 1), 1u));
+        const int32_t to = int32_t(std::max(size >> level, 1u));
+        VkImageBlit blit{};
+        blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, layers};
+        blit.srcOffsets[1] = {from, from, 1};
+        blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, layers};
+        blit.dstOffsets[1] = {to, to, 1};
+        for (const Image* image : {&atlas.color, &atlas.normalDepth})
+            vkCmdBlitImage(cmd, image->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image->image,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
+        // This level is the next blit's source: its writes must land first.
+        const ImageTransition writtenToSource{
+            VK_PIPELINE_STAGE_2_BLIT_BIT,  VK_ACCESS_2_TRANSFER_WRITE_BIT,       VK_PIPELINE_STAGE_2_BLIT_BIT,
+            VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+        pipelineBarrier(cmd, {atlasBarrier(atlas.color, level, 1, layers, writtenToSource),
+                              atlasBarrier(atlas.normalDepth, level, 1, layers, writtenToSource)});
+    }
+
+    // Every level is now a blit source (the last one also just written):
+    // billboards sample them from fragment shaders.
+    const ImageTransition toSampled{VK_PIPELINE_STAGE_2_BLIT_BIT,
+                                    VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                    VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    pipelineBarrier(cmd, {atlasBarrier(atlas.color, 0, mips, layers, toSampled),
+                          atlasBarrier(atlas.normalDepth, 0, mips, layers, toSampled)});
+}
+
+// Reads the coverage of every layer back at mip kOutlineMip (or the last)
+// and makes each layer's outline. The atlas is sampled before and after.
+std::vector<ImpostorOutline> readOutlines(const GpuContext& ctx, const ImpostorAtlas& atlas) {
+    const uint32_t mip = std::min(kOutlineMip, atlas.mipLevels - 1);
+    const uint32_t size = std::max(atlas.settings.frameSize >> mip, 1u);
+    const VkDeviceSize layerBytes = VkDeviceSize(size) * size * 4;
+    GpuResources scratch(ctx);
+    Buffer readback = createHostBuffer(scratch, layerBytes * atlas.layers, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+        const ImageTransition toSource{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                       VK_ACCESS_2_NONE,
+                                       VK_PIPELINE_STAGE_2_COPY_BIT,
+                                       VK_ACCESS_2_TRANSFER_READ_BIT,
+                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+        pipelineBarrier(cmd, {atlasBarrier(atlas.color, mip, 1, atlas.layers, toSource)});
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, 0, atlas.layers};
+        region.imageExtent = {size, size, 1};
+        vkCmdCopyImageToBuffer(cmd, atlas.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1,
+                               &region);
+        const ImageTransition toSampled{VK_PIPELINE_STAGE_2_COPY_BIT,
+                                        VK_ACCESS_2_NONE,
+                                        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+        pipelineBarrier(cmd, {atlasBarrier(atlas.color, mip, 1, atlas.layers, toSampled)});
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                      VK_ACCESS_2_HOST_READ_BIT);
+    });
+    std::vector<ImpostorOutline> outlines(atlas.layers);
+    std::vector<uint8_t> alpha(size_t(size) * size);
+    const auto* texels = static_cast<const uint8_t*>(readback.mapped);
+    for (uint32_t layer = 0; layer < atlas.layers; ++layer) {
+        for (size_t t = 0; t < alpha.size(); ++t) alpha[t] = texels[layer * layerBytes + t * 4 + 3];
+        outlines[layer] = impostorOutline(alpha, size, kOutlineMargin);
+    }
+    return outlines;
+}
+
+} // namespace
+
+ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const Buffer& vertices,
+                                const Buffer& indices, const ImpostorSettings& settings) {
+    const GpuContext& ctx = owner.ctx();
+    ImpostorAtlas atlas = createAtlas(owner, settings, atlasLayers(ctx, pool, settings));
+    assignImpostorLayers(pool, settings);
+    {
+        GpuResources scratch(ctx); // the targets and pipeline only the bake uses
+        const BakeTargets targets = createBakeTargets(scratch, settings.frameSize);
+        const BakePipeline bake = createBakePipeline(scratch, vertices, targets.samples);
+        // All models and frames in one submission.
+        submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+            recordBakeFrames(cmd, atlas, targets, bake, pool, indices);
+            recordMipChain(cmd, atlas);
+        });
+    }
+    atlas.outlines = readOutlines(ctx, atlas);
+    return atlas;
+}
+
+} // namespace pf
