@@ -5,6 +5,7 @@
 
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
+#include "engine/vk/target_pass.h"
 #include "shaders/impostor_bake_frag.spv.h"
 #include "shaders/impostor_bake_vert.spv.h"
 
@@ -208,12 +209,8 @@ void beginBakeFrame(VkCommandBuffer cmd, const BakeTargets& targets) {
         colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
         colors[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}}; // background: coverage 0
     }
-    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = targets.depth.view;
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    depth.clearValue.depthStencil = {1.0f, 0};
+    const VkRenderingAttachmentInfo depth =
+        clearedDepthAttachment(targets.depth.view, VK_ATTACHMENT_STORE_OP_DONT_CARE);
     const VkRect2D area{{0, 0}, {targets.size, targets.size}};
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
     rendering.renderArea = area;

@@ -1,5 +1,7 @@
 #include "engine/field/shadow_map.h"
 
+#include "engine/vk/target_pass.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -65,12 +67,7 @@ void beginShadowPass(VkCommandBuffer cmd, const ShadowMap& map) {
                   VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                   VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
 
-    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = map.depth.view;
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    depth.clearValue.depthStencil = {1.0f, 0};
+    const VkRenderingAttachmentInfo depth = clearedDepthAttachment(map.depth.view, VK_ATTACHMENT_STORE_OP_STORE);
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
     rendering.renderArea = {{0, 0}, {map.size, map.size}};
     rendering.layerCount = 1;

@@ -2,6 +2,16 @@
 
 namespace pf {
 
+VkRenderingAttachmentInfo clearedDepthAttachment(VkImageView view, VkAttachmentStoreOp store) {
+    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depth.imageView = view;
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth.storeOp = store;
+    depth.clearValue.depthStencil = {1.0f, 0};
+    return depth;
+}
+
 void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target) {
     const bool msaa = target.samples != VK_SAMPLE_COUNT_1_BIT;
     const VkImage drawnColor = msaa ? target.msaaColor.image : target.color.image;
@@ -35,12 +45,7 @@ void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target) {
         color.resolveImageView = target.color.view;
         color.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     }
-    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = target.depth.view;
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    depth.clearValue.depthStencil = {1.0f, 0};
+    const VkRenderingAttachmentInfo depth = clearedDepthAttachment(target.depth.view, VK_ATTACHMENT_STORE_OP_DONT_CARE);
 
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
     rendering.renderArea = {{0, 0}, target.extent};
