@@ -49,18 +49,13 @@ std::vector<NodeSummary> summarise(const BGrammar& bgrammar, std::span<const Tur
                 summary.cut |= child.cut;
                 continue;
             }
-            switch (commands[bgrammar.modules[item.index].symbol].action) {
-            case TurtleAction::Push: ++summary.bracketChange; break;
-            case TurtleAction::Pop:
-                summary.bracketLowest = std::min(summary.bracketLowest, --summary.bracketChange);
-                break;
-            case TurtleAction::PolygonBegin: ++summary.polygonChange; break;
-            case TurtleAction::PolygonEnd:
-                summary.polygonLowest = std::min(summary.polygonLowest, --summary.polygonChange);
-                break;
-            case TurtleAction::Cut: summary.cut = true; break;
-            default: break;
-            }
+            const StackEffect& effect =
+                turtleCommandDefinition(commands[bgrammar.modules[item.index].symbol].action).stacks;
+            summary.bracketChange += effect.branches;
+            summary.bracketLowest = std::min(summary.bracketLowest, summary.bracketChange);
+            summary.polygonChange += effect.polygons;
+            summary.polygonLowest = std::min(summary.polygonLowest, summary.polygonChange);
+            summary.cut |= effect.cuts;
         }
     }
     return summaries;

@@ -104,6 +104,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "nothing (cpfg's unfilled screen-space circle), as every module not listed here",
      .reads = {kReadsNothing},
      .changes = kChangesNoStyle,
+     .stacks = kKeepsStacks,
      .apply = changeNothing},
     // Its joint's parent is the joint the turtle is on (TurtleState::joint);
     // a negative l draws backwards, turned 180 degrees about U.
@@ -116,6 +117,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
                kReadsTropism},
      .changes = {StyleField::Width, FieldChange::Set, FieldChange::Keep},
      // cpfg and lpfg trace a polygon's outline with F too: Robbins' {+F-F-F} is a triangle.
+     .stacks = kKeepsStacks,
      .inPolygon = TurtleAction::Move,
      .apply = drawSegment},
     {.action = TurtleAction::Move,
@@ -124,6 +126,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "move by l without drawing; in a polygon, record where it ends as a vertex",
      .reads = {kReadsPolygonOpen, kReadsLength},
      .changes = kChangesNoStyle,
+     .stacks = kKeepsStacks,
      .apply = move},
     {.action = TurtleAction::Yaw,
      .symbol = "+",
@@ -131,6 +134,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "yaw by a degrees about U, towards L",
      .reads = {kReadsNothing, kReadsAngle},
      .changes = kChangesNoStyle,
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, turnAngle(t)); }},
     {.action = TurtleAction::YawBack,
      .symbol = "-",
@@ -138,6 +142,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "yaw by a degrees about U, away from L",
      .reads = {kReadsNothing, kReadsAngle},
      .changes = kChangesNoStyle,
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, -turnAngle(t)); }},
     {.action = TurtleAction::Pitch,
      .symbol = "&",
@@ -145,6 +150,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "pitch down by a degrees about L",
      .reads = {kReadsNothing, kReadsAngle},
      .changes = kChangesNoStyle,
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { rotate(t.state, t.state.left, turnAngle(t)); }},
     {.action = TurtleAction::PitchBack,
      .symbol = "^",
@@ -152,6 +158,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "pitch up by a degrees about L",
      .reads = {kReadsNothing, kReadsAngle},
      .changes = kChangesNoStyle,
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { rotate(t.state, t.state.left, -turnAngle(t)); }},
     {.action = TurtleAction::Roll,
      .symbol = "\\",
@@ -159,6 +166,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "roll left by a degrees about H",
      .reads = {kReadsNothing, kReadsAngle},
      .changes = kChangesNoStyle,
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { rotate(t.state, t.state.heading, turnAngle(t)); }},
     {.action = TurtleAction::RollBack,
      .symbol = "/",
@@ -166,18 +174,21 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "roll right by a degrees about H",
      .reads = {kReadsNothing, kReadsAngle},
      .changes = kChangesNoStyle,
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { rotate(t.state, t.state.heading, -turnAngle(t)); }},
     {.action = TurtleAction::TurnAround,
      .symbol = "|",
      .documentation = "turn 180 degrees about U",
      .reads = {kReadsNothing},
      .changes = kChangesNoStyle,
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, 180.0f); }},
     {.action = TurtleAction::RollHorizontal,
      .symbol = "$",
      .documentation = "roll about H until L is horizontal (ABOP: L = V x H / |V x H|, V = +Y)",
      .reads = {kReadsWorldUp},
      .changes = kChangesNoStyle,
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { rollHorizontal(t.state); }},
     // Only the branch stack: open polygons are not popped (ABOP Fig 5.6's
     // [+A{.].C.} closes after the branch a polygon opened in it).
@@ -186,12 +197,14 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "push the turtle state",
      .reads = {kReadsNothing},
      .changes = kChangesNoStyle,
+     .stacks = {1, 0},
      .apply = [](const TurtleStep& t) { t.stack.branches.push_back(t.state); }},
     {.action = TurtleAction::Pop,
      .symbol = "]",
      .documentation = "pop the turtle state (with nothing pushed, nothing happens)",
      .reads = {kReadsNothing},
      .changes = kChangesNoStyle,
+     .stacks = {-1, 0},
      .apply = popBranch},
     {.action = TurtleAction::Width,
      .symbol = "!",
@@ -199,6 +212,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "set the width to w (0.7 is TurtleSettings::widthFactor)",
      .reads = {kReadsNothing},
      .changes = {StyleField::Width, FieldChange::Set, FieldChange::Derive},
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { t.state.width = t.parameterOr(0, t.state.width * t.settings.widthFactor); }},
     {.action = TurtleAction::Material,
      .symbol = ";",
@@ -207,6 +221,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "set the material index to i; outside 0..255 (cpfg's colour map) it becomes 0",
      .reads = {kReadsNothing},
      .changes = {StyleField::Material, FieldChange::Set, FieldChange::Derive},
+     .stacks = kKeepsStacks,
      .apply =
          [](const TurtleStep& t) {
              t.state.material = materialIndex(t.parameterOr(0, static_cast<float>(t.state.material) + 1.0f));
@@ -218,6 +233,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "cut the rest of the branch, up to its ]",
      .reads = {kReadsNothing},
      .changes = kChangesNoStyle,
+     .stacks = {0, 0, true},
      .apply = changeNothing},
     {.action = TurtleAction::ScaleLength,
      .symbol = "@Lm",
@@ -225,6 +241,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "multiply the length of a bare F or f by x",
      .reads = {kReadsNothing},
      .changes = {StyleField::Length, FieldChange::Derive, FieldChange::Keep},
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { t.state.length *= t.parameterOr(0, 1.0f); }},
     {.action = TurtleAction::AddLength,
      .symbol = "@La",
@@ -232,6 +249,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "add x to the length of a bare F or f",
      .reads = {kReadsNothing},
      .changes = {StyleField::Length, FieldChange::Derive, FieldChange::Keep},
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { t.state.length += t.parameterOr(0, 0.0f); }},
     {.action = TurtleAction::SetLength,
      .symbol = "@Ls",
@@ -239,6 +257,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "set the length of a bare F or f to x",
      .reads = {kReadsNothing},
      .changes = {StyleField::Length, FieldChange::Set, FieldChange::Keep},
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { t.state.length = t.parameterOr(0, t.state.length); }},
     {.action = TurtleAction::ScaleAngle,
      .symbol = "@Am",
@@ -246,6 +265,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "multiply the angle of a bare turn by x",
      .reads = {kReadsNothing},
      .changes = {StyleField::Angle, FieldChange::Derive, FieldChange::Keep},
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { t.state.angle *= t.parameterOr(0, 1.0f); }},
     {.action = TurtleAction::AddAngle,
      .symbol = "@Aa",
@@ -253,6 +273,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "add x to the angle of a bare turn",
      .reads = {kReadsNothing},
      .changes = {StyleField::Angle, FieldChange::Derive, FieldChange::Keep},
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { t.state.angle += t.parameterOr(0, 0.0f); }},
     {.action = TurtleAction::SetAngle,
      .symbol = "@As",
@@ -260,6 +281,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "set the angle of a bare turn to x",
      .reads = {kReadsNothing},
      .changes = {StyleField::Angle, FieldChange::Set, FieldChange::Keep},
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { t.state.angle = t.parameterOr(0, t.state.angle); }},
     {.action = TurtleAction::ScaleWidth,
      .symbol = "@Wm",
@@ -267,6 +289,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "multiply the width by x",
      .reads = {kReadsNothing},
      .changes = {StyleField::Width, FieldChange::Derive, FieldChange::Keep},
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { t.state.width *= t.parameterOr(0, 1.0f); }},
     {.action = TurtleAction::AddWidth,
      .symbol = "@Wa",
@@ -274,6 +297,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "add x to the width",
      .reads = {kReadsNothing},
      .changes = {StyleField::Width, FieldChange::Derive, FieldChange::Keep},
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { t.state.width += t.parameterOr(0, 0.0f); }},
     {.action = TurtleAction::AddMaterial,
      .symbol = "@Ca",
@@ -281,6 +305,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "add x to the material index, kept in 0..255 as by ;",
      .reads = {kReadsNothing},
      .changes = {StyleField::Material, FieldChange::Derive, FieldChange::Keep},
+     .stacks = kKeepsStacks,
      .apply =
          [](const TurtleStep& t) {
              t.state.material = materialIndex(static_cast<float>(t.state.material) + t.parameterOr(0, 0.0f));
@@ -292,6 +317,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "set the spring stiffness of the following segments' joints (0: from beam theory)",
      .reads = {kReadsNothing},
      .changes = {StyleField::Stiffness, FieldChange::Set, FieldChange::Keep},
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { t.state.stiffness = t.parameterOr(0, t.state.stiffness); }},
     // |T| scales the bend, e < 0 bends away, e = 0 (the default) does not bend.
     {.action = TurtleAction::Elasticity,
@@ -300,6 +326,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "set the elasticity: after each segment H turns toward T by e*|H x T| radians (ABOP section 2.4)",
      .reads = {kReadsNothing},
      .changes = {StyleField::Elasticity, FieldChange::Set, FieldChange::Keep},
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { t.state.elasticity = t.parameterOr(0, t.state.elasticity); }},
     {.action = TurtleAction::TropismVector,
      .symbol = "@Tv",
@@ -307,6 +334,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "set the tropism vector T, in plant space (with fewer parameters, nothing happens)",
      .reads = {kReadsNothing},
      .changes = {StyleField::Tropism, FieldChange::SetInPlant, FieldChange::Keep},
+     .stacks = kKeepsStacks,
      .apply =
          [](const TurtleStep& t) {
              if (t.parameters.size() >= 3) t.state.tropism = {t.parameters[0], t.parameters[1], t.parameters[2]};
@@ -317,6 +345,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "draw a sphere of diameter d",
      .reads = {kReadsMaterial, kReadsWidth},
      .changes = kChangesNoStyle,
+     .stacks = kKeepsStacks,
      .apply =
          [](const TurtleStep& t) {
              t.out.addSphere(frameOf(t.state), 0.5f * t.parameterOr(0, t.state.width), t.state.material, t.state.joint);
@@ -329,6 +358,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "draw the surface `name` scaled by s: leaf, petal, or a mesh of data/meshes",
      .reads = {kReadsMaterial},
      .changes = kChangesNoStyle,
+     .stacks = kKeepsStacks,
      .apply =
          [](const TurtleStep& t) {
              t.out.addSurface(t.command.surface, frameOf(t.state), t.parameterOr(0, 1.0f), t.state.material,
@@ -339,6 +369,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "open a polygon with the frame, material and joint here",
      .reads = {kReadsMaterial},
      .changes = kChangesNoStyle,
+     .stacks = {0, 1},
      .apply =
          [](const TurtleStep& t) {
              t.stack.polygons.push_back({frameOf(t.state), t.state.material, t.state.joint, {}});
@@ -348,12 +379,14 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .documentation = "record the position as a vertex of the innermost open polygon",
      .reads = {kReadsPolygonOpen},
      .changes = kChangesNoStyle,
+     .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { addVertex(t.stack, t.state.position); }},
     {.action = TurtleAction::PolygonEnd,
      .symbol = "}",
      .documentation = "close the innermost polygon, drawn when it has 3 or more distinct vertices",
      .reads = {kReadsNothing},
      .changes = kChangesNoStyle,
+     .stacks = {0, -1},
      .apply = closePolygon},
 }};
 

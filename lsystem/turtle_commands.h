@@ -141,6 +141,20 @@ struct TurtleStep {
 };
 using TurtleTransition = void (*)(const TurtleStep& step);
 
+// What a command does to the branch and polygon stacks, which the summary of
+// an InstanceGraph body adds up (the status function's n in the Calgary
+// b-grammar thesis, §4.2). No default: a definition says it, if only
+// kKeepsStacks.
+struct StackEffect {
+    constexpr StackEffect(int8_t branches, int8_t polygons, bool cuts = false)
+        : branches(branches), polygons(polygons), cuts(cuts) {}
+
+    int8_t branches; // +1 pushes the turtle state, -1 pops it
+    int8_t polygons; // +1 opens a polygon, -1 closes one
+    bool cuts;       // cuts the rest of the branch
+};
+inline constexpr StackEffect kKeepsStacks{0, 0};
+
 struct TurtleCommandDefinition {
     TurtleAction action;            // its index in the table
     std::string_view symbol;        // its module name
@@ -150,6 +164,7 @@ struct TurtleCommandDefinition {
     std::string_view documentation; // one line
     TurtleReads reads;
     StyleChange changes;
+    StackEffect stacks;
     std::optional<TurtleAction> inPolygon; // the command it acts as while a polygon is open
     TurtleTransition apply;
 };
