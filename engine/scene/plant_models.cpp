@@ -37,6 +37,11 @@ constexpr float kTwigFraction = 0.06f;
 // wide (needle sprays and grass blades keep their area).
 constexpr size_t kRibbonRun = 4;
 constexpr uint32_t kRibbonStride = 3;
+// LOD1 thins leaf cards and foliage chains only where a plant has many: one
+// kept in kLeafStride (kRibbonStride) at most, and at least one in
+// kMinThinned kept whole — a herb of six leaves keeps all six, where thinned
+// to two enlarged ones it would read as another plant.
+constexpr uint32_t kMinThinned = 16;
 // Foliage ribbons are at least this fraction of the plant's largest extent
 // wide: a grass blade of radius 0 must still cover pixels.
 constexpr float kMinRibbonWidth = 0.004f;
@@ -229,15 +234,29 @@ void bakePolygon(BakedMesh& out, const lsys::PlantAsset& asset, const lsys::Prim
                        std::vector<uint32_t>(mesh.vertexCount(), jointOf(polygon.joint)));
 }
 
+// Keep one in this many of `count` foliage elements at LOD1 (1 at LOD0).
+uint32_t thinningStride(const LodRecipe& recipe, uint32_t count, uint32_t stride) {
+    return recipe.reduced ? std::clamp(count / kMinThinned, 1u, stride) : 1u;
+}
+
 ClassMeshes bakeLod(const lsys::PlantAsset& asset, const std::vector<lsys::SegmentChain>& chains,
                     const std::vector<SurfaceExtent>& extents, const LodRecipe& recipe) {
     ClassMeshes meshes;
     BakedMesh& bark = meshes[DRAW_BARK];
     BakedMesh& foliage = meshes[DRAW_FOLIAGE];
+    const auto isFoliageChain = [&](const lsys::SegmentChain& chain) {
+        return isFoliageSegment(asset, asset.primitives[chain.primitives.front()]);
+    };
+    const auto isLeafCard = [](const lsys::Primitive& p) {
+        return lsys::isDrawable(p) && p.kind == lsys::PrimitiveKind::Surface;
+    };
+    const uint32_t ribbonStride =
+        thinningStride(recipe, uint32_t(std::count_if(chains.begin(), chains.end(), isFoliageChain)), kRibbonStride);
+    const uint32_t leafStride = thinningStride(
+        recipe, uint32_t(std::count_if(asset.primitives.begin(), asset.primitives.end(), isLeafCard)), kLeafStride);
     uint32_t foliageChains = 0;
-    const uint32_t ribbonStride = recipe.reduced ? kRibbonStride : 1;
     for (const lsys::SegmentChain& chain : chains) {
-        if (isFoliageSegment(asset, asset.primitives[chain.primitives.front()])) {
+        if (isFoliageChain(chain)) {
             if (foliageChains++ % ribbonStride == 0)
                 bakeFoliageChain(foliage, asset, chain, recipe, float(ribbonStride));
         } else {
@@ -245,7 +264,6 @@ ClassMeshes bakeLod(const lsys::PlantAsset& asset, const std::vector<lsys::Segme
         }
     }
     uint32_t leaves = 0;
-    const uint32_t leafStride = recipe.reduced ? kLeafStride : 1;
     for (const lsys::Primitive& primitive : asset.primitives) {
         if (!lsys::isDrawable(primitive)) continue;
         switch (primitive.kind) {

@@ -127,6 +127,24 @@ TEST(PlantModels, ReducedLodIsLighterAndTreesAreAtMostFortyPercent) {
     }
 }
 
+// The joints a model's foliage hangs from at one LOD: each leaf or blade has its own.
+std::set<uint32_t> foliageJoints(const pf::PlantModelPool& pool, const pf::PlantModelInfo& model, uint32_t lod) {
+    const pf::MeshRange& range = model.meshes[lod][DRAW_FOLIAGE];
+    std::set<uint32_t> joints;
+    for (uint32_t i = 0; i < range.indexCount; ++i)
+        joints.insert(pool.vertices[range.vertexOffset + pool.indices[range.firstIndex + i]].joint.x);
+    return joints;
+}
+
+TEST(PlantModels, PlantWithFewLeavesKeepsEveryLeafAtLod1) {
+    // Six leaves (data/plants/leafy_plant.lsys): LOD1 must not thin them.
+    const pf::PlantModelPool pool = pf::buildPlantModels(sceneOf(kData / "plants" / "leafy_plant.lsys", 1));
+    ASSERT_EQ(pool.models.size(), 1u);
+    const std::set<uint32_t> full = foliageJoints(pool, pool.models[0], LOD_FULL);
+    ASSERT_FALSE(full.empty());
+    EXPECT_EQ(foliageJoints(pool, pool.models[0], LOD_REDUCED), full);
+}
+
 TEST(PlantModels, LeafySpeciesHaveFoliageAtBothLods) {
     const pf::PlantModelPool& pool = defaultPool();
     for (const pf::PlantModelInfo& model : pool.models) {
