@@ -43,6 +43,9 @@ struct ImageHeightfield {
     bool operator==(const ImageHeightfield&) const = default;
 };
 
+// The most height samples a terrain side may have: 8193² floats are 256 MiB.
+constexpr uint32_t kMaxTerrainResolution = 8193;
+
 // A square centred on the origin.
 struct Terrain {
     float size = 512.0f;       // side in metres

@@ -185,6 +185,26 @@ TEST(PlantbenchCli, DefaultSceneSweepMatchesCounts) {
     expectWellFormedSweep(nlohmann::json::parse(readText(json)), kDefaultScene, {100, 300}, false);
 }
 
+TEST(PlantbenchCli, CountsKeepTheScenesDensitiesUnlessDensified) {
+    const fs::path dir = scratchDir("densities");
+    // test_small places 20 bushes on its 40 m: 200 need about 126 m, unless densified.
+    for (const bool densify : {false, true}) {
+        const fs::path json = dir / (densify ? "densified.json" : "natural.json");
+        const CommandResult r = runCommand(kPlantbench + " " + kSmallScene + " --counts 10,200 --frames 1 --warmup 0"
+                                           " --size 32x32 --samples 1 --json " + json.string() +
+                                           (densify ? " --densify" : ""));
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        const nlohmann::json j = nlohmann::json::parse(readText(json));
+        EXPECT_EQ(j["count_mode"], densify ? "densify" : "natural");
+        expectWellFormedSweep(j, kSmallScene, {10, 200}, false);
+        EXPECT_EQ(j["results"][0]["terrain_size_m"].get<double>(), 40.0);
+        if (densify)
+            EXPECT_EQ(j["results"][1]["terrain_size_m"].get<double>(), 40.0);
+        else
+            EXPECT_GT(j["results"][1]["terrain_size_m"].get<double>(), 110.0);
+    }
+}
+
 TEST(PlantbenchCli, NaiveAboveNaiveMaxIsSkippedWithANote) {
     const fs::path json = scratchDir("naive-max") / "sweep.json";
     const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
@@ -272,7 +292,8 @@ TEST(PlantbenchCli, HelpListsEveryOption) {
     const CommandResult r = runCommand(kPlantbench + " --help");
     EXPECT_EQ(r.exitCode, 0);
     for (const char* flag : {"--counts", "--frames", "--warmup", "--size", "--samples", "--no-shadows", "--compare",
-                             "--naive-max", "--json", "--csv", "--plot", "--seed", "--device", "--validation"})
+                             "--naive-max", "--json", "--csv", "--plot", "--seed", "--device", "--validation",
+                             "--densify"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 

@@ -94,6 +94,9 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
     app.add_option("--time", o.time, "Scene time of the camera on the scene's camera path, seconds")
         ->check(CLI::NonNegativeNumber)->default_val(o.time);
+    app.add_flag("--densify", o.densify,
+                 "Fit each count on the scene's terrain by scaling every plant distance (default: the scene's\n"
+                 "densities, the planted area and the noise terrain growing with the count)");
     std::string compare;
     app.add_option("--compare", compare, "Also render every count the naive way (full detail, one draw per plant)")
         ->check(CLI::IsMember({"naive"}));

@@ -21,6 +21,7 @@ struct PlantbenchOptions {
     uint32_t samples = 4;
     bool shadows = true;
     double time = 0.0;            // scene time of the camera on its path
+    bool densify = false;         // counts on the scene's terrain, distances scaled (not natural densities)
     bool compareNaive = false;
     uint64_t naiveMax = 100000;   // counts above this skip the naive path
     std::string jsonPath, csvPath, plotPath;

@@ -52,6 +52,8 @@ nlohmann::json countJson(const CountResult& r) {
     nlohmann::json j;
     j["count"] = r.count;
     j["instances"] = r.stats.instances;
+    j["terrain_size_m"] = r.terrainSize;
+    j["placement_note"] = r.placementNote.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.placementNote);
     j["frame_ms"] = spreadJson(r.driven.frameMs);
     j["cpu_ms"] = spreadJson(r.driven.cpuMs);
     j["gpu_ms"] = gpuJson(r.driven);
@@ -84,7 +86,7 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
     std::vector<std::string> headers = {"count", "frame ms", "p95", "cpu ms"};
     for (const char* pass : kBenchPasses) headers.push_back(std::string(pass) + " ms");
     for (const char* lod : kLodNames) headers.push_back(lod);
-    for (const char* h : {"triangles", "joints", "memory", "naive ms", "ratio"}) headers.push_back(h);
+    for (const char* h : {"triangles", "joints", "memory", "terrain m", "naive ms", "ratio"}) headers.push_back(h);
 
     std::vector<std::vector<std::string>> rows;
     for (const CountResult& r : result.counts) {
@@ -95,6 +97,7 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
         row.push_back(std::to_string(r.stats.triangles));
         row.push_back(std::to_string(r.jointsSimulated));
         row.push_back(formatBytes(r.gpuMemoryBytes));
+        row.push_back(fixed(r.terrainSize, 0));
         row.push_back(r.naive ? fixed(r.naive->frameMs.median, 2) : "-");
         row.push_back(cell(naiveRatio(r), 1));
         rows.push_back(row);
@@ -111,14 +114,17 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
     };
     out << "plantbench: " << result.scenePath << " on " << result.device << ", " << o.width << "x" << o.height << ", "
         << o.samples << "x MSAA, shadows " << (o.shadows ? "on" : "off") << ", median of " << o.frames
-        << " frames after " << o.warmup << " warm-up\n";
+        << " frames after " << o.warmup << " warm-up"
+        << (o.densify ? ", counts densified on the scene's terrain" : ", counts at the scene's densities") << "\n";
     printRow(headers);
     for (const auto& row : rows) printRow(row);
     out << "frame ms, p95: wall time per frame (median, 95th percentile); cpu ms: host time to record it; "
            "pass columns: GPU ms (median), capture: copying the image to the host; joints: simulated; memory: "
-        << result.memorySource << "; ratio: naive frame ms / GPU-driven frame ms\n";
-    for (const CountResult& r : result.counts)
+        << result.memorySource << "; terrain m: side of the terrain; ratio: naive frame ms / GPU-driven frame ms\n";
+    for (const CountResult& r : result.counts) {
+        if (!r.placementNote.empty()) out << r.count << " plants: " << r.placementNote << "\n";
         if (!r.note.empty()) out << r.count << " plants: " << r.note << "\n";
+    }
 }
 
 nlohmann::json sweepJson(const PlantbenchOptions& o, const SweepResult& result) {
@@ -129,6 +135,7 @@ nlohmann::json sweepJson(const PlantbenchOptions& o, const SweepResult& result) 
     j["samples"] = o.samples;
     j["shadows"] = o.shadows;
     j["time"] = o.time;
+    j["count_mode"] = o.densify ? "densify" : "natural";
     j["frames"] = o.frames;
     j["warmup"] = o.warmup;
     j["memory_source"] = result.memorySource;
@@ -142,7 +149,7 @@ std::string sweepCsv(const SweepResult& result) {
     csv << "count,instances,frame_ms_median,frame_ms_p95,cpu_ms_median,cpu_ms_p95";
     for (const char* pass : kBenchPasses) csv << ",gpu_" << pass << "_ms_median,gpu_" << pass << "_ms_p95";
     csv << ",plants_full,plants_reduced,plants_impostor,culled,triangles,joints_simulated,draws_bark,draws_foliage,draws_impostor"
-           ",gpu_memory_bytes,naive_frame_ms_median,naive_frame_ms_p95,naive_triangles,ratio\n";
+           ",gpu_memory_bytes,naive_frame_ms_median,naive_frame_ms_p95,naive_triangles,ratio,terrain_size_m\n";
     auto ms = [](const std::optional<double>& v) { return v ? fixed(*v, 4) : std::string(); };
     for (const CountResult& r : result.counts) {
         csv << r.count << "," << r.stats.instances << "," << ms(r.driven.frameMs.median) << ","
@@ -157,7 +164,7 @@ std::string sweepCsv(const SweepResult& result) {
             csv << "," << ms(r.naive->frameMs.median) << "," << ms(r.naive->frameMs.p95) << "," << r.naiveTriangles;
         else
             csv << ",,,";
-        csv << "," << ms(naiveRatio(r)) << "\n";
+        csv << "," << ms(naiveRatio(r)) << "," << fixed(r.terrainSize, 1) << "\n";
     }
     return csv.str();
 }

@@ -125,16 +125,22 @@ void refuseIf(const std::string& problem) {
     if (!problem.empty()) throw std::runtime_error(problem);
 }
 
+CountMode countMode(const PlantbenchOptions& o) { return o.densify ? CountMode::Densify : CountMode::NaturalDensity; }
+
 CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scene& scene, uint64_t count,
                          bool budget, const HeapCapacity& heap, const SweepProgress& progress) {
     CountResult r;
     r.count = count;
     const Clock::time_point buildStart = Clock::now();
-    FieldContent content = buildFieldContent(scene, size_t(count), [&](size_t done, size_t all, const std::string& name) {
+    const PlantCount plants{size_t(count), countMode(o)};
+    showProgress(progress, 0.0, "placing plants"); // buildFieldContent reports only the models after
+    FieldContent content = buildFieldContent(scene, plants, [&](size_t done, size_t all, const std::string& name) {
         showProgress(progress, 0.0, "building plant models " + std::to_string(done) + "/" + std::to_string(all) +
                                         " (" + name + ")");
     });
     r.buildSeconds = std::chrono::duration<double>(Clock::now() - buildStart).count();
+    r.terrainSize = content.scene.terrain.size;
+    r.placementNote = content.note;
     // Again with the model pool's size, now known.
     refuseIf(gpuMemoryProblem(count, estimatedFieldBytes(count, &content.models, o.width, o.height, o.samples),
                               ctx.properties.deviceName, heap));
@@ -182,7 +188,8 @@ void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, S
     for (uint64_t count : o.counts) {
         const uint64_t gpuBytes = estimatedFieldBytes(count, nullptr, o.width, o.height, o.samples);
         refuseIf(gpuMemoryProblem(count, gpuBytes, ctx.properties.deviceName, heap));
-        refuseIf(hostMemoryProblem(count, estimatedHostBytes(count) + (hostHoldsGpu ? gpuBytes : 0), hostAvailable));
+        refuseIf(hostMemoryProblem(count, estimatedHostBytes(count, countMode(o)) + (hostHoldsGpu ? gpuBytes : 0),
+                                   hostAvailable));
     }
 
     SweepProgress progress = startProgress(o.counts.size());

@@ -60,6 +60,8 @@ struct CountResult {
     uint64_t jointsSimulated = 0;    // FieldRenderer::simulatedJoints(): joints the physics pass steps
     std::string note;                // why naive was skipped, or empty
     double buildSeconds = 0.0;       // CPU build of the field (not part of any frame)
+    float terrainSize = 0.0f;        // side of the terrain the plants stand on, metres (grows with the count)
+    std::string placementNote;       // FieldContent::note: the count could not keep the densities
 };
 
 struct SweepResult {
