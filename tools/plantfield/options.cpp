@@ -61,10 +61,11 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     CLI::App app{"plantfield: renders a field of L-system plants (a scene file, docs/SCENE_FORMAT.md), in a window\n"
                  "or headless to PNG."};
     app.footer("Examples:\n"
-               "  plantfield --capture frame.png                 the default forest at 1280x720\n"
-               "  plantfield data/scenes/default.json --window   fly through it (docs/WINDOW.md)\n"
-               "  plantfield --instances 100000 --stats          one frame of 100 000 plants: JSON statistics\n"
-               "  plantfield --frames 60 --fps 30 --out-dir seq  two seconds of frames\n"
+               "  plantfield --capture frame.png                      the default forest at 1280x720\n"
+               "  plantfield data/scenes/default.json --window        fly through it (docs/WINDOW.md)\n"
+               "  plantfield --instances 100000 --stats               one frame of 100 000 plants: JSON statistics\n"
+               "  plantfield data/scenes/valley.json --capture v.png  a million plants on 2 km x 2 km\n"
+               "  plantfield --frames 60 --fps 30 --out-dir seq       two seconds of frames\n"
                "Environment: PLANTFIELD_DEVICE picks the device by name, PLANTFIELD_VALIDATION=1 turns on\n"
                "the Khronos validation layer, PLANTFIELD_DATA_DIR replaces the data folder.");
     app.add_option("scene", o.scenePath, "Scene file (.json)")->default_str("data/scenes/default.json");
