@@ -207,6 +207,11 @@ Scene loadScene(const std::filesystem::path& file);
 // and last keyframe outside them. An empty path orbits the origin.
 Camera cameraAt(const CameraPath& path, double t);
 
+// `count` scene times spread evenly over the path: from its first keyframe to
+// its last, both included (a single time is the first keyframe's); without
+// keyframes, steps through one turn of the default orbit from t = 0.
+std::vector<double> timesAlongPath(const CameraPath& path, uint32_t count);
+
 // Seeds that the file leaves out come from the scene seed, one independent
 // stream each, so changing the scene seed changes the whole scene.
 uint32_t terrainSeed(const Scene& scene);
