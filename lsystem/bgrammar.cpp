@@ -25,14 +25,15 @@ BGrammar buildUnguarded(const Grammar& grammar, const BGrammarOptions& options) 
     return compressed;
 }
 
-}  // namespace
+} // namespace
 
 BGrammar buildBGrammar(const Grammar& grammar, const BGrammarOptions& options) {
     // Running out of memory below the budgets is reported like a budget, as derive() does.
     try {
         return buildUnguarded(grammar, options);
     } catch (const std::bad_alloc&) {
-        throw DerivationError("out of memory while building the b-grammar (lower --max-nodes / --max-items or the number of steps)");
+        throw DerivationError(
+            "out of memory while building the b-grammar (lower --max-nodes / --max-items or the number of steps)");
     }
 }
 
@@ -44,7 +45,7 @@ ModuleString expand(const BGrammar& grammar, size_t maxModules) {
                               " modules, more than the budget of " + std::to_string(maxModules));
     struct Position {
         uint32_t node;
-        uint32_t next;  // index in the node's body
+        uint32_t next; // index in the node's body
     };
     std::vector<Position> stack{{grammar.axiom(), 0}};
     while (!stack.empty()) {
@@ -84,4 +85,4 @@ size_t byteSize(const BGrammar& grammar) {
            grammar.counts.size() * sizeof(SymbolCount) + sizeof(BGrammar);
 }
 
-}  // namespace lsys
+} // namespace lsys

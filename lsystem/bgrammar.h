@@ -30,14 +30,14 @@ namespace lsys {
 struct TerminalModule {
     SymbolId symbol = 0;
     uint16_t paramCount = 0;
-    uint32_t paramStart = 0;  // into BGrammar::params
+    uint32_t paramStart = 0; // into BGrammar::params
 };
 
 // One entry of a body: a terminal module or a reference to a node.
 struct BodyItem {
     enum class Kind : uint8_t { Module, Node };
     Kind kind = Kind::Module;
-    uint32_t index = 0;  // into BGrammar::modules or BGrammar::nodes
+    uint32_t index = 0; // into BGrammar::modules or BGrammar::nodes
 
     bool isNode() const { return kind == Kind::Node; }
     friend bool operator==(const BodyItem&, const BodyItem&) = default;
@@ -49,11 +49,11 @@ struct SymbolCount {
 };
 
 struct BNode {
-    uint32_t bodyStart = 0;  // into BGrammar::body
+    uint32_t bodyStart = 0; // into BGrammar::body
     uint32_t bodyLength = 0;
-    uint32_t countStart = 0;  // into BGrammar::counts: modules per symbol of the expansion, by symbol
+    uint32_t countStart = 0; // into BGrammar::counts: modules per symbol of the expansion, by symbol
     uint32_t countLength = 0;
-    uint64_t modules = 0;     // length of the expansion
+    uint64_t modules = 0; // length of the expansion
     // Brackets of the expansion: '[' minus ']' over all of it, and the lowest
     // depth any prefix reaches relative to the start (0 or negative). A node is
     // legal (Calgary b-grammar thesis, §4.2: its turtle status function exists)
@@ -66,23 +66,25 @@ struct BNode {
 
 // How a b-grammar was obtained from its L-system.
 enum class BGrammarMethod : uint8_t {
-    Memoised,          // from the rules, shared by (module, remaining steps): the exact word (§4.1, §4.3)
-    PseudoStochastic,  // as Memoised with at most k rewrites per key (§5.1): NOT derive()'s word
-    Compressed,        // derived, then compressed by SEQUITUR with bracket legality (ch. 6): the exact word
+    Memoised,         // from the rules, shared by (module, remaining steps): the exact word (§4.1, §4.3)
+    PseudoStochastic, // as Memoised with at most k rewrites per key (§5.1): NOT derive()'s word
+    Compressed,       // derived, then compressed by SEQUITUR with bracket legality (ch. 6): the exact word
 };
 
 struct BGrammar {
-    std::vector<BNode> nodes;        // topological, children first; the axiom is the last
-    std::vector<BodyItem> body;      // the bodies of all nodes, back to back
+    std::vector<BNode> nodes;   // topological, children first; the axiom is the last
+    std::vector<BodyItem> body; // the bodies of all nodes, back to back
     std::vector<TerminalModule> modules;
     std::vector<float> params;
     std::vector<SymbolCount> counts; // per node, sorted by symbol
     size_t symbolCount = 0;          // of the grammar's SymbolTable
     BGrammarMethod method = BGrammarMethod::Memoised;
-    bool interpreted = false;        // the word includes the interpretation rules
+    bool interpreted = false; // the word includes the interpretation rules
 
     uint32_t axiom() const { return static_cast<uint32_t>(nodes.size() - 1); }
-    std::span<const BodyItem> bodyOf(uint32_t node) const { return {body.data() + nodes[node].bodyStart, nodes[node].bodyLength}; }
+    std::span<const BodyItem> bodyOf(uint32_t node) const {
+        return {body.data() + nodes[node].bodyStart, nodes[node].bodyLength};
+    }
     std::span<const SymbolCount> countsOf(uint32_t node) const {
         return {counts.data() + nodes[node].countStart, nodes[node].countLength};
     }
@@ -93,13 +95,13 @@ struct BGrammar {
 
 // Checked while building (when nodes later inlined still count) and after.
 struct BGrammarLimits {
-    size_t maxNodes = 1'000'000;     // non-terminals plus the axiom
-    size_t maxItems = 50'000'000;    // entries of all bodies together (also: keys a memoised build rewrites)
+    size_t maxNodes = 1'000'000;  // non-terminals plus the axiom
+    size_t maxItems = 50'000'000; // entries of all bodies together (also: keys a memoised build rewrites)
 };
 
 struct BGrammarOptions {
-    std::optional<int> steps;      // default: the grammar's derivation length
-    std::optional<uint64_t> seed;  // default: the grammar's seed
+    std::optional<int> steps;     // default: the grammar's derivation length
+    std::optional<uint64_t> seed; // default: the grammar's seed
     // false: the word derive() produces; true: applyInterpretation(derive()),
     // the word the turtle reads.
     bool interpreted = false;
@@ -111,7 +113,7 @@ struct BGrammarOptions {
     // modules are not rewritten alike and nothing can be shared by key).
     int randomness = 0;
     BGrammarLimits limits;
-    size_t maxModules = 50'000'000;  // module budget of the derivation when the word is derived first
+    size_t maxModules = 50'000'000; // module budget of the derivation when the word is derived first
 };
 
 // The b-grammar of the grammar's derivation, without expanding the word when
@@ -135,4 +137,4 @@ uint64_t nodeReferences(const BGrammar& grammar);
 // Memory the b-grammar occupies (its arrays' sizes, not their capacities).
 size_t byteSize(const BGrammar& grammar);
 
-}  // namespace lsys
+} // namespace lsys

@@ -30,13 +30,16 @@ bool ModuleInterner::Equal::operator()(uint32_t a, uint32_t b) const {
     const TerminalModule& y = draft->modules[b];
     // Bits, not values: -0 and 0 print differently, and NaN must equal itself.
     return x.symbol == y.symbol && x.paramCount == y.paramCount &&
-           std::memcmp(draft->params.data() + x.paramStart, draft->params.data() + y.paramStart, x.paramCount * sizeof(float)) == 0;
+           std::memcmp(draft->params.data() + x.paramStart, draft->params.data() + y.paramStart,
+                       x.paramCount * sizeof(float)) == 0;
 }
 
 uint32_t ModuleInterner::intern(SymbolId symbol, std::span<const float> parameters) {
-    if (parameters.size() > std::numeric_limits<uint16_t>::max()) throw DerivationError("a module has more than 65535 parameters");
+    if (parameters.size() > std::numeric_limits<uint16_t>::max())
+        throw DerivationError("a module has more than 65535 parameters");
     // The module is appended as a candidate and taken back if it is already known.
-    draft_.modules.push_back({symbol, static_cast<uint16_t>(parameters.size()), static_cast<uint32_t>(draft_.params.size())});
+    draft_.modules.push_back(
+        {symbol, static_cast<uint16_t>(parameters.size()), static_cast<uint32_t>(draft_.params.size())});
     draft_.params.insert(draft_.params.end(), parameters.begin(), parameters.end());
     auto [known, added] = known_.insert(static_cast<uint32_t>(draft_.modules.size() - 1));
     if (!added) {
@@ -133,7 +136,7 @@ void cacheCounts(BGrammar& grammar) {
     }
 }
 
-}  // namespace
+} // namespace
 
 uint32_t appendNode(BGrammar& draft, std::span<const BodyItem> body, const BGrammarLimits& limits) {
     if (draft.nodes.size() >= limits.maxNodes) limitExceeded("nodes", limits.maxNodes);
@@ -170,7 +173,7 @@ BGrammar finishBGrammar(BGrammar draft, const BGrammarLimits& limits) {
     std::vector<Depths> keptDepths;
     size_t keptItems = 0;
     for (uint32_t node = 0; node < count; ++node) {
-        if (uses[node] == 0 && node != axiom) continue;  // unreachable
+        if (uses[node] == 0 && node != axiom) continue; // unreachable
         const size_t start = rewritten.size();
         for (const BodyItem& item : draft.bodyOf(node)) {
             if (!item.isNode()) {
@@ -210,4 +213,4 @@ BGrammar finishBGrammar(BGrammar draft, const BGrammarLimits& limits) {
     return finished;
 }
 
-}  // namespace lsys
+} // namespace lsys

@@ -49,4 +49,4 @@ BGrammar finishBGrammar(BGrammar draft, const BGrammarLimits& limits);
 bool memoisable(const Grammar& grammar, const BGrammarOptions& options);
 BGrammar memoisedBGrammar(const Grammar& grammar, const BGrammarOptions& options);
 
-}  // namespace lsys
+} // namespace lsys

@@ -34,14 +34,15 @@ constexpr uint64_t kInterpretationPass = 1ull << 62;
 
 struct Key {
     uint32_t module = 0;
-    int32_t remaining = 0;  // steps still to apply
+    int32_t remaining = 0; // steps still to apply
     uint32_t variant = 0;
     friend bool operator==(const Key&, const Key&) = default;
 };
 
 struct KeyHash {
     size_t operator()(const Key& key) const {
-        return splitmix64((uint64_t{key.module} << 32 | static_cast<uint32_t>(key.remaining)) ^ splitmix64(key.variant));
+        return splitmix64((uint64_t{key.module} << 32 | static_cast<uint32_t>(key.remaining)) ^
+                          splitmix64(key.variant));
     }
 };
 
@@ -90,7 +91,8 @@ private:
         const BGrammar* draft;
         size_t operator()(uint32_t node) const {
             uint64_t hash = 0;
-            for (const BodyItem& item : draft->bodyOf(node)) hash = splitmix64(hash ^ (uint64_t{item.index} << 1 | item.isNode()));
+            for (const BodyItem& item : draft->bodyOf(node))
+                hash = splitmix64(hash ^ (uint64_t{item.index} << 1 | item.isNode()));
             return hash;
         }
     };
@@ -108,15 +110,13 @@ private:
 class MemoisedBuilder {
 public:
     MemoisedBuilder(const Grammar& grammar, const BGrammarOptions& options)
-        : grammar_(grammar),
-          options_(options),
-          seed_(options.seed.value_or(grammar.seed)),
-          random_(randomSymbols(grammar, options.interpreted)),
-          modules_(draft_),
-          nodes_(draft_) {
+        : grammar_(grammar), options_(options), seed_(options.seed.value_or(grammar.seed)),
+          random_(randomSymbols(grammar, options.interpreted)), modules_(draft_), nodes_(draft_) {
         draft_.symbolCount = grammar.symbols.size();
         draft_.interpreted = options.interpreted;
-        randomness_ = std::find(random_.begin(), random_.end(), 1) != random_.end() ? static_cast<uint32_t>(options.randomness) : 0;
+        randomness_ = std::find(random_.begin(), random_.end(), 1) != random_.end()
+                          ? static_cast<uint32_t>(options.randomness)
+                          : 0;
         draft_.method = randomness_ > 0 ? BGrammarMethod::PseudoStochastic : BGrammarMethod::Memoised;
         inert_.assign(grammar.symbols.size(), 1);
         for (const ProductionSet* set : {&grammar.rules, &grammar.decomposition, &grammar.interpretation}) {
@@ -133,7 +133,8 @@ public:
         std::vector<BodyItem> body;
         for (size_t i = 0; i < axiom.size(); ++i) {
             const uint32_t module = modules_.intern(axiom.symbols[i], axiom.parameters(i));
-            if (std::optional<BodyItem> item = resolve({module, steps, variantOf(module, axiomKey, i)})) body.push_back(*item);
+            if (std::optional<BodyItem> item = resolve({module, steps, variantOf(module, axiomKey, i)}))
+                body.push_back(*item);
         }
         appendNode(draft_, body, options_.limits);
         return finishBGrammar(std::move(draft_), options_.limits);
@@ -144,7 +145,7 @@ private:
     // and, in bodies_, the items of its body made so far.
     struct Frame {
         Key key;
-        uint64_t streamKey = 0;  // its random streams and its children's variants derive from this
+        uint64_t streamKey = 0; // its random streams and its children's variants derive from this
         size_t successorBegin = 0, successorEnd = 0, next = 0;
         size_t bodyBegin = 0;
     };
@@ -167,7 +168,8 @@ private:
                 }
                 continue;
             }
-            std::optional<BodyItem> item = itemFor({bodies_.data() + frame.bodyBegin, bodies_.size() - frame.bodyBegin});
+            std::optional<BodyItem> item =
+                itemFor({bodies_.data() + frame.bodyBegin, bodies_.size() - frame.bodyBegin});
             memo_.emplace(frame.key, item);
             bodies_.resize(frame.bodyBegin);
             successors_.resize(frame.successorBegin);
@@ -189,7 +191,8 @@ private:
         word.push(module.symbol, draft_.parametersOf(module));
         passesToFixpoint(grammar_.interpretation, kInterpretationPass, streamKeyOf(key), word);
         std::vector<BodyItem> body;
-        for (size_t i = 0; i < word.size(); ++i) body.push_back({BodyItem::Kind::Module, modules_.intern(word.symbols[i], word.parameters(i))});
+        for (size_t i = 0; i < word.size(); ++i)
+            body.push_back({BodyItem::Kind::Module, modules_.intern(word.symbols[i], word.parameters(i))});
         std::optional<BodyItem> item = itemFor(body);
         memo_.emplace(key, item);
         return item;
@@ -200,8 +203,9 @@ private:
         // Keys being rewritten and rewritten ones cost memory like body items
         // (a chain A(x) -> A(x+1) makes neither nodes nor items, only keys).
         if (frames_.size() + memo_.size() >= options_.limits.maxItems)
-            throw DerivationError("b-grammar budget exceeded: more than " + std::to_string(options_.limits.maxItems) +
-                                  " (module, step) keys to rewrite (raise it with --max-items, or lower the number of steps)");
+            throw DerivationError(
+                "b-grammar budget exceeded: more than " + std::to_string(options_.limits.maxItems) +
+                " (module, step) keys to rewrite (raise it with --max-items, or lower the number of steps)");
         const uint64_t streamKey = streamKeyOf(key);
         const uint64_t pass = static_cast<uint64_t>(key.remaining) * kPassesPerStep;
         const TerminalModule module = draft_.modules[key.module];
@@ -209,7 +213,8 @@ private:
         rewriteModule(grammar_.rules, module.symbol, draft_.parametersOf(module), {seed_, pass, streamKey}, word);
         passesToFixpoint(grammar_.decomposition, pass + 1, streamKey, word);
         Frame frame{key, streamKey, successors_.size(), 0, 0, bodies_.size()};
-        for (size_t i = 0; i < word.size(); ++i) successors_.push_back(modules_.intern(word.symbols[i], word.parameters(i)));
+        for (size_t i = 0; i < word.size(); ++i)
+            successors_.push_back(modules_.intern(word.symbols[i], word.parameters(i)));
         frame.successorEnd = successors_.size();
         frame.next = frame.successorBegin;
         frames_.push_back(frame);
@@ -224,8 +229,9 @@ private:
             next.clear();
             bool applied = false;
             for (size_t i = 0; i < word.size(); ++i)
-                applied |= rewriteModule(set, word.symbols[i], word.parameters(i),
-                                         {seed_, firstPass + static_cast<uint64_t>(depth), splitmix64(streamKey + i)}, next);
+                applied |=
+                    rewriteModule(set, word.symbols[i], word.parameters(i),
+                                  {seed_, firstPass + static_cast<uint64_t>(depth), splitmix64(streamKey + i)}, next);
             std::swap(word, next);
             if (word.size() > options_.limits.maxItems)
                 throw DerivationError("b-grammar budget exceeded: one module decomposes into more than " +
@@ -257,9 +263,9 @@ private:
     const Grammar& grammar_;
     const BGrammarOptions& options_;
     uint64_t seed_;
-    std::vector<uint8_t> random_;  // per symbol, from randomSymbols()
-    std::vector<uint8_t> inert_;   // per symbol: no production at all, the module stays as it is
-    uint32_t randomness_ = 0;      // k, 0 when no production draws
+    std::vector<uint8_t> random_; // per symbol, from randomSymbols()
+    std::vector<uint8_t> inert_;  // per symbol: no production at all, the module stays as it is
+    uint32_t randomness_ = 0;     // k, 0 when no production draws
     BGrammar draft_;
     ModuleInterner modules_;
     NodeInterner nodes_;
@@ -269,7 +275,7 @@ private:
     std::vector<BodyItem> bodies_;
 };
 
-}  // namespace
+} // namespace
 
 bool memoisable(const Grammar& grammar, const BGrammarOptions& options) {
     if (!contextFree(grammar, options.interpreted) || producedCut(grammar)) return false;
@@ -282,4 +288,4 @@ BGrammar memoisedBGrammar(const Grammar& grammar, const BGrammarOptions& options
     return MemoisedBuilder(grammar, options).build();
 }
 
-}  // namespace lsys
+} // namespace lsys

@@ -24,7 +24,7 @@ struct BufferAllocator : std::allocator<T> {
 
     template <typename U>
     void construct(U* pointer) noexcept {
-        ::new (static_cast<void*>(pointer)) U;  // default-initialise: no zeroing
+        ::new (static_cast<void*>(pointer)) U; // default-initialise: no zeroing
     }
     template <typename U, typename... Args>
     void construct(U* pointer, Args&&... args) {
@@ -35,4 +35,4 @@ struct BufferAllocator : std::allocator<T> {
 template <typename T>
 using Buffer = std::vector<T, BufferAllocator<T>>;
 
-}  // namespace lsys
+} // namespace lsys

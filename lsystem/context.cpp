@@ -5,7 +5,8 @@ namespace lsys {
 namespace {
 
 bool bindIfMatches(const ContextView& view, const PatternModule& module, size_t position, double* variables) {
-    if (view.string.symbols[position] != module.symbol || view.string.paramCount(position) != module.paramCount) return false;
+    if (view.string.symbols[position] != module.symbol || view.string.paramCount(position) != module.paramCount)
+        return false;
     const float* parameters = view.string.paramData(position);
     for (uint16_t k = 0; k < module.paramCount; ++k) variables[module.firstVariable + k] = parameters[k];
     return true;
@@ -13,7 +14,8 @@ bool bindIfMatches(const ContextView& view, const PatternModule& module, size_t 
 
 // Matches pattern[k..] against the string from position j onwards. Recursion
 // happens only at a '[' of the pattern, so its depth is bounded by the pattern.
-bool matchRightFrom(const ContextView& view, std::span<const PatternModule> pattern, size_t k, size_t j, double* variables) {
+bool matchRightFrom(const ContextView& view, std::span<const PatternModule> pattern, size_t k, size_t j,
+                    double* variables) {
     const size_t n = view.string.size();
     const SymbolId* symbols = view.string.symbols.data();
     for (; k < pattern.size(); ++k) {
@@ -30,7 +32,8 @@ bool matchRightFrom(const ContextView& view, std::span<const PatternModule> patt
         }
         if (wanted == kPop) {
             // The pattern leaves its branch: skip whatever remains of it.
-            while (j < n && symbols[j] != kPop) j = symbols[j] == kPush ? static_cast<size_t>(view.partners[j]) + 1 : j + 1;
+            while (j < n && symbols[j] != kPop)
+                j = symbols[j] == kPush ? static_cast<size_t>(view.partners[j]) + 1 : j + 1;
             if (j < n) ++j;
             continue;
         }
@@ -38,9 +41,9 @@ bool matchRightFrom(const ContextView& view, std::span<const PatternModule> patt
             if (j >= n) return false;
             const SymbolId symbol = symbols[j];
             if (symbol == kPush) {
-                j = static_cast<size_t>(view.partners[j]) + 1;  // a lateral branch the pattern does not mention
+                j = static_cast<size_t>(view.partners[j]) + 1; // a lateral branch the pattern does not mention
             } else if (symbol == kPop) {
-                return false;  // end of the branch: nothing follows on this axis
+                return false; // end of the branch: nothing follows on this axis
             } else if (view.ignored[symbol]) {
                 ++j;
             } else {
@@ -53,7 +56,7 @@ bool matchRightFrom(const ContextView& view, std::span<const PatternModule> patt
     return true;
 }
 
-}  // namespace
+} // namespace
 
 bool matchRight(const ContextView& view, std::span<const PatternModule> pattern, size_t position, double* variables) {
     return matchRightFrom(view, pattern, 0, position + 1, variables);
@@ -68,10 +71,10 @@ bool matchLeft(const ContextView& view, std::span<const PatternModule> pattern, 
             const SymbolId symbol = symbols[j];
             if (symbol == kPop) {
                 const int32_t open = view.partners[j];
-                if (open < 0) return false;  // unmatched ']': no axis to follow
-                j = open - 1;                // a whole branch before us on this axis
+                if (open < 0) return false; // unmatched ']': no axis to follow
+                j = open - 1;               // a whole branch before us on this axis
             } else if (symbol == kPush || view.ignored[symbol]) {
-                --j;                         // '[': climb to the parent axis
+                --j; // '[': climb to the parent axis
             } else {
                 break;
             }
@@ -82,4 +85,4 @@ bool matchLeft(const ContextView& view, std::span<const PatternModule> pattern, 
     return true;
 }
 
-}  // namespace lsys
+} // namespace lsys

@@ -21,8 +21,8 @@ namespace lsys {
 
 struct ContextView {
     const ModuleString& string;
-    const int32_t* partners;  // computeBracketPartners of string
-    const uint8_t* ignored;   // per symbol
+    const int32_t* partners; // computeBracketPartners of string
+    const uint8_t* ignored;  // per symbol
 };
 
 // On success the parameters of the context modules are written to variables
@@ -30,4 +30,4 @@ struct ContextView {
 bool matchLeft(const ContextView& view, std::span<const PatternModule> pattern, size_t position, double* variables);
 bool matchRight(const ContextView& view, std::span<const PatternModule> pattern, size_t position, double* variables);
 
-}  // namespace lsys
+} // namespace lsys

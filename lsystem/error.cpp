@@ -20,7 +20,7 @@ std::string_view lineOf(std::string_view source, int line) {
     return text;
 }
 
-}  // namespace
+} // namespace
 
 std::string formatDiagnostic(const Diagnostic& diagnostic, std::string_view source) {
     std::string out = diagnostic.file + ":" + std::to_string(diagnostic.line) + ":" +
@@ -52,4 +52,4 @@ void sortBySourcePosition(std::vector<Diagnostic>& diagnostics) {
     });
 }
 
-}  // namespace lsys
+} // namespace lsys

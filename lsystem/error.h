@@ -13,8 +13,8 @@ struct Diagnostic {
     std::string file;
     int line = 0;
     int column = 0;
-    std::string message;   // what is wrong
-    std::string expected;  // what would have been accepted here (may be empty)
+    std::string message;  // what is wrong
+    std::string expected; // what would have been accepted here (may be empty)
 };
 
 // "file:line:col: error: message (expected ...)" followed by the offending
@@ -30,4 +30,4 @@ struct DerivationError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-}  // namespace lsys
+} // namespace lsys

@@ -41,4 +41,4 @@ void writeGltf(const PlantAsset& asset, std::ostream& out, const ExportOptions& 
 void writeObj(const PlantAsset& asset, std::ostream& obj, std::ostream& mtl, const std::string& mtlFileName,
               const ExportOptions& options);
 
-}  // namespace lsys::export_detail
+} // namespace lsys::export_detail

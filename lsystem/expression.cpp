@@ -16,22 +16,36 @@ struct Function {
 };
 
 constexpr Function kFunctions[] = {
-    {"sin", Op::Sin, 1},     {"cos", Op::Cos, 1},     {"tan", Op::Tan, 1},   {"asin", Op::Asin, 1},
-    {"acos", Op::Acos, 1},   {"atan", Op::Atan, 1},   {"atan2", Op::Atan2, 2}, {"sqrt", Op::Sqrt, 1},
-    {"exp", Op::Exp, 1},     {"log", Op::Log, 1},     {"abs", Op::Abs, 1},   {"floor", Op::Floor, 1},
-    {"ceil", Op::Ceil, 1},   {"min", Op::Min, 2},     {"max", Op::Max, 2},   {"clamp", Op::Clamp, 3},
-    {"ran", Op::Ran, 1},     {"nran", Op::NRan, 2},
+    {"sin", Op::Sin, 1},   {"cos", Op::Cos, 1},   {"tan", Op::Tan, 1},     {"asin", Op::Asin, 1},
+    {"acos", Op::Acos, 1}, {"atan", Op::Atan, 1}, {"atan2", Op::Atan2, 2}, {"sqrt", Op::Sqrt, 1},
+    {"exp", Op::Exp, 1},   {"log", Op::Log, 1},   {"abs", Op::Abs, 1},     {"floor", Op::Floor, 1},
+    {"ceil", Op::Ceil, 1}, {"min", Op::Min, 2},   {"max", Op::Max, 2},     {"clamp", Op::Clamp, 3},
+    {"ran", Op::Ran, 1},   {"nran", Op::NRan, 2},
 };
 
 // Net effect of each instruction on the stack depth.
 int stackEffect(Op op) {
     switch (op) {
-        case Op::Const: case Op::Var: return 1;
-        case Op::Neg: case Op::Not: case Op::Sin: case Op::Cos: case Op::Tan: case Op::Asin: case Op::Acos:
-        case Op::Atan: case Op::Sqrt: case Op::Exp: case Op::Log: case Op::Abs: case Op::Floor: case Op::Ceil:
-        case Op::Ran: return 0;
-        case Op::Select: case Op::Clamp: return -2;
-        default: return -1;
+    case Op::Const:
+    case Op::Var: return 1;
+    case Op::Neg:
+    case Op::Not:
+    case Op::Sin:
+    case Op::Cos:
+    case Op::Tan:
+    case Op::Asin:
+    case Op::Acos:
+    case Op::Atan:
+    case Op::Sqrt:
+    case Op::Exp:
+    case Op::Log:
+    case Op::Abs:
+    case Op::Floor:
+    case Op::Ceil:
+    case Op::Ran: return 0;
+    case Op::Select:
+    case Op::Clamp: return -2;
+    default: return -1;
     }
 }
 
@@ -73,7 +87,7 @@ struct Compiler {
 
     const Binary* peekBinary() {
         cursor.skipSpaces();
-        if (cursor.atArrow()) return nullptr;  // "x > 0 --> ..." : the '-' begins the arrow
+        if (cursor.atArrow()) return nullptr; // "x > 0 --> ..." : the '-' begins the arrow
         for (const Binary& binary : kBinaries)
             if (cursor.startsWith(binary.token)) return &binary;
         return nullptr;
@@ -142,7 +156,8 @@ struct Compiler {
         while (std::isdigit(static_cast<unsigned char>(cursor.peek())) || cursor.peek() == '.') ++cursor.pos;
         if ((cursor.peek() == 'e' || cursor.peek() == 'E') &&
             (std::isdigit(static_cast<unsigned char>(cursor.peek(1))) ||
-             ((cursor.peek(1) == '-' || cursor.peek(1) == '+') && std::isdigit(static_cast<unsigned char>(cursor.peek(2)))))) {
+             ((cursor.peek(1) == '-' || cursor.peek(1) == '+') &&
+              std::isdigit(static_cast<unsigned char>(cursor.peek(2)))))) {
             cursor.pos += 2;
             while (std::isdigit(static_cast<unsigned char>(cursor.peek()))) ++cursor.pos;
         }
@@ -163,8 +178,9 @@ struct Compiler {
             if (argument > 0) {
                 cursor.skipSpaces();
                 if (!cursor.accept(","))
-                    return fail("function '" + std::string(function.name) + "' takes " + std::to_string(function.arity) +
-                                    " arguments", "','");
+                    return fail("function '" + std::string(function.name) + "' takes " +
+                                    std::to_string(function.arity) + " arguments",
+                                "','");
             }
             expression(nesting + 1);
             if (failed) return;
@@ -172,14 +188,16 @@ struct Compiler {
         cursor.skipSpaces();
         if (!cursor.accept(")"))
             return fail("function '" + std::string(function.name) + "' takes " + std::to_string(function.arity) +
-                            " argument" + (function.arity > 1 ? "s" : ""), "')'");
+                            " argument" + (function.arity > 1 ? "s" : ""),
+                        "')'");
         emit({function.op});
     }
 
     void primary(int nesting) {
         cursor.skipSpaces();
         char c = cursor.peek();
-        if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && std::isdigit(static_cast<unsigned char>(cursor.peek(1))))) {
+        if (std::isdigit(static_cast<unsigned char>(c)) ||
+            (c == '.' && std::isdigit(static_cast<unsigned char>(cursor.peek(1))))) {
             number();
         } else if (c == '(') {
             cursor.accept("(");
@@ -206,7 +224,7 @@ struct Compiler {
     }
 };
 
-}  // namespace
+} // namespace
 
 std::optional<Expression> parseExpression(Cursor& cursor, const ExpressionScope& scope, const std::string& file,
                                           std::vector<Diagnostic>& diagnostics) {
@@ -225,54 +243,111 @@ std::optional<Expression> parseExpression(Cursor& cursor, const ExpressionScope&
 
 double evaluate(const Expression& expression, const double* variables, RandomStream& random) {
     double stack[kMaxStack];
-    int top = -1;  // index of the top element
+    int top = -1; // index of the top element
     for (const Instruction& instruction : expression.code) {
-        double& a = stack[top > 0 ? top - 1 : 0];  // second from the top, for binary operators
+        double& a = stack[top > 0 ? top - 1 : 0]; // second from the top, for binary operators
         double& t = stack[top >= 0 ? top : 0];
         switch (instruction.op) {
-            case Op::Const: stack[++top] = instruction.value; break;
-            case Op::Var: stack[++top] = variables[instruction.variable]; break;
-            case Op::Neg: t = -t; break;
-            case Op::Not: t = t == 0.0 ? 1.0 : 0.0; break;
-            case Op::Add: a = a + t; --top; break;
-            case Op::Sub: a = a - t; --top; break;
-            case Op::Mul: a = a * t; --top; break;
-            case Op::Div: a = a / t; --top; break;
-            case Op::Pow: a = std::pow(a, t); --top; break;
-            case Op::Mod: a = std::fmod(a, t); --top; break;
-            case Op::Lt: a = a < t; --top; break;
-            case Op::Le: a = a <= t; --top; break;
-            case Op::Gt: a = a > t; --top; break;
-            case Op::Ge: a = a >= t; --top; break;
-            case Op::Eq: a = a == t; --top; break;
-            case Op::Ne: a = a != t; --top; break;
-            case Op::And: a = (a != 0.0 && t != 0.0); --top; break;
-            case Op::Or: a = (a != 0.0 || t != 0.0); --top; break;
-            case Op::Select: stack[top - 2] = stack[top - 2] != 0.0 ? stack[top - 1] : stack[top]; top -= 2; break;
-            case Op::Sin: t = std::sin(t); break;
-            case Op::Cos: t = std::cos(t); break;
-            case Op::Tan: t = std::tan(t); break;
-            case Op::Asin: t = std::asin(t); break;
-            case Op::Acos: t = std::acos(t); break;
-            case Op::Atan: t = std::atan(t); break;
-            case Op::Atan2: a = std::atan2(a, t); --top; break;
-            case Op::Sqrt: t = std::sqrt(t); break;
-            case Op::Exp: t = std::exp(t); break;
-            case Op::Log: t = std::log(t); break;
-            case Op::Abs: t = std::fabs(t); break;
-            case Op::Floor: t = std::floor(t); break;
-            case Op::Ceil: t = std::ceil(t); break;
-            case Op::Min: a = std::min(a, t); --top; break;
-            case Op::Max: a = std::max(a, t); --top; break;
-            case Op::Clamp:
-                stack[top - 2] = std::clamp(stack[top - 2], std::min(stack[top - 1], t), std::max(stack[top - 1], t));
-                top -= 2;
-                break;
-            case Op::Ran: t = t * random.uniform(); break;
-            case Op::NRan: a = random.normal(a, t); --top; break;
+        case Op::Const: stack[++top] = instruction.value; break;
+        case Op::Var: stack[++top] = variables[instruction.variable]; break;
+        case Op::Neg: t = -t; break;
+        case Op::Not: t = t == 0.0 ? 1.0 : 0.0; break;
+        case Op::Add:
+            a = a + t;
+            --top;
+            break;
+        case Op::Sub:
+            a = a - t;
+            --top;
+            break;
+        case Op::Mul:
+            a = a * t;
+            --top;
+            break;
+        case Op::Div:
+            a = a / t;
+            --top;
+            break;
+        case Op::Pow:
+            a = std::pow(a, t);
+            --top;
+            break;
+        case Op::Mod:
+            a = std::fmod(a, t);
+            --top;
+            break;
+        case Op::Lt:
+            a = a < t;
+            --top;
+            break;
+        case Op::Le:
+            a = a <= t;
+            --top;
+            break;
+        case Op::Gt:
+            a = a > t;
+            --top;
+            break;
+        case Op::Ge:
+            a = a >= t;
+            --top;
+            break;
+        case Op::Eq:
+            a = a == t;
+            --top;
+            break;
+        case Op::Ne:
+            a = a != t;
+            --top;
+            break;
+        case Op::And:
+            a = (a != 0.0 && t != 0.0);
+            --top;
+            break;
+        case Op::Or:
+            a = (a != 0.0 || t != 0.0);
+            --top;
+            break;
+        case Op::Select:
+            stack[top - 2] = stack[top - 2] != 0.0 ? stack[top - 1] : stack[top];
+            top -= 2;
+            break;
+        case Op::Sin: t = std::sin(t); break;
+        case Op::Cos: t = std::cos(t); break;
+        case Op::Tan: t = std::tan(t); break;
+        case Op::Asin: t = std::asin(t); break;
+        case Op::Acos: t = std::acos(t); break;
+        case Op::Atan: t = std::atan(t); break;
+        case Op::Atan2:
+            a = std::atan2(a, t);
+            --top;
+            break;
+        case Op::Sqrt: t = std::sqrt(t); break;
+        case Op::Exp: t = std::exp(t); break;
+        case Op::Log: t = std::log(t); break;
+        case Op::Abs: t = std::fabs(t); break;
+        case Op::Floor: t = std::floor(t); break;
+        case Op::Ceil: t = std::ceil(t); break;
+        case Op::Min:
+            a = std::min(a, t);
+            --top;
+            break;
+        case Op::Max:
+            a = std::max(a, t);
+            --top;
+            break;
+        case Op::Clamp:
+            stack[top - 2] = std::clamp(stack[top - 2], std::min(stack[top - 1], t), std::max(stack[top - 1], t));
+            top -= 2;
+            break;
+        case Op::Ran: t = t * random.uniform(); break;
+        case Op::NRan:
+            a = random.normal(a, t);
+            --top;
+            break;
         }
     }
     return top >= 0 ? stack[top] : 0.0;
 }
 
-}  // namespace lsys
+} // namespace lsys

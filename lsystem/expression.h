@@ -16,24 +16,54 @@
 namespace lsys {
 
 enum class Op : uint8_t {
-    Const, Var,
-    Neg, Not,
-    Add, Sub, Mul, Div, Pow, Mod,
-    Lt, Le, Gt, Ge, Eq, Ne, And, Or,
-    Select,  // c ? a : b, with all three evaluated
-    Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sqrt, Exp, Log, Abs, Floor, Ceil, Min, Max, Clamp,
-    Ran, NRan,
+    Const,
+    Var,
+    Neg,
+    Not,
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Pow,
+    Mod,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+    Eq,
+    Ne,
+    And,
+    Or,
+    Select, // c ? a : b, with all three evaluated
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Atan2,
+    Sqrt,
+    Exp,
+    Log,
+    Abs,
+    Floor,
+    Ceil,
+    Min,
+    Max,
+    Clamp,
+    Ran,
+    NRan,
 };
 
 struct Instruction {
     Op op;
-    uint16_t variable = 0;  // for Var
-    double value = 0;       // for Const
+    uint16_t variable = 0; // for Var
+    double value = 0;      // for Const
 };
 
-inline constexpr int kMaxStack = 32;       // deepest evaluation stack an expression may need
-inline constexpr int kMaxNesting = 64;     // parser recursion bound
-inline constexpr int kMaxVariables = 64;   // formal parameters of one production
+inline constexpr int kMaxStack = 32;     // deepest evaluation stack an expression may need
+inline constexpr int kMaxNesting = 64;   // parser recursion bound
+inline constexpr int kMaxVariables = 64; // formal parameters of one production
 
 struct Expression {
     std::vector<Instruction> code;
@@ -55,4 +85,4 @@ std::optional<Expression> parseExpression(Cursor& cursor, const ExpressionScope&
 
 double evaluate(const Expression& expression, const double* variables, RandomStream& random);
 
-}  // namespace lsys
+} // namespace lsys

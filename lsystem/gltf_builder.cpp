@@ -97,7 +97,8 @@ int GltfBuilder::addAccessor(const std::vector<T>& values, int type, int target,
 
     tinygltf::Accessor& accessor = model.accessors.emplace_back();
     accessor.bufferView = int(model.bufferViews.size() - 1);
-    accessor.componentType = std::is_same_v<T, uint32_t> ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT : TINYGLTF_COMPONENT_TYPE_FLOAT;
+    accessor.componentType =
+        std::is_same_v<T, uint32_t> ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT : TINYGLTF_COMPONENT_TYPE_FLOAT;
     accessor.type = type;
     accessor.count = values.size();
     accessor.minValues = std::move(min);
@@ -105,4 +106,4 @@ int GltfBuilder::addAccessor(const std::vector<T>& values, int type, int target,
     return int(model.accessors.size() - 1);
 }
 
-}  // namespace lsys::export_detail
+} // namespace lsys::export_detail

@@ -44,4 +44,4 @@ private:
                     std::vector<double> max = {});
 };
 
-}  // namespace lsys::export_detail
+} // namespace lsys::export_detail

@@ -21,17 +21,19 @@ void addSkeleton(GltfBuilder& builder, const PlantAsset& asset) {
     std::vector<int> nodes;
     for (size_t i = 0; i < asset.joints.size(); ++i) {
         const Joint& joint = asset.joints[i];
-        const Frame local = joint.parent < 0 ? joint.rest : relativeTo(asset.joints[size_t(joint.parent)].rest, joint.rest);
+        const Frame local =
+            joint.parent < 0 ? joint.rest : relativeTo(asset.joints[size_t(joint.parent)].rest, joint.rest);
         nodes.push_back(builder.addNode("joint_" + std::to_string(i), -1, local));
     }
     // Linked once all exist: a parent may come after its child in the table.
     for (size_t i = 0; i < asset.joints.size(); ++i) {
         const int32_t parent = asset.joints[i].parent;
-        builder.model.nodes[size_t(parent < 0 ? GltfBuilder::kRoot : nodes[size_t(parent)])].children.push_back(nodes[i]);
+        builder.model.nodes[size_t(parent < 0 ? GltfBuilder::kRoot : nodes[size_t(parent)])].children.push_back(
+            nodes[i]);
     }
 }
 
-}  // namespace
+} // namespace
 
 void writeGltf(const PlantAsset& asset, std::ostream& out, const ExportOptions& options, bool binary) {
     GltfBuilder builder(asset.materials);
@@ -46,4 +48,4 @@ void writeGltf(const PlantAsset& asset, std::ostream& out, const ExportOptions& 
     builder.write(out, binary);
 }
 
-}  // namespace lsys::export_detail
+} // namespace lsys::export_detail

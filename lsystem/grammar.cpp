@@ -16,7 +16,8 @@ void index(ProductionSet& set, size_t symbolCount) {
     set.contextSensitive = false;
     for (size_t i = 0; i < set.productions.size(); ++i) {
         Production& production = set.productions[i];
-        production.usesRandom = production.groupSize > 1 || (production.condition && drawsRandom(*production.condition));
+        production.usesRandom =
+            production.groupSize > 1 || (production.condition && drawsRandom(*production.condition));
         for (const SuccessorModule& module : production.successor) {
             set.producesParameters |= !module.arguments.empty();
             for (const Expression& argument : module.arguments) production.usesRandom |= drawsRandom(argument);
@@ -30,7 +31,7 @@ void index(ProductionSet& set, size_t symbolCount) {
             set.productions[i].usesRandom |= set.productions[i + k].usesRandom;
 }
 
-}  // namespace
+} // namespace
 
 void finalizeGrammar(Grammar& grammar) {
     index(grammar.rules, grammar.symbols.size());
@@ -39,4 +40,4 @@ void finalizeGrammar(Grammar& grammar) {
     grammar.ignored.resize(grammar.symbols.size(), 0);
 }
 
-}  // namespace lsys
+} // namespace lsys

@@ -29,9 +29,9 @@ struct SuccessorModule {
 struct Production {
     std::string label;
     int line = 0;
-    std::vector<PatternModule> left;   // left context, in string order
-    PatternModule strict;              // the module being replaced
-    std::vector<PatternModule> right;  // right context, may contain [ and ]
+    std::vector<PatternModule> left;  // left context, in string order
+    PatternModule strict;             // the module being replaced
+    std::vector<PatternModule> right; // right context, may contain [ and ]
     std::vector<std::string> variables;
     std::optional<Expression> condition;
     std::vector<SuccessorModule> successor;
@@ -40,14 +40,14 @@ struct Production {
     double probability = 1.0;
     bool stochastic = false;
     uint32_t groupSize = 1;
-    bool usesRandom = false;  // condition, probability choice or arguments draw random numbers
+    bool usesRandom = false; // condition, probability choice or arguments draw random numbers
 };
 
 struct ProductionSet {
-    std::vector<Production> productions;  // file order
+    std::vector<Production> productions; // file order
     // Per symbol, the productions to try in order (group leaders only).
     std::vector<std::vector<uint32_t>> bySymbol;
-    int maxDepth = 1;  // decomposition / interpretation passes
+    int maxDepth = 1; // decomposition / interpretation passes
     bool producesParameters = false;
     bool contextSensitive = false;
     bool empty() const { return productions.empty(); }
@@ -59,11 +59,11 @@ struct Grammar {
     std::unordered_map<std::string, double> constants;
     uint64_t seed = 0;
     int derivationLength = 0;
-    double angle = 45.0;  // degrees, default for bare + - & ^ \ /
-    double step = 1.0;    // default length for bare F f
-    double width = 1.0;   // initial width
-    std::vector<SuccessorModule> axiom;  // evaluated when a derivation starts, with its seed
-    std::vector<uint8_t> ignored;  // per symbol: 1 when skipped while matching context
+    double angle = 45.0;                // degrees, default for bare + - & ^ \ /
+    double step = 1.0;                  // default length for bare F f
+    double width = 1.0;                 // initial width
+    std::vector<SuccessorModule> axiom; // evaluated when a derivation starts, with its seed
+    std::vector<uint8_t> ignored;       // per symbol: 1 when skipped while matching context
     ProductionSet rules;
     ProductionSet decomposition;
     ProductionSet interpretation;
@@ -72,4 +72,4 @@ struct Grammar {
 // Indexes productions by symbol and sizes the per-symbol tables; called by the parser.
 void finalizeGrammar(Grammar& grammar);
 
-}  // namespace lsys
+} // namespace lsys

@@ -30,13 +30,17 @@ PlantAsset directPrimitives(const InstanceGraph& graph, uint32_t object, const S
         if (item.kind != GraphItem::Kind::Primitive) continue;
         const GraphPrimitive& p = graph.primitives[item.index];
         switch (p.kind) {
-            case PrimitiveKind::Segment:
-                localJoint[p.joint] =
-                    builder.addSegment(p.frame, p.length, p.startRadius, p.endRadius, p.material, local(p.parentJoint), p.stiffness);
-                break;
-            case PrimitiveKind::Sphere: builder.addSphere(p.frame, p.startRadius, p.material, -1); break;
-            case PrimitiveKind::Surface: builder.addSurface(graph.surfaceNames[p.shape], p.frame, p.length, p.material, -1); break;
-            case PrimitiveKind::Polygon: builder.addPolygon(p.frame, graph.polygons[p.shape].outline, p.material, -1); break;
+        case PrimitiveKind::Segment:
+            localJoint[p.joint] = builder.addSegment(p.frame, p.length, p.startRadius, p.endRadius, p.material,
+                                                     local(p.parentJoint), p.stiffness);
+            break;
+        case PrimitiveKind::Sphere: builder.addSphere(p.frame, p.startRadius, p.material, -1); break;
+        case PrimitiveKind::Surface:
+            builder.addSurface(graph.surfaceNames[p.shape], p.frame, p.length, p.material, -1);
+            break;
+        case PrimitiveKind::Polygon:
+            builder.addPolygon(p.frame, graph.polygons[p.shape].outline, p.material, -1);
+            break;
         }
     }
     return builder.finish();
@@ -80,8 +84,8 @@ void addInstanceNodes(GltfBuilder& builder, const InstanceGraph& graph, const st
     for (const GraphItem& item : graph.itemsOf(object)) {
         if (!needsNode(graph, item)) continue;
         const GraphInstance& instance = graph.instances[item.index];
-        const int child = builder.addNode("object_" + std::to_string(instance.object), node, instance.frame,
-                                          meshOf[instance.object]);
+        const int child =
+            builder.addNode("object_" + std::to_string(instance.object), node, instance.frame, meshOf[instance.object]);
         addInstanceNodes(builder, graph, meshOf, instance.object, child);
     }
 }
@@ -109,7 +113,7 @@ void writeGraphGltf(const InstanceGraph& graph, const SurfaceLibrary& surfaces, 
     builder.write(out, binary);
 }
 
-}  // namespace
+} // namespace
 
 uint64_t graphExportNodeCount(const InstanceGraph& graph) {
     return graph.objects.empty() ? 1 : nodeCounts(graph)[graph.root];
@@ -128,7 +132,8 @@ GraphExportSummary exportInstanceGraph(const InstanceGraph& graph, const Surface
         if (nodes > options.maxNodes)
             throw std::runtime_error("the instanced form would write " + std::to_string(nodes) +
                                      " glTF nodes (one per instance path), more than the budget of " +
-                                     std::to_string(options.maxNodes) + "; export the flat form (--flat) or derive fewer steps");
+                                     std::to_string(options.maxNodes) +
+                                     "; export the flat form (--flat) or derive fewer steps");
         PartialFile file(path);
         writeGraphGltf(graph, surfaces, file.stream(), options, extension == ".glb", summary);
         file.commit();
@@ -138,4 +143,4 @@ GraphExportSummary exportInstanceGraph(const InstanceGraph& graph, const Surface
     return summary;
 }
 
-}  // namespace lsys
+} // namespace lsys

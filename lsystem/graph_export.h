@@ -45,4 +45,4 @@ uint64_t graphExportNodeCount(const InstanceGraph& graph);
 GraphExportSummary exportInstanceGraph(const InstanceGraph& graph, const SurfaceLibrary& surfaces,
                                        const std::filesystem::path& path, const GraphExportOptions& options = {});
 
-}  // namespace lsys
+} // namespace lsys

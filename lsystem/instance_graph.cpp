@@ -23,7 +23,7 @@ public:
 
 private:
     void walk(uint32_t object, const Frame& frame, int32_t entryJoint) {
-        const int64_t base = joints_;  // the subtree's first joint
+        const int64_t base = joints_; // the subtree's first joint
         auto global = [&](JointRef ref) { return ref == kEntryJoint ? entryJoint : static_cast<int32_t>(base + ref); };
         for (const GraphItem& item : graph_.itemsOf(object)) {
             if (item.kind == GraphItem::Kind::Instance) {
@@ -34,20 +34,22 @@ private:
             const GraphPrimitive& p = graph_.primitives[item.index];
             const Frame placed = compose(frame, p.frame);
             switch (p.kind) {
-                case PrimitiveKind::Segment:
-                    out_.addSegment(placed, p.length, p.startRadius, p.endRadius, p.material, global(p.parentJoint), p.stiffness);
-                    ++joints_;
-                    break;
-                case PrimitiveKind::Sphere: out_.addSphere(placed, p.startRadius, p.material, global(p.joint)); break;
-                case PrimitiveKind::Surface:
-                    out_.addSurface(graph_.surfaceNames[p.shape], placed, p.length, p.material, global(p.joint));
-                    break;
-                case PrimitiveKind::Polygon: {
-                    std::vector<glm::vec3> outline;
-                    for (const glm::vec3& v : graph_.polygons[p.shape].outline) outline.push_back(frame.position + frame.rotation * v);
-                    out_.addPolygon(placed, std::move(outline), p.material, global(p.joint));
-                    break;
-                }
+            case PrimitiveKind::Segment:
+                out_.addSegment(placed, p.length, p.startRadius, p.endRadius, p.material, global(p.parentJoint),
+                                p.stiffness);
+                ++joints_;
+                break;
+            case PrimitiveKind::Sphere: out_.addSphere(placed, p.startRadius, p.material, global(p.joint)); break;
+            case PrimitiveKind::Surface:
+                out_.addSurface(graph_.surfaceNames[p.shape], placed, p.length, p.material, global(p.joint));
+                break;
+            case PrimitiveKind::Polygon: {
+                std::vector<glm::vec3> outline;
+                for (const glm::vec3& v : graph_.polygons[p.shape].outline)
+                    outline.push_back(frame.position + frame.rotation * v);
+                out_.addPolygon(placed, std::move(outline), p.material, global(p.joint));
+                break;
+            }
             }
         }
     }
@@ -62,7 +64,7 @@ size_t bytesOf(const std::vector<T>& v) {
     return v.size() * sizeof(T);
 }
 
-}  // namespace
+} // namespace
 
 Frame compose(const Frame& parent, const Frame& local) {
     return {parent.position + parent.rotation * local.position, glm::normalize(parent.rotation * local.rotation)};
@@ -82,8 +84,8 @@ Bounds transformed(const Bounds& local, const Frame& frame) {
 PlantAsset flatten(const InstanceGraph& graph, const SurfaceLibrary& surfaces, uint64_t maxPrimitives) {
     if (!graph.objects.empty() && graph.objects[graph.root].primitives > maxPrimitives)
         throw DerivationError("flattening the instance graph would give " +
-                              std::to_string(graph.objects[graph.root].primitives) + " primitives, more than the budget of " +
-                              std::to_string(maxPrimitives));
+                              std::to_string(graph.objects[graph.root].primitives) +
+                              " primitives, more than the budget of " + std::to_string(maxPrimitives));
     return Flattener(graph, surfaces).run();
 }
 
@@ -96,12 +98,13 @@ InstanceGraphStats instanceGraphStats(const InstanceGraph& graph) {
         stats.primitives = graph.objects[graph.root].primitives;
         stats.joints = graph.objects[graph.root].joints;
     }
-    stats.bytesGraph = sizeof(InstanceGraph) + bytesOf(graph.objects) + bytesOf(graph.items) + bytesOf(graph.primitives) +
-                       bytesOf(graph.instances) + bytesOf(graph.polygons) + bytesOf(graph.surfaceNames);
+    stats.bytesGraph = sizeof(InstanceGraph) + bytesOf(graph.objects) + bytesOf(graph.items) +
+                       bytesOf(graph.primitives) + bytesOf(graph.instances) + bytesOf(graph.polygons) +
+                       bytesOf(graph.surfaceNames);
     for (const PolygonShape& polygon : graph.polygons) stats.bytesGraph += bytesOf(polygon.outline);
     for (const std::string& name : graph.surfaceNames) stats.bytesGraph += name.size();
     if (__builtin_mul_overflow(stats.primitives, sizeof(Primitive), &stats.bytesFlat)) stats.bytesFlat = SIZE_MAX;
     return stats;
 }
 
-}  // namespace lsys
+} // namespace lsys

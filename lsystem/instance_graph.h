@@ -51,9 +51,9 @@ struct GraphPrimitive {
     float length = 0.0f;
     float startRadius = 0.0f;
     float endRadius = 0.0f;
-    float stiffness = 0.0f;  // Segment: of its joint
-    JointRef joint = kEntryJoint;        // a Segment's own joint; what other primitives move with
-    JointRef parentJoint = kEntryJoint;  // Segment: the joint it grows on
+    float stiffness = 0.0f;             // Segment: of its joint
+    JointRef joint = kEntryJoint;       // a Segment's own joint; what other primitives move with
+    JointRef parentJoint = kEntryJoint; // Segment: the joint it grows on
 };
 
 // An instance of an object inside another: its frame in the parent's space
@@ -68,11 +68,11 @@ struct GraphInstance {
 struct GraphItem {
     enum class Kind : uint8_t { Primitive, Instance };
     Kind kind = Kind::Primitive;
-    uint32_t index = 0;  // into InstanceGraph::primitives or InstanceGraph::instances
+    uint32_t index = 0; // into InstanceGraph::primitives or InstanceGraph::instances
 };
 
 struct GraphObject {
-    uint32_t node = 0;  // the b-grammar node it interprets
+    uint32_t node = 0; // the b-grammar node it interprets
     uint32_t itemStart = 0;
     uint32_t itemCount = 0;
     Bounds bounds;           // of everything the subtree draws, in local space
@@ -81,14 +81,14 @@ struct GraphObject {
 };
 
 struct InstanceGraph {
-    std::vector<GraphObject> objects;  // children before parents
-    std::vector<GraphItem> items;      // the objects' items, back to back
+    std::vector<GraphObject> objects; // children before parents
+    std::vector<GraphItem> items;     // the objects' items, back to back
     std::vector<GraphPrimitive> primitives;
     std::vector<GraphInstance> instances;
-    std::vector<PolygonShape> polygons;     // outlines in the space of the object drawing them
-    std::vector<std::string> surfaceNames;  // of GraphPrimitive::shape for surfaces
-    size_t nodes = 0;                       // of the b-grammar
-    uint32_t root = 0;                      // the axiom's object, interpreted from the plant's start
+    std::vector<PolygonShape> polygons;    // outlines in the space of the object drawing them
+    std::vector<std::string> surfaceNames; // of GraphPrimitive::shape for surfaces
+    size_t nodes = 0;                      // of the b-grammar
+    uint32_t root = 0;                     // the axiom's object, interpreted from the plant's start
 
     std::span<const GraphItem> itemsOf(uint32_t object) const {
         return {items.data() + objects[object].itemStart, objects[object].itemCount};
@@ -105,7 +105,7 @@ struct InstanceGraphOptions {
     // world vertical, for `$`) seen from the entry frame fall in the same cell of
     // pi/G in both spherical angles share an object. 0: only identical ones (exact).
     int orientationGranularity = 0;
-    size_t maxObjects = 1'000'000;  // DerivationError past it
+    size_t maxObjects = 1'000'000; // DerivationError past it
 };
 
 // The hierarchy of the b-grammar's word, which must be the word the turtle
@@ -115,7 +115,8 @@ struct InstanceGraphOptions {
 // SurfaceError for a surface the library lacks, std::invalid_argument for a
 // b-grammar that is not the interpreted word.
 InstanceGraph buildInstanceGraph(const BGrammar& bgrammar, const Grammar& grammar,
-                                 const InstanceGraphOptions& options = {}, const SurfaceLibrary& surfaces = SurfaceLibrary{});
+                                 const InstanceGraphOptions& options = {},
+                                 const SurfaceLibrary& surfaces = SurfaceLibrary{});
 
 // The plant the hierarchy stands for, walked from the root with accumulated
 // transforms: the PlantAsset interpreting the whole word gives. Throws
@@ -124,16 +125,18 @@ PlantAsset flatten(const InstanceGraph& graph, const SurfaceLibrary& surfaces = 
                    uint64_t maxPrimitives = 50'000'000);
 
 struct InstanceGraphStats {
-    size_t nodes = 0;         // of the b-grammar
-    size_t objects = 0;       // distinct (node, entry values read)
-    uint64_t instances = 0;   // child references plus primitives placed directly, over all objects
-    uint64_t primitives = 0;  // after flattening, from memoised counts
+    size_t nodes = 0;        // of the b-grammar
+    size_t objects = 0;      // distinct (node, entry values read)
+    uint64_t instances = 0;  // child references plus primitives placed directly, over all objects
+    uint64_t primitives = 0; // after flattening, from memoised counts
     uint64_t joints = 0;
-    size_t bytesGraph = 0;    // the graph's arrays
-    size_t bytesFlat = 0;     // primitives x sizeof(Primitive) (saturates)
-    double compression() const { return instances == 0 ? 0.0 : static_cast<double>(primitives) / static_cast<double>(instances); }
+    size_t bytesGraph = 0; // the graph's arrays
+    size_t bytesFlat = 0;  // primitives x sizeof(Primitive) (saturates)
+    double compression() const {
+        return instances == 0 ? 0.0 : static_cast<double>(primitives) / static_cast<double>(instances);
+    }
 };
 
 InstanceGraphStats instanceGraphStats(const InstanceGraph& graph);
 
-}  // namespace lsys
+} // namespace lsys

@@ -50,12 +50,16 @@ std::vector<NodeSummary> summarise(const BGrammar& bgrammar, std::span<const Tur
                 continue;
             }
             switch (commands[bgrammar.modules[item.index].symbol].action) {
-                case TurtleAction::Push: ++summary.bracketChange; break;
-                case TurtleAction::Pop: summary.bracketLowest = std::min(summary.bracketLowest, --summary.bracketChange); break;
-                case TurtleAction::PolygonBegin: ++summary.polygonChange; break;
-                case TurtleAction::PolygonEnd: summary.polygonLowest = std::min(summary.polygonLowest, --summary.polygonChange); break;
-                case TurtleAction::Cut: summary.cut = true; break;
-                default: break;
+            case TurtleAction::Push: ++summary.bracketChange; break;
+            case TurtleAction::Pop:
+                summary.bracketLowest = std::min(summary.bracketLowest, --summary.bracketChange);
+                break;
+            case TurtleAction::PolygonBegin: ++summary.polygonChange; break;
+            case TurtleAction::PolygonEnd:
+                summary.polygonLowest = std::min(summary.polygonLowest, --summary.polygonChange);
+                break;
+            case TurtleAction::Cut: summary.cut = true; break;
+            default: break;
             }
         }
     }
@@ -98,7 +102,8 @@ public:
         }
         const uint32_t object = buildObject(node, entry);
         const uint16_t mask = built_[object].reads;
-        auto keyed = std::find_if(lookup_[node].begin(), lookup_[node].end(), [&](const KeyedObjects& k) { return k.mask == mask; });
+        auto keyed = std::find_if(lookup_[node].begin(), lookup_[node].end(),
+                                  [&](const KeyedObjects& k) { return k.mask == mask; });
         if (keyed == lookup_[node].end()) keyed = lookup_[node].insert(keyed, KeyedObjects{mask, {}});
         keyed->objects.emplace(styleKey(entry, mask, options_.orientationGranularity), object);
         return object;
@@ -112,8 +117,8 @@ public:
     const TurtleSettings settings_;
     const std::vector<TurtleCommand> commands_;
     const std::vector<NodeSummary> summaries_;
-    std::vector<std::vector<KeyedObjects>> lookup_;  // per node
-    std::vector<BuiltObject> built_;                 // per object
+    std::vector<std::vector<KeyedObjects>> lookup_; // per node
+    std::vector<BuiltObject> built_;                // per object
     std::unordered_map<std::string, uint32_t> surfaceIndex_;
     InstanceGraph graph_;
 };
@@ -123,12 +128,13 @@ public:
 class ObjectInterpreter {
 public:
     ObjectInterpreter(GraphBuilder& builder, const ObjectEntry& entry)
-        : b_(builder), entry_(entry), state_(entry.style), provenance_(Provenance::pristine()), chunk_(builder.surfaces_) {
+        : b_(builder), entry_(entry), state_(entry.style), provenance_(Provenance::pristine()),
+          chunk_(builder.surfaces_) {
         state_.position = glm::vec3(0.0f);
         state_.heading = {0.0f, 1.0f, 0.0f};
         state_.left = {-1.0f, 0.0f, 0.0f};
         state_.up = {0.0f, 0.0f, 1.0f};
-        state_.joint = -1;  // the entry joint
+        state_.joint = -1; // the entry joint
         // A polygon open at the entry: F moves, and vertices go to it (the outer vertices).
         if (entry.polygonOpen) stack_.polygons.push_back({});
     }
@@ -181,13 +187,14 @@ private:
         const size_t open = stack_.polygons.size();
         reads_ |= readsOf(command, p, state_, provenance_, open, localPolygons());
         switch (command.action) {
-            case TurtleAction::Cut: cutDepth_ = 0; return;
-            case TurtleAction::RollHorizontal: rollInPlantSpace(command, p); break;
-            case TurtleAction::TropismVector:
-                applyModule(command, p, b_.settings_, state_, stack_, chunk_);
-                if (p.size() >= 3) state_.tropism = glm::conjugate(entry_.orientation) * state_.tropism;  // to the entry frame
-                break;
-            default: applyModule(command, p, b_.settings_, state_, stack_, chunk_); break;
+        case TurtleAction::Cut: cutDepth_ = 0; return;
+        case TurtleAction::RollHorizontal: rollInPlantSpace(command, p); break;
+        case TurtleAction::TropismVector:
+            applyModule(command, p, b_.settings_, state_, stack_, chunk_);
+            if (p.size() >= 3)
+                state_.tropism = glm::conjugate(entry_.orientation) * state_.tropism; // to the entry frame
+            break;
+        default: applyModule(command, p, b_.settings_, state_, stack_, chunk_); break;
         }
         if (command.action == TurtleAction::Push) provenanceStack_.push_back(provenance_);
         if (command.action == TurtleAction::Pop && !provenanceStack_.empty()) {
@@ -227,7 +234,7 @@ private:
 
     void placeInstance(uint32_t node) {
         if (cutDepth_ >= 0) {
-            cutDepth_ += b_.summaries_[node].bracketChange;  // legal: it cannot close the cut branch
+            cutDepth_ += b_.summaries_[node].bracketChange; // legal: it cannot close the cut branch
             return;
         }
         flushChunk();
@@ -254,7 +261,8 @@ private:
         }
         for (const glm::vec3& vertex : built.status.outerVertices)
             stack_.polygons.back().outline.push_back(state_.position + toParent * vertex);
-        std::tie(state_, provenance_) = composeState(state_, provenance_, built.status.exit, childJoint(built.status.exit.joint));
+        std::tie(state_, provenance_) =
+            composeState(state_, provenance_, built.status.exit, childJoint(built.status.exit.joint));
         joints_ += static_cast<JointRef>(object.joints);
         primitives_ += object.primitives;
     }
@@ -275,7 +283,8 @@ private:
             }
             if (p.kind == PrimitiveKind::Surface) {
                 const std::string& name = drawn.surfaces[p.shape].name;
-                auto [found, added] = b_.surfaceIndex_.try_emplace(name, static_cast<uint32_t>(graph.surfaceNames.size()));
+                auto [found, added] =
+                    b_.surfaceIndex_.try_emplace(name, static_cast<uint32_t>(graph.surfaceNames.size()));
                 if (added) graph.surfaceNames.push_back(name);
                 primitive.shape = found->second;
             }
@@ -296,14 +305,14 @@ private:
     TurtleState state_;
     TurtleStack stack_;
     Provenance provenance_;
-    std::vector<Provenance> provenanceStack_;  // beside stack_.branches
+    std::vector<Provenance> provenanceStack_; // beside stack_.branches
     uint16_t reads_ = 0;
-    int cutDepth_ = -1;                        // inside a cut branch: its depth so far
-    std::vector<JointRef> jointRefs_;          // what TurtleState::joint handles stand for
-    JointRef joints_ = 0;                      // the subtree's so far
+    int cutDepth_ = -1;               // inside a cut branch: its depth so far
+    std::vector<JointRef> jointRefs_; // what TurtleState::joint handles stand for
+    JointRef joints_ = 0;             // the subtree's so far
     uint64_t primitives_ = 0;
-    PlantAssetBuilder chunk_;                  // primitives drawn since the last instance
-    std::vector<int32_t> chunkSegments_;       // handle of each joint the chunk's segments made
+    PlantAssetBuilder chunk_;            // primitives drawn since the last instance
+    std::vector<int32_t> chunkSegments_; // handle of each joint the chunk's segments made
     std::vector<GraphItem> items_;
     Bounds bounds_;
 };
@@ -317,7 +326,7 @@ uint32_t GraphBuilder::buildObject(uint32_t node, const ObjectEntry& entry) {
     return interpreter.finish(node);
 }
 
-}  // namespace
+} // namespace
 
 InstanceGraph buildInstanceGraph(const BGrammar& bgrammar, const Grammar& grammar, const InstanceGraphOptions& options,
                                  const SurfaceLibrary& surfaces) {
@@ -327,4 +336,4 @@ InstanceGraph buildInstanceGraph(const BGrammar& bgrammar, const Grammar& gramma
     return GraphBuilder(bgrammar, grammar, options, surfaces).build();
 }
 
-}  // namespace lsys
+} // namespace lsys

@@ -44,7 +44,7 @@ glm::vec3 worldUpSeenFrom(const glm::quat& orientation) {
     return glm::conjugate(orientation) * glm::vec3(0.0f, 1.0f, 0.0f);
 }
 
-}  // namespace
+} // namespace
 
 size_t StyleKeyHash::operator()(const StyleKey& key) const {
     static_assert(sizeof(StyleKey) == 18 * sizeof(uint32_t), "StyleKey must be 32-bit words only");
@@ -75,4 +75,4 @@ StyleKey styleKey(const ObjectEntry& entry, uint16_t mask, int granularity) {
     return key;
 }
 
-}  // namespace lsys
+} // namespace lsys

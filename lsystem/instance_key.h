@@ -17,8 +17,8 @@ namespace lsys {
 
 // The state an object is entered with, its frame factored out.
 struct ObjectEntry {
-    TurtleState style;      // frame unused; tropism in the entry frame's coordinates
-    glm::quat orientation;  // of the entry frame in plant space (for `$` and `@Tv`)
+    TurtleState style;     // frame unused; tropism in the entry frame's coordinates
+    glm::quat orientation; // of the entry frame in plant space (for `$` and `@Tv`)
     bool polygonOpen = false;
 };
 
@@ -26,7 +26,7 @@ struct ObjectEntry {
 // equality and hashing see no padding.
 struct StyleKey {
     uint32_t mask = 0;
-    std::array<uint32_t, 6> scalars{};  // width, length, angle, material, stiffness, elasticity (bits)
+    std::array<uint32_t, 6> scalars{}; // width, length, angle, material, stiffness, elasticity (bits)
     std::array<int32_t, 3> tropism{};
     std::array<int32_t, 3> worldUp{};
     std::array<uint32_t, 4> orientation{};
@@ -45,4 +45,4 @@ struct StyleKeyHash {
 // to 2^-16.
 StyleKey styleKey(const ObjectEntry& entry, uint16_t mask, int granularity);
 
-}  // namespace lsys
+} // namespace lsys

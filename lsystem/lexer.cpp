@@ -28,7 +28,8 @@ std::string blankComments(std::string_view source, const std::string& file, std:
                 ++i;
             }
             if (i >= out.size()) {
-                diagnostics.push_back({file, startLine, startColumn, "unterminated comment", "'*/' before the end of the file"});
+                diagnostics.push_back(
+                    {file, startLine, startColumn, "unterminated comment", "'*/' before the end of the file"});
                 break;
             }
             out[i] = out[i + 1] = ' ';
@@ -53,7 +54,8 @@ std::vector<std::string_view> splitLines(std::string_view text) {
 }
 
 void Cursor::skipSpaces() {
-    while (!atEnd() && (text[pos] == ' ' || text[pos] == '\t' || text[pos] == '\r' || text[pos] == '\f' || text[pos] == '\v'))
+    while (!atEnd() &&
+           (text[pos] == ' ' || text[pos] == '\t' || text[pos] == '\r' || text[pos] == '\f' || text[pos] == '\v'))
         ++pos;
 }
 
@@ -77,4 +79,4 @@ Diagnostic errorAt(const Cursor& cursor, const std::string& file, std::string me
     return {file, cursor.line, cursor.column(), std::move(message), std::move(expected)};
 }
 
-}  // namespace lsys
+} // namespace lsys

@@ -19,7 +19,7 @@ std::string blankComments(std::string_view source, const std::string& file, std:
 std::vector<std::string_view> splitLines(std::string_view text);
 
 struct Cursor {
-    std::string_view text;  // one source line
+    std::string_view text; // one source line
     size_t pos = 0;
     int line = 1;
 
@@ -42,4 +42,4 @@ bool isIdentifierChar(char c);
 // Builds a diagnostic at the cursor's current position.
 Diagnostic errorAt(const Cursor& cursor, const std::string& file, std::string message, std::string expected = {});
 
-}  // namespace lsys
+} // namespace lsys

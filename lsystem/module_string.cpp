@@ -60,4 +60,4 @@ void computeBracketPartners(const ModuleString& string, std::vector<int32_t>& pa
     for (int32_t unclosed : open) partners[unclosed] = static_cast<int32_t>(n);
 }
 
-}  // namespace lsys
+} // namespace lsys

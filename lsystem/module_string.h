@@ -41,4 +41,4 @@ std::string toString(const ModuleString& string, const SymbolTable& symbols);
 // for an unmatched ']'; size() for an unclosed '['.
 void computeBracketPartners(const ModuleString& string, std::vector<int32_t>& partners);
 
-}  // namespace lsys
+} // namespace lsys

@@ -16,7 +16,8 @@ namespace {
 // OBJ and MTL names end at whitespace.
 std::string objName(const PlantAsset& asset, uint32_t material) {
     std::string name = materialName(asset.materials, material);
-    std::replace_if(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c); }, '_');
+    std::replace_if(
+        name.begin(), name.end(), [](unsigned char c) { return std::isspace(c); }, '_');
     return name;
 }
 
@@ -36,8 +37,7 @@ public:
         return *this;
     }
     template <typename Number>
-        requires std::is_arithmetic_v<Number>
-    ObjText& operator<<(Number value) {
+    requires std::is_arithmetic_v<Number> ObjText& operator<<(Number value) {
         char digits[32];
         text_.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
         if (text_.size() > (1u << 20)) flush();
@@ -53,7 +53,7 @@ private:
     std::string text_;
 };
 
-}  // namespace
+} // namespace
 
 void writeObj(const PlantAsset& asset, std::ostream& objStream, std::ostream& mtlStream, const std::string& mtlFileName,
               const ExportOptions& options) {
@@ -88,4 +88,4 @@ void writeObj(const PlantAsset& asset, std::ostream& objStream, std::ostream& mt
     if (!objStream || !mtlStream) throw std::runtime_error("writing the OBJ stream failed");
 }
 
-}  // namespace lsys::export_detail
+} // namespace lsys::export_detail

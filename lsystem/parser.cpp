@@ -51,10 +51,10 @@ struct Parser {
     Grammar& grammar;
     const ParseOptions& options;
     std::vector<Diagnostic>& diagnostics;
-    std::vector<std::string> declared;  // multi-letter module names, longest first
+    std::vector<std::string> declared; // multi-letter module names, longest first
     ProductionSet* section = nullptr;
     std::optional<std::vector<SymbolId>> considered;
-    std::vector<std::string> signatures[3];  // predecessor text per production, to form stochastic groups
+    std::vector<std::string> signatures[3]; // predecessor text per production, to form stochastic groups
     bool ended = false;
     bool sawAxiom = false;
 
@@ -87,7 +87,8 @@ struct Parser {
                     cursor.pos += name.size();
                     return name;
                 }
-        if (std::isalnum(static_cast<unsigned char>(c)) || (c != '\0' && kTurtleSymbols.find(c) != std::string_view::npos)) {
+        if (std::isalnum(static_cast<unsigned char>(c)) ||
+            (c != '\0' && kTurtleSymbols.find(c) != std::string_view::npos)) {
             ++cursor.pos;
             return std::string(1, c);
         }
@@ -119,9 +120,11 @@ struct Parser {
             ended = true;
             return;
         }
-        if (acceptHeader(cursor, "lsystem")) return;  // lpfg's "lsystem: 1" names the system; nothing to do
-        if (Cursor header = cursor; acceptHeader(cursor, "dialect"))  // a valid header line never gets here (parseDialect blanks it)
-            return error(header, "unknown or misplaced dialect line", "'dialect: NAME' as the first non-blank line, NAME one of " + knownDialects());
+        if (acceptHeader(cursor, "lsystem")) return; // lpfg's "lsystem: 1" names the system; nothing to do
+        if (Cursor header = cursor;
+            acceptHeader(cursor, "dialect")) // a valid header line never gets here (parseDialect blanks it)
+            return error(header, "unknown or misplaced dialect line",
+                         "'dialect: NAME' as the first non-blank line, NAME one of " + knownDialects());
         if (acceptHeader(cursor, "seed")) return seed(cursor);
         if (acceptHeader(cursor, "derivation length")) return derivationLength(cursor);
         if (acceptHeader(cursor, "angle")) return number(cursor, grammar.angle);
@@ -131,13 +134,16 @@ struct Parser {
         if (acceptHeader(cursor, "consider")) return contextSymbols(cursor, true);
         if (acceptHeader(cursor, "axiom")) return axiom(cursor);
         if (acceptHeader(cursor, "maximum depth")) return maximumDepth(cursor);
-        if (acceptHeader(cursor, "production") || acceptHeader(cursor, "productions")) return beginSection(cursor, grammar.rules);
+        if (acceptHeader(cursor, "production") || acceptHeader(cursor, "productions"))
+            return beginSection(cursor, grammar.rules);
         if (acceptHeader(cursor, "decomposition")) return beginSection(cursor, grammar.decomposition);
         if (acceptHeader(cursor, "interpretation") || acceptHeader(cursor, "homomorphism"))
             return beginSection(cursor, grammar.interpretation);
-        if (acceptHeader(cursor, "module", false) || acceptHeader(cursor, "modules", false)) return declareModules(cursor);
+        if (acceptHeader(cursor, "module", false) || acceptHeader(cursor, "modules", false))
+            return declareModules(cursor);
         if (cursor.text.find("->") != std::string_view::npos) return production(cursor);
-        error(cursor, "unrecognised line", "a header such as 'Axiom:', a production 'predecessor --> successor' or '#define'");
+        error(cursor, "unrecognised line",
+              "a header such as 'Axiom:', a production 'predecessor --> successor' or '#define'");
     }
 
     void define(Cursor& cursor) {
@@ -155,7 +161,8 @@ struct Parser {
         Cursor start = cursor;
         std::optional<double> value = constantExpression(cursor);
         if (!value || !expectLineEnd(cursor)) return;
-        if (!(*value >= 0) || *value != std::floor(*value) || *value > 1.8e19) return error(start, "invalid seed", "a non-negative integer");
+        if (!(*value >= 0) || *value != std::floor(*value) || *value > 1.8e19)
+            return error(start, "invalid seed", "a non-negative integer");
         grammar.seed = static_cast<uint64_t>(*value);
     }
 
@@ -213,7 +220,7 @@ struct Parser {
             if (std::find(declared.begin(), declared.end(), name) == declared.end()) declared.push_back(name);
             grammar.symbols.intern(name);
             cursor.skipSpaces();
-            if (cursor.accept("(")) {  // L-Py allows "module Apex(age)": the parameter names are documentation
+            if (cursor.accept("(")) { // L-Py allows "module Apex(age)": the parameter names are documentation
                 while (!cursor.atEnd() && cursor.peek() != ')') ++cursor.pos;
                 if (!cursor.accept(")")) return error(cursor, "unclosed parameter list", "')'");
                 cursor.skipSpaces();
@@ -221,7 +228,8 @@ struct Parser {
             if (!cursor.accept(",") && !cursor.atEnd() && !isIdentifierStart(cursor.peek()))
                 return error(cursor, std::string("unexpected '") + cursor.peek() + "'", "',' or another module name");
         }
-        std::stable_sort(declared.begin(), declared.end(), [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+        std::stable_sort(declared.begin(), declared.end(),
+                         [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
     }
 
     void beginSection(Cursor& cursor, ProductionSet& set) {
@@ -235,7 +243,7 @@ struct Parser {
     bool successorModules(Cursor& cursor, std::span<const std::string> variables, std::vector<SuccessorModule>& out) {
         ExpressionScope scope{variables, &grammar.constants};
         cursor.skipSpaces();
-        if (cursor.peek() == '*') {  // cpfg's explicit empty successor
+        if (cursor.peek() == '*') { // cpfg's explicit empty successor
             ++cursor.pos;
             return true;
         }
@@ -279,7 +287,8 @@ struct Parser {
     bool patternModule(Cursor& cursor, Production& production, std::vector<PatternModule>& out) {
         std::string name = moduleName(cursor);
         if (name.empty()) {
-            error(cursor, std::string("unexpected '") + cursor.peek() + "' in predecessor", "a module, '<', '>', ':' or '-->'");
+            error(cursor, std::string("unexpected '") + cursor.peek() + "' in predecessor",
+                  "a module, '<', '>', ':' or '-->'");
             return false;
         }
         PatternModule module{grammar.symbols.intern(name), 0, static_cast<uint16_t>(production.variables.size())};
@@ -317,7 +326,8 @@ struct Parser {
         size_t labelStart = cursor.pos;
         std::string_view label = cursor.identifier();
         cursor.skipSpaces();
-        if (label.size() >= 2 && std::find(declared.begin(), declared.end(), label) == declared.end() && cursor.accept(":"))
+        if (label.size() >= 2 && std::find(declared.begin(), declared.end(), label) == declared.end() &&
+            cursor.accept(":"))
             production.label = label;
         else
             cursor.pos = labelStart;
@@ -334,7 +344,8 @@ struct Parser {
             if (cursor.atEnd()) return error(cursor, "production has no arrow", "'-->'");
             if (cursor.atArrow() || cursor.peek() == ':') break;
             if (cursor.peek() == '<') {
-                if (sawLeft || current == &after) return error(cursor, "misplaced '<'", "one left context before the strict predecessor");
+                if (sawLeft || current == &after)
+                    return error(cursor, "misplaced '<'", "one left context before the strict predecessor");
                 sawLeft = true;
                 leftMark = cursor;
                 ++cursor.pos;
@@ -353,11 +364,14 @@ struct Parser {
         if (!sawLeft && current != &after) std::swap(before, strict);
         production.left = std::move(before);
         production.right = std::move(after);
-        if (strict.size() != 1) return error(cursor, "predecessor must be exactly one module", "one module, with optional '<' and '>' contexts");
+        if (strict.size() != 1)
+            return error(cursor, "predecessor must be exactly one module",
+                         "one module, with optional '<' and '>' contexts");
         production.strict = strict[0];
         for (const PatternModule& module : production.left)
             if (module.symbol == kPush || module.symbol == kPop)
-                return error(leftMark, "brackets are not allowed in a left context", "modules only; the left context climbs branches by itself");
+                return error(leftMark, "brackets are not allowed in a left context",
+                             "modules only; the left context climbs branches by itself");
         std::string signature = withoutSpaces(cursor.text.substr(predecessorStart, cursor.pos - predecessorStart));
 
         if (cursor.accept(":")) {
@@ -374,14 +388,16 @@ struct Parser {
             signature += ":" + withoutSpaces(cursor.text.substr(conditionStart, cursor.pos - conditionStart));
             cursor.skipSpaces();
         }
-        if (!cursor.accept("-->") && !cursor.accept("->")) return error(cursor, "missing arrow after predecessor", "'-->' or '->'");
+        if (!cursor.accept("-->") && !cursor.accept("->"))
+            return error(cursor, "missing arrow after predecessor", "'-->' or '->'");
         if (!successorModules(cursor, production.variables, production.successor)) return;
         if (cursor.accept(":")) {
             cursor.skipSpaces();
             Cursor start = cursor;
             std::optional<double> probability = constantExpression(cursor);
             if (!probability) return;
-            if (!(*probability >= 0 && *probability <= 1)) return error(start, "probability out of range", "a number from 0 to 1");
+            if (!(*probability >= 0 && *probability <= 1))
+                return error(start, "probability out of range", "a number from 0 to 1");
             production.stochastic = true;
             production.probability = *probability;
         }
@@ -411,9 +427,10 @@ struct Parser {
             if (std::fabs(sum - 1.0) > 1e-6) {
                 char text[64];
                 std::snprintf(text, sizeof text, "%.9g", sum);
-                diagnostics.push_back({file(), productions[i].line, 1,
-                                       "probabilities of the stochastic group for '" + signature[i] + "' sum to " + text,
-                                       "a sum of 1 over consecutive productions with the same predecessor"});
+                diagnostics.push_back(
+                    {file(), productions[i].line, 1,
+                     "probabilities of the stochastic group for '" + signature[i] + "' sum to " + text,
+                     "a sum of 1 over consecutive productions with the same predecessor"});
             }
             i = end;
         }
@@ -433,7 +450,7 @@ struct Parser {
     }
 };
 
-}  // namespace
+} // namespace
 
 ParseResult parseLsystem(std::string_view source, const ParseOptions& options) {
     ParseResult result;
@@ -445,7 +462,7 @@ ParseResult parseLsystem(std::string_view source, const ParseOptions& options) {
     for (size_t i = 0; i < lines.size(); ++i) {
         try {
             parser.line(Cursor{lines[i], 0, static_cast<int>(i) + 1});
-        } catch (const std::length_error& error) {  // symbol table full
+        } catch (const std::length_error& error) { // symbol table full
             result.diagnostics.push_back({options.file, static_cast<int>(i) + 1, 1, error.what()});
             break;
         }
@@ -465,4 +482,4 @@ std::string readTextFile(const std::string& path, bool& ok) {
     return text.str();
 }
 
-}  // namespace lsys
+} // namespace lsys

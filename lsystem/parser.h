@@ -12,13 +12,13 @@
 namespace lsys {
 
 struct ParseOptions {
-    std::string file = "<input>";                     // name used in diagnostics
-    std::unordered_map<std::string, double> defines;  // override (or add) #define constants
+    std::string file = "<input>";                    // name used in diagnostics
+    std::unordered_map<std::string, double> defines; // override (or add) #define constants
 };
 
 struct ParseResult {
     Grammar grammar;
-    std::vector<Diagnostic> diagnostics;  // every problem found, in source order
+    std::vector<Diagnostic> diagnostics; // every problem found, in source order
     bool ok() const { return diagnostics.empty(); }
 };
 
@@ -30,4 +30,4 @@ ParseResult parseLsystem(std::string_view source, const ParseOptions& options = 
 
 std::string readTextFile(const std::string& path, bool& ok);
 
-}  // namespace lsys
+} // namespace lsys

@@ -44,8 +44,8 @@ struct Primitive {
 
 // One drawn segment of the skeleton in its rest pose (Crankshaw 2020's joints).
 struct Joint {
-    int32_t parent = -1;  // joint this one grows on; -1 for a root
-    Frame rest;           // plant-space frame at the segment's base
+    int32_t parent = -1; // joint this one grows on; -1 for a root
+    Frame rest;          // plant-space frame at the segment's base
     float length = 0.0f;
     float startRadius = 0.0f;
     float endRadius = 0.0f;
@@ -99,4 +99,4 @@ struct PlantAsset {
     Bounds bounds;
 };
 
-}  // namespace lsys
+} // namespace lsys

@@ -41,11 +41,12 @@ std::string materialName(const std::vector<Material>& materials, uint32_t index)
 
 std::string lowercaseExtension(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return extension;
 }
 
-}  // namespace export_detail
+} // namespace export_detail
 
 namespace {
 
@@ -75,7 +76,8 @@ void checkAsset(const PlantAsset& asset) {
         path.clear();
         for (int32_t j = int32_t(i); j >= 0; j = asset.joints[size_t(j)].parent) {
             if (size_t(j) >= asset.joints.size() || state[size_t(j)] == OnPath)
-                throw std::runtime_error("joint " + std::to_string(i) + ": its parents leave the table or form a cycle");
+                throw std::runtime_error("joint " + std::to_string(i) +
+                                         ": its parents leave the table or form a cycle");
             if (state[size_t(j)] == ReachesRoot) break;
             state[size_t(j)] = OnPath;
             path.push_back(size_t(j));
@@ -84,7 +86,7 @@ void checkAsset(const PlantAsset& asset) {
     }
 }
 
-}  // namespace
+} // namespace
 
 void exportPlant(const PlantAsset& asset, const std::filesystem::path& path, const ExportOptions& options) {
     using namespace export_detail;
@@ -110,4 +112,4 @@ void exportPlant(const PlantAsset& asset, const std::filesystem::path& path, con
     }
 }
 
-}  // namespace lsys
+} // namespace lsys

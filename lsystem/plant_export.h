@@ -25,4 +25,4 @@ struct ExportOptions {
 // file behind and never a half-written one.
 void exportPlant(const PlantAsset& asset, const std::filesystem::path& path, const ExportOptions& options = {});
 
-}  // namespace lsys
+} // namespace lsys

@@ -71,8 +71,10 @@ void appendCap(TriangleMesh& mesh, const Ring& ring, uint32_t sides, bool facing
     }
     for (uint32_t j = 0; j < sides; ++j) {
         const uint32_t a = centre + 1 + j, b = centre + 1 + (j + 1) % sides;
-        if (facingAxis) mesh.indices.insert(mesh.indices.end(), {centre, b, a});
-        else mesh.indices.insert(mesh.indices.end(), {centre, a, b});
+        if (facingAxis)
+            mesh.indices.insert(mesh.indices.end(), {centre, b, a});
+        else
+            mesh.indices.insert(mesh.indices.end(), {centre, a, b});
     }
 }
 
@@ -139,7 +141,7 @@ void clipEars(const std::vector<glm::vec2>& points, std::vector<uint32_t>& indic
     indices.insert(indices.end(), remaining.begin(), remaining.end());
 }
 
-}  // namespace
+} // namespace
 
 void TriangleMesh::append(const TriangleMesh& mesh, const glm::mat4& transform) {
     const uint32_t base = vertexCount();
@@ -153,9 +155,9 @@ void TriangleMesh::append(const TriangleMesh& mesh, const glm::mat4& transform) 
 TriangleMesh segmentMesh(float length, float startRadius, float endRadius, const MeshDetail& detail) {
     const glm::vec3 up(0, 1, 0), x(1, 0, 0);
     const float slope = coneSlope(length, startRadius, endRadius);
-    return tubeMesh({Ring{glm::vec3(0.0f), up, x, startRadius, slope, 0.0f},
-                     Ring{length * up, up, x, endRadius, slope, length}},
-                    detail);
+    return tubeMesh(
+        {Ring{glm::vec3(0.0f), up, x, startRadius, slope, 0.0f}, Ring{length * up, up, x, endRadius, slope, length}},
+        detail);
 }
 
 TriangleMesh sphereMesh(float radius, const MeshDetail& detail) {
@@ -224,7 +226,8 @@ TriangleMesh surfaceMesh(const SurfaceMesh& surface) {
         std::vector<glm::vec3> sums(count, glm::vec3(0.0f));
         for (size_t t = 0; t + 2 < surface.indices.size(); t += 3) {
             const uint32_t a = surface.indices[t], b = surface.indices[t + 1], c = surface.indices[t + 2];
-            const glm::vec3 face = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+            const glm::vec3 face =
+                glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
             for (uint32_t corner : {a, b, c}) sums[corner] += face;
         }
         for (const glm::vec3& n : sums) mesh.normals.push_back(unitOr(n, glm::vec3(0, 0, 1)));
@@ -290,7 +293,11 @@ TriangleMesh generalizedCylinderMesh(const PlantAsset& asset, const SegmentChain
         const Primitive& in = *segments[i];
         const glm::vec3 inHeading = heading(in.frame);
         const float inSlope = coneSlope(in.length, in.startRadius, in.endRadius);
-        Ring ring{in.frame.position + in.length * inHeading, inHeading, rings.back().x, in.endRadius, inSlope,
+        Ring ring{in.frame.position + in.length * inHeading,
+                  inHeading,
+                  rings.back().x,
+                  in.endRadius,
+                  inSlope,
                   rings.back().v + in.length};
         if (i + 1 < segments.size()) {
             const Primitive& out = *segments[i + 1];
@@ -314,7 +321,9 @@ TriangleMesh generalizedCylinderMesh(const PlantAsset& asset, const SegmentChain
 TriangleMesh bakedPrimitiveMesh(const PlantAsset& asset, const Primitive& primitive, const MeshDetail& detail) {
     TriangleMesh local;
     switch (primitive.kind) {
-    case PrimitiveKind::Segment: local = segmentMesh(primitive.length, primitive.startRadius, primitive.endRadius, detail); break;
+    case PrimitiveKind::Segment:
+        local = segmentMesh(primitive.length, primitive.startRadius, primitive.endRadius, detail);
+        break;
     case PrimitiveKind::Sphere: local = sphereMesh(primitive.startRadius, detail); break;
     case PrimitiveKind::Surface: local = surfaceMesh(asset.surfaces.at(primitive.shape)); break;
     case PrimitiveKind::Polygon: return polygonMesh(asset.polygons.at(primitive.shape).outline);
@@ -326,7 +335,8 @@ TriangleMesh bakedPrimitiveMesh(const PlantAsset& asset, const Primitive& primit
     return baked;
 }
 
-std::vector<TriangleMesh> meshesByMaterial(const PlantAsset& asset, SegmentGeometry segments, const MeshDetail& detail) {
+std::vector<TriangleMesh> meshesByMaterial(const PlantAsset& asset, SegmentGeometry segments,
+                                           const MeshDetail& detail) {
     std::vector<TriangleMesh> meshes(asset.materials.size());
     const bool tubes = segments == SegmentGeometry::GeneralizedCylinders;
     for (const Primitive& primitive : asset.primitives) {
@@ -351,7 +361,8 @@ std::vector<TriangleMesh> generalizedCylindersByMaterial(const PlantAsset& asset
 
 bool isDrawable(const Primitive& primitive) {
     switch (primitive.kind) {
-    case PrimitiveKind::Segment: return primitive.length > 0.0f && std::max(primitive.startRadius, primitive.endRadius) > 0.0f;
+    case PrimitiveKind::Segment:
+        return primitive.length > 0.0f && std::max(primitive.startRadius, primitive.endRadius) > 0.0f;
     case PrimitiveKind::Sphere: return primitive.startRadius > 0.0f;
     case PrimitiveKind::Surface: return primitive.length > 0.0f;
     case PrimitiveKind::Polygon: return true;
@@ -363,4 +374,4 @@ glm::mat4 frameMatrix(const Frame& frame) {
     return glm::translate(glm::mat4(1.0f), frame.position) * glm::mat4_cast(frame.rotation);
 }
 
-}  // namespace lsys
+} // namespace lsys

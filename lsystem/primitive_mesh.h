@@ -33,10 +33,10 @@ struct TriangleMesh {
 // Sides of segment and generalised-cylinder rings, and sphere tessellation.
 // Smaller values than the minimums are raised to them.
 struct MeshDetail {
-    uint32_t segmentSides = 8;    // at least 3
-    bool segmentCaps = true;      // close both ends of a segment or a chain
-    uint32_t sphereSlices = 12;   // around, at least 3
-    uint32_t sphereStacks = 8;    // pole to pole, at least 2
+    uint32_t segmentSides = 8;  // at least 3
+    bool segmentCaps = true;    // close both ends of a segment or a chain
+    uint32_t sphereSlices = 12; // around, at least 3
+    uint32_t sphereStacks = 8;  // pole to pole, at least 2
 };
 
 // Cone frustum from radius `startRadius` at y = 0 to `endRadius` at y = length.
@@ -113,4 +113,4 @@ bool isDrawable(const Primitive& primitive);
 // The primitive's frame as a matrix (rotation, then translation).
 glm::mat4 frameMatrix(const Frame& frame);
 
-}  // namespace lsys
+} // namespace lsys

@@ -30,10 +30,10 @@ struct RandomStream {
 
     // Normal distribution (Box-Muller on two uniform draws).
     double normal(double mean, double sd) {
-        double u1 = 1.0 - uniform();  // in (0, 1], keeps log finite
+        double u1 = 1.0 - uniform(); // in (0, 1], keeps log finite
         double u2 = uniform();
         return mean + sd * std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
     }
 };
 
-}  // namespace lsys
+} // namespace lsys

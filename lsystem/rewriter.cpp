@@ -30,9 +30,9 @@ struct PreparedSet {
     std::vector<uint32_t> maxModules;
     std::vector<uint32_t> maxParameters;
     uint32_t longestSuccessor = 1;
-    uint32_t mostArguments = 0;  // of any successor module
+    uint32_t mostArguments = 0; // of any successor module
     bool isD0L = false;
-    std::vector<uint32_t> successorStart;  // per symbol, into successorSymbols
+    std::vector<uint32_t> successorStart; // per symbol, into successorSymbols
     std::vector<uint32_t> successorLength;
     std::vector<SymbolId> successorSymbols;
 };
@@ -48,20 +48,22 @@ PreparedSet prepare(const ProductionSet& set, size_t symbolCount) {
             prepared.mostArguments = std::max(prepared.mostArguments, static_cast<uint32_t>(module.arguments.size()));
         }
         const SymbolId symbol = production.strict.symbol;
-        prepared.maxModules[symbol] = std::max<uint32_t>(prepared.maxModules[symbol], static_cast<uint32_t>(production.successor.size()));
+        prepared.maxModules[symbol] =
+            std::max<uint32_t>(prepared.maxModules[symbol], static_cast<uint32_t>(production.successor.size()));
         prepared.maxParameters[symbol] = std::max(prepared.maxParameters[symbol], parameters);
         prepared.longestSuccessor = std::max(prepared.longestSuccessor, prepared.maxModules[symbol]);
     }
     prepared.isD0L = !set.contextSensitive && !set.producesParameters;
     for (const Production& production : set.productions)
-        prepared.isD0L = prepared.isD0L && !production.condition && !production.stochastic && production.strict.paramCount == 0;
+        prepared.isD0L =
+            prepared.isD0L && !production.condition && !production.stochastic && production.strict.paramCount == 0;
     if (!prepared.isD0L) return prepared;
     prepared.successorStart.resize(symbolCount);
     prepared.successorLength.assign(symbolCount, 1);
     for (size_t symbol = 0; symbol < symbolCount; ++symbol) {
         prepared.successorStart[symbol] = static_cast<uint32_t>(prepared.successorSymbols.size());
         if (set.bySymbol[symbol].empty()) {
-            prepared.successorSymbols.push_back(static_cast<SymbolId>(symbol));  // no rule: copied
+            prepared.successorSymbols.push_back(static_cast<SymbolId>(symbol)); // no rule: copied
             continue;
         }
         const Production& production = set.productions[set.bySymbol[symbol].front()];
@@ -79,7 +81,7 @@ struct Range {
 struct Bounds {
     size_t modules = 0;
     size_t parameters = 0;
-    uint32_t mostParameters = 0;  // of one input module
+    uint32_t mostParameters = 0; // of one input module
 };
 
 Bounds boundsOf(const PreparedSet& prepared, const ModuleString& in, Range range, bool withParameters) {
@@ -99,14 +101,14 @@ Bounds boundsOf(const PreparedSet& prepared, const ModuleString& in, Range range
 struct Output {
     SymbolId* symbols;
     float* params;
-    uint32_t* starts;  // starts[k + 1] is written after the k-th module; null without parameters
+    uint32_t* starts; // starts[k + 1] is written after the k-th module; null without parameters
     uint32_t parameterBase;
 };
 
 struct Written {
     size_t modules = 0;
     size_t parameters = 0;
-    size_t rewritten = 0;  // modules a production applied to
+    size_t rewritten = 0; // modules a production applied to
     bool withinBudget = true;
 };
 
@@ -114,9 +116,9 @@ struct Written {
 // module's parameters are bound to the formal variables; contexts are matched
 // in view (which may be null for a context-free set). random is (re)started
 // from source for every candidate that draws, as derive() always has.
-inline const Production* selectProduction(const ProductionSet& set, const ContextView* view, size_t position, SymbolId symbol,
-                                          std::span<const float> parameters, const RandomSource& source, double* variables,
-                                          RandomStream& random) {
+inline const Production* selectProduction(const ProductionSet& set, const ContextView* view, size_t position,
+                                          SymbolId symbol, std::span<const float> parameters,
+                                          const RandomSource& source, double* variables, RandomStream& random) {
     const uint32_t inputCount = static_cast<uint32_t>(parameters.size());
     for (uint32_t index : set.bySymbol[symbol]) {
         const Production& production = set.productions[index];
@@ -140,8 +142,8 @@ inline const Production* selectProduction(const ProductionSet& set, const Contex
     return nullptr;
 }
 
-Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const ModuleString& in, const int32_t* partners,
-                     Range range, uint64_t seed, uint64_t pass, size_t budget, Output out) {
+Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const ModuleString& in,
+                     const int32_t* partners, Range range, uint64_t seed, uint64_t pass, size_t budget, Output out) {
     const ProductionSet& set = *prepared.set;
     const bool withParameters = out.starts != nullptr;
     SymbolId* symbols = out.symbols;
@@ -158,8 +160,9 @@ Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const 
         const uint32_t inputCount = in.paramCount(i);
         const float* inputParameters = in.paramData(i);
         RandomStream random;
-        const Production* chosen = selectProduction(set, &view, i, symbol, {inputParameters, inputCount}, {seed, pass, i}, variables, random);
-        if (!chosen) {  // no production applies: copy the module
+        const Production* chosen =
+            selectProduction(set, &view, i, symbol, {inputParameters, inputCount}, {seed, pass, i}, variables, random);
+        if (!chosen) { // no production applies: copy the module
             symbols[written++] = symbol;
             if (withParameters) {
                 std::copy(inputParameters, inputParameters + inputCount, params);
@@ -172,7 +175,8 @@ Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const 
             for (const SuccessorModule& module : chosen->successor) {
                 symbols[written++] = module.symbol;
                 if (!withParameters) continue;
-                for (const Expression& argument : module.arguments) *params++ = static_cast<float>(evaluate(argument, variables, random));
+                for (const Expression& argument : module.arguments)
+                    *params++ = static_cast<float>(evaluate(argument, variables, random));
                 parameterEnd += static_cast<uint32_t>(module.arguments.size());
                 starts[written] = parameterEnd;
             }
@@ -220,7 +224,8 @@ struct Rewriter {
     std::vector<int32_t> partners;
 
     std::vector<Range> split(size_t n) const {
-        size_t count = (options.threads > 1 && n >= options.parallelThreshold) ? static_cast<size_t>(options.threads) : 1;
+        size_t count =
+            (options.threads > 1 && n >= options.parallelThreshold) ? static_cast<size_t>(options.threads) : 1;
         std::vector<Range> ranges;
         for (size_t t = 0; t < count; ++t) ranges.push_back({n * t / count, n * (t + 1) / count});
         return ranges;
@@ -259,7 +264,8 @@ struct Rewriter {
             Output target{out.symbols.data() + moduleOffset[t], out.params.data() + parameterOffset[t],
                           withParameters ? out.paramStart.data() + moduleOffset[t] : nullptr,
                           static_cast<uint32_t>(parameterOffset[t])};
-            written[t] = rewriteRange(grammar, prepared, in, partners.data(), ranges[t], seed, passNumber, options.maxModules, target);
+            written[t] = rewriteRange(grammar, prepared, in, partners.data(), ranges[t], seed, passNumber,
+                                      options.maxModules, target);
         });
 
         size_t modules = 0, parameters = 0, rewritten = 0;
@@ -278,8 +284,8 @@ struct Rewriter {
     }
 
     // Moves a range's output from where it was written down to where it belongs.
-    static void closeGap(ModuleString& out, bool withParameters, size_t fromModule, size_t fromParameter, size_t toModule,
-                         size_t toParameter, const Written& written) {
+    static void closeGap(ModuleString& out, bool withParameters, size_t fromModule, size_t fromParameter,
+                         size_t toModule, size_t toParameter, const Written& written) {
         if (fromModule == toModule && fromParameter == toParameter) return;
         // Destinations lie before sources, so a forward copy is safe although the ranges overlap.
         std::copy_n(out.symbols.data() + fromModule, written.modules, out.symbols.data() + toModule);
@@ -329,7 +335,8 @@ struct Rewriter {
     }
 
     // Applies set repeatedly (at most maxDepth passes) until no rule applies.
-    void passesToFixpoint(const PreparedSet& prepared, uint64_t firstPass, ModuleString& string, ModuleString& scratch) {
+    void passesToFixpoint(const PreparedSet& prepared, uint64_t firstPass, ModuleString& string,
+                          ModuleString& scratch) {
         for (int depth = 0; depth < prepared.set->maxDepth; ++depth) {
             size_t applied = pass(prepared, firstPass + static_cast<uint64_t>(depth), string, scratch);
             std::swap(string, scratch);
@@ -356,7 +363,7 @@ void removeCutBranches(const ModuleString& in, SymbolId cut, ModuleString& out) 
     }
 }
 
-}  // namespace
+} // namespace
 
 std::optional<SymbolId> producedCut(const Grammar& grammar) {
     std::optional<SymbolId> cut = grammar.symbols.find("%");
@@ -368,9 +375,10 @@ std::optional<SymbolId> producedCut(const Grammar& grammar) {
     return std::nullopt;
 }
 
-bool rewriteModule(const ProductionSet& set, SymbolId symbol, std::span<const float> parameters, const RandomSource& source,
-                   ModuleString& out) {
-    if (set.contextSensitive) throw std::invalid_argument("rewriteModule: the production set has context-sensitive productions");
+bool rewriteModule(const ProductionSet& set, SymbolId symbol, std::span<const float> parameters,
+                   const RandomSource& source, ModuleString& out) {
+    if (set.contextSensitive)
+        throw std::invalid_argument("rewriteModule: the production set has context-sensitive productions");
     double variables[kMaxVariables];
     RandomStream random;
     const Production* chosen = selectProduction(set, nullptr, 0, symbol, parameters, source, variables, random);
@@ -381,7 +389,8 @@ bool rewriteModule(const ProductionSet& set, SymbolId symbol, std::span<const fl
     std::vector<float> values;
     for (const SuccessorModule& module : chosen->successor) {
         values.clear();
-        for (const Expression& argument : module.arguments) values.push_back(static_cast<float>(evaluate(argument, variables, random)));
+        for (const Expression& argument : module.arguments)
+            values.push_back(static_cast<float>(evaluate(argument, variables, random)));
         out.push(module.symbol, values);
     }
     return true;
@@ -451,7 +460,7 @@ ModuleString interpretUnguarded(const Grammar& grammar, const ModuleString& stri
     return current;
 }
 
-}  // namespace
+} // namespace
 
 ModuleString derive(const Grammar& grammar, const DeriveOptions& options) {
     return withinMemory([&] { return deriveUnguarded(grammar, options); });
@@ -461,4 +470,4 @@ ModuleString applyInterpretation(const Grammar& grammar, const ModuleString& str
     return withinMemory([&] { return interpretUnguarded(grammar, string, options); });
 }
 
-}  // namespace lsys
+} // namespace lsys

@@ -16,7 +16,7 @@ struct DeriveOptions {
     std::optional<uint64_t> seed;   // default: the grammar's seed
     size_t maxModules = 50'000'000; // a step producing more throws DerivationError
     int threads = 2;
-    size_t parallelThreshold = 65'536;  // strings shorter than this are rewritten on one thread
+    size_t parallelThreshold = 65'536; // strings shorter than this are rewritten on one thread
 };
 
 // Where a module's random draws come from: derive() uses its seed, the pass
@@ -32,8 +32,8 @@ struct RandomSource {
 // production applies, to out, and says whether a production applied. With the
 // source derive() would use at that pass and position the result is the one
 // derive() writes there. Throws std::invalid_argument for a set with contexts.
-bool rewriteModule(const ProductionSet& set, SymbolId symbol, std::span<const float> parameters, const RandomSource& source,
-                   ModuleString& out);
+bool rewriteModule(const ProductionSet& set, SymbolId symbol, std::span<const float> parameters,
+                   const RandomSource& source, ModuleString& out);
 
 // The cut symbol '%' when a rule or decomposition can produce it: derive()
 // then removes cut branches after every step.
@@ -51,4 +51,4 @@ ModuleString derive(const Grammar& grammar, const DeriveOptions& options = {});
 // used before the turtle reads the string. Returns the input when there are none.
 ModuleString applyInterpretation(const Grammar& grammar, const ModuleString& string, const DeriveOptions& options = {});
 
-}  // namespace lsys
+} // namespace lsys

@@ -22,7 +22,7 @@ constexpr uint32_t kGuardBit = 1u << 31;
 struct Shape {
     int32_t change = 0;
     int32_t lowest = 0;
-    bool opensBranch = false;  // the expansion starts with '['
+    bool opensBranch = false; // the expansion starts with '['
 };
 
 Shape concatenate(const Shape& a, const Shape& b) {
@@ -47,7 +47,7 @@ public:
     // The rules as nodes of draft, children first, the axiom last.
     void writeNodes(BGrammar& draft, const BGrammarLimits& limits) const {
         std::vector<uint32_t> nodeOf(rules_.size(), kNone);
-        std::vector<std::pair<uint32_t, uint32_t>> stack{{kAxiomRule, first(kAxiomRule)}};  // rule, next symbol to visit
+        std::vector<std::pair<uint32_t, uint32_t>> stack{{kAxiomRule, first(kAxiomRule)}}; // rule, next symbol to visit
         std::vector<BodyItem> body;
         while (!stack.empty()) {
             auto& [rule, cursor] = stack.back();
@@ -64,7 +64,8 @@ public:
             }
             const uint32_t value = symbols_[cursor].value;
             cursor = symbols_[cursor].next;
-            if (isRuleReference(value) && nodeOf[value & ~kRuleBit] == kNone) stack.push_back({value & ~kRuleBit, first(value & ~kRuleBit)});
+            if (isRuleReference(value) && nodeOf[value & ~kRuleBit] == kNone)
+                stack.push_back({value & ~kRuleBit, first(value & ~kRuleBit)});
         }
     }
 
@@ -88,7 +89,9 @@ private:
     uint32_t prev(uint32_t s) const { return symbols_[s].prev; }
     uint32_t first(uint32_t rule) const { return symbols_[rules_[rule].guard].next; }
     uint32_t last(uint32_t rule) const { return symbols_[rules_[rule].guard].prev; }
-    const Shape& shapeOf(uint32_t value) const { return isRuleReference(value) ? rules_[value & ~kRuleBit].shape : terminals_[value]; }
+    const Shape& shapeOf(uint32_t value) const {
+        return isRuleReference(value) ? rules_[value & ~kRuleBit].shape : terminals_[value];
+    }
     uint64_t digramOf(uint32_t s) const { return uint64_t{value(s)} << 32 | value(next(s)); }
 
     // Only digrams that may become rules are ever indexed (the legality rule).
@@ -138,9 +141,11 @@ private:
     void join(uint32_t left, uint32_t right) {
         if (next(left) != kNone) {
             forget(left);
-            if (prev(right) != kNone && next(right) != kNone && value(right) == value(prev(right)) && value(right) == value(next(right)))
+            if (prev(right) != kNone && next(right) != kNone && value(right) == value(prev(right)) &&
+                value(right) == value(next(right)))
                 record(right);
-            if (prev(left) != kNone && value(left) == value(next(left)) && value(left) == value(prev(left))) record(prev(left));
+            if (prev(left) != kNone && value(left) == value(next(left)) && value(left) == value(prev(left)))
+                record(prev(left));
         }
         symbols_[left].next = right;
         symbols_[right].prev = left;
@@ -164,14 +169,14 @@ private:
         auto [found, added] = digrams_.try_emplace(digramOf(s), s);
         if (added || found->second == s) return false;
         const uint32_t other = found->second;
-        if (next(other) != s) match(s, other);  // overlapping digrams ("aaa") are left alone
+        if (next(other) != s) match(s, other); // overlapping digrams ("aaa") are left alone
         return true;
     }
 
     // s and other start equal digrams: both become a reference to one rule.
     void match(uint32_t s, uint32_t other) {
         uint32_t rule;
-        if (isGuard(prev(other)) && isGuard(next(next(other)))) {  // other is a whole rule
+        if (isGuard(prev(other)) && isGuard(next(next(other)))) { // other is a whole rule
             rule = value(prev(other)) & ~kGuardBit;
             substitute(s, rule);
         } else {
@@ -210,15 +215,15 @@ private:
         freeRules_.push_back(rule);
     }
 
-    std::vector<Shape> terminals_;  // per module index
+    std::vector<Shape> terminals_; // per module index
     std::vector<Symbol> symbols_;
     std::vector<uint32_t> freeSymbols_;
     std::vector<Rule> rules_;
     std::vector<uint32_t> freeRules_;
-    std::unordered_map<uint64_t, uint32_t> digrams_;  // digram (two values) -> the symbol starting it
+    std::unordered_map<uint64_t, uint32_t> digrams_; // digram (two values) -> the symbol starting it
 };
 
-}  // namespace
+} // namespace
 
 BGrammar compressWord(const ModuleString& word, size_t symbolCount, const BGrammarLimits& limits) {
     if (word.size() > limits.maxItems)
@@ -243,4 +248,4 @@ BGrammar compressWord(const ModuleString& word, size_t symbolCount, const BGramm
     return finishBGrammar(std::move(draft), limits);
 }
 
-}  // namespace lsys
+} // namespace lsys

@@ -31,4 +31,4 @@ namespace lsys {
 // (a word longer than limits.maxItems is refused before compressing).
 BGrammar compressWord(const ModuleString& word, size_t symbolCount, const BGrammarLimits& limits = {});
 
-}  // namespace lsys
+} // namespace lsys

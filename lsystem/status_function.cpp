@@ -6,8 +6,8 @@ namespace lsys {
 
 namespace {
 
-constexpr StyleField kFields[kStyleFields] = {StyleField::Width,     StyleField::Length,     StyleField::Angle,
-                                              StyleField::Material,  StyleField::Stiffness, StyleField::Elasticity,
+constexpr StyleField kFields[kStyleFields] = {StyleField::Width,    StyleField::Length,    StyleField::Angle,
+                                              StyleField::Material, StyleField::Stiffness, StyleField::Elasticity,
                                               StyleField::Tropism};
 
 // The source of a field's entry value: the fields and the first sources share an order.
@@ -17,13 +17,13 @@ uint16_t sourceOf(StyleField field) { return static_cast<uint16_t>(1u << static_
 // vector is in the child's frame, toParent maps it into the parent's.
 void copyField(StyleField field, const TurtleState& from, const glm::mat3& toParent, TurtleState& to) {
     switch (field) {
-        case StyleField::Width: to.width = from.width; break;
-        case StyleField::Length: to.length = from.length; break;
-        case StyleField::Angle: to.angle = from.angle; break;
-        case StyleField::Material: to.material = from.material; break;
-        case StyleField::Stiffness: to.stiffness = from.stiffness; break;
-        case StyleField::Elasticity: to.elasticity = from.elasticity; break;
-        case StyleField::Tropism: to.tropism = toParent * from.tropism; break;
+    case StyleField::Width: to.width = from.width; break;
+    case StyleField::Length: to.length = from.length; break;
+    case StyleField::Angle: to.angle = from.angle; break;
+    case StyleField::Material: to.material = from.material; break;
+    case StyleField::Stiffness: to.stiffness = from.stiffness; break;
+    case StyleField::Elasticity: to.elasticity = from.elasticity; break;
+    case StyleField::Tropism: to.tropism = toParent * from.tropism; break;
     }
 }
 
@@ -34,7 +34,7 @@ uint16_t nonPristineSources(const Provenance& provenance) {
     return reads;
 }
 
-}  // namespace
+} // namespace
 
 Provenance Provenance::pristine() {
     Provenance provenance;
@@ -61,12 +61,14 @@ void updateProvenance(const TurtleCommand& command, std::span<const float> p, si
     const TurtleCommandDefinition& definition = actingDefinition(command.action, openPolygons);
     const StyleChange& change = definition.changes;
     switch (p.size() >= parameterCount(definition) ? change.complete : change.otherwise) {
-        case FieldChange::Keep: break;
-        case FieldChange::Set: provenance[change.field] = 0; break;  // from a parameter: depends on nothing
-        // Scaled or offset, it keeps its sources but is no longer the entry value.
-        case FieldChange::Derive: provenance[change.field] &= static_cast<uint16_t>(~kPristine); break;
-        // Seen from the local frame, a plant-space vector depends on the entry orientation.
-        case FieldChange::SetInPlant: provenance[change.field] = kSourceOrientation; break;
+    case FieldChange::Keep: break;
+    case FieldChange::Set:
+        provenance[change.field] = 0;
+        break; // from a parameter: depends on nothing
+    // Scaled or offset, it keeps its sources but is no longer the entry value.
+    case FieldChange::Derive: provenance[change.field] &= static_cast<uint16_t>(~kPristine); break;
+    // Seen from the local frame, a plant-space vector depends on the entry orientation.
+    case FieldChange::SetInPlant: provenance[change.field] = kSourceOrientation; break;
     }
 }
 
@@ -97,10 +99,10 @@ std::pair<TurtleState, Provenance> composeState(const TurtleState& parent, const
     for (StyleField field : kFields) {
         if (child.provenance.isPristine(field)) continue;
         copyField(field, child.turtle, toParent, state);
-        provenance[field] = 0;  // the child's key fixes what it depended on
+        provenance[field] = 0; // the child's key fixes what it depended on
     }
     state.joint = joint;
     return {state, provenance};
 }
 
-}  // namespace lsys
+} // namespace lsys

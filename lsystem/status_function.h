@@ -31,10 +31,10 @@ enum StyleSource : uint16_t {
     kSourceMaterial = 1 << 3,
     kSourceStiffness = 1 << 4,
     kSourceElasticity = 1 << 5,
-    kSourceTropism = 1 << 6,      // the tropism vector seen from the entry frame
-    kSourceWorldUp = 1 << 7,      // the world's +Y seen from the entry frame (`$`)
-    kSourceOrientation = 1 << 8,  // the whole entry orientation (`@Tv` sets a world vector)
-    kSourcePolygon = 1 << 9,      // whether a polygon is open (F then moves and adds vertices)
+    kSourceTropism = 1 << 6,     // the tropism vector seen from the entry frame
+    kSourceWorldUp = 1 << 7,     // the world's +Y seen from the entry frame (`$`)
+    kSourceOrientation = 1 << 8, // the whole entry orientation (`@Tv` sets a world vector)
+    kSourcePolygon = 1 << 9,     // whether a polygon is open (F then moves and adds vertices)
 };
 inline constexpr uint16_t kPristine = 1 << 15;
 
@@ -90,4 +90,4 @@ uint16_t parentReads(uint16_t childReads, const Provenance& parent, size_t paren
 std::pair<TurtleState, Provenance> composeState(const TurtleState& parent, const Provenance& parentProvenance,
                                                 const LocalState& child, int32_t joint);
 
-}  // namespace lsys
+} // namespace lsys

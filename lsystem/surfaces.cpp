@@ -16,8 +16,8 @@ namespace {
 // seen from +Z.
 SurfaceMesh blade(const std::string& name, const std::function<float(float)>& halfWidth,
                   const std::function<float(float, float)>& lift, float widest) {
-    constexpr int kRows = 8;     // the base and tip are rows 0 and kRows
-    constexpr int kColumns = 5;  // across each inner row
+    constexpr int kRows = 8;    // the base and tip are rows 0 and kRows
+    constexpr int kColumns = 5; // across each inner row
     SurfaceMesh mesh;
     mesh.name = name;
     auto addVertex = [&](float x, float t) {
@@ -44,14 +44,15 @@ SurfaceMesh blade(const std::string& name, const std::function<float(float)>& ha
     mesh.normals.assign(mesh.positions.size(), glm::vec3(0.0f));
     for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
         const glm::vec3& a = mesh.positions[mesh.indices[i]];
-        const glm::vec3 face = glm::cross(mesh.positions[mesh.indices[i + 1]] - a, mesh.positions[mesh.indices[i + 2]] - a);
+        const glm::vec3 face =
+            glm::cross(mesh.positions[mesh.indices[i + 1]] - a, mesh.positions[mesh.indices[i + 2]] - a);
         for (size_t k = 0; k < 3; ++k) mesh.normals[mesh.indices[i + k]] += face;
     }
     for (glm::vec3& n : mesh.normals) n = glm::normalize(n);
     return mesh;
 }
 
-}  // namespace
+} // namespace
 
 SurfaceMesh leafSurface() {
     return blade(
@@ -77,7 +78,8 @@ const SurfaceMesh& SurfaceLibrary::surface(const std::string& name) const {
     for (const std::filesystem::path& directory : directories_) {
         for (const char* extension : {".gltf", ".glb"}) {
             const std::filesystem::path file = directory / (name + extension);
-            if (std::filesystem::is_regular_file(file)) return loaded_.emplace(name, loadSurfaceFile(file, name)).first->second;
+            if (std::filesystem::is_regular_file(file))
+                return loaded_.emplace(name, loadSurfaceFile(file, name)).first->second;
             tried += (tried.empty() ? "" : ", ") + file.string();
         }
     }
@@ -95,4 +97,4 @@ std::vector<std::filesystem::path> meshDirectoriesFor(const std::filesystem::pat
     }
 }
 
-}  // namespace lsys
+} // namespace lsys

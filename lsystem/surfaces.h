@@ -46,12 +46,12 @@ private:
 std::vector<std::filesystem::path> meshDirectoriesFor(const std::filesystem::path& plantFile);
 
 // The built-in procedural surfaces.
-SurfaceMesh leafSurface();   // an elliptic blade 1 long, 0.5 wide, its midrib slightly folded
-SurfaceMesh petalSurface();  // an obovate petal 1 long, widest near the tip, cupped upwards
+SurfaceMesh leafSurface();  // an elliptic blade 1 long, 0.5 wide, its midrib slightly folded
+SurfaceMesh petalSurface(); // an obovate petal 1 long, widest near the tip, cupped upwards
 
 // The triangles of the first mesh in a .gltf or .glb file, in the mesh's own
 // space (node transforms are not applied), named `name`. Normals and uvs are
 // kept when every primitive has them. Throws SurfaceError naming the file.
 SurfaceMesh loadSurfaceFile(const std::filesystem::path& file, const std::string& name);
 
-}  // namespace lsys
+} // namespace lsys

@@ -28,7 +28,8 @@ struct MeshFileReader {
     std::vector<glm::vec<N, float>> vectors(int accessorIndex) const {
         std::vector<glm::vec<N, float>> values;
         if (accessorIndex < 0) return values;
-        const tinygltf::Accessor& accessor = accessorAt(accessorIndex, N == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC3);
+        const tinygltf::Accessor& accessor =
+            accessorAt(accessorIndex, N == 2 ? TINYGLTF_TYPE_VEC2 : TINYGLTF_TYPE_VEC3);
         const size_t componentSize = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(accessor.componentType));
         const bool isFloat = accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT;
         if (!isFloat && !(accessor.normalized && (accessor.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
@@ -39,8 +40,10 @@ struct MeshFileReader {
             glm::vec<N, float> value;
             for (int k = 0; k < N; ++k) {
                 const unsigned char* bytes = element + k * componentSize;
-                if (isFloat) std::memcpy(&value[k], bytes, sizeof(float));
-                else value[k] = static_cast<float>(componentSize == 1 ? bytes[0] : bytes[0] | bytes[1] << 8) / scale;
+                if (isFloat)
+                    std::memcpy(&value[k], bytes, sizeof(float));
+                else
+                    value[k] = static_cast<float>(componentSize == 1 ? bytes[0] : bytes[0] | bytes[1] << 8) / scale;
             }
             values.push_back(value);
         });
@@ -57,7 +60,7 @@ struct MeshFileReader {
         std::vector<uint32_t> values;
         forEachElement(accessor, static_cast<size_t>(size), [&](const unsigned char* bytes) {
             uint32_t value = 0;
-            for (int k = 0; k < size; ++k) value |= static_cast<uint32_t>(bytes[k]) << (8 * k);  // little-endian
+            for (int k = 0; k < size; ++k) value |= static_cast<uint32_t>(bytes[k]) << (8 * k); // little-endian
             values.push_back(value);
         });
         return values;
@@ -78,7 +81,8 @@ private:
         if (accessor.bufferView < 0 || static_cast<size_t>(accessor.bufferView) >= model.bufferViews.size())
             fail("an accessor has no buffer view");
         const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(accessor.bufferView)];
-        if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size()) fail("a buffer view has no buffer");
+        if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size())
+            fail("a buffer view has no buffer");
         const std::vector<unsigned char>& data = model.buffers[static_cast<size_t>(view.buffer)].data;
         const size_t stride = view.byteStride != 0 ? view.byteStride : elementSize;
         const size_t start = view.byteOffset + accessor.byteOffset;
@@ -94,7 +98,7 @@ int attribute(const tinygltf::Primitive& primitive, const char* name) {
     return found == primitive.attributes.end() ? -1 : found->second;
 }
 
-}  // namespace
+} // namespace
 
 SurfaceMesh loadSurfaceFile(const std::filesystem::path& file, const std::string& name) {
     tinygltf::TinyGLTF loader;
@@ -144,4 +148,4 @@ SurfaceMesh loadSurfaceFile(const std::filesystem::path& file, const std::string
     return mesh;
 }
 
-}  // namespace lsys
+} // namespace lsys

@@ -24,4 +24,4 @@ std::optional<SymbolId> SymbolTable::find(std::string_view name) const {
     return std::nullopt;
 }
 
-}  // namespace lsys
+} // namespace lsys

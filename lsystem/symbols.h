@@ -14,8 +14,8 @@ using SymbolId = uint16_t;
 
 // Brackets are interned first in every table so the hot loops can test them
 // against constants.
-inline constexpr SymbolId kPush = 0;  // [
-inline constexpr SymbolId kPop = 1;   // ]
+inline constexpr SymbolId kPush = 0; // [
+inline constexpr SymbolId kPop = 1;  // ]
 
 struct SymbolTable {
     std::vector<std::string> names;
@@ -29,4 +29,4 @@ struct SymbolTable {
     size_t size() const { return names.size(); }
 };
 
-}  // namespace lsys
+} // namespace lsys

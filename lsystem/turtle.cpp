@@ -19,7 +19,7 @@ size_t endOfBranch(const ModuleString& string, size_t i) {
     return i;
 }
 
-}  // namespace
+} // namespace
 
 TurtleSettings turtleSettings(const Grammar& grammar) {
     TurtleSettings settings;
@@ -76,4 +76,4 @@ PlantAsset plantFromGrammar(const Grammar& grammar, const ModuleString& derived,
     return interpretPlant(applyInterpretation(grammar, derived), grammar.symbols, settings, surfaces);
 }
 
-}  // namespace lsys
+} // namespace lsys

@@ -39,11 +39,11 @@
 namespace lsys {
 
 struct TurtleSettings {
-    float angle = 45.0f;  // degrees
+    float angle = 45.0f; // degrees
     float step = 1.0f;
     float width = 1.0f;
-    float widthFactor = 0.7f;  // for a bare '!'
-    glm::vec3 tropism{0.0f, -1.0f, 0.0f};  // gravity
+    float widthFactor = 0.7f;             // for a bare '!'
+    glm::vec3 tropism{0.0f, -1.0f, 0.0f}; // gravity
     float elasticity = 0.0f;
 };
 
@@ -56,13 +56,13 @@ struct TurtleState {
     glm::vec3 left{-1.0f, 0.0f, 0.0f};
     glm::vec3 up{0.0f, 0.0f, 1.0f};
     float width = 1.0f;
-    float length = 1.0f;  // of a bare F or f
-    float angle = 45.0f;  // of a bare turn, degrees
+    float length = 1.0f; // of a bare F or f
+    float angle = 45.0f; // of a bare turn, degrees
     uint32_t material = 0;
-    float stiffness = 0.0f;  // of the following segments' joints
+    float stiffness = 0.0f; // of the following segments' joints
     glm::vec3 tropism{0.0f, -1.0f, 0.0f};
     float elasticity = 0.0f;
-    int32_t joint = -1;  // the last segment drawn on the current path; -1: the plant's base
+    int32_t joint = -1; // the last segment drawn on the current path; -1: the plant's base
 };
 
 // The start of a plant: the settings' width, step, angle, tropism and elasticity.
@@ -72,15 +72,15 @@ TurtleState initialTurtleState(const TurtleSettings& settings);
 Frame frameOf(const TurtleState& state);
 
 struct OpenPolygon {
-    Frame start;  // where { was read
+    Frame start; // where { was read
     uint32_t material = 0;
     int32_t joint = -1;
-    std::vector<glm::vec3> outline;  // plant space
+    std::vector<glm::vec3> outline; // plant space
 };
 
 struct TurtleStack {
-    std::vector<TurtleState> branches;  // [ pushes, ] pops
-    std::vector<OpenPolygon> polygons;  // { pushes, } pops; independent of the branches
+    std::vector<TurtleState> branches; // [ pushes, ] pops
+    std::vector<OpenPolygon> polygons; // { pushes, } pops; independent of the branches
 };
 
 // The command's transition (turtle_commands.cpp); inside a polygon the one
@@ -103,4 +103,4 @@ PlantAsset interpretPlant(const ModuleString& string, const SymbolTable& symbols
 PlantAsset plantFromGrammar(const Grammar& grammar, const ModuleString& derived,
                             const SurfaceLibrary& surfaces = SurfaceLibrary{});
 
-}  // namespace lsys
+} // namespace lsys

@@ -27,14 +27,14 @@ Bounds localBounds(const SurfaceMesh& mesh) {
     return bounds;
 }
 
-}  // namespace
+} // namespace
 
 const std::vector<Material>& defaultPalette() {
     static const std::vector<Material> palette = {
-        {"bark", {0.17f, 0.11f, 0.065f}, false},   {"leaf", {0.20f, 0.45f, 0.12f}, true},
-        {"petal", {0.95f, 0.82f, 0.88f}, true},    {"pollen", {0.95f, 0.80f, 0.20f}, false},
-        {"fruit", {0.70f, 0.08f, 0.06f}, false},   {"needle", {0.10f, 0.28f, 0.12f}, true},
-        {"autumn", {0.85f, 0.45f, 0.10f}, true},   {"deadwood", {0.45f, 0.38f, 0.30f}, false},
+        {"bark", {0.17f, 0.11f, 0.065f}, false}, {"leaf", {0.20f, 0.45f, 0.12f}, true},
+        {"petal", {0.95f, 0.82f, 0.88f}, true},  {"pollen", {0.95f, 0.80f, 0.20f}, false},
+        {"fruit", {0.70f, 0.08f, 0.06f}, false}, {"needle", {0.10f, 0.28f, 0.12f}, true},
+        {"autumn", {0.85f, 0.45f, 0.10f}, true}, {"deadwood", {0.45f, 0.38f, 0.30f}, false},
     };
     return palette;
 }
@@ -87,7 +87,8 @@ void PlantAssetBuilder::addSurface(const std::string& name, const Frame& frame, 
     }
 }
 
-void PlantAssetBuilder::addPolygon(const Frame& start, std::vector<glm::vec3> outline, uint32_t material, int32_t joint) {
+void PlantAssetBuilder::addPolygon(const Frame& start, std::vector<glm::vec3> outline, uint32_t material,
+                                   int32_t joint) {
     for (const glm::vec3& p : outline) asset_.bounds.extend(p);
     const uint32_t shape = static_cast<uint32_t>(asset_.polygons.size());
     asset_.polygons.push_back({std::move(outline)});
@@ -114,4 +115,4 @@ PlantAsset PlantAssetBuilder::finish() {
     return result;
 }
 
-}  // namespace lsys
+} // namespace lsys

@@ -42,9 +42,9 @@ private:
 
     const SurfaceLibrary& surfaces_;
     PlantAsset asset_;
-    std::unordered_map<std::string, uint32_t> surfaceIndex_;  // name -> asset_.surfaces index
-    std::vector<Bounds> surfaceBounds_;                       // local bounds per asset_.surfaces entry
-    std::vector<bool> twoSided_;                              // per material index used by a surface or polygon
+    std::unordered_map<std::string, uint32_t> surfaceIndex_; // name -> asset_.surfaces index
+    std::vector<Bounds> surfaceBounds_;                      // local bounds per asset_.surfaces entry
+    std::vector<bool> twoSided_;                             // per material index used by a surface or polygon
 };
 
-}  // namespace lsys
+} // namespace lsys

@@ -29,7 +29,7 @@ float turnAngle(const TurtleStep& t) { return t.parameterOr(0, t.state.angle); }
 // ABOP's $: L = V x H / |V x H| with V the world up (+Y).
 void rollHorizontal(TurtleState& s) {
     const glm::vec3 horizontalLeft = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), s.heading);
-    if (glm::length(horizontalLeft) < 1e-6f) return;  // heading vertical: any roll is horizontal
+    if (glm::length(horizontalLeft) < 1e-6f) return; // heading vertical: any roll is horizontal
     s.left = glm::normalize(horizontalLeft);
     s.up = glm::cross(s.heading, s.left);
 }
@@ -39,7 +39,7 @@ void bendTowardTropism(TurtleState& s) {
     if (s.elasticity == 0.0f) return;
     const glm::vec3 axis = glm::cross(s.heading, s.tropism);
     const float sine = glm::length(axis);
-    if (!(sine > 1e-6f)) return;  // parallel to T (or NaN): no defined bend
+    if (!(sine > 1e-6f)) return; // parallel to T (or NaN): no defined bend
     rotate(s, axis / sine, glm::degrees(s.elasticity * sine));
 }
 
@@ -70,8 +70,8 @@ void drawSegment(const TurtleStep& t) {
     const float length = t.parameterOr(0, s.length);
     const float startWidth = s.width;
     s.width = t.parameterOr(1, s.width);
-    s.joint = t.out.addSegment(segmentFrame(s, length), std::abs(length), startWidth * 0.5f, s.width * 0.5f,
-                               s.material, s.joint, s.stiffness);
+    s.joint = t.out.addSegment(segmentFrame(s, length), std::abs(length), startWidth * 0.5f, s.width * 0.5f, s.material,
+                               s.joint, s.stiffness);
     s.position += s.heading * length;
     bendTowardTropism(s);
 }
@@ -99,149 +99,262 @@ void changeNothing(const TurtleStep&) {}
 // change nothing, which their defaults (x = 1, x = 0, x = the field) say.
 // An entry left out does not compile: TurtleReads and StyleChange have no default.
 constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
-    {.action = TurtleAction::None, .symbol = "@Oc",
+    {.action = TurtleAction::None,
+     .symbol = "@Oc",
      .documentation = "nothing (cpfg's unfilled screen-space circle), as every module not listed here",
-     .reads = {kReadsNothing}, .changes = kChangesNoStyle, .apply = changeNothing},
+     .reads = {kReadsNothing},
+     .changes = kChangesNoStyle,
+     .apply = changeNothing},
     // Its joint's parent is the joint the turtle is on (TurtleState::joint);
     // a negative l draws backwards, turned 180 degrees about U.
-    {.action = TurtleAction::Draw, .symbol = "F", .parameters = "l = length, w = width",
+    {.action = TurtleAction::Draw,
+     .symbol = "F",
+     .parameters = "l = length, w = width",
      .documentation = "draw a segment (a joint) of length l tapering from the width to w, then bend by tropism; "
                       "in a polygon, f",
      .reads = {kReadsWidth | kReadsMaterial | kReadsStiffness | kReadsElasticity | kReadsPolygonOpen, kReadsLength,
                kReadsTropism},
      .changes = {StyleField::Width, FieldChange::Set, FieldChange::Keep},
      // cpfg and lpfg trace a polygon's outline with F too: Robbins' {+F-F-F} is a triangle.
-     .inPolygon = TurtleAction::Move, .apply = drawSegment},
-    {.action = TurtleAction::Move, .symbol = "f", .parameters = "l = length",
+     .inPolygon = TurtleAction::Move,
+     .apply = drawSegment},
+    {.action = TurtleAction::Move,
+     .symbol = "f",
+     .parameters = "l = length",
      .documentation = "move by l without drawing; in a polygon, record where it ends as a vertex",
-     .reads = {kReadsPolygonOpen, kReadsLength}, .changes = kChangesNoStyle, .apply = move},
-    {.action = TurtleAction::Yaw, .symbol = "+", .parameters = "a = angle",
-     .documentation = "yaw by a degrees about U, towards L", .reads = {kReadsNothing, kReadsAngle},
-     .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, turnAngle(t)); }},
-    {.action = TurtleAction::YawBack, .symbol = "-", .parameters = "a = angle",
-     .documentation = "yaw by a degrees about U, away from L", .reads = {kReadsNothing, kReadsAngle},
-     .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, -turnAngle(t)); }},
-    {.action = TurtleAction::Pitch, .symbol = "&", .parameters = "a = angle",
-     .documentation = "pitch down by a degrees about L", .reads = {kReadsNothing, kReadsAngle},
-     .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) { rotate(t.state, t.state.left, turnAngle(t)); }},
-    {.action = TurtleAction::PitchBack, .symbol = "^", .parameters = "a = angle",
-     .documentation = "pitch up by a degrees about L", .reads = {kReadsNothing, kReadsAngle},
-     .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) { rotate(t.state, t.state.left, -turnAngle(t)); }},
-    {.action = TurtleAction::Roll, .symbol = "\\", .parameters = "a = angle",
-     .documentation = "roll left by a degrees about H", .reads = {kReadsNothing, kReadsAngle},
+     .reads = {kReadsPolygonOpen, kReadsLength},
+     .changes = kChangesNoStyle,
+     .apply = move},
+    {.action = TurtleAction::Yaw,
+     .symbol = "+",
+     .parameters = "a = angle",
+     .documentation = "yaw by a degrees about U, towards L",
+     .reads = {kReadsNothing, kReadsAngle},
+     .changes = kChangesNoStyle,
+     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, turnAngle(t)); }},
+    {.action = TurtleAction::YawBack,
+     .symbol = "-",
+     .parameters = "a = angle",
+     .documentation = "yaw by a degrees about U, away from L",
+     .reads = {kReadsNothing, kReadsAngle},
+     .changes = kChangesNoStyle,
+     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, -turnAngle(t)); }},
+    {.action = TurtleAction::Pitch,
+     .symbol = "&",
+     .parameters = "a = angle",
+     .documentation = "pitch down by a degrees about L",
+     .reads = {kReadsNothing, kReadsAngle},
+     .changes = kChangesNoStyle,
+     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.left, turnAngle(t)); }},
+    {.action = TurtleAction::PitchBack,
+     .symbol = "^",
+     .parameters = "a = angle",
+     .documentation = "pitch up by a degrees about L",
+     .reads = {kReadsNothing, kReadsAngle},
+     .changes = kChangesNoStyle,
+     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.left, -turnAngle(t)); }},
+    {.action = TurtleAction::Roll,
+     .symbol = "\\",
+     .parameters = "a = angle",
+     .documentation = "roll left by a degrees about H",
+     .reads = {kReadsNothing, kReadsAngle},
      .changes = kChangesNoStyle,
      .apply = [](const TurtleStep& t) { rotate(t.state, t.state.heading, turnAngle(t)); }},
-    {.action = TurtleAction::RollBack, .symbol = "/", .parameters = "a = angle",
-     .documentation = "roll right by a degrees about H", .reads = {kReadsNothing, kReadsAngle},
+    {.action = TurtleAction::RollBack,
+     .symbol = "/",
+     .parameters = "a = angle",
+     .documentation = "roll right by a degrees about H",
+     .reads = {kReadsNothing, kReadsAngle},
      .changes = kChangesNoStyle,
      .apply = [](const TurtleStep& t) { rotate(t.state, t.state.heading, -turnAngle(t)); }},
-    {.action = TurtleAction::TurnAround, .symbol = "|", .documentation = "turn 180 degrees about U",
-     .reads = {kReadsNothing}, .changes = kChangesNoStyle,
+    {.action = TurtleAction::TurnAround,
+     .symbol = "|",
+     .documentation = "turn 180 degrees about U",
+     .reads = {kReadsNothing},
+     .changes = kChangesNoStyle,
      .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, 180.0f); }},
-    {.action = TurtleAction::RollHorizontal, .symbol = "$",
+    {.action = TurtleAction::RollHorizontal,
+     .symbol = "$",
      .documentation = "roll about H until L is horizontal (ABOP: L = V x H / |V x H|, V = +Y)",
-     .reads = {kReadsWorldUp}, .changes = kChangesNoStyle,
+     .reads = {kReadsWorldUp},
+     .changes = kChangesNoStyle,
      .apply = [](const TurtleStep& t) { rollHorizontal(t.state); }},
     // Only the branch stack: open polygons are not popped (ABOP Fig 5.6's
     // [+A{.].C.} closes after the branch a polygon opened in it).
-    {.action = TurtleAction::Push, .symbol = "[", .documentation = "push the turtle state",
-     .reads = {kReadsNothing}, .changes = kChangesNoStyle,
+    {.action = TurtleAction::Push,
+     .symbol = "[",
+     .documentation = "push the turtle state",
+     .reads = {kReadsNothing},
+     .changes = kChangesNoStyle,
      .apply = [](const TurtleStep& t) { t.stack.branches.push_back(t.state); }},
-    {.action = TurtleAction::Pop, .symbol = "]",
-     .documentation = "pop the turtle state (with nothing pushed, nothing happens)", .reads = {kReadsNothing},
-     .changes = kChangesNoStyle, .apply = popBranch},
-    {.action = TurtleAction::Width, .symbol = "!", .parameters = "w = width * 0.7",
-     .documentation = "set the width to w (0.7 is TurtleSettings::widthFactor)", .reads = {kReadsNothing},
+    {.action = TurtleAction::Pop,
+     .symbol = "]",
+     .documentation = "pop the turtle state (with nothing pushed, nothing happens)",
+     .reads = {kReadsNothing},
+     .changes = kChangesNoStyle,
+     .apply = popBranch},
+    {.action = TurtleAction::Width,
+     .symbol = "!",
+     .parameters = "w = width * 0.7",
+     .documentation = "set the width to w (0.7 is TurtleSettings::widthFactor)",
+     .reads = {kReadsNothing},
      .changes = {StyleField::Width, FieldChange::Set, FieldChange::Derive},
      .apply = [](const TurtleStep& t) { t.state.width = t.parameterOr(0, t.state.width * t.settings.widthFactor); }},
-    {.action = TurtleAction::Material, .symbol = ";", .alias = "'", .parameters = "i = material + 1",
+    {.action = TurtleAction::Material,
+     .symbol = ";",
+     .alias = "'",
+     .parameters = "i = material + 1",
      .documentation = "set the material index to i; outside 0..255 (cpfg's colour map) it becomes 0",
-     .reads = {kReadsNothing}, .changes = {StyleField::Material, FieldChange::Set, FieldChange::Derive},
-     .apply = [](const TurtleStep& t) {
-         t.state.material = materialIndex(t.parameterOr(0, static_cast<float>(t.state.material) + 1.0f));
-     }},
+     .reads = {kReadsNothing},
+     .changes = {StyleField::Material, FieldChange::Set, FieldChange::Derive},
+     .apply =
+         [](const TurtleStep& t) {
+             t.state.material = materialIndex(t.parameterOr(0, static_cast<float>(t.state.material) + 1.0f));
+         }},
     // A string-level operation, not a state transition: interpretModules()
     // skips to the ] (and the rewriter already removes % produced by rules).
-    {.action = TurtleAction::Cut, .symbol = "%", .documentation = "cut the rest of the branch, up to its ]",
-     .reads = {kReadsNothing}, .changes = kChangesNoStyle, .apply = changeNothing},
-    {.action = TurtleAction::ScaleLength, .symbol = "@Lm", .parameters = "x = 1",
-     .documentation = "multiply the length of a bare F or f by x", .reads = {kReadsNothing},
+    {.action = TurtleAction::Cut,
+     .symbol = "%",
+     .documentation = "cut the rest of the branch, up to its ]",
+     .reads = {kReadsNothing},
+     .changes = kChangesNoStyle,
+     .apply = changeNothing},
+    {.action = TurtleAction::ScaleLength,
+     .symbol = "@Lm",
+     .parameters = "x = 1",
+     .documentation = "multiply the length of a bare F or f by x",
+     .reads = {kReadsNothing},
      .changes = {StyleField::Length, FieldChange::Derive, FieldChange::Keep},
      .apply = [](const TurtleStep& t) { t.state.length *= t.parameterOr(0, 1.0f); }},
-    {.action = TurtleAction::AddLength, .symbol = "@La", .parameters = "x = 0",
-     .documentation = "add x to the length of a bare F or f", .reads = {kReadsNothing},
+    {.action = TurtleAction::AddLength,
+     .symbol = "@La",
+     .parameters = "x = 0",
+     .documentation = "add x to the length of a bare F or f",
+     .reads = {kReadsNothing},
      .changes = {StyleField::Length, FieldChange::Derive, FieldChange::Keep},
      .apply = [](const TurtleStep& t) { t.state.length += t.parameterOr(0, 0.0f); }},
-    {.action = TurtleAction::SetLength, .symbol = "@Ls", .parameters = "x = length",
-     .documentation = "set the length of a bare F or f to x", .reads = {kReadsNothing},
+    {.action = TurtleAction::SetLength,
+     .symbol = "@Ls",
+     .parameters = "x = length",
+     .documentation = "set the length of a bare F or f to x",
+     .reads = {kReadsNothing},
      .changes = {StyleField::Length, FieldChange::Set, FieldChange::Keep},
      .apply = [](const TurtleStep& t) { t.state.length = t.parameterOr(0, t.state.length); }},
-    {.action = TurtleAction::ScaleAngle, .symbol = "@Am", .parameters = "x = 1",
-     .documentation = "multiply the angle of a bare turn by x", .reads = {kReadsNothing},
+    {.action = TurtleAction::ScaleAngle,
+     .symbol = "@Am",
+     .parameters = "x = 1",
+     .documentation = "multiply the angle of a bare turn by x",
+     .reads = {kReadsNothing},
      .changes = {StyleField::Angle, FieldChange::Derive, FieldChange::Keep},
      .apply = [](const TurtleStep& t) { t.state.angle *= t.parameterOr(0, 1.0f); }},
-    {.action = TurtleAction::AddAngle, .symbol = "@Aa", .parameters = "x = 0",
-     .documentation = "add x to the angle of a bare turn", .reads = {kReadsNothing},
+    {.action = TurtleAction::AddAngle,
+     .symbol = "@Aa",
+     .parameters = "x = 0",
+     .documentation = "add x to the angle of a bare turn",
+     .reads = {kReadsNothing},
      .changes = {StyleField::Angle, FieldChange::Derive, FieldChange::Keep},
      .apply = [](const TurtleStep& t) { t.state.angle += t.parameterOr(0, 0.0f); }},
-    {.action = TurtleAction::SetAngle, .symbol = "@As", .parameters = "x = angle",
-     .documentation = "set the angle of a bare turn to x", .reads = {kReadsNothing},
+    {.action = TurtleAction::SetAngle,
+     .symbol = "@As",
+     .parameters = "x = angle",
+     .documentation = "set the angle of a bare turn to x",
+     .reads = {kReadsNothing},
      .changes = {StyleField::Angle, FieldChange::Set, FieldChange::Keep},
      .apply = [](const TurtleStep& t) { t.state.angle = t.parameterOr(0, t.state.angle); }},
-    {.action = TurtleAction::ScaleWidth, .symbol = "@Wm", .parameters = "x = 1",
-     .documentation = "multiply the width by x", .reads = {kReadsNothing},
+    {.action = TurtleAction::ScaleWidth,
+     .symbol = "@Wm",
+     .parameters = "x = 1",
+     .documentation = "multiply the width by x",
+     .reads = {kReadsNothing},
      .changes = {StyleField::Width, FieldChange::Derive, FieldChange::Keep},
      .apply = [](const TurtleStep& t) { t.state.width *= t.parameterOr(0, 1.0f); }},
-    {.action = TurtleAction::AddWidth, .symbol = "@Wa", .parameters = "x = 0",
-     .documentation = "add x to the width", .reads = {kReadsNothing},
+    {.action = TurtleAction::AddWidth,
+     .symbol = "@Wa",
+     .parameters = "x = 0",
+     .documentation = "add x to the width",
+     .reads = {kReadsNothing},
      .changes = {StyleField::Width, FieldChange::Derive, FieldChange::Keep},
      .apply = [](const TurtleStep& t) { t.state.width += t.parameterOr(0, 0.0f); }},
-    {.action = TurtleAction::AddMaterial, .symbol = "@Ca", .parameters = "x = 0",
-     .documentation = "add x to the material index, kept in 0..255 as by ;", .reads = {kReadsNothing},
+    {.action = TurtleAction::AddMaterial,
+     .symbol = "@Ca",
+     .parameters = "x = 0",
+     .documentation = "add x to the material index, kept in 0..255 as by ;",
+     .reads = {kReadsNothing},
      .changes = {StyleField::Material, FieldChange::Derive, FieldChange::Keep},
-     .apply = [](const TurtleStep& t) {
-         t.state.material = materialIndex(static_cast<float>(t.state.material) + t.parameterOr(0, 0.0f));
-     }},
+     .apply =
+         [](const TurtleStep& t) {
+             t.state.material = materialIndex(static_cast<float>(t.state.material) + t.parameterOr(0, 0.0f));
+         }},
     // Crankshaw's F(l,k) arrives as @K(k)F(l) through the dialect's interpretation rules.
-    {.action = TurtleAction::Stiffness, .symbol = "@K", .parameters = "k = stiffness",
+    {.action = TurtleAction::Stiffness,
+     .symbol = "@K",
+     .parameters = "k = stiffness",
      .documentation = "set the spring stiffness of the following segments' joints (0: from beam theory)",
-     .reads = {kReadsNothing}, .changes = {StyleField::Stiffness, FieldChange::Set, FieldChange::Keep},
+     .reads = {kReadsNothing},
+     .changes = {StyleField::Stiffness, FieldChange::Set, FieldChange::Keep},
      .apply = [](const TurtleStep& t) { t.state.stiffness = t.parameterOr(0, t.state.stiffness); }},
     // |T| scales the bend, e < 0 bends away, e = 0 (the default) does not bend.
-    {.action = TurtleAction::Elasticity, .symbol = "@Ts", .parameters = "e = elasticity",
+    {.action = TurtleAction::Elasticity,
+     .symbol = "@Ts",
+     .parameters = "e = elasticity",
      .documentation = "set the elasticity: after each segment H turns toward T by e*|H x T| radians (ABOP section 2.4)",
-     .reads = {kReadsNothing}, .changes = {StyleField::Elasticity, FieldChange::Set, FieldChange::Keep},
+     .reads = {kReadsNothing},
+     .changes = {StyleField::Elasticity, FieldChange::Set, FieldChange::Keep},
      .apply = [](const TurtleStep& t) { t.state.elasticity = t.parameterOr(0, t.state.elasticity); }},
-    {.action = TurtleAction::TropismVector, .symbol = "@Tv", .parameters = "x, y, z",
+    {.action = TurtleAction::TropismVector,
+     .symbol = "@Tv",
+     .parameters = "x, y, z",
      .documentation = "set the tropism vector T, in plant space (with fewer parameters, nothing happens)",
-     .reads = {kReadsNothing}, .changes = {StyleField::Tropism, FieldChange::SetInPlant, FieldChange::Keep},
-     .apply = [](const TurtleStep& t) {
-         if (t.parameters.size() >= 3) t.state.tropism = {t.parameters[0], t.parameters[1], t.parameters[2]};
-     }},
-    {.action = TurtleAction::Sphere, .symbol = "@O", .parameters = "d = width",
-     .documentation = "draw a sphere of diameter d", .reads = {kReadsMaterial, kReadsWidth},
-     .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) {
-         t.out.addSphere(frameOf(t.state), 0.5f * t.parameterOr(0, t.state.width), t.state.material, t.state.joint);
-     }},
-    // A surface grows from its origin along H, spreads along L and faces U.
-    {.action = TurtleAction::Surface, .symbol = "~", .symbolIsPrefix = true, .parameters = "s = 1",
-     .documentation = "draw the surface `name` scaled by s: leaf, petal, or a mesh of data/meshes",
-     .reads = {kReadsMaterial}, .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) {
-         t.out.addSurface(t.command.surface, frameOf(t.state), t.parameterOr(0, 1.0f), t.state.material,
-                          t.state.joint);
-     }},
-    {.action = TurtleAction::PolygonBegin, .symbol = "{",
-     .documentation = "open a polygon with the frame, material and joint here", .reads = {kReadsMaterial},
+     .reads = {kReadsNothing},
+     .changes = {StyleField::Tropism, FieldChange::SetInPlant, FieldChange::Keep},
+     .apply =
+         [](const TurtleStep& t) {
+             if (t.parameters.size() >= 3) t.state.tropism = {t.parameters[0], t.parameters[1], t.parameters[2]};
+         }},
+    {.action = TurtleAction::Sphere,
+     .symbol = "@O",
+     .parameters = "d = width",
+     .documentation = "draw a sphere of diameter d",
+     .reads = {kReadsMaterial, kReadsWidth},
      .changes = kChangesNoStyle,
-     .apply = [](const TurtleStep& t) {
-         t.stack.polygons.push_back({frameOf(t.state), t.state.material, t.state.joint, {}});
-     }},
-    {.action = TurtleAction::PolygonVertex, .symbol = ".",
-     .documentation = "record the position as a vertex of the innermost open polygon", .reads = {kReadsPolygonOpen},
-     .changes = kChangesNoStyle, .apply = [](const TurtleStep& t) { addVertex(t.stack, t.state.position); }},
-    {.action = TurtleAction::PolygonEnd, .symbol = "}",
+     .apply =
+         [](const TurtleStep& t) {
+             t.out.addSphere(frameOf(t.state), 0.5f * t.parameterOr(0, t.state.width), t.state.material, t.state.joint);
+         }},
+    // A surface grows from its origin along H, spreads along L and faces U.
+    {.action = TurtleAction::Surface,
+     .symbol = "~",
+     .symbolIsPrefix = true,
+     .parameters = "s = 1",
+     .documentation = "draw the surface `name` scaled by s: leaf, petal, or a mesh of data/meshes",
+     .reads = {kReadsMaterial},
+     .changes = kChangesNoStyle,
+     .apply =
+         [](const TurtleStep& t) {
+             t.out.addSurface(t.command.surface, frameOf(t.state), t.parameterOr(0, 1.0f), t.state.material,
+                              t.state.joint);
+         }},
+    {.action = TurtleAction::PolygonBegin,
+     .symbol = "{",
+     .documentation = "open a polygon with the frame, material and joint here",
+     .reads = {kReadsMaterial},
+     .changes = kChangesNoStyle,
+     .apply =
+         [](const TurtleStep& t) {
+             t.stack.polygons.push_back({frameOf(t.state), t.state.material, t.state.joint, {}});
+         }},
+    {.action = TurtleAction::PolygonVertex,
+     .symbol = ".",
+     .documentation = "record the position as a vertex of the innermost open polygon",
+     .reads = {kReadsPolygonOpen},
+     .changes = kChangesNoStyle,
+     .apply = [](const TurtleStep& t) { addVertex(t.stack, t.state.position); }},
+    {.action = TurtleAction::PolygonEnd,
+     .symbol = "}",
      .documentation = "close the innermost polygon, drawn when it has 3 or more distinct vertices",
-     .reads = {kReadsNothing}, .changes = kChangesNoStyle, .apply = closePolygon},
+     .reads = {kReadsNothing},
+     .changes = kChangesNoStyle,
+     .apply = closePolygon},
 }};
 
 constexpr std::array<std::string_view, 2> symbolsOf(const TurtleCommandDefinition& definition) {
@@ -275,7 +388,7 @@ constexpr bool symbolsAreUnambiguous() {
 }
 static_assert(symbolsAreUnambiguous(), "two turtle commands share a module name");
 
-}  // namespace
+} // namespace
 
 std::span<const TurtleCommandDefinition, kTurtleActions> turtleCommandDefinitions() { return kDefinitions; }
 
@@ -324,7 +437,7 @@ std::string turtleCommandHelp() {
         std::string_view documentation;
     };
     std::vector<Row> rows;
-    size_t symbolWidth = 6, parameterWidth = 10;  // the headings
+    size_t symbolWidth = 6, parameterWidth = 10; // the headings
     for (const TurtleCommandDefinition& definition : kDefinitions)
         for (std::string_view symbol : symbolsOf(definition)) {
             if (symbol.empty()) continue;
@@ -348,4 +461,4 @@ std::string turtleCommandHelp() {
     return help;
 }
 
-}  // namespace lsys
+} // namespace lsys

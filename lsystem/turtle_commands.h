@@ -27,17 +27,46 @@ class PlantAssetBuilder;
 // One per command, in the order of its definition in the table; PolygonEnd
 // stays last (kTurtleActions). None is every module that is no command.
 enum class TurtleAction : uint8_t {
-    None, Draw, Move, Yaw, YawBack, Pitch, PitchBack, Roll, RollBack, TurnAround, RollHorizontal,
-    Push, Pop, Width, Material, Cut,
-    ScaleLength, AddLength, SetLength, ScaleAngle, AddAngle, SetAngle, ScaleWidth, AddWidth, AddMaterial,
-    Stiffness, Elasticity, TropismVector, Sphere, Surface, PolygonBegin, PolygonVertex, PolygonEnd,
+    None,
+    Draw,
+    Move,
+    Yaw,
+    YawBack,
+    Pitch,
+    PitchBack,
+    Roll,
+    RollBack,
+    TurnAround,
+    RollHorizontal,
+    Push,
+    Pop,
+    Width,
+    Material,
+    Cut,
+    ScaleLength,
+    AddLength,
+    SetLength,
+    ScaleAngle,
+    AddAngle,
+    SetAngle,
+    ScaleWidth,
+    AddWidth,
+    AddMaterial,
+    Stiffness,
+    Elasticity,
+    TropismVector,
+    Sphere,
+    Surface,
+    PolygonBegin,
+    PolygonVertex,
+    PolygonEnd,
 };
 inline constexpr size_t kTurtleActions = static_cast<size_t>(TurtleAction::PolygonEnd) + 1;
 
 // What a module name means to the turtle, resolved once per symbol.
 struct TurtleCommand {
     TurtleAction action = TurtleAction::None;
-    std::string surface;  // the name after ~ for TurtleAction::Surface
+    std::string surface; // the name after ~ for TurtleAction::Surface
 };
 
 TurtleCommand turtleCommand(const std::string& moduleName);
@@ -61,8 +90,8 @@ inline constexpr uint16_t kReadsMaterial = readBit(StyleField::Material);
 inline constexpr uint16_t kReadsStiffness = readBit(StyleField::Stiffness);
 inline constexpr uint16_t kReadsElasticity = readBit(StyleField::Elasticity);
 inline constexpr uint16_t kReadsTropism = readBit(StyleField::Tropism);
-inline constexpr uint16_t kReadsWorldUp = 1 << kStyleFields;            // the frame against the world's +Y
-inline constexpr uint16_t kReadsPolygonOpen = 1 << (kStyleFields + 1);  // whether a vertex is recorded
+inline constexpr uint16_t kReadsWorldUp = 1 << kStyleFields;           // the frame against the world's +Y
+inline constexpr uint16_t kReadsPolygonOpen = 1 << (kStyleFields + 1); // whether a vertex is recorded
 
 // Reads that depend on the module and the state: a parameter left out is
 // taken from a field, and a zero elasticity skips the tropism bend (ABOP
@@ -72,8 +101,8 @@ struct TurtleReads {
         : always(always), bare(bare), bending(bending) {}
 
     uint16_t always;
-    uint16_t bare;     // in addition when the module has no parameters
-    uint16_t bending;  // in addition when the elasticity is not 0
+    uint16_t bare;    // in addition when the module has no parameters
+    uint16_t bending; // in addition when the elasticity is not 0
 };
 
 // How a command changes a style field, which is what the provenance of an
@@ -113,15 +142,15 @@ struct TurtleStep {
 using TurtleTransition = void (*)(const TurtleStep& step);
 
 struct TurtleCommandDefinition {
-    TurtleAction action;  // its index in the table
-    std::string_view symbol;      // its module name
-    std::string_view alias;       // another, if any
-    bool symbolIsPrefix = false;  // ~leaf is the command ~ of the surface leaf
-    std::string_view parameters;  // "name" or "name = what it is when left out", joined by ", "
-    std::string_view documentation;  // one line
+    TurtleAction action;            // its index in the table
+    std::string_view symbol;        // its module name
+    std::string_view alias;         // another, if any
+    bool symbolIsPrefix = false;    // ~leaf is the command ~ of the surface leaf
+    std::string_view parameters;    // "name" or "name = what it is when left out", joined by ", "
+    std::string_view documentation; // one line
     TurtleReads reads;
     StyleChange changes;
-    std::optional<TurtleAction> inPolygon;  // the command it acts as while a polygon is open
+    std::optional<TurtleAction> inPolygon; // the command it acts as while a polygon is open
     TurtleTransition apply;
 };
 
@@ -136,4 +165,4 @@ size_t parameterCount(const TurtleCommandDefinition& definition);
 // The table of commands, a row per symbol: symbol, parameters and documentation.
 std::string turtleCommandHelp();
 
-}  // namespace lsys
+} // namespace lsys

@@ -32,9 +32,9 @@ using uint = uint32_t;
 #define DRAW_CLASS_COUNT 3
 
 // FieldVertex::albedo.a: how the fragment shader treats the surface.
-#define SURFACE_BARK 0.0    // opaque, bark streaks
-#define SURFACE_LEAF 1.0    // alpha-tested leaf card: uv in [0,1]², leaf outline cut by the shader
-#define SURFACE_BLADE 2.0   // opaque two-sided thin blade or petal, no cut-out
+#define SURFACE_BARK 0.0  // opaque, bark streaks
+#define SURFACE_LEAF 1.0  // alpha-tested leaf card: uv in [0,1]², leaf outline cut by the shader
+#define SURFACE_BLADE 2.0 // opaque two-sided thin blade or petal, no cut-out
 
 // A visible-list entry: instance index in the low bits, then one bit that
 // says the entry is fading in (rather than out), then its coverage.
@@ -55,17 +55,17 @@ using uint = uint32_t;
 #define CULL_GROUP_SIZE 64
 
 // Descriptor bindings of the field's draw set (set 0).
-#define FIELD_BINDING_FRAME 0       // FrameUniforms (layouts.h) + FieldFrame
-#define FIELD_BINDING_INSTANCES 1   // FieldInstance[]
-#define FIELD_BINDING_VISIBLE 2     // uint[] visible entries, per (model, LOD) list
-#define FIELD_BINDING_VERTICES 3    // FieldVertex[]
-#define FIELD_BINDING_MODELS 4      // PlantModel[]
-#define FIELD_BINDING_ATLAS_COLOR 5 // sampler2DArray: impostor albedo (rgb) + coverage (a)
-#define FIELD_BINDING_ATLAS_NORMAL 6 // sampler2DArray: impostor normal (rgb·0.5+0.5) + depth (a)
-#define FIELD_BINDING_SHADOW 7      // sampler2DShadow: the sun's shadow map
-#define FIELD_BINDING_TERRAIN 8     // TerrainVertex[]
-#define FIELD_BINDING_SKELETONS 9   // Skeleton[] (physics_layouts.h)
-#define FIELD_BINDING_POSES 10      // JointPose[] of every simulated joint
+#define FIELD_BINDING_FRAME 0              // FrameUniforms (layouts.h) + FieldFrame
+#define FIELD_BINDING_INSTANCES 1          // FieldInstance[]
+#define FIELD_BINDING_VISIBLE 2            // uint[] visible entries, per (model, LOD) list
+#define FIELD_BINDING_VERTICES 3           // FieldVertex[]
+#define FIELD_BINDING_MODELS 4             // PlantModel[]
+#define FIELD_BINDING_ATLAS_COLOR 5        // sampler2DArray: impostor albedo (rgb) + coverage (a)
+#define FIELD_BINDING_ATLAS_NORMAL 6       // sampler2DArray: impostor normal (rgb·0.5+0.5) + depth (a)
+#define FIELD_BINDING_SHADOW 7             // sampler2DShadow: the sun's shadow map
+#define FIELD_BINDING_TERRAIN 8            // TerrainVertex[]
+#define FIELD_BINDING_SKELETONS 9          // Skeleton[] (physics_layouts.h)
+#define FIELD_BINDING_POSES 10             // JointPose[] of every simulated joint
 #define FIELD_BINDING_INSTANCE_SKELETON 11 // uint per instance: the Skeleton its vertices follow
 #define FIELD_BINDING_IMPOSTOR_OUTLINES 12 // per atlas layer, OUTLINE_CORNERS uv corners, two a texel
 
@@ -73,15 +73,15 @@ using uint = uint32_t;
 #define OUTLINE_CORNERS 4
 
 // Descriptor bindings of the cull pass (its own set 0).
-#define CULL_BINDING_UNIFORMS 0  // CullUniforms
-#define CULL_BINDING_INSTANCES 1 // FieldInstance[]
-#define CULL_BINDING_MODELS 2    // PlantModel[]
-#define CULL_BINDING_STATE 3     // uint[] per-instance LOD state
-#define CULL_BINDING_COUNTS 4    // uint[] per (model, LOD): entries written this frame
-#define CULL_BINDING_VISIBLE 5   // uint[] visible entries
-#define CULL_BINDING_TEMPLATES 6 // DrawTemplate[]
-#define CULL_BINDING_COMMANDS 7  // DrawCommand[] compacted, DRAW_CLASS_COUNT regions
-#define CULL_BINDING_DRAW_COUNTS 8 // uint[DRAW_CLASS_COUNT]
+#define CULL_BINDING_UNIFORMS 0     // CullUniforms
+#define CULL_BINDING_INSTANCES 1    // FieldInstance[]
+#define CULL_BINDING_MODELS 2       // PlantModel[]
+#define CULL_BINDING_STATE 3        // uint[] per-instance LOD state
+#define CULL_BINDING_COUNTS 4       // uint[] per (model, LOD): entries written this frame
+#define CULL_BINDING_VISIBLE 5      // uint[] visible entries
+#define CULL_BINDING_TEMPLATES 6    // DrawTemplate[]
+#define CULL_BINDING_COMMANDS 7     // DrawCommand[] compacted, DRAW_CLASS_COUNT regions
+#define CULL_BINDING_DRAW_COUNTS 8  // uint[DRAW_CLASS_COUNT]
 #define CULL_BINDING_ALL_COMMANDS 9 // DrawCommand[] one per template, for the no-count fallback
 
 // One plant of the field: 48 bytes, so a million fit in 48 MB.
@@ -93,10 +93,11 @@ struct FieldInstance {
 
 // One species variant: its meshes, bounds and LOD settings.
 struct PlantModel {
-    vec4 sphere;       // bounding sphere in plant space: xyz centre, w radius (m, before instance scale)
-    vec4 boxMin;       // plant-space bounds, w 0
-    vec4 boxMax;       // w: not drawn at all below this many pixels of projected height (0: always drawn)
-    vec4 lod;          // x: LOD0→1 below this many pixels of projected height, y: LOD1→2 below, z: hysteresis fraction, w: fade seconds
+    vec4 sphere; // bounding sphere in plant space: xyz centre, w radius (m, before instance scale)
+    vec4 boxMin; // plant-space bounds, w 0
+    vec4 boxMax; // w: not drawn at all below this many pixels of projected height (0: always drawn)
+    vec4 lod; // x: LOD0→1 below this many pixels of projected height, y: LOD1→2 below, z: hysteresis fraction, w: fade
+              // seconds
     uvec4 lists;       // first visible-list entry of each LOD, then the capacity (PLANT_MODEL_LIST_CAPACITY)
     uvec4 impostor;    // x: first atlas layer, y: frames around the plant, z: quads per billboard (1, 2, 3), w: 0
     vec4 impostorQuad; // x: half width (m), y: bottom, z: top (plant space), w: half depth of the baked box
@@ -132,18 +133,19 @@ struct DrawCommand {
 };
 
 struct CullUniforms {
-    vec4 frustum[6];    // world-space planes, xyz inward normal, w offset: inside when dot(n,p)+w >= 0
-    vec4 camera;        // xyz position, w pixels per metre at one metre of distance (viewport height / (2 tan(fov/2)))
-    uvec4 counts;       // x instances, y templates, z forced LOD (0xFFFFFFFF: none), w 1 on the first frame (state is reset)
-    vec4 timing;        // x seconds since the previous frame, yzw 0
+    vec4 frustum[6]; // world-space planes, xyz inward normal, w offset: inside when dot(n,p)+w >= 0
+    vec4 camera;     // xyz position, w pixels per metre at one metre of distance (viewport height / (2 tan(fov/2)))
+    uvec4 counts; // x instances, y templates, z forced LOD (0xFFFFFFFF: none), w 1 on the first frame (state is reset)
+    vec4 timing;  // x seconds since the previous frame, yzw 0
 };
 
 // Field additions to the frame uniforms (after FrameUniforms in the same block).
 struct FieldFrame {
-    mat4 sunViewProj;   // world → shadow map clip space
-    vec4 viewport;      // x width, y height (pixels), z shadow map texel size (m), w 1 when shadows are on
-    vec4 wind;          // xz direction × speed (m/s), y gust strength, w time (s)
-    vec4 windDetail;    // x turbulence, y gust wavelength (m), z gust front speed (m/s), w impostor sway (m per m/s of gust, at the top)
+    mat4 sunViewProj; // world → shadow map clip space
+    vec4 viewport;    // x width, y height (pixels), z shadow map texel size (m), w 1 when shadows are on
+    vec4 wind;        // xz direction × speed (m/s), y gust strength, w time (s)
+    vec4 windDetail;  // x turbulence, y gust wavelength (m), z gust front speed (m/s), w impostor sway (m per m/s of
+                      // gust, at the top)
 };
 
 #ifdef __cplusplus

@@ -100,8 +100,12 @@ JOINT_PHYSICS_FN vec3 rotationVectorOf(vec4 q) {
     bool reduced = s > 0.41421356f * d;
     float x = (reduced ? s - d : s) / (reduced ? s + d : d);
     float x2 = x * x;
-    float atanOverX = 1.0f + x2 * (-1.0f / 3.0f + x2 * (1.0f / 5.0f + x2 * (-1.0f / 7.0f + x2 * (1.0f / 9.0f +
-                      x2 * (-1.0f / 11.0f + x2 * (1.0f / 13.0f - x2 * (1.0f / 15.0f)))))));
+    float atanOverX =
+        1.0f +
+        x2 * (-1.0f / 3.0f +
+              x2 * (1.0f / 5.0f +
+                    x2 * (-1.0f / 7.0f +
+                          x2 * (1.0f / 9.0f + x2 * (-1.0f / 11.0f + x2 * (1.0f / 13.0f - x2 * (1.0f / 15.0f)))))));
     float factor = (reduced ? 0.78539816f + x * atanOverX : atanOverX) / (reduced ? s : d);
     return u * (4.0f * factor);
 }
@@ -138,14 +142,14 @@ JOINT_PHYSICS_FN vec3 windAt(vec3 p, float t, PhysicsUniforms u) {
 // so this changes the force by well under a percent, and the sub-steps are
 // left without any of windAt's seven sines.
 struct JointStep {
-    vec4 restFrame;     // Dp·R: the joint's frame is restFrame·q
-    vec3 wind;          // wind at the frame's start, plant space after yaw is undone (m/s)
-    vec3 windChange;    // added per sub-step: (wind at the frame's end − wind) / sub-steps (m/s)
-    float arm;          // base to centre of pressure, after scale (m, local +Y)
-    vec3 centreOfMass;  // of the subtree, rest local frame, after scale (m)
-    vec3 weight;        // subtree mass × gravity (N, plant space: yaw leaves it unchanged)
-    float dragFactor;   // ½·ρ·CdA (kg/m)
-    float stiffness;    // k after scale
+    vec4 restFrame;        // Dp·R: the joint's frame is restFrame·q
+    vec3 wind;             // wind at the frame's start, plant space after yaw is undone (m/s)
+    vec3 windChange;       // added per sub-step: (wind at the frame's end − wind) / sub-steps (m/s)
+    float arm;             // base to centre of pressure, after scale (m, local +Y)
+    vec3 centreOfMass;     // of the subtree, rest local frame, after scale (m)
+    vec3 weight;           // subtree mass × gravity (N, plant space: yaw leaves it unchanged)
+    float dragFactor;      // ½·ρ·CdA (kg/m)
+    float stiffness;       // k after scale
     float stepOverInertia; // dt/I
     float implicitScale;   // 1/(1 + dt·c/I + dt²·k/I)
 };

@@ -107,9 +107,7 @@ LOD_SELECT_FN uint nextLodState(uint state, bool inside, float pixels, vec4 lod,
 
 // Coverage (0..VISIBLE_COVERAGE_MAX) of the incoming LOD at a fade progress;
 // the outgoing LOD gets the rest, so the two always sum to the maximum.
-LOD_SELECT_FN uint fadeInCoverage(uint progress) {
-    return (progress * VISIBLE_COVERAGE_MAX + 127u) / 255u;
-}
+LOD_SELECT_FN uint fadeInCoverage(uint progress) { return (progress * VISIBLE_COVERAGE_MAX + 127u) / 255u; }
 
 LOD_SELECT_FN uint visibleEntry(uint index, uint flags, uint coverage) {
     return index | flags | (coverage << VISIBLE_COVERAGE_SHIFT);

@@ -29,10 +29,13 @@ using uint = uint32_t;
 struct JointParams {
     vec4 restBase;     // xyz base of the segment, w length (m)
     vec4 restRotation; // quaternion R: the segment's rest frame in plant space
-    vec4 dynamics;     // x mass m (kg), y inertia about the base I (kg·m²), z stiffness k (N·m/rad), w damping c (N·m·s/rad)
-    vec4 load;         // xyz centre of mass of the joint's subtree (itself and all it carries) relative to its base, in its rest local frame (m); w subtree mass (kg)
-    vec4 aero;         // x drag area Cd·A (m², the segment's and its leaves'), y distance from the base to the centre of pressure (m), zw 0
-    uvec4 links;       // x parent joint index in the model or JOINT_NO_PARENT, y depth (roots 0), zw 0
+    vec4
+        dynamics; // x mass m (kg), y inertia about the base I (kg·m²), z stiffness k (N·m/rad), w damping c (N·m·s/rad)
+    vec4 load;   // xyz centre of mass of the joint's subtree (itself and all it carries) relative to its base, in its
+                 // rest local frame (m); w subtree mass (kg)
+    vec4 aero;   // x drag area Cd·A (m², the segment's and its leaves'), y distance from the base to the centre of
+                 // pressure (m), zw 0
+    uvec4 links; // x parent joint index in the model or JOINT_NO_PARENT, y depth (roots 0), zw 0
 };
 
 // One simulated joint: its rotation away from rest, in its local frame, and
@@ -52,15 +55,17 @@ struct JointPose {
 
 // One simulated copy of a model's skeleton.
 struct Skeleton {
-    uvec4 ids;       // x model, y first JointParams of the model, z joints, w first JointState/JointPose
-    vec4 placement;  // xyz world position where the plant stands (the wind is sampled around it), w yaw (radians)
-    vec4 scale;      // x instance scale, yzw 0
+    uvec4 ids;      // x model, y first JointParams of the model, z joints, w first JointState/JointPose
+    vec4 placement; // xyz world position where the plant stands (the wind is sampled around it), w yaw (radians)
+    vec4 scale;     // x instance scale, yzw 0
 };
 
 struct PhysicsUniforms {
-    vec4 gravity;    // xyz m/s² (world), w air density (kg/m³)
-    vec4 wind;       // x, z: mean wind velocity (m/s, world); y gust strength (fraction of the speed); w gust front speed (m/s)
-    vec4 windDetail; // x turbulence (fraction of the speed), y gust wavelength (m), z time (s) at the start of this dispatch, w sub-step (s)
+    vec4 gravity; // xyz m/s² (world), w air density (kg/m³)
+    vec4 wind;    // x, z: mean wind velocity (m/s, world); y gust strength (fraction of the speed); w gust front speed
+                  // (m/s)
+    vec4 windDetail; // x turbulence (fraction of the speed), y gust wavelength (m), z time (s) at the start of this
+                     // dispatch, w sub-step (s)
     uvec4 counts;    // x skeletons, y simulated joints, z sub-steps this dispatch, w 0
 };
 

@@ -80,18 +80,19 @@ CullPass createCullPass(const GpuContext& ctx, const CullPassInputs& inputs) {
     const VkBufferUsageFlags indirect = storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
     pass.uniforms = createHostBuffer(ctx, sizeof(gpu::CullUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     if (pass.templateCount > 0)
-        pass.templates = createDeviceBufferWithData(ctx, inputs.templates.data(),
-                                                    inputs.templates.size_bytes(), storage);
+        pass.templates =
+            createDeviceBufferWithData(ctx, inputs.templates.data(), inputs.templates.size_bytes(), storage);
     else
         pass.templates = createDeviceBuffer(ctx, 0, storage);
-    pass.state = createDeviceBuffer(ctx, VkDeviceSize(pass.instanceCount) * 4, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    pass.state =
+        createDeviceBuffer(ctx, VkDeviceSize(pass.instanceCount) * 4, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     pass.counts = createDeviceBuffer(ctx, VkDeviceSize(pass.modelCount) * LOD_COUNT * 4,
                                      storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     // Written here, read by the draw shaders through a texel view.
     pass.visible = createDeviceBuffer(ctx, VkDeviceSize(pass.instanceCount) * LOD_COUNT * 4,
                                       storage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-    pass.commands = createDeviceBuffer(ctx, VkDeviceSize(DRAW_CLASS_COUNT) * pass.templateCount * sizeof(gpu::DrawCommand),
-                                       indirect);
+    pass.commands = createDeviceBuffer(
+        ctx, VkDeviceSize(DRAW_CLASS_COUNT) * pass.templateCount * sizeof(gpu::DrawCommand), indirect);
     pass.drawCounts = createDeviceBuffer(ctx, DRAW_CLASS_COUNT * 4, indirect | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     pass.allCommands = createDeviceBuffer(ctx, VkDeviceSize(pass.templateCount) * sizeof(gpu::DrawCommand), indirect);
     pass.readback = createHostBuffer(ctx, (VkDeviceSize(pass.modelCount) * LOD_COUNT + DRAW_CLASS_COUNT) * 4,
@@ -106,15 +107,15 @@ CullPass createCullPass(const GpuContext& ctx, const CullPassInputs& inputs) {
                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     });
 
-    const VkBuffer buffers[kBindingCount] = {
-        pass.uniforms.buffer, inputs.instances->buffer, inputs.models->buffer, pass.state.buffer,
-        pass.counts.buffer,   pass.visible.buffer,      pass.templates.buffer, pass.commands.buffer,
-        pass.drawCounts.buffer, pass.allCommands.buffer};
+    const VkBuffer buffers[kBindingCount] = {pass.uniforms.buffer,   inputs.instances->buffer, inputs.models->buffer,
+                                             pass.state.buffer,      pass.counts.buffer,       pass.visible.buffer,
+                                             pass.templates.buffer,  pass.commands.buffer,     pass.drawCounts.buffer,
+                                             pass.allCommands.buffer};
     pass.set = createComputeSet(ctx, buffers);
     pass.cullPipeline =
         createComputePipeline(ctx.device, pass.set.pipelineLayout, createShaderModule(ctx.device, spirv_cull_comp));
-    pass.buildDrawsPipeline =
-        createComputePipeline(ctx.device, pass.set.pipelineLayout, createShaderModule(ctx.device, spirv_build_draws_comp));
+    pass.buildDrawsPipeline = createComputePipeline(ctx.device, pass.set.pipelineLayout,
+                                                    createShaderModule(ctx.device, spirv_build_draws_comp));
     return pass;
 }
 
@@ -177,11 +178,10 @@ void recordCullPass(VkCommandBuffer cmd, const CullPass& pass) {
     // Indirect draws read commands and drawCounts, vertex shaders the visible
     // lists (written by cull, covered as an earlier compute write), and the
     // copy below the counters.
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                      VK_PIPELINE_STAGE_2_COPY_BIT,
-                  VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT |
-                      VK_ACCESS_2_TRANSFER_READ_BIT);
+    memoryBarrier(
+        cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+        VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+        VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT);
 
     const VkBufferCopy countsRegion{0, 0, VkDeviceSize(pass.modelCount) * LOD_COUNT * 4};
     if (countsRegion.size > 0) vkCmdCopyBuffer(cmd, pass.counts.buffer, pass.readback.buffer, 1, &countsRegion);

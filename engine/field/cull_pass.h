@@ -35,8 +35,8 @@ std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProj);
 void assignVisibleLists(std::span<gpu::PlantModel> models, std::span<const gpu::FieldInstance> instances);
 
 struct CullPassInputs {
-    const Buffer* instances = nullptr;       // gpu::FieldInstance[instanceCount], storage
-    const Buffer* models = nullptr;          // gpu::PlantModel[modelCount], storage (lists filled)
+    const Buffer* instances = nullptr; // gpu::FieldInstance[instanceCount], storage
+    const Buffer* models = nullptr;    // gpu::PlantModel[modelCount], storage (lists filled)
     uint32_t instanceCount = 0;
     uint32_t modelCount = 0;
     std::span<const gpu::DrawTemplate> templates; // copied to the GPU at creation
@@ -47,20 +47,20 @@ struct CullPass {
     VkPipeline cullPipeline = VK_NULL_HANDLE;
     VkPipeline buildDrawsPipeline = VK_NULL_HANDLE;
 
-    Buffer uniforms;     // host-visible CullUniforms
-    Buffer templates;    // DrawTemplate[]
-    Buffer state;        // uint per instance: LOD state (field_layouts.h)
-    Buffer counts;       // uint per (model, LOD)
-    Buffer visible;      // uint entries: LOD lists of every model (LOD_COUNT × instanceCount)
-    Buffer commands;     // DrawCommand[DRAW_CLASS_COUNT × templateCount], class c's region starts at c × templateCount
-    Buffer drawCounts;   // uint[DRAW_CLASS_COUNT]
-    Buffer allCommands;  // DrawCommand[templateCount] in template order (fallback path)
-    Buffer readback;     // host-visible copy of counts then drawCounts, written at the end of record()
+    Buffer uniforms;    // host-visible CullUniforms
+    Buffer templates;   // DrawTemplate[]
+    Buffer state;       // uint per instance: LOD state (field_layouts.h)
+    Buffer counts;      // uint per (model, LOD)
+    Buffer visible;     // uint entries: LOD lists of every model (LOD_COUNT × instanceCount)
+    Buffer commands;    // DrawCommand[DRAW_CLASS_COUNT × templateCount], class c's region starts at c × templateCount
+    Buffer drawCounts;  // uint[DRAW_CLASS_COUNT]
+    Buffer allCommands; // DrawCommand[templateCount] in template order (fallback path)
+    Buffer readback;    // host-visible copy of counts then drawCounts, written at the end of record()
 
     uint32_t instanceCount = 0;
     uint32_t modelCount = 0;
     uint32_t templateCount = 0;
-    std::array<uint32_t, DRAW_CLASS_COUNT> templatesPerClass{}; // fallback: how many templates each class has
+    std::array<uint32_t, DRAW_CLASS_COUNT> templatesPerClass{};    // fallback: how many templates each class has
     std::array<uint32_t, DRAW_CLASS_COUNT> firstTemplateOfClass{}; // templates are sorted by class
     glm::uvec2 cullGroups{}; // cull dispatch: rows of at most maxComputeWorkGroupCount[0] groups
 };
@@ -92,9 +92,9 @@ void drawClassIndirect(VkCommandBuffer cmd, const GpuContext& ctx, const CullPas
 
 // Counters of the last recorded frame (read after its fence).
 struct CullCounts {
-    std::vector<uint32_t> perModelLod;                 // [model · LOD_COUNT + lod] entries in that list
+    std::vector<uint32_t> perModelLod;                      // [model · LOD_COUNT + lod] entries in that list
     std::array<uint32_t, DRAW_CLASS_COUNT> drawsPerClass{}; // commands written
-    std::array<uint32_t, LOD_COUNT> perLod{};          // summed over models (fading plants count in both)
+    std::array<uint32_t, LOD_COUNT> perLod{};               // summed over models (fading plants count in both)
 };
 CullCounts readCullCounts(const CullPass& pass);
 

@@ -169,7 +169,8 @@ void FieldRenderer::uploadInstances() {
     };
     for (uint32_t drawClass : {uint32_t(DRAW_BARK), uint32_t(DRAW_FOLIAGE)})
         for (uint32_t m = 0; m < pool.models.size(); ++m)
-            for (uint32_t lod = 0; lod < kMeshLodCount; ++lod) add(pool.models[m].meshes[lod][drawClass], drawClass, m, lod);
+            for (uint32_t lod = 0; lod < kMeshLodCount; ++lod)
+                add(pool.models[m].meshes[lod][drawClass], drawClass, m, lod);
     for (uint32_t m = 0; m < pool.models.size(); ++m)
         add(billboards_[pool.models[m].gpu.impostor.z - 1], DRAW_IMPOSTOR, m, LOD_IMPOSTOR);
 
@@ -226,8 +227,7 @@ void FieldRenderer::createDescriptors() {
     };
     const VkBufferView instances = view(instances_, uint4, 16), vertices = view(vertices_, uint4, 16),
                        models = view(models_, uint4, 16), terrain = view(terrainVertices_, uint4, 16),
-                       skeletons = view(motion_.pass.skeletons, uint4, 16),
-                       poses = view(motion_.pass.poses, uint4, 16),
+                       skeletons = view(motion_.pass.skeletons, uint4, 16), poses = view(motion_.pass.poses, uint4, 16),
                        instanceSkeleton = view(motion_.instanceSkeleton, VK_FORMAT_R32_UINT, 4),
                        outlines = view(outlines_, uint4, 16);
     const VkDescriptorBufferInfo frame{uniforms_.buffer, 0, VK_WHOLE_SIZE};
@@ -238,11 +238,11 @@ void FieldRenderer::createDescriptors() {
     for (VkDescriptorSet set : sets) {
         const VkBufferView visible = view(set == drawSet_ ? cull_.visible : naiveVisible_, VK_FORMAT_R32_UINT, 4);
         // Indexed by binding, like `images`; the frame is the one plain buffer.
-        const VkBufferView views[] = {VK_NULL_HANDLE, instances,      visible, vertices,  models, VK_NULL_HANDLE,
-                                      VK_NULL_HANDLE, VK_NULL_HANDLE, terrain, skeletons, poses,  instanceSkeleton,
-                                      outlines};
-        const VkDescriptorImageInfo* images[] = {nullptr, nullptr, nullptr, nullptr, nullptr, &atlasColor,
-                                                 &atlasNormal, &shadow, nullptr, nullptr, nullptr, nullptr, nullptr};
+        const VkBufferView views[] = {VK_NULL_HANDLE, instances,        visible,        vertices, models,
+                                      VK_NULL_HANDLE, VK_NULL_HANDLE,   VK_NULL_HANDLE, terrain,  skeletons,
+                                      poses,          instanceSkeleton, outlines};
+        const VkDescriptorImageInfo* images[] = {nullptr, nullptr, nullptr, nullptr, nullptr, &atlasColor, &atlasNormal,
+                                                 &shadow, nullptr, nullptr, nullptr, nullptr, nullptr};
         VkWriteDescriptorSet writes[kBindings];
         for (uint32_t i = 0; i < kBindings; ++i) {
             writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -250,9 +250,12 @@ void FieldRenderer::createDescriptors() {
             writes[i].dstBinding = bindings[i].binding;
             writes[i].descriptorCount = 1;
             writes[i].descriptorType = bindings[i].descriptorType;
-            if (images[i]) writes[i].pImageInfo = images[i];
-            else if (views[i]) writes[i].pTexelBufferView = &views[i];
-            else writes[i].pBufferInfo = &frame;
+            if (images[i])
+                writes[i].pImageInfo = images[i];
+            else if (views[i])
+                writes[i].pTexelBufferView = &views[i];
+            else
+                writes[i].pBufferInfo = &frame;
         }
         vkUpdateDescriptorSets(ctx_.device, kBindings, writes, 0, nullptr);
     }
@@ -272,7 +275,8 @@ void FieldRenderer::createPipelines() {
         VkShaderModule vertex, fragment;
     };
     const Stages sky{createShaderModule(device, spirv_sky_vert), createShaderModule(device, spirv_sky_frag)};
-    const Stages terrain{createShaderModule(device, spirv_terrain_vert), createShaderModule(device, spirv_terrain_frag)};
+    const Stages terrain{createShaderModule(device, spirv_terrain_vert),
+                         createShaderModule(device, spirv_terrain_frag)};
     const Stages plant{createShaderModule(device, spirv_plant_vert), createShaderModule(device, spirv_plant_frag)};
     const Stages impostor{createShaderModule(device, spirv_impostor_vert),
                           createShaderModule(device, spirv_impostor_frag)};
@@ -376,11 +380,15 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
         Timed scope(cmd, timer, "plants");
         vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.bark);
-        if (naive) drawPlantsNaive(cmd, true, false);
-        else drawClassIndirect(cmd, ctx_, cull_, DRAW_BARK);
+        if (naive)
+            drawPlantsNaive(cmd, true, false);
+        else
+            drawClassIndirect(cmd, ctx_, cull_, DRAW_BARK);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.foliage);
-        if (naive) drawPlantsNaive(cmd, false, true);
-        else drawClassIndirect(cmd, ctx_, cull_, DRAW_FOLIAGE);
+        if (naive)
+            drawPlantsNaive(cmd, false, true);
+        else
+            drawClassIndirect(cmd, ctx_, cull_, DRAW_FOLIAGE);
     }
     {
         Timed scope(cmd, timer, "impostors");
@@ -480,23 +488,46 @@ FieldFrameStats FieldRenderer::readStats() const {
 uint64_t FieldRenderer::naiveTriangles() const {
     uint64_t triangles = 0;
     const PlantModelPool& pool = content_.models;
-    for (const PlantInstance& p : content_.plants) triangles += pool.models[pool.modelOf(p.species, p.variant)].triangles(LOD_FULL);
+    for (const PlantInstance& p : content_.plants)
+        triangles += pool.models[pool.modelOf(p.species, p.variant)].triangles(LOD_FULL);
     return triangles;
 }
 
 VkDeviceSize FieldRenderer::gpuBytes() const {
     VkDeviceSize bytes = 0;
-    for (const Buffer* b : {&uniforms_, &vertices_, &indices_, &models_, &instances_, &terrainVertices_,
-                            &terrainIndices_, &naiveVisible_, &outlines_, &cull_.uniforms, &cull_.templates, &cull_.state,
-                            &cull_.counts, &cull_.visible, &cull_.commands, &cull_.drawCounts, &cull_.allCommands,
-                            &cull_.readback, &motion_.pass.uniforms, &motion_.pass.params, &motion_.pass.skeletons,
-                            &motion_.pass.states, &motion_.pass.poses, &motion_.pass.jointSkeleton,
-                            &motion_.instanceSkeleton, &motion_.restStates, &motion_.restPoses})
+    for (const Buffer* b : {&uniforms_,
+                            &vertices_,
+                            &indices_,
+                            &models_,
+                            &instances_,
+                            &terrainVertices_,
+                            &terrainIndices_,
+                            &naiveVisible_,
+                            &outlines_,
+                            &cull_.uniforms,
+                            &cull_.templates,
+                            &cull_.state,
+                            &cull_.counts,
+                            &cull_.visible,
+                            &cull_.commands,
+                            &cull_.drawCounts,
+                            &cull_.allCommands,
+                            &cull_.readback,
+                            &motion_.pass.uniforms,
+                            &motion_.pass.params,
+                            &motion_.pass.skeletons,
+                            &motion_.pass.states,
+                            &motion_.pass.poses,
+                            &motion_.pass.jointSkeleton,
+                            &motion_.instanceSkeleton,
+                            &motion_.restStates,
+                            &motion_.restPoses})
         bytes += b->size;
     auto imageBytes = [](const Image& image, uint32_t layers, uint32_t bytesPerTexel, double mipFactor) {
         return VkDeviceSize(double(image.extent.width) * image.extent.height * layers * bytesPerTexel * mipFactor);
     };
-    bytes += imageBytes(atlas_.color, atlas_.layers, 4, 4.0 / 3.0) + imageBytes(atlas_.normalDepth, atlas_.layers, 4, 4.0 / 3.0);
+    bytes += imageBytes(atlas_.color, atlas_.layers, 4, 4.0 / 3.0) +
+             imageBytes(atlas_.normalDepth, atlas_.layers, 4, 4.0 / 3.0);
     bytes += imageBytes(shadow_.depth, 1, 4, 1.0);
     return bytes;
 }

@@ -6,13 +6,13 @@
 // each) as the baseline plantbench compares against.
 #pragma once
 
-#include "engine/scene/camera.h"
 #include "engine/field/cull_pass.h"
-#include "engine/physics/field_motion.h"
-#include "engine/scene/field_content.h"
 #include "engine/field/impostor_atlas.h"
-#include "engine/vk/render_target.h"
 #include "engine/field/shadow_map.h"
+#include "engine/physics/field_motion.h"
+#include "engine/scene/camera.h"
+#include "engine/scene/field_content.h"
+#include "engine/vk/render_target.h"
 
 #include <array>
 #include <optional>
@@ -28,17 +28,17 @@ struct FieldRenderSettings {
     bool shadows = true;
     uint32_t shadowMapSize = 1024;
     float shadowRadius = 60.0f; // metres: half the side of the shadowed square ahead of the camera
-    float impostorSway = 0.04f;  // metres an impostor's top leans per m/s of gust (times the plant's scale)
+    float impostorSway = 0.04f; // metres an impostor's top leans per m/s of gust (times the plant's scale)
     ImpostorSettings impostors;
 };
 
 struct FieldView {
     Camera camera;
-    float time = 0.0f;      // scene seconds
-    float deltaTime = 0.0f; // seconds since the previous frame (LOD fades advance by it)
-    bool firstFrame = true; // LOD state starts settled at each plant's target LOD
+    float time = 0.0f;                 // scene seconds
+    float deltaTime = 0.0f;            // seconds since the previous frame (LOD fades advance by it)
+    bool firstFrame = true;            // LOD state starts settled at each plant's target LOD
     std::optional<uint32_t> forcedLod; // every visible plant at this LOD (tests, debugging)
-    bool realTime = false;   // a window: physics skips what it cannot catch up (field_motion.h)
+    bool realTime = false;             // a window: physics skips what it cannot catch up (field_motion.h)
 };
 
 // Names of the LODs and draw classes in statistics, reports and the overlay.
@@ -49,8 +49,8 @@ inline constexpr std::array<const char*, DRAW_CLASS_COUNT> kDrawClassNames = {"b
 struct FieldFrameStats {
     uint32_t instances = 0;
     std::array<uint32_t, LOD_COUNT> plantsPerLod{}; // fading plants count at both LODs
-    std::array<uint32_t, DRAW_CLASS_COUNT> draws{};   // indirect commands per class
-    uint64_t triangles = 0;                           // colour pass, plants only
+    std::array<uint32_t, DRAW_CLASS_COUNT> draws{}; // indirect commands per class
+    uint64_t triangles = 0;                         // colour pass, plants only
 
     // Entries of every visible list: a fading plant counts twice.
     uint32_t visibleEntries() const;
@@ -63,8 +63,8 @@ std::string plantsPerLodText(const FieldFrameStats& stats);
 
 // GPU timer scope names, in recording order. "colour" is the whole colour
 // pass and the three after it are nested inside it.
-inline constexpr const char* kFieldPasses[] = {"physics", "pose",      "cull",       "shadow",
-                                               "colour",  "plants",    "impostors",  "terrain_sky"};
+inline constexpr const char* kFieldPasses[] = {"physics", "pose",   "cull",      "shadow",
+                                               "colour",  "plants", "impostors", "terrain_sky"};
 
 // True for the draw scopes recorded inside "colour" (those after it in
 // kFieldPasses): a frame's total adds only the others.
@@ -91,9 +91,9 @@ public:
 
     const FieldContent& content() const { return content_; }
     VkSampleCountFlagBits samples() const { return settings_.samples; }
-    uint64_t naiveTriangles() const; // what recordNaive draws in its colour pass
+    uint64_t naiveTriangles() const;                                     // what recordNaive draws in its colour pass
     uint32_t simulatedJoints() const { return motion_.pass.jointCount; } // shared copies and near plants' own
-    VkDeviceSize gpuBytes() const;   // buffers and images this renderer allocated
+    VkDeviceSize gpuBytes() const;                                       // buffers and images this renderer allocated
 
 private:
     struct Pipelines {
@@ -109,7 +109,7 @@ private:
     Buffer vertices_, indices_;
     Buffer models_, instances_;
     Buffer terrainVertices_, terrainIndices_;
-    Buffer outlines_; // atlas_.outlines: the rectangle each atlas layer's billboards are drawn as
+    Buffer outlines_;     // atlas_.outlines: the rectangle each atlas layer's billboards are drawn as
     Buffer naiveVisible_; // entry i = plant i at full coverage
     uint32_t terrainIndexCount_ = 0;
     std::array<MeshRange, 3> billboards_{}; // 1, 2, 3 quads
@@ -120,7 +120,7 @@ private:
 
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
     VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
-    std::vector<VkBufferView> texelViews_; // of the buffers the draw shaders read (field_common.glsl)
+    std::vector<VkBufferView> texelViews_;      // of the buffers the draw shaders read (field_common.glsl)
     VkDescriptorSet drawSet_ = VK_NULL_HANDLE;  // visible = the cull pass's lists
     VkDescriptorSet naiveSet_ = VK_NULL_HANDLE; // visible = naiveVisible_
     VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;

@@ -87,8 +87,8 @@ void pipelineBarrier(VkCommandBuffer cmd, const std::vector<VkImageMemoryBarrier
 
 // Two colour attachments (albedo, normal + depth), depth test, MSAA; the cull
 // mode is dynamic: back faces for bark, none for two-sided foliage.
-VkPipeline createBakePipeline(VkDevice device, VkPipelineLayout layout, VkShaderModule vertex,
-                              VkShaderModule fragment, VkSampleCountFlagBits samples) {
+VkPipeline createBakePipeline(VkDevice device, VkPipelineLayout layout, VkShaderModule vertex, VkShaderModule fragment,
+                              VkSampleCountFlagBits samples) {
     GraphicsPipelineDesc desc;
     desc.vertex = vertex;
     desc.fragment = fragment;
@@ -153,18 +153,24 @@ std::vector<ImpostorOutline> readOutlines(const GpuContext& ctx, const ImpostorA
     const VkDeviceSize layerBytes = VkDeviceSize(size) * size * 4;
     Buffer readback = createHostBuffer(ctx, layerBytes * atlas.layers, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-        const ImageTransition toSource{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE,
-                                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+        const ImageTransition toSource{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                       VK_ACCESS_2_NONE,
+                                       VK_PIPELINE_STAGE_2_COPY_BIT,
+                                       VK_ACCESS_2_TRANSFER_READ_BIT,
+                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
         pipelineBarrier(cmd, {atlasBarrier(atlas.color, mip, 1, atlas.layers, toSource)});
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, 0, atlas.layers};
         region.imageExtent = {size, size, 1};
         vkCmdCopyImageToBuffer(cmd, atlas.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1,
                                &region);
-        const ImageTransition toSampled{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-                                        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
-                                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+        const ImageTransition toSampled{VK_PIPELINE_STAGE_2_COPY_BIT,
+                                        VK_ACCESS_2_NONE,
+                                        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
         pipelineBarrier(cmd, {atlasBarrier(atlas.color, mip, 1, atlas.layers, toSampled)});
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
                       VK_ACCESS_2_HOST_READ_BIT);
@@ -224,8 +230,10 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
     const VkSampleCountFlagBits samples = bakeSamples(ctx);
     const bool msaa = samples != VK_SAMPLE_COUNT_1_BIT;
     const VkImageUsageFlags targetUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    Image targetColor = createImage(ctx, {size, size}, kAtlasColorFormat, targetUsage, samples, VK_IMAGE_ASPECT_COLOR_BIT);
-    Image targetNormal = createImage(ctx, {size, size}, kAtlasNormalFormat, targetUsage, samples, VK_IMAGE_ASPECT_COLOR_BIT);
+    Image targetColor =
+        createImage(ctx, {size, size}, kAtlasColorFormat, targetUsage, samples, VK_IMAGE_ASPECT_COLOR_BIT);
+    Image targetNormal =
+        createImage(ctx, {size, size}, kAtlasNormalFormat, targetUsage, samples, VK_IMAGE_ASPECT_COLOR_BIT);
     Image depth = createImage(ctx, {size, size}, kBakeDepthFormat,
                               VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
                               samples, VK_IMAGE_ASPECT_DEPTH_BIT);
@@ -272,16 +280,17 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
         // Level 0 of every layer receives one frame's resolve (or copy);
         // its old contents are discarded.
-        const ImageTransition toDestination{VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+        const ImageTransition toDestination{VK_PIPELINE_STAGE_2_NONE,
+                                            VK_ACCESS_2_NONE,
                                             VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                                            VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                                            VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                            VK_IMAGE_LAYOUT_UNDEFINED,
                                             VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
         pipelineBarrier(cmd, {atlasBarrier(atlas.color, 0, 1, layers, toDestination),
                               atlasBarrier(atlas.normalDepth, 0, 1, layers, toDestination)});
 
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout, 0, 1, &descriptorSet, 0,
-                                nullptr);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout, 0, 1, &descriptorSet, 0, nullptr);
         vkCmdBindIndexBuffer(cmd, indices.buffer, 0, VK_INDEX_TYPE_UINT32);
         const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
         const VkRect2D scissor{{0, 0}, {size, size}};
@@ -289,10 +298,12 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
         // Each frame clears the targets again: the previous frame's resolve
         // reads must be done before (write after read: execution only), and
         // its depth writes before the depth clear (write after write).
-        const ImageTransition targetToAttachment{
-            VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
-            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-            VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+        const ImageTransition targetToAttachment{VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                                 VK_ACCESS_2_NONE,
+                                                 VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                                 VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                                                 VK_IMAGE_LAYOUT_UNDEFINED,
+                                                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
         VkImageMemoryBarrier2 depthToAttachment = atlasBarrier(
             depth, 0, 1, 1,
             {VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
@@ -301,10 +312,12 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
              VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
         depthToAttachment.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
         // The frame's attachment writes must land before the resolve reads them.
-        const ImageTransition targetToSource{
-            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+        const ImageTransition targetToSource{VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                                             VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                             VK_ACCESS_2_TRANSFER_READ_BIT,
+                                             VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                             VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
 
         for (size_t m = 0; m < pool.models.size(); ++m) {
             const PlantModelInfo& model = pool.models[m];
@@ -358,8 +371,8 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
                 // A separate resolve rather than a resolve attachment on a
                 // layer view: lavapipe resolves those into layer 0.
                 const uint32_t layer = model.gpu.impostor.x + f;
-                for (const auto& [target, image] : {std::pair{&targetColor, &atlas.color},
-                                                    std::pair{&targetNormal, &atlas.normalDepth}}) {
+                for (const auto& [target, image] :
+                     {std::pair{&targetColor, &atlas.color}, std::pair{&targetNormal, &atlas.normalDepth}}) {
                     const VkImageSubresourceLayers src{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
                     const VkImageSubresourceLayers dst{VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
                     if (msaa) {
@@ -378,13 +391,15 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
         // Mips: level k is blitted from level k-1 (premultiplied values
         // average correctly). The resolves into level 0 must be done before
         // the first blit reads it; the other levels hold nothing yet.
-        const ImageTransition resolvedToSource{
-            VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
-        const ImageTransition emptyToDestination{VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+        const ImageTransition resolvedToSource{VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                               VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                               VK_PIPELINE_STAGE_2_BLIT_BIT,
+                                               VK_ACCESS_2_TRANSFER_READ_BIT,
+                                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+        const ImageTransition emptyToDestination{VK_PIPELINE_STAGE_2_NONE,     VK_ACCESS_2_NONE,
                                                  VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                                 VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
+                                                 VK_IMAGE_LAYOUT_UNDEFINED,    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
         std::vector<VkImageMemoryBarrier2> toBlit;
         for (const Image* image : {&atlas.color, &atlas.normalDepth}) {
             toBlit.push_back(atlasBarrier(*image, 0, 1, layers, resolvedToSource));
@@ -404,10 +419,10 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
                 vkCmdBlitImage(cmd, image->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image->image,
                                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
             // This level is the next blit's source: its writes must land first.
-            const ImageTransition writtenToSource{VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                                  VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-                                                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+            const ImageTransition writtenToSource{
+                VK_PIPELINE_STAGE_2_BLIT_BIT,         VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_BLIT_BIT,         VK_ACCESS_2_TRANSFER_READ_BIT,
+                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
             pipelineBarrier(cmd, {atlasBarrier(atlas.color, level, 1, layers, writtenToSource),
                                   atlasBarrier(atlas.normalDepth, level, 1, layers, writtenToSource)});
         }
@@ -416,7 +431,8 @@ ImpostorAtlas bakeImpostorAtlas(const GpuContext& ctx, PlantModelPool& pool, con
         // billboards sample them from fragment shaders.
         const ImageTransition toSampled{VK_PIPELINE_STAGE_2_BLIT_BIT,
                                         VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                                        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
                                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
         pipelineBarrier(cmd, {atlasBarrier(atlas.color, 0, mips, layers, toSampled),

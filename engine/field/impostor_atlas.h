@@ -40,7 +40,8 @@ glm::vec4 impostorQuadOf(const gpu::PlantModel& model);
 // (model m, frame f) = models[m].gpu.impostor.x + f; full mip chains.
 struct ImpostorAtlas {
     Image color;       // R8G8B8A8_SRGB array, one layer per (model, frame): albedo, alpha = coverage
-    Image normalDepth; // R8G8B8A8_UNORM array: plant-space normal·0.5+0.5, alpha = depth across the box (0 front … 1 back)
+    Image normalDepth; // R8G8B8A8_UNORM array: plant-space normal·0.5+0.5, alpha = depth across the box (0 front … 1
+                       // back)
     uint32_t mipLevels = 0;
     VkSampler sampler = VK_NULL_HANDLE; // linear, clamp, mipmapped
     uint32_t layers = 0;

@@ -18,8 +18,7 @@ SkeletonSet sharedSkeletons(const FieldContent& content) {
     for (uint32_t m = 0; m < pool.models.size(); ++m)
         for (uint32_t phase = 0; phase < phases; ++phase)
             addSkeleton(set, m, pool.models[m].firstJoint, pool.models[m].joints,
-                        along * (float(phase) * sharedPhaseSpacing(content.scene.physics)), 0.0f,
-                        1.0f);
+                        along * (float(phase) * sharedPhaseSpacing(content.scene.physics)), 0.0f, 1.0f);
     return set;
 }
 
@@ -30,7 +29,7 @@ std::vector<uint32_t> skeletonPerPlant(const FieldContent& content) {
     for (size_t i = 0; i < skeleton.size(); ++i) {
         const PlantInstance& p = content.plants[i];
         const uint32_t phase =
-            std::min(phases - 1, uint32_t(p.windPhase / (2.0f * std::numbers::pi_v<float>) * float(phases)));
+            std::min(phases - 1, uint32_t(p.windPhase / (2.0f * std::numbers::pi_v<float>)*float(phases)));
         skeleton[i] = content.models.modelOf(p.species, p.variant) * phases + phase;
     }
     return skeleton;
@@ -46,7 +45,6 @@ void copyWhole(VkCommandBuffer cmd, const Buffer& from, const Buffer& to) {
     vkCmdCopyBuffer(cmd, from.buffer, to.buffer, 1, &region);
 }
 
-
 // The near-plant changes of a frame: plants repointed (host-visible), own
 // skeletons started from their shared copy's states and poses (copies the
 // frame records).
@@ -60,7 +58,8 @@ void planNearChanges(FieldMotion& motion, const NearChanges& changes) {
                                          skeletons[own].ids.w * sizeof(gpu::JointState),
                                          joints * sizeof(gpu::JointState)});
         motion.next.ownPoses.push_back({skeletons[shared].ids.w * sizeof(gpu::JointPose),
-                                        skeletons[own].ids.w * sizeof(gpu::JointPose), joints * sizeof(gpu::JointPose)});
+                                        skeletons[own].ids.w * sizeof(gpu::JointPose),
+                                        joints * sizeof(gpu::JointPose)});
     }
 }
 
@@ -139,8 +138,8 @@ void recordFieldMotion(VkCommandBuffer cmd, const FieldMotion& motion, GpuTimer*
     if (!frame.ownStates.empty()) {
         // Own skeletons start from their shared copy's state, rest included.
         if (frame.restart)
-            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
-                          VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
         // Within one buffer: source and destination ranges never overlap (different skeletons).
         vkCmdCopyBuffer(cmd, motion.pass.states.buffer, motion.pass.states.buffer, uint32_t(frame.ownStates.size()),
                         frame.ownStates.data());

@@ -7,9 +7,9 @@
 // Impostors sway in their vertex shader instead.
 #pragma once
 
-#include "engine/scene/field_content.h"
 #include "engine/physics/near_skeletons.h"
 #include "engine/physics/physics_pass.h"
+#include "engine/scene/field_content.h"
 
 namespace pf {
 
@@ -36,11 +36,11 @@ struct FieldMotionFrame {
 struct FieldMotion {
     const FieldContent* content = nullptr; // outlives the motion (the renderer owns both)
     PhysicsPass pass;
-    Buffer instanceSkeleton; // host-visible uint per plant: the skeleton its vertices follow
+    Buffer instanceSkeleton;        // host-visible uint per plant: the skeleton its vertices follow
     std::vector<uint32_t> sharedOf; // per plant: the shared copy it follows when it has no own skeleton
     PlantGrid grid;
     NearSkeletons near;
-    Buffer restStates;       // copied over the states to restart at rest
+    Buffer restStates; // copied over the states to restart at rest
     Buffer restPoses;
     Wind wind;
     PhysicsSettings settings;

@@ -43,8 +43,8 @@ std::vector<uint32_t> plantsNear(const PlantGrid& grid, const std::vector<PlantI
             const uint32_t cell = z * grid.cellsPerSide + x;
             for (uint32_t k = grid.cellStart[cell]; k < grid.cellStart[cell + 1]; ++k) {
                 const uint32_t i = grid.plants[k];
-                const float d = glm::distance(glm::vec2(plants[i].position.x, plants[i].position.z),
-                                              glm::vec2(centre.x, centre.z));
+                const float d =
+                    glm::distance(glm::vec2(plants[i].position.x, plants[i].position.z), glm::vec2(centre.x, centre.z));
                 if (d <= radius) found.push_back({d, i});
             }
         }
@@ -66,7 +66,8 @@ NearSkeletons reserveNearSkeletons(SkeletonSet& set, const PlantModelPool& pool,
         const uint32_t count = std::min(plantsOfModel[m], model.joints > 0 ? share / model.joints : 0u);
         // Reserved in reverse so the lowest index is handed out first.
         for (uint32_t k = 0; k < count; ++k)
-            near.freeOfModel[m].push_back(addSkeleton(set, m, model.firstJoint, model.joints, glm::vec3(0.0f), 0.0f, 0.0f));
+            near.freeOfModel[m].push_back(
+                addSkeleton(set, m, model.firstJoint, model.joints, glm::vec3(0.0f), 0.0f, 0.0f));
         std::reverse(near.freeOfModel[m].begin(), near.freeOfModel[m].end());
     }
     return near;

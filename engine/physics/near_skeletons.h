@@ -7,8 +7,8 @@
 // is over the plants near the camera only (a grid of plants by position).
 #pragma once
 
-#include "engine/scene/field_content.h"
 #include "engine/physics/plant_physics.h"
+#include "engine/scene/field_content.h"
 
 #include <glm/glm.hpp>
 
@@ -37,7 +37,7 @@ std::vector<uint32_t> plantsNear(const PlantGrid& grid, const std::vector<PlantI
 struct NearSkeletons {
     std::vector<std::vector<uint32_t>> freeOfModel; // own skeletons not in use, per model
     std::unordered_map<uint32_t, uint32_t> ownOf;   // plant → its own skeleton
-    float radius = 40.0f;                            // metres from the camera a plant may get one
+    float radius = 40.0f;                           // metres from the camera a plant may get one
 };
 
 NearSkeletons reserveNearSkeletons(SkeletonSet& set, const PlantModelPool& pool,

@@ -164,7 +164,8 @@ PhysicsPass createPhysicsPass(const GpuContext& ctx, const SkeletonSet& set) {
     layoutInfo.pushConstantRangeCount = 1;
     layoutInfo.pPushConstantRanges = &levelRange;
     VK_CHECK(vkCreatePipelineLayout(ctx.device, &layoutInfo, nullptr, &pass.layout));
-    pass.physicsPipeline = createComputePipeline(ctx.device, pass.layout, createShaderModule(ctx.device, spirv_physics_comp));
+    pass.physicsPipeline =
+        createComputePipeline(ctx.device, pass.layout, createShaderModule(ctx.device, spirv_physics_comp));
     pass.posePipeline = createComputePipeline(ctx.device, pass.layout, createShaderModule(ctx.device, spirv_pose_comp));
     return pass;
 }

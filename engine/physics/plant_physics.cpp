@@ -21,8 +21,8 @@ glm::vec3 xyz(const gpu::vec4& v) { return {v.x, v.y, v.z}; }
 
 } // namespace
 
-uint32_t addSkeleton(SkeletonSet& set, uint32_t model, uint32_t firstParam, uint32_t joints,
-                     const glm::vec3& position, float yaw, float scale) {
+uint32_t addSkeleton(SkeletonSet& set, uint32_t model, uint32_t firstParam, uint32_t joints, const glm::vec3& position,
+                     float yaw, float scale) {
     const uint32_t index = uint32_t(set.skeletons.size());
     const uint32_t firstState = uint32_t(set.states.size());
     gpu::Skeleton skeleton;
@@ -56,7 +56,8 @@ void stepSkeletonsOnCpu(SkeletonSet& set, const gpu::PhysicsUniforms& u) {
         const uint32_t joint = uint32_t(i) - skeleton.ids.w;
         const gpu::JointParams& p = set.params[skeleton.ids.y + joint];
         const uint32_t parent = p.links.x;
-        const gpu::vec4 parentRotation = parent == JOINT_NO_PARENT ? kIdentityRotation : entry[skeleton.ids.w + parent].rotation;
+        const gpu::vec4 parentRotation =
+            parent == JOINT_NO_PARENT ? kIdentityRotation : entry[skeleton.ids.w + parent].rotation;
         const glm::vec3 base = gpu::posePoint(entry[i], xyz(p.restBase));
         const float dt = u.windDetail.w;
         gpu::JointState state = set.states[i];

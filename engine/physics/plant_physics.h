@@ -14,17 +14,17 @@ namespace pf {
 
 // Simulated skeletons on the CPU: the same arrays the GPU pass holds.
 struct SkeletonSet {
-    std::vector<gpu::JointParams> params;   // every model's joints, model after model
-    std::vector<gpu::Skeleton> skeletons;   // simulated copies
-    std::vector<gpu::JointState> states;    // per simulated joint (Skeleton::ids.w + joint)
-    std::vector<gpu::JointPose> poses;      // per simulated joint
-    std::vector<uint32_t> jointSkeleton;    // per simulated joint: its skeleton
+    std::vector<gpu::JointParams> params; // every model's joints, model after model
+    std::vector<gpu::Skeleton> skeletons; // simulated copies
+    std::vector<gpu::JointState> states;  // per simulated joint (Skeleton::ids.w + joint)
+    std::vector<gpu::JointPose> poses;    // per simulated joint
+    std::vector<uint32_t> jointSkeleton;  // per simulated joint: its skeleton
 };
 
 // Adds a simulated copy of the model whose joints start at params[firstParam]
 // (`joints` of them), at rest. Returns the skeleton index.
-uint32_t addSkeleton(SkeletonSet& set, uint32_t model, uint32_t firstParam, uint32_t joints,
-                     const glm::vec3& position, float yaw, float scale);
+uint32_t addSkeleton(SkeletonSet& set, uint32_t model, uint32_t firstParam, uint32_t joints, const glm::vec3& position,
+                     float yaw, float scale);
 
 // Metres between gust fronts (PhysicsUniforms::windDetail.y): gusts a few
 // seconds apart at typical gust front speeds of 4–8 m/s.

@@ -60,7 +60,8 @@ void appendExplicit(const Scene& scene, const Heightfield& terrain, size_t speci
     for (size_t i = 0; i < species.placement.instances.size(); ++i) {
         const PlacedPlant& placed = species.placement.instances[i];
         PlantInstance plant;
-        plant.position = {placed.position.x, heightAt(terrain, placed.position.x, placed.position.y), placed.position.y};
+        plant.position = {placed.position.x, heightAt(terrain, placed.position.x, placed.position.y),
+                          placed.position.y};
         plant.rotation = glm::radians(placed.rotationDegrees);
         plant.scale = placed.scale;
         plant.species = uint32_t(speciesIndex);

@@ -16,7 +16,7 @@ namespace {
 // weighs at least a milligram with the inertia of a millimetre rod of that
 // mass, so 1/I stays finite and an implicit step of it stays well defined.
 // Real joints are orders of magnitude above both.
-constexpr float kMinMass = 1e-6f;          // kg
+constexpr float kMinMass = 1e-6f;                   // kg
 constexpr float kMinInertia = 1e-6f * 1e-6f / 3.0f; // kg·m², kMinMass on a 1 mm rod
 // Beam theory divides by the length; a zero-length joint is as stiff as a 1 mm one.
 constexpr float kMinBeamLength = 1e-3f; // m
@@ -57,7 +57,8 @@ Card leafCard(const lsys::PlantAsset& asset, const lsys::Primitive& surface) {
     }
     const float s = surface.length;
     const glm::vec3 centreLocal(0.5f * (lo + hi), 0.0f);
-    return {std::abs(s * s * (hi.x - lo.x) * (hi.y - lo.y)), surface.frame.position + surface.frame.rotation * (s * centreLocal)};
+    return {std::abs(s * s * (hi.x - lo.x) * (hi.y - lo.y)),
+            surface.frame.position + surface.frame.rotation * (s * centreLocal)};
 }
 
 // A `{ … }` polygon: its outline's area (Newell) and mean vertex, plant space.
@@ -143,7 +144,8 @@ std::vector<gpu::JointParams> buildJointParams(const lsys::PlantAsset& asset, fl
         const float sheetMass = kLeafMassPerArea * 2.0f * radius * length[j];
         const float mass = std::max(blade[j] ? sheetMass : volumeMass, kMinMass);
         // A rod about its centre; its mass at its midpoint (m·l²/12 + m·(l/2)² = m·l²/3 about the base).
-        carried[j].add(mass, glm::dvec3(base[j] + 0.5f * length[j] * heading[j]), double(mass) * length[j] * length[j] / 12.0);
+        carried[j].add(mass, glm::dvec3(base[j] + 0.5f * length[j] * heading[j]),
+                       double(mass) * length[j] * length[j] / 12.0);
 
         // @K is a physical stiffness already (N·m/rad): the height scale does not change it.
         const float beam = settings.youngsModulus * std::numbers::pi_v<float> * std::pow(baseRadius, 4.0f) /
@@ -151,7 +153,8 @@ std::vector<gpu::JointParams> buildJointParams(const lsys::PlantAsset& asset, fl
         gpu::JointParams& p = params[j];
         p.restBase = gpu::vec4(base[j], length[j]);
         p.restRotation = asVec4(joint.rest.rotation);
-        p.dynamics = gpu::vec4(mass, 0.0f, (joint.stiffness > 0.0f ? joint.stiffness : beam) * settings.stiffnessScale, 0.0f);
+        p.dynamics =
+            gpu::vec4(mass, 0.0f, (joint.stiffness > 0.0f ? joint.stiffness : beam) * settings.stiffnessScale, 0.0f);
         p.links = gpu::uvec4(joint.parent >= 0 ? uint32_t(joint.parent) : JOINT_NO_PARENT, 0, 0, 0);
 
         const float segmentArea = 2.0f * radius * length[j];
@@ -163,9 +166,12 @@ std::vector<gpu::JointParams> buildJointParams(const lsys::PlantAsset& asset, fl
     // moves with joint 0, as plant_models bakes it.
     for (const lsys::Primitive& p : asset.primitives) {
         Card card;
-        if (p.kind == lsys::PrimitiveKind::Surface) card = leafCard(asset, p);
-        else if (p.kind == lsys::PrimitiveKind::Polygon) card = polygonCard(asset, p);
-        else continue;
+        if (p.kind == lsys::PrimitiveKind::Surface)
+            card = leafCard(asset, p);
+        else if (p.kind == lsys::PrimitiveKind::Polygon)
+            card = polygonCard(asset, p);
+        else
+            continue;
         const size_t j = p.joint < 0 ? 0 : size_t(p.joint);
         if (j >= count) continue;
         const float area = card.area * scale * scale;
@@ -192,8 +198,9 @@ std::vector<gpu::JointParams> buildJointParams(const lsys::PlantAsset& asset, fl
         p.dynamics.y = std::max(float(inertia), kMinInertia);
         p.dynamics.w = 2.0f * settings.dampingRatio * std::sqrt(p.dynamics.z * p.dynamics.y);
         p.load = gpu::vec4(glm::inverse(asset.joints[j].rest.rotation) * glm::vec3(centre), float(m.mass));
-        p.aero = gpu::vec4(drag[j].area, drag[j].area > 0.0f ? drag[j].areaTimesDistance / drag[j].area : 0.5f * length[j],
-                           0.0f, 0.0f);
+        p.aero =
+            gpu::vec4(drag[j].area, drag[j].area > 0.0f ? drag[j].areaTimesDistance / drag[j].area : 0.5f * length[j],
+                      0.0f, 0.0f);
         p.links.y = depth[j];
     }
     return params;

@@ -50,8 +50,8 @@ NaturalField placeAtNaturalDensity(const Scene& scene, std::span<const Placement
     }
     // Plants are proportional to area: the side grows with the square root.
     double side = double(scene.terrain.size) * std::sqrt(double(count) / double(natural.size())) * kGrowthMargin;
-    const size_t maxSamples = std::max(size_t(scene.terrain.resolution) * scene.terrain.resolution,
-                                       kGrownSamplesPerPlant * count);
+    const size_t maxSamples =
+        std::max(size_t(scene.terrain.resolution) * scene.terrain.resolution, kGrownSamplesPerPlant * count);
     for (int growth = 0; growth < kMaxGrowths; ++growth) {
         Scene grown = scene;
         grown.terrain = grownTerrain(scene.terrain, float(side), maxSamples);
@@ -65,8 +65,8 @@ NaturalField placeAtNaturalDensity(const Scene& scene, std::span<const Placement
         side *= std::sqrt(double(count) / double(std::max<size_t>(placed.size(), 1))) * kGrowthMargin;
     }
     throw std::runtime_error("placement: no terrain grown up to " +
-                             std::to_string(int(std::lround(field.terrain.size))) +
-                             " m holds " + countText(count) + " at the scene's densities");
+                             std::to_string(int(std::lround(field.terrain.size))) + " m holds " + countText(count) +
+                             " at the scene's densities");
 }
 
 } // namespace pf

@@ -21,7 +21,7 @@ namespace pf {
 
 namespace {
 
-constexpr uint32_t kCandidatesPerPoint = 30;        // Bridson's k
+constexpr uint32_t kCandidatesPerPoint = 30;              // Bridson's k
 constexpr uint64_t kSamplingSalt = 0x5A3D1E9C40B7F251ull; // keeps the sampling stream apart from the attribute streams
 constexpr uint64_t kThinningSalt = 0xC2B2AE3D27D4EB4Full;
 constexpr size_t kMaxGridCells = size_t(1) << 28;
@@ -40,7 +40,8 @@ struct PointGrid {
     PointGrid(float terrainSize, float cellSize) : origin(-0.5f * terrainSize), cell(cellSize) {
         const double cellsPerSide = std::ceil(double(terrainSize) / double(cellSize));
         if (cellsPerSide * cellsPerSide > double(kMaxGridCells))
-            throw std::invalid_argument("placement: distance " + std::to_string(cellSize * std::numbers::sqrt2_v<float>) +
+            throw std::invalid_argument("placement: distance " +
+                                        std::to_string(cellSize * std::numbers::sqrt2_v<float>) +
                                         " m is too small for a " + std::to_string(terrainSize) + " m terrain");
         side = std::max(1u, uint32_t(cellsPerSide));
         cells.assign(size_t(side) * side, glm::vec2(std::numeric_limits<float>::infinity()));
@@ -79,7 +80,8 @@ struct Neighbour {
 void validate(const PlacementRule& rule, size_t index) {
     const std::string where = "placement rule " + std::to_string(index) + ": ";
     const float distance = ruleDistance(rule);
-    if (!(distance > 0) || !std::isfinite(distance)) throw std::invalid_argument(where + "needs a positive density or distance");
+    if (!(distance > 0) || !std::isfinite(distance))
+        throw std::invalid_argument(where + "needs a positive density or distance");
     if (!(rule.clearance >= 0)) throw std::invalid_argument(where + "clearance must not be negative");
     if (!(rule.minScale <= rule.maxScale)) throw std::invalid_argument(where + "minScale is above maxScale");
     if (!(rule.minHeight <= rule.maxHeight)) throw std::invalid_argument(where + "minHeight is above maxHeight");
@@ -99,7 +101,8 @@ PointGrid sampleRule(const Heightfield& terrain, const PlacementRule& rule, std:
     PointGrid kept(terrain.size, r / std::numbers::sqrt2_v<float>);
     PointGrid ghosts(terrain.size, kept.cell);
 
-    const bool heightLimited = rule.minHeight > std::numeric_limits<float>::lowest() || rule.maxHeight < std::numeric_limits<float>::max();
+    const bool heightLimited =
+        rule.minHeight > std::numeric_limits<float>::lowest() || rule.maxHeight < std::numeric_limits<float>::max();
     auto admitted = [&](glm::vec2 p) {
         if (heightLimited) {
             const float h = heightAt(terrain, p.x, p.y);
@@ -232,7 +235,8 @@ std::vector<PlantInstance> placePoissonDisk(const Heightfield& terrain, const Pl
     return placeSpecies(terrain, std::span(&rule, 1), seed);
 }
 
-std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<const PlacementRule> rules, uint64_t seed) {
+std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<const PlacementRule> rules,
+                                        uint64_t seed) {
     for (size_t i = 0; i < rules.size(); ++i) validate(rules[i], i);
     // Large plants claim their ground first; ties keep the order of `rules`.
     std::vector<size_t> sampling(rules.size());
@@ -261,7 +265,8 @@ std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<co
                 if (keepApart(rules[sampling[i]], rules[ruleIndex]))
                     earlier.push_back({&*kept[sampling[i]], rules[sampling[i]].clearance});
             tasks.push_back([&, ruleIndex, earlier = std::move(earlier)] {
-                kept[ruleIndex].emplace(sampleRule(terrain, rules[ruleIndex], earlier, seed ^ rules[ruleIndex].seed, ruleIndex));
+                kept[ruleIndex].emplace(
+                    sampleRule(terrain, rules[ruleIndex], earlier, seed ^ rules[ruleIndex].seed, ruleIndex));
             });
         }
         runTogether(tasks);

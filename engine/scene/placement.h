@@ -53,7 +53,8 @@ std::vector<PlantInstance> placePoissonDisk(const Heightfield& terrain, const Pl
 // the smallest, and a plant is kept only where it stands at least
 // max(clearanceA, clearanceB) from every plant of the rules sampled before it.
 // Output is grouped by rule, in the order of `rules`.
-std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<const PlacementRule> rules, uint64_t seed);
+std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<const PlacementRule> rules,
+                                        uint64_t seed);
 
 // Exactly `count` plants for the same rules (`plantfield --instances N` must
 // render exactly N): the rules with every distance and clearance scaled by one

@@ -180,7 +180,8 @@ void bakeLeafCard(BakedMesh& out, const lsys::PlantAsset& asset, const lsys::Pri
     const float scale = surface.length;
     const glm::vec3 x = axisOf(surface.frame, {1, 0, 0}), y = axisOf(surface.frame, {0, 1, 0});
     const glm::vec3 normal = axisOf(surface.frame, {0, 0, 1});
-    const glm::vec3 origin = surface.frame.position + scale * (x * 0.5f * (extent.min.x + extent.max.x) + y * extent.min.y);
+    const glm::vec3 origin =
+        surface.frame.position + scale * (x * 0.5f * (extent.min.x + extent.max.x) + y * extent.min.y);
     const glm::vec3 across = scale * enlarge * x * (extent.max.x - extent.min.x);
     const glm::vec3 along = scale * enlarge * y * (extent.max.y - extent.min.y);
     const glm::vec3 albedo = asset.materials[surface.material].albedo;
@@ -217,8 +218,8 @@ void bakeFoliageChain(BakedMesh& out, const lsys::PlantAsset& asset, const lsys:
         const lsys::Primitive& last = asset.primitives[chain.primitives[end]];
         bakeRibbon(out, first.frame, first.frame.position, tipOf(last),
                    widen * std::max(2.0f * first.startRadius, recipe.minRibbonWidth),
-                   widen * std::max(2.0f * last.endRadius, recipe.minRibbonWidth), asset.materials[first.material].albedo,
-                   jointOf(first.joint), jointOf(last.joint));
+                   widen * std::max(2.0f * last.endRadius, recipe.minRibbonWidth),
+                   asset.materials[first.material].albedo, jointOf(first.joint), jointOf(last.joint));
     }
 }
 
@@ -237,7 +238,8 @@ ClassMeshes bakeLod(const lsys::PlantAsset& asset, const std::vector<lsys::Segme
     const uint32_t ribbonStride = recipe.reduced ? kRibbonStride : 1;
     for (const lsys::SegmentChain& chain : chains) {
         if (isFoliageSegment(asset, asset.primitives[chain.primitives.front()])) {
-            if (foliageChains++ % ribbonStride == 0) bakeFoliageChain(foliage, asset, chain, recipe, float(ribbonStride));
+            if (foliageChains++ % ribbonStride == 0)
+                bakeFoliageChain(foliage, asset, chain, recipe, float(ribbonStride));
         } else {
             bakeBarkChain(bark, asset, keptPart(asset, chain, recipe), recipe);
         }
@@ -314,12 +316,13 @@ lsys::Grammar parseSpecies(const Species& species) {
     options.defines.insert(species.defines.begin(), species.defines.end());
     lsys::ParseResult result = lsys::parseDialect(std::nullopt, source, options);
     if (!result.ok())
-        throw std::runtime_error("species '" + species.name + "': " + lsys::formatDiagnostics(result.diagnostics, source));
+        throw std::runtime_error("species '" + species.name +
+                                 "': " + lsys::formatDiagnostics(result.diagnostics, source));
     return std::move(result.grammar);
 }
 
-lsys::PlantAsset derivePlant(const Species& species, const lsys::Grammar& grammar,
-                             const lsys::SurfaceLibrary& surfaces, uint64_t seed) {
+lsys::PlantAsset derivePlant(const Species& species, const lsys::Grammar& grammar, const lsys::SurfaceLibrary& surfaces,
+                             uint64_t seed) {
     lsys::DeriveOptions options;
     if (species.steps) options.steps = int(*species.steps);
     options.seed = seed;

@@ -5,8 +5,8 @@
 #pragma once
 
 #include "engine/scene/scene.h"
-#include "shaders/physics_layouts.h"
 #include "shaders/field_layouts.h"
+#include "shaders/physics_layouts.h"
 
 #include <array>
 #include <cstdint>
@@ -30,11 +30,11 @@ inline constexpr uint32_t kMeshLodCount = LOD_IMPOSTOR;
 inline constexpr uint32_t kMeshClassCount = 2;
 
 struct PlantModelInfo {
-    uint32_t species = 0; // index into Scene::species
-    uint32_t variant = 0; // 0 .. variants-1
-    std::string name;     // "<species name>#<variant>"
+    uint32_t species = 0;                                                     // index into Scene::species
+    uint32_t variant = 0;                                                     // 0 .. variants-1
+    std::string name;                                                         // "<species name>#<variant>"
     std::array<std::array<MeshRange, kMeshClassCount>, kMeshLodCount> meshes; // [lod][class]
-    uint32_t joints = 0;  // joints of the skeleton (segments)
+    uint32_t joints = 0;                                                      // joints of the skeleton (segments)
     uint32_t firstJoint = 0; // its JointParams in PlantModelPool::joints (vertices' joint.x index from here)
     // sphere, boxMin, boxMax and lod filled from the mesh and the species'
     // LodHints (lod.z hysteresis 0.1, lod.w fade 0.25 s); lists and impostor
@@ -42,9 +42,7 @@ struct PlantModelInfo {
     gpu::PlantModel gpu{};
     BillboardKind billboard = BillboardKind::Double;
 
-    uint32_t triangles(uint32_t lod) const {
-        return (meshes[lod][0].indexCount + meshes[lod][1].indexCount) / 3;
-    }
+    uint32_t triangles(uint32_t lod) const { return (meshes[lod][0].indexCount + meshes[lod][1].indexCount) / 3; }
 };
 
 struct PlantModelPool {
@@ -52,8 +50,8 @@ struct PlantModelPool {
     std::vector<uint32_t> indices;
     // Every model's skeleton (buildJointParams at the model's height scale), model after model.
     std::vector<gpu::JointParams> joints;
-    std::vector<PlantModelInfo> models;  // species by species, variants in order
-    std::vector<uint32_t> firstModel;    // per species: index of its variant 0 in models
+    std::vector<PlantModelInfo> models; // species by species, variants in order
+    std::vector<uint32_t> firstModel;   // per species: index of its variant 0 in models
     uint32_t modelOf(uint32_t species, uint32_t variant) const { return firstModel[species] + variant; }
 };
 

@@ -45,7 +45,8 @@ T splineAt(const std::vector<CameraKeyframe>& keys, size_t i, float u, Value val
 // Without keyframes: circle the origin once every two minutes, 60 m out and 20 m up.
 constexpr double kDefaultOrbitSeconds = 120.0;
 Camera defaultOrbit(double t) {
-    constexpr float kRadius = 60.0f, kHeight = 20.0f, kRadiansPerSecond = 2.0f * 3.14159265f / float(kDefaultOrbitSeconds);
+    constexpr float kRadius = 60.0f, kHeight = 20.0f,
+                    kRadiansPerSecond = 2.0f * 3.14159265f / float(kDefaultOrbitSeconds);
     const float angle = glm::radians(30.0f) + float(t) * kRadiansPerSecond;
     Camera camera;
     camera.position = glm::vec3(std::sin(angle) * kRadius, kHeight, std::cos(angle) * kRadius);

@@ -153,17 +153,17 @@ constexpr uint32_t kMaxJointBudget = 10'000'000;
 
 // The physical model of the plants (docs/PHYSICS.md).
 struct PhysicsSettings {
-    float woodDensity = 600.0f;        // kg/m³ (Crankshaw 2020: 400–1000)
-    float youngsModulus = 1.0e9f;      // Pa, of green wood, for stiffness from beam theory
-    float stiffnessScale = 1.0f;       // multiplies every stiffness (art direction: >1 stiffer)
-    float dampingRatio = 0.15f;        // ζ: c = 2·ζ·sqrt(k·I)
-    float gravity = 9.8f;              // m/s²
-    float airDensity = 1.2f;           // kg/m³
-    float dragCoefficient = 1.0f;      // Cd of segments
-    float leafDrag = 1.0f;             // multiplies the drag area of leaves and blades
-    float subStep = 1.0f / 240.0f;     // s, the fixed integration step
-    uint32_t jointBudget = 200000;     // simulated joints of plants near the camera, each its own state
-    uint32_t sharedPhases = 4;         // simulated copies per plant model shared by farther plants
+    float woodDensity = 600.0f;    // kg/m³ (Crankshaw 2020: 400–1000)
+    float youngsModulus = 1.0e9f;  // Pa, of green wood, for stiffness from beam theory
+    float stiffnessScale = 1.0f;   // multiplies every stiffness (art direction: >1 stiffer)
+    float dampingRatio = 0.15f;    // ζ: c = 2·ζ·sqrt(k·I)
+    float gravity = 9.8f;          // m/s²
+    float airDensity = 1.2f;       // kg/m³
+    float dragCoefficient = 1.0f;  // Cd of segments
+    float leafDrag = 1.0f;         // multiplies the drag area of leaves and blades
+    float subStep = 1.0f / 240.0f; // s, the fixed integration step
+    uint32_t jointBudget = 200000; // simulated joints of plants near the camera, each its own state
+    uint32_t sharedPhases = 4;     // simulated copies per plant model shared by farther plants
     bool operator==(const PhysicsSettings&) const = default;
 };
 

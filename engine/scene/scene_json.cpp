@@ -303,8 +303,8 @@ void requireUniqueNames(const std::vector<Species>& species, const std::vector<J
 Scene loadScene(const std::filesystem::path& file) {
     const JsonSource source = readJsonFile(file);
     const JsonNode root = rootNode(source);
-    requireObject(root,
-                  {"description", "seed", "terrain", "species", "placement", "sun", "sky", "fog", "wind", "physics", "camera"});
+    requireObject(root, {"description", "seed", "terrain", "species", "placement", "sun", "sky", "fog", "wind",
+                         "physics", "camera"});
     const std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
 
     Scene scene;

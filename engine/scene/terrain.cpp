@@ -17,9 +17,14 @@ namespace {
 // Eight unit gradients with exact coordinates, so the noise is the same on
 // every platform (no sin/cos of hashed angles).
 constexpr float kDiagonal = 0.70710678f;
-constexpr float kGradients[8][2] = {{1, 0},  {-1, 0},         {0, 1},         {0, -1},
-                                    {kDiagonal, kDiagonal},   {-kDiagonal, kDiagonal},
-                                    {kDiagonal, -kDiagonal},  {-kDiagonal, -kDiagonal}};
+constexpr float kGradients[8][2] = {{1, 0},
+                                    {-1, 0},
+                                    {0, 1},
+                                    {0, -1},
+                                    {kDiagonal, kDiagonal},
+                                    {-kDiagonal, kDiagonal},
+                                    {kDiagonal, -kDiagonal},
+                                    {-kDiagonal, -kDiagonal}};
 
 float quinticFade(float t) { return t * t * t * (t * (t * 6 - 15) + 10); }
 
@@ -38,7 +43,8 @@ float gradientNoise(uint64_t key, float x, float z) {
     const float dx = x - fx, dz = z - fz;
     const float u = quinticFade(dx), v = quinticFade(dz);
     const float bottom = std::lerp(cornerValue(key, ix, iz, dx, dz), cornerValue(key, ix + 1, iz, dx - 1, dz), u);
-    const float top = std::lerp(cornerValue(key, ix, iz + 1, dx, dz - 1), cornerValue(key, ix + 1, iz + 1, dx - 1, dz - 1), u);
+    const float top =
+        std::lerp(cornerValue(key, ix, iz + 1, dx, dz - 1), cornerValue(key, ix + 1, iz + 1, dx - 1, dz - 1), u);
     return std::lerp(bottom, top, v);
 }
 
@@ -82,7 +88,8 @@ Heightfield loadImageTerrain(const std::string& path, float size, float heightSc
     const RgbaImage image = readPng(path);
     const std::string where = "terrain image '" + path + "'";
     if (image.width != image.height)
-        throw std::runtime_error(where + " must be square, not " + std::to_string(image.width) + "x" + std::to_string(image.height));
+        throw std::runtime_error(where + " must be square, not " + std::to_string(image.width) + "x" +
+                                 std::to_string(image.height));
     if (image.width < 2) throw std::runtime_error(where + " must be at least 2x2 pixels");
     if (!(size > 0)) throw std::invalid_argument(where + ": size must be positive");
     Heightfield terrain = emptyHeightfield(image.width, size);
@@ -90,8 +97,9 @@ Heightfield loadImageTerrain(const std::string& path, float size, float heightSc
         const uint8_t* rgb = &image.pixels[i * 4];
         if (rgb[0] != rgb[1] || rgb[1] != rgb[2])
             throw std::runtime_error(where + " is not greyscale: pixel (" + std::to_string(i % image.width) + ", " +
-                                     std::to_string(i / image.width) + ") has red, green and blue " + std::to_string(rgb[0]) +
-                                     ", " + std::to_string(rgb[1]) + ", " + std::to_string(rgb[2]));
+                                     std::to_string(i / image.width) + ") has red, green and blue " +
+                                     std::to_string(rgb[0]) + ", " + std::to_string(rgb[1]) + ", " +
+                                     std::to_string(rgb[2]));
         terrain.heights[i] = float(rgb[0]) / 255.0f * heightScale;
     }
     return terrain;
@@ -136,7 +144,8 @@ TerrainMesh makeTerrainMesh(const Heightfield& terrain) {
         for (uint32_t ix = 0; ix + 1 < n; ++ix) {
             const uint32_t corner = iz * n + ix; // +x is one vertex on, +z one row on
             // Seen from +y, +z points down the page, so (corner, +z, +x) turns counter-clockwise.
-            mesh.indices.insert(mesh.indices.end(), {corner, corner + n, corner + 1, corner + 1, corner + n, corner + n + 1});
+            mesh.indices.insert(mesh.indices.end(),
+                                {corner, corner + n, corner + 1, corner + 1, corner + n, corner + n + 1});
         }
     return mesh;
 }

@@ -26,11 +26,11 @@ struct Heightfield {
 // ±amplitude·(1 + gain + … + gain^(octaves-1))·√½, the bound of gradient noise.
 struct NoiseTerrainSettings {
     uint32_t resolution = 257;
-    float size = 512;               // metres
+    float size = 512; // metres
     uint64_t seed = 0;
     uint32_t octaves = 5;
     float frequency = 1.0f / 200.0f; // cycles per metre of the first octave: hills about 200 m apart
-    float amplitude = 16;           // metres
+    float amplitude = 16;            // metres
     float lacunarity = 2;
     float gain = 0.5f;
 };

@@ -18,8 +18,8 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onDebugMessage(VkDebugUtilsMessageSeverityFlagBit
                                               const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
     auto* log = static_cast<ValidationLog*>(user);
     const bool error = severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    std::string text = std::string(error ? "validation error: " : "validation warning: ") +
-                       (data->pMessage ? data->pMessage : "");
+    std::string text =
+        std::string(error ? "validation error: " : "validation warning: ") + (data->pMessage ? data->pMessage : "");
     {
         std::lock_guard lock(log->mutex);
         (error ? log->errorCount : log->warningCount)++;
@@ -205,10 +205,9 @@ void createDevice(GpuContext& ctx, const GpuOptions& options, VkSurfaceKHR surfa
         }
     }
     if (!ctx.physicalDevice)
-        throw std::runtime_error("no usable Vulkan 1.3 device" +
-                                 (wanted.empty() ? std::string() : " matching '" + wanted + "'") +
-                                 (surface ? " that can present to the window" : "") + " (found: " +
-                                 (seen.empty() ? "none" : seen) + ")");
+        throw std::runtime_error(
+            "no usable Vulkan 1.3 device" + (wanted.empty() ? std::string() : " matching '" + wanted + "'") +
+            (surface ? " that can present to the window" : "") + " (found: " + (seen.empty() ? "none" : seen) + ")");
     vkGetPhysicalDeviceMemoryProperties(ctx.physicalDevice, &ctx.memoryProperties);
 
     float priority = 1.0f;

@@ -45,7 +45,7 @@ struct GpuContext {
     VkCommandPool commandPool = VK_NULL_HANDLE;
     VkPhysicalDeviceProperties properties{};
     VkPhysicalDeviceMemoryProperties memoryProperties{};
-    bool presentation = false; // VK_KHR_swapchain enabled
+    bool presentation = false;      // VK_KHR_swapchain enabled
     bool drawIndirectCount = false; // vkCmdDrawIndexedIndirectCount usable
     bool multiDrawIndirect = false; // indirect draws with drawCount > 1
     std::unique_ptr<ValidationLog> validationLog;

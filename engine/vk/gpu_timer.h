@@ -32,9 +32,9 @@ struct GpuTimer {
         std::string name;
         bool ended = false;
     };
-    std::vector<Scope> scopes;          // this frame's, in order of beginScope()
-    std::vector<uint32_t> openScopes;   // indices into scopes, innermost last
-    bool frameRecorded = false;         // resetGpuTimer() was recorded at least once
+    std::vector<Scope> scopes;        // this frame's, in order of beginScope()
+    std::vector<uint32_t> openScopes; // indices into scopes, innermost last
+    bool frameRecorded = false;       // resetGpuTimer() was recorded at least once
 };
 
 // Throws when maxScopes is 0.

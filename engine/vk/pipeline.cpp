@@ -50,7 +50,7 @@ VkPipeline createGraphicsPipeline(VkDevice device, const GraphicsPipelineDesc& d
     depth.depthCompareOp = desc.depthCompare;
 
     const VkFormat colorFormats[2] = {desc.colorFormat, desc.secondColorFormat};
-    const uint32_t colorCount = desc.colorFormat == VK_FORMAT_UNDEFINED          ? 0
+    const uint32_t colorCount = desc.colorFormat == VK_FORMAT_UNDEFINED         ? 0
                                 : desc.secondColorFormat == VK_FORMAT_UNDEFINED ? 1
                                                                                 : 2;
     VkPipelineColorBlendAttachmentState blendAttachments[2]{};

@@ -7,8 +7,8 @@ namespace pf {
 namespace {
 
 VkSampleCountFlagBits supportedSamples(const GpuContext& ctx, VkSampleCountFlagBits wanted) {
-    const VkSampleCountFlags counts = ctx.properties.limits.framebufferColorSampleCounts &
-                                      ctx.properties.limits.framebufferDepthSampleCounts;
+    const VkSampleCountFlags counts =
+        ctx.properties.limits.framebufferColorSampleCounts & ctx.properties.limits.framebufferDepthSampleCounts;
     for (uint32_t s = wanted; s > 1; s >>= 1)
         if (counts & s) return VkSampleCountFlagBits(s);
     return VK_SAMPLE_COUNT_1_BIT;
@@ -20,7 +20,8 @@ RenderTarget createRenderTarget(const GpuContext& ctx, VkExtent2D extent, VkSamp
     const uint32_t maxSize = ctx.properties.limits.maxImageDimension2D;
     if (extent.width == 0 || extent.height == 0 || extent.width > maxSize || extent.height > maxSize)
         throw std::runtime_error("image size " + std::to_string(extent.width) + "x" + std::to_string(extent.height) +
-                                 " is outside what the device supports (1 to " + std::to_string(maxSize) + " per side)");
+                                 " is outside what the device supports (1 to " + std::to_string(maxSize) +
+                                 " per side)");
     RenderTarget target;
     target.extent = extent;
     target.samples = supportedSamples(ctx, samples);
@@ -29,9 +30,9 @@ RenderTarget createRenderTarget(const GpuContext& ctx, VkExtent2D extent, VkSamp
         target.msaaColor = createImage(ctx, extent, kColorFormat,
                                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
                                        target.samples, VK_IMAGE_ASPECT_COLOR_BIT);
-    target.color = createImage(ctx, extent, kColorFormat,
-                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                               VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+    target.color =
+        createImage(ctx, extent, kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                    VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
     target.depth = createImage(ctx, extent, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, target.samples,
                                VK_IMAGE_ASPECT_DEPTH_BIT);
     return target;

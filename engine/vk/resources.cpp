@@ -29,7 +29,8 @@ uint32_t findMemoryType(const GpuContext& ctx, uint32_t typeBits, VkMemoryProper
     throw std::runtime_error("no Vulkan memory type with the required properties");
 }
 
-Buffer createBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage, VkMemoryPropertyFlags memoryFlags) {
+Buffer createBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
+                    VkMemoryPropertyFlags memoryFlags) {
     Buffer out;
     out.size = size;
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
@@ -51,7 +52,8 @@ Buffer createHostBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageF
     return createBuffer(ctx, size, usage, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
 }
 
-Buffer createDeviceBufferWithData(const GpuContext& ctx, const void* data, VkDeviceSize size, VkBufferUsageFlags usage) {
+Buffer createDeviceBufferWithData(const GpuContext& ctx, const void* data, VkDeviceSize size,
+                                  VkBufferUsageFlags usage) {
     Buffer staging = createHostBuffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     std::memcpy(staging.mapped, data, size);
     Buffer out = createBuffer(ctx, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
@@ -73,7 +75,8 @@ VkDescriptorPool createDescriptorPool(const GpuContext& ctx, std::span<const VkD
                                       uint32_t sets) {
     // One pool size per binding: the pool sums them by type.
     std::vector<VkDescriptorPoolSize> sizes;
-    for (const VkDescriptorSetLayoutBinding& b : bindings) sizes.push_back({b.descriptorType, b.descriptorCount * sets});
+    for (const VkDescriptorSetLayoutBinding& b : bindings)
+        sizes.push_back({b.descriptorType, b.descriptorCount * sets});
     VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     info.maxSets = sets;
     info.poolSizeCount = uint32_t(sizes.size());
@@ -167,7 +170,8 @@ void submitAndWait(const GpuContext& ctx, const std::function<void(VkCommandBuff
     vkFreeCommandBuffers(ctx.device, ctx.commandPool, 1, &cmd);
 }
 
-VkImageMemoryBarrier2 imageMemoryBarrier(VkImage image, const VkImageSubresourceRange& range, const ImageTransition& t) {
+VkImageMemoryBarrier2 imageMemoryBarrier(VkImage image, const VkImageSubresourceRange& range,
+                                         const ImageTransition& t) {
     VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
     barrier.srcStageMask = t.srcStage;
     barrier.srcAccessMask = t.srcAccess;

@@ -26,7 +26,8 @@ struct Image {
 
 uint32_t findMemoryType(const GpuContext& ctx, uint32_t typeBits, VkMemoryPropertyFlags flags);
 
-Buffer createBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage, VkMemoryPropertyFlags memoryFlags);
+Buffer createBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
+                    VkMemoryPropertyFlags memoryFlags);
 // A host-visible, coherent, mapped buffer for data the CPU writes or reads.
 Buffer createHostBuffer(const GpuContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage);
 // A device-local buffer filled through a staging copy.

@@ -51,8 +51,8 @@ void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target) {
     vkCmdBeginRendering(cmd, &rendering);
 
     // Negative height flips y so world and clip space stay y-up.
-    const VkViewport viewport{0.0f, float(target.extent.height), float(target.extent.width),
-                              -float(target.extent.height), 0.0f, 1.0f};
+    const VkViewport viewport{
+        0.0f, float(target.extent.height), float(target.extent.width), -float(target.extent.height), 0.0f, 1.0f};
     const VkRect2D scissor{{0, 0}, target.extent};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);

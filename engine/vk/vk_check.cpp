@@ -7,7 +7,7 @@ namespace pf {
 
 const char* vkResultName(VkResult result) {
     switch (result) {
-#define PF_RESULT_CASE(name) \
+#define PF_RESULT_CASE(name)                                                                                           \
     case name: return #name;
         PF_RESULT_CASE(VK_SUCCESS)
         PF_RESULT_CASE(VK_NOT_READY)
@@ -34,8 +34,8 @@ const char* vkResultName(VkResult result) {
 }
 
 void throwVkError(VkResult result, const char* call, const char* file, int line) {
-    throw std::runtime_error(std::string("Vulkan call failed with ") + vkResultName(result) + ": " + call +
-                             " (" + file + ":" + std::to_string(line) + ")");
+    throw std::runtime_error(std::string("Vulkan call failed with ") + vkResultName(result) + ": " + call + " (" +
+                             file + ":" + std::to_string(line) + ")");
 }
 
 } // namespace pf

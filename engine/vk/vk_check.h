@@ -11,8 +11,8 @@ const char* vkResultName(VkResult result);
 
 } // namespace pf
 
-#define VK_CHECK(call)                                                                             \
-    do {                                                                                           \
-        VkResult vkCheckResult_ = (call);                                                          \
-        if (vkCheckResult_ != VK_SUCCESS) ::pf::throwVkError(vkCheckResult_, #call, __FILE__, __LINE__); \
+#define VK_CHECK(call)                                                                                                 \
+    do {                                                                                                               \
+        VkResult vkCheckResult_ = (call);                                                                              \
+        if (vkCheckResult_ != VK_SUCCESS) ::pf::throwVkError(vkCheckResult_, #call, __FILE__, __LINE__);               \
     } while (0)

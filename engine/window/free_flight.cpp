@@ -34,8 +34,8 @@ FreeFlight flightFromCamera(const Camera& camera) {
 void updateFlight(FreeFlight& flight, const FlightInput& input, float dt) {
     if (input.looking) {
         // Cursor right turns right (yaw grows); cursor down (+y) looks down.
-        flight.yaw = std::remainder(flight.yaw + input.mouseDelta.x * flight.lookRadiansPerPixel,
-                                    2.0f * glm::pi<float>());
+        flight.yaw =
+            std::remainder(flight.yaw + input.mouseDelta.x * flight.lookRadiansPerPixel, 2.0f * glm::pi<float>());
         flight.pitch = clampPitch(flight.pitch - input.mouseDelta.y * flight.lookRadiansPerPixel);
     }
 

@@ -25,8 +25,8 @@ constexpr float kMaxPitchDegrees = 89.0f; // short of straight up/down, where ya
 
 struct FreeFlight {
     glm::vec3 position{0.0f};
-    float yaw = 0.0f;   // radians
-    float pitch = 0.0f; // radians, within +-kMaxPitchDegrees
+    float yaw = 0.0f;                   // radians
+    float pitch = 0.0f;                 // radians, within +-kMaxPitchDegrees
     float speed = 10.0f;                // metres per second
     float lookRadiansPerPixel = 0.003f; // mouse sensitivity
 };

@@ -1,8 +1,8 @@
 #include "engine/window/present_loop.h"
 
 #include "engine/vk/capture.h"
-#include "engine/window/swapchain.h"
 #include "engine/vk/vk_check.h"
+#include "engine/window/swapchain.h"
 
 #include <chrono>
 #include <cstdio>

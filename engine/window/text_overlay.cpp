@@ -108,8 +108,8 @@ void setOverlayText(TextOverlay& overlay, const std::string& lines) {
         if (c != '\n' && (c < 32 || c > 126)) c = '?';
 
     std::vector<StbVertex> quads(size_t(kMaxOverlayCharacters) * kMaxQuadsPerCharacter * 4);
-    const uint32_t quadCount = uint32_t(stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, quads.data(),
-                                                            int(quads.size() * sizeof(StbVertex))));
+    const uint32_t quadCount = uint32_t(
+        stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, quads.data(), int(quads.size() * sizeof(StbVertex))));
 
     // Host writes before vkQueueSubmit are visible to the GPU without a barrier.
     OverlayRect* rects = static_cast<OverlayRect*>(overlay.rects.mapped);
@@ -117,8 +117,8 @@ void setOverlayText(TextOverlay& overlay, const std::string& lines) {
         // Vertices 0 and 2 of each quad are its top-left and bottom-right corners.
         const StbVertex& topLeft = quads[4 * q];
         const StbVertex& bottomRight = quads[4 * q + 2];
-        const glm::vec4 bounds = kOverlayMargin + kOverlayScale * glm::vec4(topLeft.x, topLeft.y, bottomRight.x,
-                                                                            bottomRight.y);
+        const glm::vec4 bounds =
+            kOverlayMargin + kOverlayScale * glm::vec4(topLeft.x, topLeft.y, bottomRight.x, bottomRight.y);
         rects[q] = {bounds + kShadowOffset, kShadowColor};
         rects[quadCount + q] = {bounds, kTextColor};
     }
@@ -155,8 +155,8 @@ void recordTextOverlay(VkCommandBuffer cmd, const TextOverlay& overlay, const Re
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, overlay.pipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, overlay.pipelineLayout, 0, 1,
-                            &overlay.descriptorSet, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, overlay.pipelineLayout, 0, 1, &overlay.descriptorSet,
+                            0, nullptr);
     const glm::vec2 framebufferSize{float(target.extent.width), float(target.extent.height)};
     vkCmdPushConstants(cmd, overlay.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(framebufferSize),
                        &framebufferSize);

@@ -12,8 +12,8 @@ namespace pf {
 // Text beyond this many characters (newlines included) is not shown; the
 // vertex buffer is sized for it once, at creation.
 constexpr uint32_t kMaxOverlayCharacters = 1024;
-constexpr float kOverlayScale = 2.0f;   // font pixels to framebuffer pixels
-constexpr float kOverlayMargin = 8.0f;  // framebuffer pixels from the top-left corner
+constexpr float kOverlayScale = 2.0f;  // font pixels to framebuffer pixels
+constexpr float kOverlayMargin = 8.0f; // framebuffer pixels from the top-left corner
 
 struct TextOverlay {
     Buffer rects;           // host-visible storage buffer of rectangles

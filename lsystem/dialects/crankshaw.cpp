@@ -30,7 +30,7 @@ struct Crankshaw {
     NativeText out{source};
     ModuleNames names;
     std::vector<Diagnostic> diagnostics;
-    int rangeDepth = 0;  // bounds the recursion of range() and expression()
+    int rangeDepth = 0; // bounds the recursion of range() and expression()
 
     bool fail(size_t offset, std::string message, std::string expected = {}) {
         diagnostics.push_back(source.diagnostic(offset, std::move(message), std::move(expected)));
@@ -40,7 +40,8 @@ struct Crankshaw {
     bool expect(Scanner& s, char c) {
         s.skipSpaces();
         if (s.accept(std::string_view(&c, 1))) return true;
-        return fail(s.pos, s.atLineEnd() ? "statement ends early" : std::string("unexpected '") + s.peek() + "'", std::string("'") + c + "'");
+        return fail(s.pos, s.atLineEnd() ? "statement ends early" : std::string("unexpected '") + s.peek() + "'",
+                    std::string("'") + c + "'");
     }
 
     // An expression up to one of stops at parenthesis depth 0, with {a,b}
@@ -75,7 +76,7 @@ struct Crankshaw {
     bool rangeBody(Scanner& s, size_t open, Statement& into) {
         Statement low, high;
         if (!expression(s, ",}", low)) return false;
-        if (s.accept("}")) {  // {a} is the single value a
+        if (s.accept("}")) { // {a} is the single value a
             into.emit("(", open), into.append(low), into.emit(")", open);
             return true;
         }
@@ -90,7 +91,8 @@ struct Crankshaw {
     std::string_view moduleName(Scanner& s) {
         size_t begin = s.pos;
         std::string_view name = s.identifier();
-        if (name.empty() && kSymbols.find(s.peek()) != std::string_view::npos && s.peek() != '\0') name = std::string_view(source.text).substr(s.pos++, 1);
+        if (name.empty() && kSymbols.find(s.peek()) != std::string_view::npos && s.peek() != '\0')
+            name = std::string_view(source.text).substr(s.pos++, 1);
         if (!name.empty()) names.use(name, begin);
         return name;
     }
@@ -105,12 +107,13 @@ struct Crankshaw {
             if (s.atLineEnd() || s.peek() == ';' || (predecessor && s.peek() == ':')) break;
             size_t begin = s.pos;
             std::string_view name = moduleName(s);
-            if (name.empty()) return fail(s.pos, std::string("unexpected '") + s.peek() + "'", "a module name or a turtle symbol");
+            if (name.empty())
+                return fail(s.pos, std::string("unexpected '") + s.peek() + "'", "a module name or a turtle symbol");
             if (count++ > 0) into.emit(" ", begin);
             into.copy(name, begin);
             size_t beforeSpaces = s.pos;
             s.skipSpaces();
-            if (!s.accept("(")) {  // "F (1)" is F(1), as the thesis writes "- (r)Z"
+            if (!s.accept("(")) { // "F (1)" is F(1), as the thesis writes "- (r)Z"
                 s.pos = beforeSpaces;
                 continue;
             }
@@ -122,12 +125,15 @@ struct Crankshaw {
                     if (!s.accept(",")) return fail(s.pos, "malformed parameter list", "',' or ')'");
                     into.emit(",", s.pos - 1);
                 }
-                bool ok = predecessor ? formalParameter(s, parameter, into, *literalConditions) : expression(s, ",)", into);
+                bool ok =
+                    predecessor ? formalParameter(s, parameter, into, *literalConditions) : expression(s, ",)", into);
                 if (!ok) return false;
             }
             into.emit(")", s.pos - 1);
         }
-        if (predecessor && count != 1) return fail(s.pos, count == 0 ? "missing predecessor" : "a predecessor is one module", "one module such as F(x)");
+        if (predecessor && count != 1)
+            return fail(s.pos, count == 0 ? "missing predecessor" : "a predecessor is one module",
+                        "one module such as F(x)");
         return true;
     }
 
@@ -143,7 +149,8 @@ struct Crankshaw {
         }
         bool negative = s.accept("-");
         std::string_view literal = s.number();
-        if (literal.empty()) return fail(begin, "a predecessor parameter must be a name or a number", "a name such as 'x'");
+        if (literal.empty())
+            return fail(begin, "a predecessor parameter must be a name or a number", "a name such as 'x'");
         std::string formal = "_c" + std::to_string(index + 1);
         into.emit(formal, begin);
         if (!literalConditions.text.empty()) literalConditions.emit(" && ", begin);
@@ -184,7 +191,8 @@ struct Crankshaw {
         s.skipSpaces();
         size_t objectAt = s.pos;
         std::string_view object = s.identifier();
-        if (module.empty() || object.empty()) return fail(module.empty() ? moduleAt : objectAt, "malformed #object", "'#object MODULE OBJECT;'");
+        if (module.empty() || object.empty())
+            return fail(module.empty() ? moduleAt : objectAt, "malformed #object", "'#object MODULE OBJECT;'");
         Statement st = out.start(at);
         st.emit("// object ", at), st.copy(module, moduleAt), st.emit(": ", at), st.copy(object, objectAt);
         out.add(std::move(st));
@@ -220,7 +228,8 @@ struct Crankshaw {
         }
         if (!expect(s, ':') || !modules(s, successor, false)) return false;
         // A label the native parser would read as a module name is dropped.
-        if (label.size() >= 2 && !names.multiLetter.contains(std::string(label))) st.copy(label, at + 1), st.emit(": ", at);
+        if (label.size() >= 2 && !names.multiLetter.contains(std::string(label)))
+            st.copy(label, at + 1), st.emit(": ", at);
         st.append(predecessor);
         if (!condition.text.empty()) st.emit(" : ", conditionAt), st.append(condition);
         st.emit(" --> ", conditionAt), st.append(successor);
@@ -231,14 +240,16 @@ struct Crankshaw {
 
     bool statement(Scanner& s) {
         size_t at = s.pos;
-        if (!s.accept("#")) return fail(at, std::string("unexpected '") + s.peek() + "'", "a statement starting with '#'");
+        if (!s.accept("#"))
+            return fail(at, std::string("unexpected '") + s.peek() + "'", "a statement starting with '#'");
         std::string_view keyword = s.identifier();
         bool ok = keyword == "n"        ? generations(s, at)
                   : keyword == "define" ? define(s, at)
                   : keyword == "object" ? object(s, at)
                   : keyword == "w"      ? axiom(s, at)
                   : !keyword.empty()    ? production(s, at, keyword)
-                                        : fail(s.pos, "missing statement name after '#'", "'n', 'define', 'object', 'w' or a production label such as 'p1'");
+                                        : fail(s.pos, "missing statement name after '#'",
+                                               "'n', 'define', 'object', 'w' or a production label such as 'p1'");
         return ok && expect(s, ';');
     }
 
@@ -247,7 +258,7 @@ struct Crankshaw {
         while (true) {
             s.skipWhitespace();
             if (s.atEnd()) break;
-            if (!statement(s)) {  // resume after the next ';' of this line
+            if (!statement(s)) { // resume after the next ';' of this line
                 while (!s.atLineEnd() && s.peek() != ';') ++s.pos;
                 s.accept(";");
             }
@@ -262,8 +273,8 @@ struct Crankshaw {
     }
 };
 
-}  // namespace
+} // namespace
 
 Translation translateCrankshaw(const Source& source) { return Crankshaw{source}.run(); }
 
-}  // namespace lsys
+} // namespace lsys

@@ -30,14 +30,14 @@ std::vector<size_t> lineStarts(std::string_view text) {
     return starts;
 }
 
-}  // namespace
+} // namespace
 
 std::optional<Dialect> dialectFromName(std::string_view name) {
     for (size_t i = 0; i < std::size(kNames); ++i) {
         std::string_view candidate = kNames[i];
-        if (candidate.size() == name.size() && std::equal(name.begin(), name.end(), candidate.begin(), [](char a, char b) {
-                return std::tolower(static_cast<unsigned char>(a)) == b;
-            }))
+        if (candidate.size() == name.size() &&
+            std::equal(name.begin(), name.end(), candidate.begin(),
+                       [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; }))
             return static_cast<Dialect>(i);
     }
     return std::nullopt;
@@ -47,7 +47,8 @@ const char* dialectName(Dialect dialect) { return kNames[static_cast<size_t>(dia
 
 std::string knownDialects() {
     std::string list = kNames[0];
-    for (size_t i = 1; i < std::size(kNames); ++i) list += (i + 1 < std::size(kNames) ? ", " : " or ") + std::string(kNames[i]);
+    for (size_t i = 1; i < std::size(kNames); ++i)
+        list += (i + 1 < std::size(kNames) ? ", " : " or ") + std::string(kNames[i]);
     return list;
 }
 
@@ -83,10 +84,12 @@ Diagnostic sourcePosition(const Translation& translation, std::string_view sourc
 ParseResult parseDialect(std::optional<Dialect> dialect, std::string_view source, const ParseOptions& options) {
     Translation translation = translateToNative(dialect.value_or(detectDialect(source)), source, options.file);
     ParseResult result = parseLsystem(translation.nativeSource, options);
-    for (Diagnostic& diagnostic : result.diagnostics) diagnostic = sourcePosition(translation, source, std::move(diagnostic));
+    for (Diagnostic& diagnostic : result.diagnostics)
+        diagnostic = sourcePosition(translation, source, std::move(diagnostic));
     // A statement the translation rejected may be the axiom: "no axiom" would only repeat that error.
     if (!translation.diagnostics.empty())
-        std::erase_if(result.diagnostics, [](const Diagnostic& diagnostic) { return diagnostic.message == "no axiom"; });
+        std::erase_if(result.diagnostics,
+                      [](const Diagnostic& diagnostic) { return diagnostic.message == "no axiom"; });
     result.diagnostics.insert(result.diagnostics.end(), translation.diagnostics.begin(), translation.diagnostics.end());
     sortBySourcePosition(result.diagnostics);
     return result;
@@ -104,4 +107,4 @@ ParseResult loadDialectFile(const std::string& path, std::optional<Dialect> dial
     return parseDialect(dialect, source, options);
 }
 
-}  // namespace lsys
+} // namespace lsys

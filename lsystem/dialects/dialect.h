@@ -23,7 +23,7 @@ enum class Dialect { Native, Crankshaw, Robbins, Plantlang };
 // "native", "crankshaw", "robbins", "plantlang" (case-insensitive).
 std::optional<Dialect> dialectFromName(std::string_view name);
 const char* dialectName(Dialect dialect);
-std::string knownDialects();  // "native, crankshaw, robbins or plantlang", for messages
+std::string knownDialects(); // "native, crankshaw, robbins or plantlang", for messages
 
 // The first non-blank line "dialect: NAME" (also "// dialect: NAME",
 // "/* dialect: NAME */", "# dialect: NAME") selects the dialect; Native otherwise.
@@ -31,7 +31,7 @@ Dialect detectDialect(std::string_view source);
 
 struct Translation {
     std::string nativeSource;
-    std::vector<Diagnostic> diagnostics;  // dialect-level problems, at positions of the original source
+    std::vector<Diagnostic> diagnostics; // dialect-level problems, at positions of the original source
     // Per byte of nativeSource, the byte of the original source it came from.
     // Native line N holds what dialect line N said wherever the dialect puts one
     // statement per line; sourcePosition() maps the rest.
@@ -52,6 +52,7 @@ ParseResult parseDialect(std::optional<Dialect> dialect, std::string_view source
 
 // Reads a file and parses it with parseDialect; a missing file becomes a
 // diagnostic at line 0.
-ParseResult loadDialectFile(const std::string& path, std::optional<Dialect> dialect = std::nullopt, ParseOptions options = {});
+ParseResult loadDialectFile(const std::string& path, std::optional<Dialect> dialect = std::nullopt,
+                            ParseOptions options = {});
 
-}  // namespace lsys
+} // namespace lsys

@@ -10,7 +10,8 @@ namespace lsys {
 
 Source::Source(std::string_view original, std::string file_, std::vector<Diagnostic>& diagnostics)
     : file(std::move(file_)), text(blankComments(original, file, diagnostics)) {
-    if (std::optional<HeaderLine> header = findHeaderLine(text)) std::fill(text.begin() + header->begin, text.begin() + header->end, ' ');
+    if (std::optional<HeaderLine> header = findHeaderLine(text))
+        std::fill(text.begin() + header->begin, text.begin() + header->end, ' ');
     lineStarts.push_back(0);
     for (size_t i = 0; i < text.size(); ++i)
         if (text[i] == '\n') lineStarts.push_back(i + 1);
@@ -96,7 +97,7 @@ Statement NativeText::start(size_t sourceOffset) const {
 Translation NativeText::finish(std::vector<Diagnostic> diagnostics) const {
     Translation out;
     out.diagnostics = std::move(diagnostics);
-    int line = 0;  // native lines written so far
+    int line = 0; // native lines written so far
     auto place = [&](const Statement& statement) {
         int target = std::max(statement.preferredLine, line + 1);
         // Blank lines stand for the dialect lines that hold no statement; they come from the end of the previous line.
@@ -144,7 +145,7 @@ namespace {
 // "dialect: NAME", alone on its line after an optional comment opener.
 std::optional<Dialect> headerDialect(std::string_view line) {
     auto skipSpaces = [&] { line.remove_prefix(std::min(line.size(), line.find_first_not_of(" \t\r"))); };
-    auto accept = [&](std::string_view word) {  // case-insensitive
+    auto accept = [&](std::string_view word) { // case-insensitive
         if (line.size() < word.size()) return false;
         for (size_t i = 0; i < word.size(); ++i)
             if (std::tolower(static_cast<unsigned char>(line[i])) != word[i]) return false;
@@ -167,13 +168,13 @@ std::optional<Dialect> headerDialect(std::string_view line) {
     return line.empty() ? dialect : std::nullopt;
 }
 
-}  // namespace
+} // namespace
 
 std::optional<HeaderLine> findHeaderLine(std::string_view source) {
     for (size_t begin = 0; begin < source.size();) {
         size_t end = std::min(source.find('\n', begin), source.size());
         std::string_view line = source.substr(begin, end - begin);
-        if (line.find_first_not_of(" \t\r") != std::string_view::npos) {  // the first non-blank line
+        if (line.find_first_not_of(" \t\r") != std::string_view::npos) { // the first non-blank line
             std::optional<Dialect> dialect = headerDialect(line);
             if (!dialect) return std::nullopt;
             return HeaderLine{begin, end, *dialect};
@@ -183,4 +184,4 @@ std::optional<HeaderLine> findHeaderLine(std::string_view source) {
     return std::nullopt;
 }
 
-}  // namespace lsys
+} // namespace lsys

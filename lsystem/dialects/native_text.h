@@ -33,11 +33,11 @@ struct Scanner {
     bool atEnd() const { return pos >= source.text.size(); }
     char peek(size_t ahead = 0) const;
     bool accept(std::string_view literal);
-    void skipSpaces();            // spaces and tabs, not newlines
-    void skipWhitespace();        // newlines too
+    void skipSpaces();     // spaces and tabs, not newlines
+    void skipWhitespace(); // newlines too
     bool atLineEnd() const { return atEnd() || peek() == '\n' || peek() == '\r'; }
-    std::string_view identifier();  // [A-Za-z_][A-Za-z0-9_]*, or empty
-    std::string_view number();      // unsigned decimal with optional fraction and exponent, or empty
+    std::string_view identifier(); // [A-Za-z_][A-Za-z0-9_]*, or empty
+    std::string_view number();     // unsigned decimal with optional fraction and exponent, or empty
 };
 
 // One native line: its text, the source offset of each of its bytes, and the
@@ -47,8 +47,8 @@ struct Statement {
     std::vector<uint32_t> origin;
     int preferredLine = 1;
 
-    void copy(std::string_view piece, size_t sourceOffset);  // byte i comes from sourceOffset + i
-    void emit(std::string_view piece, size_t sourceOffset);  // generated text standing for sourceOffset
+    void copy(std::string_view piece, size_t sourceOffset); // byte i comes from sourceOffset + i
+    void emit(std::string_view piece, size_t sourceOffset); // generated text standing for sourceOffset
     void append(const Statement& other);
 };
 
@@ -59,8 +59,10 @@ public:
     // An empty statement for the dialect text at sourceOffset, to fill and add.
     Statement start(size_t sourceOffset) const;
     void add(Statement statement) { body_.push_back(std::move(statement)); }
-    void addFirst(Statement statement) { leading_.push_back(std::move(statement)); }  // before all others (declarations)
-    void addLast(Statement statement) { trailing_.push_back(std::move(statement)); }  // after all others (appended sections)
+    void addFirst(Statement statement) { leading_.push_back(std::move(statement)); } // before all others (declarations)
+    void addLast(Statement statement) {
+        trailing_.push_back(std::move(statement));
+    } // after all others (appended sections)
 
     // Lays statements out on their preferred lines where free, otherwise on
     // the next free line, keeping their order.
@@ -96,4 +98,4 @@ Translation translateCrankshaw(const Source& source);
 Translation translateRobbins(const Source& source);
 Translation translatePlantlang(const Source& source);
 
-}  // namespace lsys
+} // namespace lsys

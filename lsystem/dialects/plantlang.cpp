@@ -29,9 +29,9 @@ struct Defaults {
 };
 
 struct Setting {
-    std::string_view name;          // lower case, single spaces
-    std::string_view native;        // native header written with the value; empty: none
-    double Defaults::*value;        // default used by the translation; nullptr: none
+    std::string_view name;   // lower case, single spaces
+    std::string_view native; // native header written with the value; empty: none
+    double Defaults::*value; // default used by the translation; nullptr: none
 };
 
 constexpr Setting kSettings[] = {
@@ -56,7 +56,8 @@ std::string call(std::string_view name, double value) { return std::string(name)
 // the '<' or the value it was given.
 std::optional<std::string> nativeCommand(char c, bool reversed, std::optional<double> value, const Defaults& d) {
     // bare, reversed ('<') and with a value
-    auto pick = [&](std::string bare, std::string back, const std::function<std::string(double)>& withValue) -> std::optional<std::string> {
+    auto pick = [&](std::string bare, std::string back,
+                    const std::function<std::string(double)>& withValue) -> std::optional<std::string> {
         if (value) return withValue(*value);
         return reversed ? back : bare;
     };
@@ -66,31 +67,39 @@ std::optional<std::string> nativeCommand(char c, bool reversed, std::optional<do
     };
     auto times = [](std::string_view name) { return [name](double x) { return call(name, x); }; };
     switch (c) {
-        case 'd': case 'F': return pick("F", call("F", -d.length), times("F"));  // F is the chapter's older name for d
-        case 'D': return pick("F", call("F", -d.length), [&](double x) { return call("F", x * d.length / 100); });
-        case 'm': return pick("f", call("f", -d.length), times("f"));
-        case 'M': return pick("f", call("f", -d.length), [&](double x) { return call("f", x * d.length / 100); });
-        // Clockwise as seen from the tip of the axis: about Forward is roll right,
-        // about Up turn right, about Right pitch down (ABOP / \, - +, & ^).
-        case 'f': return pick("/", "\\", times("/"));
-        case 'u': return pick("-", "+", times("-"));
-        case 'r': return pick("&", "^", times("&"));
-        case '+': return plain("-");  // plantlang turns right on '+', ABOP left
-        case '-': return plain("+");
-        case 't': return pick(call("@Wa", d.thicknessIncrement), call("@Wa", -d.thicknessIncrement), times("!"));
-        case 'T': return pick(call("@Wm", d.thicknessFactor), call("@Wm", 1 / d.thicknessFactor), times("@Wm"));
-        case 'o': case 'O': return pick("@O", "@Oc", times("@O"));  // sphere; '<' an unfilled circle
-        case 'c': return pick(";", call("@Ca", -1), times(";"));
-        case 'a': return pick(call("@Aa", d.angleIncrement), call("@Aa", -d.angleIncrement), times("@As"));
-        case 'A': return pick(call("@Am", d.angleFactor), call("@Am", 1 / d.angleFactor), times("@Am"));
-        case 'l': return pick(call("@La", d.lengthIncrement), call("@La", -d.lengthIncrement), times("@Ls"));
-        case 'L': return pick(call("@Lm", d.lengthFactor), call("@Lm", 1 / d.lengthFactor), times("@Lm"));
-        case '[': case ']': case '{': case '}': case '.': return plain(std::string(1, c));
-        default: return plain(std::string(1, c));  // a variable such as X, Y, Z
+    case 'd':
+    case 'F': return pick("F", call("F", -d.length), times("F")); // F is the chapter's older name for d
+    case 'D': return pick("F", call("F", -d.length), [&](double x) { return call("F", x * d.length / 100); });
+    case 'm': return pick("f", call("f", -d.length), times("f"));
+    case 'M': return pick("f", call("f", -d.length), [&](double x) { return call("f", x * d.length / 100); });
+    // Clockwise as seen from the tip of the axis: about Forward is roll right,
+    // about Up turn right, about Right pitch down (ABOP / \, - +, & ^).
+    case 'f': return pick("/", "\\", times("/"));
+    case 'u': return pick("-", "+", times("-"));
+    case 'r': return pick("&", "^", times("&"));
+    case '+': return plain("-"); // plantlang turns right on '+', ABOP left
+    case '-': return plain("+");
+    case 't': return pick(call("@Wa", d.thicknessIncrement), call("@Wa", -d.thicknessIncrement), times("!"));
+    case 'T': return pick(call("@Wm", d.thicknessFactor), call("@Wm", 1 / d.thicknessFactor), times("@Wm"));
+    case 'o':
+    case 'O': return pick("@O", "@Oc", times("@O")); // sphere; '<' an unfilled circle
+    case 'c': return pick(";", call("@Ca", -1), times(";"));
+    case 'a': return pick(call("@Aa", d.angleIncrement), call("@Aa", -d.angleIncrement), times("@As"));
+    case 'A': return pick(call("@Am", d.angleFactor), call("@Am", 1 / d.angleFactor), times("@Am"));
+    case 'l': return pick(call("@La", d.lengthIncrement), call("@La", -d.lengthIncrement), times("@Ls"));
+    case 'L': return pick(call("@Lm", d.lengthFactor), call("@Lm", 1 / d.lengthFactor), times("@Lm"));
+    case '[':
+    case ']':
+    case '{':
+    case '}':
+    case '.': return plain(std::string(1, c));
+    default: return plain(std::string(1, c)); // a variable such as X, Y, Z
     }
 }
 
-bool isCommand(char c) { return std::isalpha(static_cast<unsigned char>(c)) || (c != '\0' && std::strchr("+-[]{}.", c)); }
+bool isCommand(char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) || (c != '\0' && std::strchr("+-[]{}.", c));
+}
 
 std::string lowerWords(std::string_view text) {
     std::string out;
@@ -125,7 +134,8 @@ struct Plantlang {
     std::string_view lineAt(size_t begin) const {
         std::string_view text = source.text;
         size_t end = text.find('\n', begin);
-        std::string_view line = text.substr(begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
+        std::string_view line =
+            text.substr(begin, end == std::string_view::npos ? std::string_view::npos : end - begin);
         if (line.ends_with('\r')) line.remove_suffix(1);
         return line;
     }
@@ -141,15 +151,21 @@ struct Plantlang {
         for (const Setting& candidate : kSettings)
             if (candidate.name == name) found = &candidate;
         if (!found) {
-            if (report) fail(begin + line.find_first_not_of(" \t"), "unknown setting '" + name + "'", "'Default angle', 'Default length', 'Default thickness', 'Number of iterations', 'Seed', or an increment or factor");
+            if (report)
+                fail(begin + line.find_first_not_of(" \t"), "unknown setting '" + name + "'",
+                     "'Default angle', 'Default length', 'Default thickness', 'Number of iterations', 'Seed', or an "
+                     "increment or factor");
             return std::nullopt;
         }
         std::string_view value = line.substr(separator + 1);
         size_t first = value.find_first_not_of(" \t");
         size_t last = value.find_last_not_of(" \t");
-        std::optional<double> number = first == std::string_view::npos ? std::nullopt : parseNumber(value.substr(first, last - first + 1));
+        std::optional<double> number =
+            first == std::string_view::npos ? std::nullopt : parseNumber(value.substr(first, last - first + 1));
         if (!number) {
-            if (report) fail(begin + separator + 1 + (first == std::string_view::npos ? 0 : first), "the value of '" + name + "' is not a number", "a number");
+            if (report)
+                fail(begin + separator + 1 + (first == std::string_view::npos ? 0 : first),
+                     "the value of '" + name + "' is not a number", "a number");
             return std::nullopt;
         }
         return std::make_pair(found, *number);
@@ -211,7 +227,7 @@ struct Plantlang {
     }
 
     void axiom(Scanner& s) {
-        s.identifier();  // "Axiom"
+        s.identifier(); // "Axiom"
         s.skipSpaces();
         s.accept("=") || s.accept(":");
         Statement st = out.start(s.pos);
@@ -227,16 +243,20 @@ struct Plantlang {
             size_t numberAt = s.pos;
             std::string_view digits = s.number();
             s.skipSpaces();
-            if (digits.empty() || !s.accept(")")) return fail(digits.empty() ? numberAt : s.pos, "malformed probability", "a number in parentheses such as (0.2)");
+            if (digits.empty() || !s.accept(")"))
+                return fail(digits.empty() ? numberAt : s.pos, "malformed probability",
+                            "a number in parentheses such as (0.2)");
             probability.copy(digits, numberAt);
             s.skipSpaces();
         }
         size_t predecessorAt = s.pos;
         if (!command(s, predecessor)) return;
         if (predecessor.text.find_first_of("( ") != std::string::npos)
-            return fail(predecessorAt, "a production must rewrite a letter or symbol without a value", "a variable such as X");
+            return fail(predecessorAt, "a production must rewrite a letter or symbol without a value",
+                        "a variable such as X");
         s.skipSpaces();
-        if (!s.accept("=>") && !s.accept("-->") && !s.accept("->")) return fail(s.pos, "missing arrow after the predecessor", "'=>'");
+        if (!s.accept("=>") && !s.accept("-->") && !s.accept("->"))
+            return fail(s.pos, "missing arrow after the predecessor", "'=>'");
         Statement successor;
         if (!commands(s, successor)) return;
         st.append(predecessor);
@@ -260,7 +280,8 @@ struct Plantlang {
             if (lineAt(begin).find_first_not_of(" \t") != std::string_view::npos) lines.push_back(begin);
         // Settings first: commands anywhere in the file use the defaults.
         for (size_t begin : lines)
-            if (auto found = setting(begin, false); found && found->first->value) defaults.*(found->first->value) = found->second;
+            if (auto found = setting(begin, false); found && found->first->value)
+                defaults.*(found->first->value) = found->second;
         for (size_t begin : lines) {
             std::string_view line = lineAt(begin);
             Scanner s{source, begin};
@@ -273,14 +294,15 @@ struct Plantlang {
             else if (separator != std::string_view::npos)
                 settingLine(begin);
             else
-                fail(s.pos, "unrecognised line", "'Axiom = ...', a production 'X => ...' or a setting 'Default angle = 30'");
+                fail(s.pos, "unrecognised line",
+                     "'Axiom = ...', a production 'X => ...' or a setting 'Default angle = 30'");
         }
         return out.finish(std::move(diagnostics));
     }
 };
 
-}  // namespace
+} // namespace
 
 Translation translatePlantlang(const Source& source) { return Plantlang{source}.run(); }
 
-}  // namespace lsys
+} // namespace lsys

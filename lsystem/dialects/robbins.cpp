@@ -18,32 +18,48 @@ namespace {
 
 struct SymbolRule {
     std::string_view robbins;
-    std::string_view bare;       // native text for the module without a value
-    std::string_view withValue;  // native name taking the value; empty: no value allowed
+    std::string_view bare;      // native text for the module without a value
+    std::string_view withValue; // native name taking the value; empty: no value allowed
 };
 
 constexpr std::array kRules = {
-    SymbolRule{"+", "+", "+"},        SymbolRule{"-", "-", "-"},      SymbolRule{"&", "&", "&"},
-    SymbolRule{"^", "^", "^"},        SymbolRule{"<", "\\", "\\"},    SymbolRule{">", "/", "/"},
-    SymbolRule{"|", "|", ""},         SymbolRule{"%", "/(180)", ""},  SymbolRule{"$", "$", ""},
-    SymbolRule{"[", "[", ""},         SymbolRule{"]", "]", ""},
-    SymbolRule{"{", "[ {", ""},       SymbolRule{"}", "} ]", ""},  // a polygon saves and restores the turtle
-    SymbolRule{"\"", "@Lm(1.1)", "@Lm"}, SymbolRule{"'", "@Lm(0.9)", "@Lm"},
-    SymbolRule{";", "@Am(1.1)", "@Am"},  SymbolRule{":", "@Am(0.9)", "@Am"},
-    SymbolRule{"?", "@Wm(1.4)", "@Wm"},  SymbolRule{"!", "@Wm(0.7)", "@Wm"},
-    SymbolRule{"t", "@Ts(0.2)", "@Ts"},  // gravity
+    SymbolRule{"+", "+", "+"},
+    SymbolRule{"-", "-", "-"},
+    SymbolRule{"&", "&", "&"},
+    SymbolRule{"^", "^", "^"},
+    SymbolRule{"<", "\\", "\\"},
+    SymbolRule{">", "/", "/"},
+    SymbolRule{"|", "|", ""},
+    SymbolRule{"%", "/(180)", ""},
+    SymbolRule{"$", "$", ""},
+    SymbolRule{"[", "[", ""},
+    SymbolRule{"]", "]", ""},
+    SymbolRule{"{", "[ {", ""},
+    SymbolRule{"}", "} ]", ""}, // a polygon saves and restores the turtle
+    SymbolRule{"\"", "@Lm(1.1)", "@Lm"},
+    SymbolRule{"'", "@Lm(0.9)", "@Lm"},
+    SymbolRule{";", "@Am(1.1)", "@Am"},
+    SymbolRule{":", "@Am(0.9)", "@Am"},
+    SymbolRule{"?", "@Wm(1.4)", "@Wm"},
+    SymbolRule{"!", "@Wm(0.7)", "@Wm"},
+    SymbolRule{"t", "@Ts(0.2)", "@Ts"}, // gravity
 };
 
 struct Setting {
     std::string_view keyword;
     int values;
-    std::string_view native;  // header written with the value; empty: kept as a comment
+    std::string_view native; // header written with the value; empty: kept as a comment
 };
 
 constexpr std::array kSettings = {
-    Setting{"iterations", 1, "derivation length: "}, Setting{"angle", 1, "angle: "},   Setting{"length", 1, "step: "},
-    Setting{"thickness", 1, "width: "},             Setting{"startpoint", 3, ""},      Setting{"forward", 3, ""},
-    Setting{"left", 3, ""},                         Setting{"up", 3, ""},
+    Setting{"iterations", 1, "derivation length: "},
+    Setting{"angle", 1, "angle: "},
+    Setting{"length", 1, "step: "},
+    Setting{"thickness", 1, "width: "},
+    Setting{"startpoint", 3, ""},
+    Setting{"forward", 3, ""},
+    Setting{"left", 3, ""},
+    Setting{"up", 3, ""},
 };
 
 struct Robbins {
@@ -127,7 +143,8 @@ struct Robbins {
             if (candidate.robbins == name) rule = &candidate;
         bool hasValue = s.peek() == '(';
         if (!rule && !isIdentifierStart(name[0])) {
-            fail(at, std::string("unknown symbol '").append(name) + "'", "a name or one of + - & ^ < > | % $ [ ] { } \" ' ; : ? ! t");
+            fail(at, std::string("unknown symbol '").append(name) + "'",
+                 "a name or one of + - & ^ < > | % $ [ ] { } \" ' ; : ? ! t");
             return false;
         }
         if (!into.text.empty()) into.emit(" ", at);
@@ -150,7 +167,7 @@ struct Robbins {
         while (true) {
             s.skipWhitespace();
             if (s.atEnd() || atProduction(s)) return true;
-            if (size_t at = s.pos; s.accept("-->")) {  // read as the symbols - - > it would hide a typo
+            if (size_t at = s.pos; s.accept("-->")) { // read as the symbols - - > it would hide a typo
                 fail(at, "'-->' without a production name", "NAME --> successor");
                 return false;
             }
@@ -174,8 +191,10 @@ struct Robbins {
         if (!s.atEnd() && !atProduction(s)) {
             Statement st = out.start(s.pos);
             st.emit("Axiom:", s.pos);
-            if (modules(s, st)) out.add(std::move(st));
-            else recover(s);
+            if (modules(s, st))
+                out.add(std::move(st));
+            else
+                recover(s);
         }
         while (true) {
             s.skipWhitespace();
@@ -201,8 +220,8 @@ struct Robbins {
     }
 };
 
-}  // namespace
+} // namespace
 
 Translation translateRobbins(const Source& source) { return Robbins{source}.run(); }
 
-}  // namespace lsys
+} // namespace lsys

@@ -26,7 +26,7 @@ TEST(DetectDialect, HeaderLineForms) {
 TEST(DetectDialect, NativeWithoutAHeaderOnTheFirstNonBlankLine) {
     EXPECT_EQ(detectDialect(""), Dialect::Native);
     EXPECT_EQ(detectDialect("Axiom: F\nF --> FF\n"), Dialect::Native);
-    EXPECT_EQ(detectDialect("Axiom: F\ndialect: robbins\n"), Dialect::Native);  // not the first line
+    EXPECT_EQ(detectDialect("Axiom: F\ndialect: robbins\n"), Dialect::Native); // not the first line
     EXPECT_EQ(detectDialect("dialect: klingon\n"), Dialect::Native);
     EXPECT_EQ(detectDialect("dialect: robbins extra\n"), Dialect::Native);
 }
@@ -34,8 +34,8 @@ TEST(DetectDialect, NativeWithoutAHeaderOnTheFirstNonBlankLine) {
 // parseDialect without a dialect: what lsys and loadDialectFile do with a file.
 TEST(DetectDialect, TheHeaderLineSelectsTheTranslator) {
     EXPECT_TRUE(parseDialect(std::nullopt, "\n// dialect: crankshaw\n#w : A;\n").ok());
-    EXPECT_FALSE(parseDialect(std::nullopt, "#w : A;\n").ok());  // native without a header: '#w' is no directive
-    EXPECT_TRUE(parseDialect(Dialect::Crankshaw, "#w : A;\n").ok());  // a given dialect needs no header
+    EXPECT_FALSE(parseDialect(std::nullopt, "#w : A;\n").ok());      // native without a header: '#w' is no directive
+    EXPECT_TRUE(parseDialect(Dialect::Crankshaw, "#w : A;\n").ok()); // a given dialect needs no header
 }
 
 TEST(DetectDialect, UnknownOrMisplacedHeaderIsAnError) {
@@ -53,5 +53,5 @@ TEST(DetectDialect, NativeFileWithHeaderParses) {
     EXPECT_EQ(deriveSteps(grammar, 2).size(), 4u);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

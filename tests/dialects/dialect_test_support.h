@@ -44,4 +44,4 @@ inline std::map<std::string, size_t> countsOf(const ModuleString& string, const 
     return counts;
 }
 
-}  // namespace lsys::test
+} // namespace lsys::test

@@ -14,7 +14,7 @@ struct ErrorCase {
     const char* source;
     int line;
     int column;
-    const char* message;  // a part of the first diagnostic's message
+    const char* message; // a part of the first diagnostic's message
 };
 
 class DialectErrors : public ::testing::TestWithParam<ErrorCase> {};
@@ -33,22 +33,24 @@ TEST_P(DialectErrors, ReportedAtTheOriginalPosition) {
 
 INSTANTIATE_TEST_SUITE_P(
     Crankshaw, DialectErrors,
-    ::testing::Values(ErrorCase{Dialect::Crankshaw, "#n 6;", 1, 4, "unexpected '6'"},
-                      ErrorCase{Dialect::Crankshaw, "#w : A;\n#w : A(1;", 2, 9, "malformed parameter list"},
-                      ErrorCase{Dialect::Crankshaw, "#w : A;\n\n#p1 : A : * B;", 3, 13, "unexpected 'B'"},
-                      ErrorCase{Dialect::Crankshaw, "#w : A; #p1 : A B : * : C;", 1, 19, "a predecessor is one module"},
-                      ErrorCase{Dialect::Crankshaw, "#define : 5;", 1, 9, "missing constant name"},
-                      ErrorCase{Dialect::Crankshaw, "#w : A; x", 1, 9, "unexpected 'x'"},
-                      ErrorCase{Dialect::Crankshaw, "#w : A;\n#p1 : A(x+1) : * : B;", 2, 10, "malformed parameter list"},
-                      ErrorCase{Dialect::Crankshaw, "#w : {1,2};", 1, 6, "unexpected '{'"},
-                      ErrorCase{Dialect::Crankshaw, "#define r {1, 2;", 1, 16, "unclosed random range"},
-                      ErrorCase{Dialect::Crankshaw, "#foo", 1, 5, "statement ends early"},
-                      ErrorCase{Dialect::Crankshaw, "#w : A; #define a 1; /* unclosed", 1, 22, "comment"},
-                      // Found by the native parser in the translation, moved back to the dialect text:
-                      ErrorCase{Dialect::Crankshaw, "#q : A : ~0.5 : B;\n#w : A;", 1, 6, "sum to 0.5"},
-                      ErrorCase{Dialect::Crankshaw, "#n = 2; #define a 1;\n#w : A(a);\n#p1 : A(x) : * : B(x +);", 3, 23, "unexpected ')'"},
-                      ErrorCase{Dialect::Crankshaw, "#w : ab;\n#p1 : ab : * : ab(q);", 2, 19, "q"},
-                      ErrorCase{Dialect::Crankshaw, "#n = 2;\n#w : A;\n\n  #p1 : A : x > 1 : B;", 4, 13, "unknown name 'x'"}));
+    ::testing::Values(
+        ErrorCase{Dialect::Crankshaw, "#n 6;", 1, 4, "unexpected '6'"},
+        ErrorCase{Dialect::Crankshaw, "#w : A;\n#w : A(1;", 2, 9, "malformed parameter list"},
+        ErrorCase{Dialect::Crankshaw, "#w : A;\n\n#p1 : A : * B;", 3, 13, "unexpected 'B'"},
+        ErrorCase{Dialect::Crankshaw, "#w : A; #p1 : A B : * : C;", 1, 19, "a predecessor is one module"},
+        ErrorCase{Dialect::Crankshaw, "#define : 5;", 1, 9, "missing constant name"},
+        ErrorCase{Dialect::Crankshaw, "#w : A; x", 1, 9, "unexpected 'x'"},
+        ErrorCase{Dialect::Crankshaw, "#w : A;\n#p1 : A(x+1) : * : B;", 2, 10, "malformed parameter list"},
+        ErrorCase{Dialect::Crankshaw, "#w : {1,2};", 1, 6, "unexpected '{'"},
+        ErrorCase{Dialect::Crankshaw, "#define r {1, 2;", 1, 16, "unclosed random range"},
+        ErrorCase{Dialect::Crankshaw, "#foo", 1, 5, "statement ends early"},
+        ErrorCase{Dialect::Crankshaw, "#w : A; #define a 1; /* unclosed", 1, 22, "comment"},
+        // Found by the native parser in the translation, moved back to the dialect text:
+        ErrorCase{Dialect::Crankshaw, "#q : A : ~0.5 : B;\n#w : A;", 1, 6, "sum to 0.5"},
+        ErrorCase{Dialect::Crankshaw, "#n = 2; #define a 1;\n#w : A(a);\n#p1 : A(x) : * : B(x +);", 3, 23,
+                  "unexpected ')'"},
+        ErrorCase{Dialect::Crankshaw, "#w : ab;\n#p1 : ab : * : ab(q);", 2, 19, "q"},
+        ErrorCase{Dialect::Crankshaw, "#n = 2;\n#w : A;\n\n  #p1 : A : x > 1 : B;", 4, 13, "unknown name 'x'"}));
 
 INSTANTIATE_TEST_SUITE_P(
     Robbins, DialectErrors,
@@ -78,9 +80,12 @@ INSTANTIATE_TEST_SUITE_P(
 // Every prefix of every data file, and random corruptions of them, in every
 // dialect: the translators and the parser must return, whatever the input.
 TEST(DialectRobustness, TruncatedAndCorruptedFilesNeverCrash) {
-    const char* files[] = {"plants/dialects/tree_7_1.crankshaw", "plants/dialects/gravity_tree_2d.crankshaw",
-                           "plants/dialects/robbins_first_example.robbins", "plants/dialects/robbins_sample_a.robbins",
-                           "plants/dialects/fig38_tree.plantlang", "plants/dialects/stochastic_bush.plantlang"};
+    const char* files[] = {"plants/dialects/tree_7_1.crankshaw",
+                           "plants/dialects/gravity_tree_2d.crankshaw",
+                           "plants/dialects/robbins_first_example.robbins",
+                           "plants/dialects/robbins_sample_a.robbins",
+                           "plants/dialects/fig38_tree.plantlang",
+                           "plants/dialects/stochastic_bush.plantlang"};
     const char alphabet[] = "#;:~{}(),<>-=+[]!'\"?$%|. \n\tAFXab01\x80\xff";
     std::mt19937 random(1);
     size_t inputs = 0;
@@ -90,7 +95,8 @@ TEST(DialectRobustness, TruncatedAndCorruptedFilesNeverCrash) {
         ASSERT_TRUE(readable) << file;
         for (size_t length = 0; length <= text.size(); length += 3) {
             std::string input = text.substr(0, length);
-            if (!input.empty() && length % 2 == 0) input[random() % input.size()] = alphabet[random() % (sizeof alphabet - 1)];
+            if (!input.empty() && length % 2 == 0)
+                input[random() % input.size()] = alphabet[random() % (sizeof alphabet - 1)];
             for (Dialect dialect : {Dialect::Crankshaw, Dialect::Robbins, Dialect::Plantlang}) {
                 ParseResult result = parseDialect(dialect, input);
                 for (const Diagnostic& diagnostic : result.diagnostics) EXPECT_GE(diagnostic.line, 1) << input;
@@ -124,5 +130,5 @@ TEST(DialectRobustness, DeeplyNestedRangesAreAnErrorNotAStackOverflow) {
     EXPECT_NE(result.diagnostics.front().message.find("nested too deeply"), std::string::npos);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

@@ -26,9 +26,10 @@ TEST_P(DialectTwins, DeriveTheSameString) {
     std::string expected = toString(deriveSteps(native, twin.steps, twin.seed), native.symbols);
     std::string actual = toString(deriveSteps(dialect, twin.steps, twin.seed), dialect.symbols);
     EXPECT_GT(expected.size(), 0u);
-    size_t differ = std::mismatch(actual.begin(), actual.end(), expected.begin(), expected.end()).first - actual.begin();
-    EXPECT_EQ(actual, expected) << "first difference at " << differ << ": '" << actual.substr(differ, 60) << "' instead of '"
-                                << expected.substr(differ, 60) << "'";
+    size_t differ =
+        std::mismatch(actual.begin(), actual.end(), expected.begin(), expected.end()).first - actual.begin();
+    EXPECT_EQ(actual, expected) << "first difference at " << differ << ": '" << actual.substr(differ, 60)
+                                << "' instead of '" << expected.substr(differ, 60) << "'";
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -44,7 +45,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Twin{"plants/dialects/tree_7_1.crankshaw", "plants/dialects/tree_7_1.lsys", 6, 0},
                       Twin{"plants/dialects/pine_tree_7_3.crankshaw", "plants/dialects/pine_tree_7_3.lsys", 5, 0},
                       Twin{"plants/dialects/robbins_sample_a.robbins", "plants/dialects/robbins_sample_a.lsys", 11, 0},
-                      Twin{"plants/dialects/robbins_first_example.robbins", "plants/dialects/robbins_first_example.lsys", 4, 0},
+                      Twin{"plants/dialects/robbins_first_example.robbins",
+                           "plants/dialects/robbins_first_example.lsys", 4, 0},
                       Twin{"plants/dialects/fig38_tree.plantlang", "plants/dialects/fig38_tree.lsys", 12, 0},
                       Twin{"plants/dialects/stochastic_bush.plantlang", "plants/dialects/stochastic_bush.lsys", 5, 3}),
     [](const auto& info) {
@@ -90,5 +92,5 @@ TEST(PlantlangReference, Fig38SettingsAndFCount) {
     EXPECT_EQ(counts["X"], 729u);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

@@ -1,8 +1,7 @@
 // Writes the glTF files that the GltfValidator ctest hands to the Khronos
 // glTF-Validator: samplePlant() and helixPlant() flat and sampleGraph()
-// instanced, in both segment geometries as .gltf and .glb, an empty plant, and in broken/ a file the validator must reject (so the
-// test is seen to be able to fail).
-// Usage: export_samples DIR
+// instanced, in both segment geometries as .gltf and .glb, an empty plant, and in broken/ a file the validator must
+// reject (so the test is seen to be able to fail). Usage: export_samples DIR
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -47,7 +46,7 @@ void exportFlat(const lsys::PlantAsset& plant, const fs::path& prefix) {
     });
 }
 
-}  // namespace
+} // namespace
 
 int main(int argc, char** argv) {
     if (argc != 2) {

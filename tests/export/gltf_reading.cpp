@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
 #include <gtest/gtest.h>
 
@@ -19,7 +19,8 @@ std::vector<T> accessorValues(const tinygltf::Model& model, int index) {
     const tinygltf::Accessor& accessor = model.accessors.at(size_t(index));
     const tinygltf::BufferView& view = model.bufferViews.at(size_t(accessor.bufferView));
     const size_t stride = view.byteStride ? view.byteStride : sizeof(T);
-    const unsigned char* data = model.buffers.at(size_t(view.buffer)).data.data() + view.byteOffset + accessor.byteOffset;
+    const unsigned char* data =
+        model.buffers.at(size_t(view.buffer)).data.data() + view.byteOffset + accessor.byteOffset;
     std::vector<T> values(accessor.count);
     for (size_t i = 0; i < accessor.count; ++i) std::memcpy(&values[i], data + i * stride, sizeof(T));
     return values;
@@ -27,10 +28,13 @@ std::vector<T> accessorValues(const tinygltf::Model& model, int index) {
 
 glm::mat4 localMatrix(const tinygltf::Node& node) {
     glm::mat4 m(1.0f);
-    if (node.translation.size() == 3) m[3] = glm::vec4(node.translation[0], node.translation[1], node.translation[2], 1.0f);
+    if (node.translation.size() == 3)
+        m[3] = glm::vec4(node.translation[0], node.translation[1], node.translation[2], 1.0f);
     if (node.rotation.size() == 4)
-        m = m * glm::mat4_cast(glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]), float(node.rotation[2])));
-    if (node.scale.size() == 3) m = m * glm::scale(glm::mat4(1.0f), glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
+        m = m * glm::mat4_cast(glm::quat(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]),
+                                         float(node.rotation[2])));
+    if (node.scale.size() == 3)
+        m = m * glm::scale(glm::mat4(1.0f), glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
     return m;
 }
 
@@ -47,12 +51,13 @@ void collect(const tinygltf::Model& model, int nodeIndex, const glm::mat4& paren
     for (int child : node.children) collect(model, child, world, corners);
 }
 
-}  // namespace
+} // namespace
 
 void ExportDirTest::SetUp() {
-    dir = std::filesystem::temp_directory_path() /
-          ("plantfield_export_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->test_suite_name()) + "_" +
-           testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir =
+        std::filesystem::temp_directory_path() /
+        ("plantfield_export_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->test_suite_name()) +
+         "_" + testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
 }
@@ -71,7 +76,8 @@ tinygltf::Model loadGltf(const std::filesystem::path& path) {
 
 std::vector<glm::vec3> sceneTriangleCorners(const tinygltf::Model& model) {
     std::vector<glm::vec3> corners;
-    for (int root : model.scenes.at(size_t(std::max(model.defaultScene, 0))).nodes) collect(model, root, glm::mat4(1.0f), corners);
+    for (int root : model.scenes.at(size_t(std::max(model.defaultScene, 0))).nodes)
+        collect(model, root, glm::mat4(1.0f), corners);
     return corners;
 }
 
@@ -90,11 +96,16 @@ ObjCounts readObj(const std::filesystem::path& path) {
         if (tag == "v") {
             glm::vec3& p = positions.emplace_back();
             fields >> p.x >> p.y >> p.z;
-        } else if (tag == "vt") ++counts.uvs;
-        else if (tag == "vn") ++counts.normals;
-        else if (tag == "o") counts.objects.emplace_back(line.substr(2));
-        else if (tag == "usemtl") counts.materials.emplace_back(line.substr(7));
-        else if (tag == "mtllib") counts.mtllib = line.substr(7);
+        } else if (tag == "vt")
+            ++counts.uvs;
+        else if (tag == "vn")
+            ++counts.normals;
+        else if (tag == "o")
+            counts.objects.emplace_back(line.substr(2));
+        else if (tag == "usemtl")
+            counts.materials.emplace_back(line.substr(7));
+        else if (tag == "mtllib")
+            counts.mtllib = line.substr(7);
         else if (tag == "f") {
             ++counts.triangles;
             for (std::string corner; fields >> corner;) counts.corners.push_back(positions.at(std::stoul(corner) - 1));
@@ -104,4 +115,4 @@ ObjCounts readObj(const std::filesystem::path& path) {
     return counts;
 }
 
-}  // namespace plantfield::test
+} // namespace plantfield::test

@@ -41,4 +41,4 @@ struct ObjCounts {
 };
 ObjCounts readObj(const std::filesystem::path& path);
 
-}  // namespace plantfield::test
+} // namespace plantfield::test

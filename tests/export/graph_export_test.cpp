@@ -26,7 +26,8 @@ using plantfield::test::sceneTriangleCorners;
 
 using GraphExport = plantfield::test::ExportDirTest;
 
-lsys::InstanceGraph graphOfFile(const std::string& file, std::optional<int> steps, const lsys::SurfaceLibrary& surfaces) {
+lsys::InstanceGraph graphOfFile(const std::string& file, std::optional<int> steps,
+                                const lsys::SurfaceLibrary& surfaces) {
     const lsys::Grammar grammar = lsys::test::loadOk(file);
     lsys::BGrammarOptions options;
     options.steps = steps;
@@ -42,7 +43,8 @@ size_t objectsThatDraw(const lsys::InstanceGraph& graph) {
         count += std::any_of(items.begin(), items.end(), [&](const lsys::GraphItem& item) {
             if (item.kind != lsys::GraphItem::Kind::Primitive) return false;
             const lsys::GraphPrimitive& p = graph.primitives[item.index];
-            return lsys::isDrawable(lsys::Primitive{p.frame, p.kind, p.material, -1, p.shape, p.length, p.startRadius, p.endRadius});
+            return lsys::isDrawable(
+                lsys::Primitive{p.frame, p.kind, p.material, -1, p.shape, p.length, p.startRadius, p.endRadius});
         });
     }
     return count;
@@ -53,13 +55,14 @@ void expectSampledCornersIn(const std::vector<glm::vec3>& from, const std::vecto
                             size_t samples = 40) {
     const size_t step = std::max<size_t>(1, from.size() / samples);
     for (size_t i = 0; i < from.size(); i += step)
-        ASSERT_TRUE(containsPoint(in, from[i], tolerance)) << "corner " << i << ": " << from[i].x << ' ' << from[i].y << ' ' << from[i].z;
+        ASSERT_TRUE(containsPoint(in, from[i], tolerance))
+            << "corner " << i << ": " << from[i].x << ' ' << from[i].y << ' ' << from[i].z;
 }
 
 // Exports the graph and its flattened plant with the same geometry and
 // compares what they draw.
-void expectSameDrawingAsFlat(const lsys::InstanceGraph& graph, const lsys::SurfaceLibrary& surfaces, const fs::path& dir,
-                             const lsys::GraphExportOptions& options = {}) {
+void expectSameDrawingAsFlat(const lsys::InstanceGraph& graph, const lsys::SurfaceLibrary& surfaces,
+                             const fs::path& dir, const lsys::GraphExportOptions& options = {}) {
     const lsys::GraphExportSummary summary = lsys::exportInstanceGraph(graph, surfaces, dir / "graph.glb", options);
     lsys::ExportOptions flatOptions;
     flatOptions.segments = options.segments;
@@ -78,7 +81,8 @@ void expectSameDrawingAsFlat(const lsys::InstanceGraph& graph, const lsys::Surfa
         EXPECT_EQ(instanced.materials[m].name, flat.materials[m].name);
         EXPECT_EQ(instanced.materials[m].doubleSided, flat.materials[m].doubleSided);
     }
-    const std::vector<glm::vec3> graphCorners = sceneTriangleCorners(instanced), flatCorners = sceneTriangleCorners(flat);
+    const std::vector<glm::vec3> graphCorners = sceneTriangleCorners(instanced),
+                                 flatCorners = sceneTriangleCorners(flat);
     ASSERT_EQ(graphCorners.size(), flatCorners.size()); // the same triangles drawn
     expectSampledCornersIn(graphCorners, flatCorners, 1e-4f);
     expectSampledCornersIn(flatCorners, graphCorners, 1e-4f);
@@ -86,8 +90,8 @@ void expectSameDrawingAsFlat(const lsys::InstanceGraph& graph, const lsys::Surfa
 
 TEST_F(GraphExport, DataPlantsDrawWhatTheFlatFormDraws) {
     const std::pair<const char*, std::optional<int>> plants[] = {
-        {"plants/fractal_bush.lsys", 4},           // one object draws, shared by 512 nodes
-        {"plants/monopodial_tree.lsys", std::nullopt}, // `$` and widths
+        {"plants/fractal_bush.lsys", 4},                              // one object draws, shared by 512 nodes
+        {"plants/monopodial_tree.lsys", std::nullopt},                // `$` and widths
         {"plants/dialects/robbins_first_example.lsys", std::nullopt}, // polygons
         {"plants/stochastic_bush.lsys", std::nullopt},
     };
@@ -114,7 +118,8 @@ TEST_F(GraphExport, GeneralizedCylindersWithoutCapsDrawTheSameTriangles) {
     flatOptions.segments = options.segments;
     flatOptions.detail = options.detail;
     lsys::exportPlant(lsys::flatten(graph), dir / "flat.gltf", flatOptions);
-    EXPECT_EQ(sceneTriangleCorners(loadGltf(dir / "graph.gltf")).size(), sceneTriangleCorners(loadGltf(dir / "flat.gltf")).size());
+    EXPECT_EQ(sceneTriangleCorners(loadGltf(dir / "graph.gltf")).size(),
+              sceneTriangleCorners(loadGltf(dir / "flat.gltf")).size());
 }
 
 // Each instance is a node placed by its own transform below its parent's,
@@ -177,4 +182,4 @@ TEST_F(GraphExport, ObjIsRefused) {
     EXPECT_TRUE(fs::is_empty(dir));
 }
 
-}  // namespace
+} // namespace

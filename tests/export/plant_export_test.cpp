@@ -178,4 +178,4 @@ TEST_F(ExportFiles, InconsistentAssetIsRefusedAndTheOldFileKept) {
     EXPECT_EQ(fs::file_size(dir / "plant.gltf"), before);
 }
 
-}  // namespace
+} // namespace

@@ -36,7 +36,8 @@ double enclosedVolume(const TriangleMesh& mesh) {
     double volume = 0.0;
     for (size_t t = 0; t < mesh.indices.size(); t += 3)
         volume += glm::dot(mesh.positions[mesh.indices[t]],
-                           glm::cross(mesh.positions[mesh.indices[t + 1]], mesh.positions[mesh.indices[t + 2]])) / 6.0;
+                           glm::cross(mesh.positions[mesh.indices[t + 1]], mesh.positions[mesh.indices[t + 2]])) /
+                  6.0;
     return volume;
 }
 
@@ -108,7 +109,8 @@ TEST(ExportPolygonMesh, NonConvexOutlineIsTriangulatedInsideIt) {
         // Every triangle faces the normal and together they cover exactly
         // the L's area: no overlap, nothing outside.
         for (size_t t = 0; t < mesh.indices.size(); t += 3) {
-            TriangleMesh one{mesh.positions, mesh.normals, mesh.uvs, {mesh.indices.begin() + t, mesh.indices.begin() + t + 3}};
+            TriangleMesh one{
+                mesh.positions, mesh.normals, mesh.uvs, {mesh.indices.begin() + t, mesh.indices.begin() + t + 3}};
             EXPECT_GT(signedAreaAlong(one, normal), 0.0);
         }
         EXPECT_NEAR(signedAreaAlong(mesh, normal), 3.0, 1e-5);
@@ -151,7 +153,8 @@ TEST(ExportSegmentChains, MaterialChangeStartsANewChain) {
     plant.primitives[1].material = 2;
     const std::vector<lsys::SegmentChain> chains = lsys::segmentChains(plant);
     ASSERT_EQ(chains.size(), 3u);
-    EXPECT_EQ(chains[0].primitives, (std::vector<uint32_t>{0, 3})); // the branch is now the straightest same-material child
+    EXPECT_EQ(chains[0].primitives,
+              (std::vector<uint32_t>{0, 3})); // the branch is now the straightest same-material child
     EXPECT_EQ(chains[1].primitives, (std::vector<uint32_t>{1}));
     EXPECT_EQ(chains[2].primitives, (std::vector<uint32_t>{2}));
 }
@@ -201,7 +204,8 @@ TEST(ExportGeneralizedCylinder, SingleSegmentMatchesTheSegmentMesh) {
                    lsys::frameMatrix(branch.frame));
     ASSERT_EQ(tube.vertexCount(), segment.vertexCount());
     ASSERT_EQ(tube.indices, segment.indices);
-    for (size_t i = 0; i < tube.positions.size(); ++i) EXPECT_NEAR(glm::distance(tube.positions[i], segment.positions[i]), 0.0f, 1e-6f);
+    for (size_t i = 0; i < tube.positions.size(); ++i)
+        EXPECT_NEAR(glm::distance(tube.positions[i], segment.positions[i]), 0.0f, 1e-6f);
 }
 
 TEST(ExportGeneralizedCylinder, WindingStemStaysOneTubeOfSteadyThickness) {
@@ -243,4 +247,4 @@ TEST(ExportMeshesByMaterial, BakesEveryDrawablePrimitive) {
     EXPECT_EQ(tubes[1].vertexCount(), frusta[1].vertexCount());
 }
 
-}  // namespace
+} // namespace

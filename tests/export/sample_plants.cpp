@@ -9,7 +9,8 @@
 namespace plantfield::test {
 namespace {
 
-void addSegment(lsys::PlantAsset& asset, int32_t parent, lsys::Frame frame, float length, float startRadius, float endRadius) {
+void addSegment(lsys::PlantAsset& asset, int32_t parent, lsys::Frame frame, float length, float startRadius,
+                float endRadius) {
     const auto joint = int32_t(asset.joints.size());
     asset.joints.push_back({parent, frame, length, startRadius, endRadius, 0.0f});
     asset.primitives.push_back({frame, lsys::PrimitiveKind::Segment, 0, joint, 0, length, startRadius, endRadius});
@@ -19,7 +20,7 @@ lsys::Frame turned(const glm::vec3& position, float degreesAboutZ) {
     return {position, glm::angleAxis(glm::radians(degreesAboutZ), glm::vec3(0, 0, 1))};
 }
 
-}  // namespace
+} // namespace
 
 glm::vec3 segmentTip(const lsys::PlantAsset& asset, size_t index) {
     const lsys::Primitive& p = asset.primitives.at(index);
@@ -36,15 +37,17 @@ lsys::PlantAsset samplePlant() {
     addSegment(asset, 0, turned(segmentTip(asset, 0), -45.0f), 0.5f, 0.03f, 0.03f);
     addSegment(asset, 3, turned(segmentTip(asset, 3), -45.0f), 0.2f, 0.0f, 0.0f);
 
-    asset.primitives.push_back({lsys::Frame{segmentTip(asset, 2)}, lsys::PrimitiveKind::Sphere, 0, 2, 0, 0.0f, 0.05f, 0.05f});
+    asset.primitives.push_back(
+        {lsys::Frame{segmentTip(asset, 2)}, lsys::PrimitiveKind::Sphere, 0, 2, 0, 0.0f, 0.05f, 0.05f});
 
-    asset.surfaces.push_back({"leaf", {{0, 0, 0}, {0.1f, 0.5f, 0}, {0, 1, 0}, {-0.1f, 0.5f, 0}}, {}, {}, {0, 1, 2, 0, 2, 3}});
+    asset.surfaces.push_back(
+        {"leaf", {{0, 0, 0}, {0.1f, 0.5f, 0}, {0, 1, 0}, {-0.1f, 0.5f, 0}}, {}, {}, {0, 1, 2, 0, 2, 3}});
     asset.primitives.push_back({turned(segmentTip(asset, 3), -90.0f), lsys::PrimitiveKind::Surface, 1, 3, 0, 0.3f});
     asset.primitives.push_back({turned(segmentTip(asset, 1), 90.0f), lsys::PrimitiveKind::Surface, 1, 1, 0, 0.3f});
 
     const glm::vec3 corner = segmentTip(asset, 2);
-    asset.polygons.push_back({{corner, corner + glm::vec3(2, 0, 0), corner + glm::vec3(2, 1, 0), corner + glm::vec3(1, 1, 0),
-                               corner + glm::vec3(1, 2, 0), corner + glm::vec3(0, 2, 0)}});
+    asset.polygons.push_back({{corner, corner + glm::vec3(2, 0, 0), corner + glm::vec3(2, 1, 0),
+                               corner + glm::vec3(1, 1, 0), corner + glm::vec3(1, 2, 0), corner + glm::vec3(0, 2, 0)}});
     asset.primitives.push_back({lsys::Frame{corner}, lsys::PrimitiveKind::Polygon, 1, 2, 0});
     return asset;
 }
@@ -55,7 +58,8 @@ lsys::PlantAsset helixPlant(int segments) {
     const glm::quat turn = glm::angleAxis(glm::radians(25.0f), glm::normalize(glm::vec3(1, 0.3f, 0.5f)));
     lsys::Frame frame;
     for (int i = 0; i < segments; ++i) {
-        const float start = 0.1f * float(segments - i) / float(segments), end = 0.1f * float(segments - i - 1) / float(segments);
+        const float start = 0.1f * float(segments - i) / float(segments),
+                    end = 0.1f * float(segments - i - 1) / float(segments);
         addSegment(asset, i - 1, frame, 0.2f, start, end);
         frame = {segmentTip(asset, size_t(i)), frame.rotation * turn};
     }
@@ -75,4 +79,4 @@ lsys::InstanceGraph sampleGraph() {
     return lsys::buildInstanceGraph(lsys::buildBGrammar(parsed.grammar, options), parsed.grammar);
 }
 
-}  // namespace plantfield::test
+} // namespace plantfield::test

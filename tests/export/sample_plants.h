@@ -28,4 +28,4 @@ glm::vec3 segmentTip(const lsys::PlantAsset& asset, size_t index);
 // each other three levels deep (exact, from the built-in surfaces).
 lsys::InstanceGraph sampleGraph();
 
-}  // namespace plantfield::test
+} // namespace plantfield::test

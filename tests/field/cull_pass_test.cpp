@@ -87,12 +87,11 @@ gpu::FieldInstance makeInstance(glm::vec3 position, float yaw, float scale, uint
 bool ambiguous(const gpu::FieldInstance& inst, const gpu::PlantModel& model, const gpu::CullUniforms& u) {
     const double yaw = inst.orientation.x, c = std::cos(yaw), s = std::sin(yaw), scale = inst.positionScale.w;
     const glm::dvec3 local = glm::dvec3(model.sphere) * scale;
-    const glm::dvec3 centre = glm::dvec3(inst.positionScale) + glm::dvec3(c * local.x + s * local.z, local.y,
-                                                                           -s * local.x + c * local.z);
+    const glm::dvec3 centre =
+        glm::dvec3(inst.positionScale) + glm::dvec3(c * local.x + s * local.z, local.y, -s * local.x + c * local.z);
     const double radius = model.sphere.w * scale;
     for (const glm::vec4& p : u.frustum)
-        if (std::abs(glm::dot(glm::dvec3(p), centre) + p.w + radius) < 1e-4 * (1.0 + glm::length(centre)))
-            return true;
+        if (std::abs(glm::dot(glm::dvec3(p), centre) + p.w + radius) < 1e-4 * (1.0 + glm::length(centre))) return true;
     const double pixels = 2.0 * radius * u.camera.w / std::max(glm::distance(glm::dvec3(u.camera), centre), 0.001);
     const double h = model.lod.z;
     for (double threshold : {double(model.lod.x), double(model.lod.y)})
@@ -224,7 +223,8 @@ protected:
             }
         const uint32_t templateCount = pass.templateCount;
         out.commands.resize(size_t(DRAW_CLASS_COUNT) * templateCount);
-        std::memcpy(out.commands.data(), bytes + commandsRegion.dstOffset, out.commands.size() * sizeof(gpu::DrawCommand));
+        std::memcpy(out.commands.data(), bytes + commandsRegion.dstOffset,
+                    out.commands.size() * sizeof(gpu::DrawCommand));
         out.allCommands.resize(templateCount);
         std::memcpy(out.allCommands.data(), bytes + allRegion.dstOffset, templateCount * sizeof(gpu::DrawCommand));
         out.state.resize(pass.instanceCount);
@@ -264,15 +264,16 @@ TEST(CullPlanes, FrustumPlanesBoundTheClipVolume) {
     const View v = kStart;
     const std::array<glm::vec4, 6> planes = frustumPlanes(viewProj(v));
     auto inside = [&](glm::vec3 p) {
-        return std::all_of(planes.begin(), planes.end(), [&](glm::vec4 pl) { return glm::dot(glm::vec3(pl), p) + pl.w >= 0; });
+        return std::all_of(planes.begin(), planes.end(),
+                           [&](glm::vec4 pl) { return glm::dot(glm::vec3(pl), p) + pl.w >= 0; });
     };
     for (const glm::vec4& pl : planes) EXPECT_NEAR(glm::length(glm::vec3(pl)), 1.0f, 1e-5f);
     EXPECT_TRUE(inside({0.0f, 1.7f, 10.0f}));
-    EXPECT_FALSE(inside({0.0f, 1.7f, -10.0f}));   // behind
-    EXPECT_FALSE(inside({0.0f, 1.7f, 0.05f}));    // before the near plane (0.1)
-    EXPECT_FALSE(inside({0.0f, 1.7f, 1001.0f}));  // past the far plane
-    EXPECT_FALSE(inside({30.0f, 1.7f, 10.0f}));   // left or right of a 16:9, 60° view
-    EXPECT_FALSE(inside({0.0f, 20.0f, 10.0f}));   // above
+    EXPECT_FALSE(inside({0.0f, 1.7f, -10.0f}));  // behind
+    EXPECT_FALSE(inside({0.0f, 1.7f, 0.05f}));   // before the near plane (0.1)
+    EXPECT_FALSE(inside({0.0f, 1.7f, 1001.0f})); // past the far plane
+    EXPECT_FALSE(inside({30.0f, 1.7f, 10.0f}));  // left or right of a 16:9, 60° view
+    EXPECT_FALSE(inside({0.0f, 20.0f, 10.0f}));  // above
     // The near plane passes 0.1 m in front of the camera.
     EXPECT_NEAR(glm::dot(glm::vec3(planes[4]), glm::vec3(0, 1.7f, 0.1f)) + planes[4].w, 0.0f, 1e-4f);
 }
@@ -294,8 +295,8 @@ TEST_F(CullPassTest, GpuListsEqualCpuListsOverFrames) {
         const CpuCullResult cpu = cullOnCpu(f.instances, f.models, frames[i], cpuState);
         ASSERT_EQ(gpuFrame.lists.size(), cpu.lists.size());
         for (size_t l = 0; l < cpu.lists.size(); ++l)
-            EXPECT_EQ(gpuFrame.lists[l], cpu.lists[l]) << "frame " << i << " model " << l / LOD_COUNT << " LOD "
-                                                       << l % LOD_COUNT;
+            EXPECT_EQ(gpuFrame.lists[l], cpu.lists[l])
+                << "frame " << i << " model " << l / LOD_COUNT << " LOD " << l % LOD_COUNT;
         EXPECT_EQ(gpuFrame.state, cpuState) << "frame " << i;
         for (uint32_t s : cpuState) fading += gpu::lodStateProgress(s) != LOD_STATE_SETTLED;
         if (i == 0) {
@@ -360,9 +361,7 @@ Field singlePlant() {
 }
 
 // Camera on the -z axis looking at the plant from `d` metres.
-gpu::CullUniforms viewFrom(float d, float dt, bool first) {
-    return uniformsFor({{0, 0, -d}, {0, 0, 0}}, dt, first);
-}
+gpu::CullUniforms viewFrom(float d, float dt, bool first) { return uniformsFor({{0, 0, -d}, {0, 0, 0}}, dt, first); }
 
 uint32_t lodOf(const GpuFrame& frame) {
     for (uint32_t lod = 0; lod < LOD_COUNT; ++lod)
@@ -489,8 +488,8 @@ TEST_F(CullPassTest, IndirectDrawsOfEveryPathAreValid) {
     Image target = createImage(ctx, extent, VK_FORMAT_R8G8B8A8_UNORM, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
                                VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
     const std::vector<uint32_t> indices(4096, 0); // every triangle degenerate: cheap to "draw"
-    Buffer indexBuffer = createDeviceBufferWithData(ctx, indices.data(), indices.size() * 4,
-                                                    VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    Buffer indexBuffer =
+        createDeviceBufferWithData(ctx, indices.data(), indices.size() * 4, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     Buffer frame = createHostBuffer(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(frame.mapped, 0, sizeof(gpu::FrameUniforms));
 

@@ -1,8 +1,8 @@
 // The impostor atlas bake (engine/field/impostor_atlas.h) on a hand-built model: a
 // vertical bark cylinder and a leaf card sticking out along +x, so frames
 // differ with azimuth; read back and checked pixel by pixel.
-#include "engine/image/image.h"
 #include "engine/field/impostor_atlas.h"
+#include "engine/image/image.h"
 #include "engine/vk/vk_check.h"
 #include "gpu_test.h"
 
@@ -18,7 +18,7 @@ namespace {
 
 using namespace pf;
 
-constexpr float kRadius = 0.1f;     // cylinder around the y axis, y 0 … 2
+constexpr float kRadius = 0.1f; // cylinder around the y axis, y 0 … 2
 constexpr float kHeight = 2.0f;
 constexpr uint32_t kSides = 64;
 constexpr float kLeafX0 = 0.1f, kLeafX1 = 0.6f; // leaf card in the plane z = 0, petiole at x0
@@ -38,8 +38,8 @@ PlantModelPool testPool() {
         float a = glm::two_pi<float>() * float(i) / float(kSides);
         glm::vec3 n(std::cos(a), 0.0f, std::sin(a));
         for (float y : {0.0f, kHeight})
-            pool.vertices.push_back(vertex(n * kRadius + glm::vec3(0, y, 0), n, {float(i) / kSides, y / kHeight}, bark,
-                                           SURFACE_BARK));
+            pool.vertices.push_back(
+                vertex(n * kRadius + glm::vec3(0, y, 0), n, {float(i) / kSides, y / kHeight}, bark, SURFACE_BARK));
     }
     for (uint32_t i = 0; i < kSides; ++i) {
         uint32_t a = 2 * i, b = 2 * i + 1, c = 2 * i + 2, d = 2 * i + 3;
@@ -81,8 +81,9 @@ std::vector<uint8_t> readLayers(const GpuContext& ctx, const Image& image, uint3
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
         auto barrier = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 src, VkAccessFlags2 srcAccess,
                            VkPipelineStageFlags2 dst, VkAccessFlags2 dstAccess) {
-            const VkImageMemoryBarrier2 b = imageMemoryBarrier(
-                image.image, {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, layers}, {src, srcAccess, dst, dstAccess, from, to});
+            const VkImageMemoryBarrier2 b =
+                imageMemoryBarrier(image.image, {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, layers},
+                                   {src, srcAccess, dst, dstAccess, from, to});
             VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
             dep.imageMemoryBarrierCount = 1;
             dep.pImageMemoryBarriers = &b;
@@ -118,8 +119,9 @@ protected:
     void SetUp() override {
         GpuTest::SetUp();
         pool = testPool();
-        vertices = createDeviceBufferWithData(ctx, pool.vertices.data(), pool.vertices.size() * sizeof(gpu::FieldVertex),
-                                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        vertices =
+            createDeviceBufferWithData(ctx, pool.vertices.data(), pool.vertices.size() * sizeof(gpu::FieldVertex),
+                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         indices = createDeviceBufferWithData(ctx, pool.indices.data(), pool.indices.size() * sizeof(uint32_t),
                                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     }
@@ -280,8 +282,8 @@ TEST_F(ImpostorTest, OutlinesHoldAllCoverageAndCutTheEmptyFrame) {
         for (uint32_t y = 0; y < kSize; ++y) {
             for (uint32_t x = 0; x < kSize; ++x) {
                 if (frame.alpha(x, y) == 0) continue;
-                ASSERT_TRUE(inside((glm::vec2(x, y) + 0.5f) / float(kSize))) << "layer " << layer << " texel " << x
-                                                                             << "," << y;
+                ASSERT_TRUE(inside((glm::vec2(x, y) + 0.5f) / float(kSize)))
+                    << "layer " << layer << " texel " << x << "," << y;
             }
         }
         area += outlineArea(o);
@@ -313,10 +315,10 @@ TEST_F(ImpostorTest, WritesTheAtlasOfATestModelToPng) {
                 const uint8_t* c = colorFrame(f).at(x, y);
                 const uint8_t* n = normalFrame(f).at(x, y);
                 const uint8_t background = uint8_t(96 * (255 - c[3]) / 255);
-                const uint8_t rows[3][3] = {{uint8_t(c[0] + background), uint8_t(c[1] + background),
-                                             uint8_t(c[2] + background)},
-                                            {n[0], n[1], n[2]},
-                                            {n[3], n[3], n[3]}};
+                const uint8_t rows[3][3] = {
+                    {uint8_t(c[0] + background), uint8_t(c[1] + background), uint8_t(c[2] + background)},
+                    {n[0], n[1], n[2]},
+                    {n[3], n[3], n[3]}};
                 for (uint32_t r = 0; r < 3; ++r) {
                     uint8_t* out = &png.pixels[((size_t(r) * kSize + y) * png.width + f * kSize + x) * 4];
                     std::memcpy(out, rows[r], 3);
@@ -369,8 +371,9 @@ TEST(ImpostorFrames, Frame0LooksAlongMinusZWithPlusXRight) {
     EXPECT_NEAR(glm::distance(impostorRightAxis(3, 12), glm::vec3(0, 0, -1)), 0.0f, 1e-6f);
     // right × up = toward the viewer: a right-handed view.
     for (uint32_t f = 0; f < 12; ++f)
-        EXPECT_NEAR(glm::distance(glm::cross(impostorRightAxis(f, 12), glm::vec3(0, 1, 0)), impostorViewDirection(f, 12)),
-                    0.0f, 1e-6f);
+        EXPECT_NEAR(
+            glm::distance(glm::cross(impostorRightAxis(f, 12), glm::vec3(0, 1, 0)), impostorViewDirection(f, 12)), 0.0f,
+            1e-6f);
 }
 
 } // namespace

@@ -13,7 +13,8 @@ namespace pf::fuzz {
 
 void runLsysInput(const uint8_t* data, size_t size) {
     // Through the dialect entry point, so a "dialect:" first line fuzzes that translator too.
-    const lsys::ParseResult parsed = lsys::parseDialect(std::nullopt, std::string_view(reinterpret_cast<const char*>(data), size));
+    const lsys::ParseResult parsed =
+        lsys::parseDialect(std::nullopt, std::string_view(reinterpret_cast<const char*>(data), size));
     if (!parsed.ok()) return;
     lsys::DeriveOptions options;
     // Bounded work per input: a grammar may ask for a billion steps.

@@ -32,10 +32,11 @@ TEST(InstanceGraphEquivalence, EveryPlantFileFlattensToTheTurtlesPlant) {
         expectSamePlant(flat, expected);
         const InstanceGraphStats stats = instanceGraphStats(graph);
         EXPECT_EQ(stats.primitives, expected.primitives.size());
-        std::printf("%-40s nodes %6zu objects %6zu instances %8llu primitives %9llu compression %8.2f error %.2e  %.4fs\n",
-                    file.c_str(), stats.nodes, stats.objects, static_cast<unsigned long long>(stats.instances),
-                    static_cast<unsigned long long>(stats.primitives), stats.compression(),
-                    largestPositionError(flat, expected), seconds);
+        std::printf(
+            "%-40s nodes %6zu objects %6zu instances %8llu primitives %9llu compression %8.2f error %.2e  %.4fs\n",
+            file.c_str(), stats.nodes, stats.objects, static_cast<unsigned long long>(stats.instances),
+            static_cast<unsigned long long>(stats.primitives), stats.compression(),
+            largestPositionError(flat, expected), seconds);
     }
 }
 
@@ -52,9 +53,7 @@ TEST(InstanceGraphEquivalence, FewerStepsOfEveryPlantFile) {
 
 // Deeper graphs compose more transforms: the 6-step bush (262 144 segments,
 // instances 6 levels deep) stays within the tolerance.
-TEST(InstanceGraphEquivalence, DeepBush) {
-    expectFlattensToTurtle(loadOk("plants/fractal_bush.lsys"), 6);
-}
+TEST(InstanceGraphEquivalence, DeepBush) { expectFlattensToTurtle(loadOk("plants/fractal_bush.lsys"), 6); }
 
 // Every style field is set, scaled or read on one side of an instance
 // boundary and used on the other.
@@ -67,9 +66,9 @@ TEST(InstanceGraphEquivalence, StylesCrossInstanceBoundaries) {
         "Axiom: A(3)\nA(n) : n > 0 --> @K(n)F[\\(30)A(n-1)]@K F(2,0.5)/A(n-1)|F\n",
         "Axiom: A(3)\nA(n) : n > 0 --> F(1,n)[+A(n-1)@O]@O(0.5)A(n-1)~leaf(0.5)\n",
         "Axiom: A\nA --> F[+A]F[-A[F]A]F\nF --> FF\n",
-        "Axiom: A\nA --> F[[+A]-A\n",  // leaves states pushed: Fig 4.5's g functions
-        "Axiom: A(4)]]]]F\nA(n) : n > 0 --> F[+A(n-1)]F\n",  // the axiom pops below the start: ignored
-        "Axiom: A(3)F\nA(n) : n > 0 --> F[+A(n-1)%F]F[-A(n-1)F]F\n",  // % in the word (the axiom's)
+        "Axiom: A\nA --> F[[+A]-A\n",                                // leaves states pushed: Fig 4.5's g functions
+        "Axiom: A(4)]]]]F\nA(n) : n > 0 --> F[+A(n-1)]F\n",          // the axiom pops below the start: ignored
+        "Axiom: A(3)F\nA(n) : n > 0 --> F[+A(n-1)%F]F[-A(n-1)F]F\n", // % in the word (the axiom's)
         "Axiom: A(3)\nA(n) : n > 0 --> F[+A(n-1)]F[-A(n-1)]F\ninterpretation:\nF --> F[%]F\n",
     };
     for (const char* source : sources) {
@@ -80,11 +79,11 @@ TEST(InstanceGraphEquivalence, StylesCrossInstanceBoundaries) {
 
 TEST(InstanceGraphEquivalence, OrientationDependentCommands) {
     const char* sources[] = {
-        "Axiom: @Ts(0.3)A\nA --> F[+A]F[&A]/(40)F\n",                        // tropism, entered at any orientation
-        "Axiom: A\nA --> F[+@Ts(0.2)A]@Tv(1,0,0)F[^A]F\n",                   // @Tv sets a world vector
-        "Axiom: &(60)A\nA --> F[+$A]F[&(30)$A]/(40)F\n",                     // $ levels against the world's vertical
+        "Axiom: @Ts(0.3)A\nA --> F[+A]F[&A]/(40)F\n",      // tropism, entered at any orientation
+        "Axiom: A\nA --> F[+@Ts(0.2)A]@Tv(1,0,0)F[^A]F\n", // @Tv sets a world vector
+        "Axiom: &(60)A\nA --> F[+$A]F[&(30)$A]/(40)F\n",   // $ levels against the world's vertical
         "Axiom: A\nA --> @Ts(-0.4)F[+(30)A]@Tv(0,0,-1)F[-(30)A]@Ts(0)F\n",
-        "Axiom: @Ts(0.3)A\nA --> F[+A]@Tv(1,0)F[-A]@Tv F\n",  // @Tv without three parameters changes nothing
+        "Axiom: @Ts(0.3)A\nA --> F[+A]@Tv(1,0)F[-A]@Tv F\n", // @Tv without three parameters changes nothing
     };
     for (const char* source : sources) {
         SCOPED_TRACE(source);
@@ -94,10 +93,10 @@ TEST(InstanceGraphEquivalence, OrientationDependentCommands) {
 
 TEST(InstanceGraphEquivalence, PolygonsAcrossInstances) {
     const char* sources[] = {
-        "Axiom: A\nA --> F[+A]{.-f.+f.}F[-A]\n",                          // inside one object
-        "Axiom: A(3)\nA(n) : n > 0 --> F[{.E+E-E}]A(n-1)\nE --> f.F\n",   // vertices from instances
-        "Axiom: A(3)\nA(n) : n > 0 --> F[B+A(n-1)C]\nB --> {.f.\nC --> f.}\n",  // opened in one node, closed in another
-        "Axiom: {.A(3)}\nA(n) : n > 0 --> f.F[+A(n-1)]\n",                  // F inside a polygon opened by the axiom
+        "Axiom: A\nA --> F[+A]{.-f.+f.}F[-A]\n",                               // inside one object
+        "Axiom: A(3)\nA(n) : n > 0 --> F[{.E+E-E}]A(n-1)\nE --> f.F\n",        // vertices from instances
+        "Axiom: A(3)\nA(n) : n > 0 --> F[B+A(n-1)C]\nB --> {.f.\nC --> f.}\n", // opened in one node, closed in another
+        "Axiom: {.A(3)}\nA(n) : n > 0 --> f.F[+A(n-1)]\n",                     // F inside a polygon opened by the axiom
     };
     for (const char* source : sources) {
         SCOPED_TRACE(source);
@@ -124,5 +123,5 @@ TEST(InstanceGraphBounds, ObjectBoundsContainTheirPrimitives) {
     }
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

@@ -31,7 +31,8 @@ TEST(InstanceGraphGrowth, ObjectsGrowLinearlyWhilePrimitivesGrowGeometrically) {
         stats.push_back(timed.stats);
         std::printf("bush %2d steps: nodes %3zu objects %3zu instances %4llu primitives %12llu compression %12.1f "
                     "bytes %7zu / %14zu  %.5fs\n",
-                    steps, timed.stats.nodes, timed.stats.objects, static_cast<unsigned long long>(timed.stats.instances),
+                    steps, timed.stats.nodes, timed.stats.objects,
+                    static_cast<unsigned long long>(timed.stats.instances),
                     static_cast<unsigned long long>(timed.stats.primitives), timed.stats.compression(),
                     timed.stats.bytesGraph, timed.stats.bytesFlat, timed.seconds);
     }
@@ -40,20 +41,21 @@ TEST(InstanceGraphGrowth, ObjectsGrowLinearlyWhilePrimitivesGrowGeometrically) {
         EXPECT_EQ(stats[i + 1].objects - stats[i].objects, stats[i].objects - stats[i - 1].objects);
         EXPECT_EQ(stats[i + 1].instances - stats[i].instances, stats[i].instances - stats[i - 1].instances);
         EXPECT_EQ(stats[i + 1].primitives, 8 * stats[i].primitives);
-        EXPECT_EQ(stats[i].objects, stats[i].nodes);  // nothing but the node tells objects apart
+        EXPECT_EQ(stats[i].objects, stats[i].nodes); // nothing but the node tells objects apart
     }
 }
 
 TEST(InstanceGraphGrowth, NineStepBushIsBuiltWithoutExpanding) {
     const Grammar grammar = loadOk("plants/fractal_bush.lsys");
     const Timed nine = bushStats(grammar, 9);
-    EXPECT_EQ(nine.stats.primitives, 134'217'728u);  // 8^9 segments
+    EXPECT_EQ(nine.stats.primitives, 134'217'728u); // 8^9 segments
     EXPECT_EQ(nine.stats.joints, nine.stats.primitives);
     EXPECT_LT(nine.stats.instances, 200u);
     EXPECT_LT(nine.stats.bytesGraph, 64u * 1024u);
     std::printf("bush 9 steps: %llu primitives in %llu instances (%.0f:1), %zu bytes vs %zu flat, built in %.5fs\n",
-                static_cast<unsigned long long>(nine.stats.primitives), static_cast<unsigned long long>(nine.stats.instances),
-                nine.stats.compression(), nine.stats.bytesGraph, nine.stats.bytesFlat, nine.seconds);
+                static_cast<unsigned long long>(nine.stats.primitives),
+                static_cast<unsigned long long>(nine.stats.instances), nine.stats.compression(), nine.stats.bytesGraph,
+                nine.stats.bytesFlat, nine.seconds);
     // Past 2^31 joints the references stay 64-bit.
     const Timed twelve = bushStats(grammar, 12);
     EXPECT_EQ(twelve.stats.joints, 68'719'476'736u);
@@ -64,5 +66,5 @@ TEST(InstanceGraphGrowth, FlattenRefusesPastItsBudget) {
     EXPECT_THROW(flatten(graphOf(grammar, 9), SurfaceLibrary{}, 1'000'000), DerivationError);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

@@ -43,7 +43,8 @@ inline double angleBetween(const glm::quat& a, const glm::quat& b) {
 }
 
 inline double plantSize(const PlantAsset& plant) {
-    return plant.bounds.empty() ? 1.0 : std::max(1.0, static_cast<double>(glm::length(plant.bounds.max - plant.bounds.min)));
+    return plant.bounds.empty() ? 1.0
+                                : std::max(1.0, static_cast<double>(glm::length(plant.bounds.max - plant.bounds.min)));
 }
 
 // The largest distance between the primitives' positions, relative to the plant's size.
@@ -74,7 +75,8 @@ inline void expectSamePlant(const PlantAsset& actual, const PlantAsset& expected
         if (!same) ++mismatches;
         EXPECT_TRUE(same) << "primitive " << i << ": position error "
                           << glm::distance(a.frame.position, e.frame.position) / size << ", rotation error "
-                          << angleBetween(a.frame.rotation, e.frame.rotation) << ", joint " << a.joint << " vs " << e.joint;
+                          << angleBetween(a.frame.rotation, e.frame.rotation) << ", joint " << a.joint << " vs "
+                          << e.joint;
     }
     for (size_t i = 0; i < expected.joints.size(); ++i) {
         EXPECT_EQ(actual.joints[i].parent, expected.joints[i].parent) << "joint " << i;
@@ -93,4 +95,4 @@ inline void expectSamePlant(const PlantAsset& actual, const PlantAsset& expected
         EXPECT_EQ(actual.materials[i].twoSided, expected.materials[i].twoSided) << "material " << i;
 }
 
-}  // namespace lsys::test
+} // namespace lsys::test

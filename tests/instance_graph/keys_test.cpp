@@ -31,13 +31,13 @@ TEST(InstanceGraphKeys, ValuesOverwrittenOrPassedThroughAreNotKeys) {
     // Scaled and left to the caller: the exit is a function of the entry, which is read.
     EXPECT_EQ(objectsFor((std::string(entries) + "A --> !(0.5);(4)F(1)@Lm(2)\n").c_str()), 3u);
     EXPECT_EQ(objectsFor((std::string(entries) + "A --> @Wm(2)F(1)+(5)F(1)\n").c_str()), 3u);
-    EXPECT_EQ(objectsFor((std::string(entries) + "A --> !(0.5);(4)F+(5)F\n").c_str()), 3u);   // bare F: the length
-    EXPECT_EQ(objectsFor((std::string(entries) + "A --> !(0.5);(4)F(1)+F(1)\n").c_str()), 3u);  // bare +: the angle
+    EXPECT_EQ(objectsFor((std::string(entries) + "A --> !(0.5);(4)F+(5)F\n").c_str()), 3u);    // bare F: the length
+    EXPECT_EQ(objectsFor((std::string(entries) + "A --> !(0.5);(4)F(1)+F(1)\n").c_str()), 3u); // bare +: the angle
 }
 
 TEST(InstanceGraphKeys, TheEntryFrameAndJointAreNeverKeys) {
     EXPECT_EQ(objectsFor("Axiom: A+(33)fA&(12)F[A]FA\nA --> F[+F]F\n"), 1u);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

@@ -32,7 +32,7 @@ struct HandBGrammar {
 
 TEST(InstanceGraphLegality, NodesPoppingBelowTheirStartAreInlined) {
     HandBGrammar hand;
-    const BodyItem twig = hand.node({hand.module("F"), hand.module("+"), hand.module("F")});  // legal, shared
+    const BodyItem twig = hand.node({hand.module("F"), hand.module("+"), hand.module("F")}); // legal, shared
     // "]F twig [": pops the state its user pushed, so it has no status function.
     const BodyItem illegal = hand.node({hand.module("]"), hand.module("F"), twig, hand.module("[")});
     hand.node({hand.module("F"), hand.module("["), hand.module("+"), twig, illegal, hand.module("+"), twig,
@@ -44,8 +44,8 @@ TEST(InstanceGraphLegality, NodesPoppingBelowTheirStartAreInlined) {
     for (const GraphObject& object : graph.objects) twigObjects += object.node == twig.index;
     EXPECT_EQ(twigObjects, 1u);
 
-    const PlantAsset expected = interpretPlant(expand(hand.bgrammar), hand.grammar.symbols,
-                                               turtleSettings(hand.grammar), SurfaceLibrary{});
+    const PlantAsset expected =
+        interpretPlant(expand(hand.bgrammar), hand.grammar.symbols, turtleSettings(hand.grammar), SurfaceLibrary{});
     expectSamePlant(flatten(graph), expected);
     EXPECT_EQ(instanceGraphStats(graph).primitives, expected.primitives.size());
 }
@@ -55,5 +55,5 @@ TEST(InstanceGraphLegality, TheWordMustBeTheInterpretedOne) {
     EXPECT_THROW(buildInstanceGraph(buildBGrammar(grammar), grammar), std::invalid_argument);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

@@ -56,11 +56,14 @@ TEST(InstanceGraphTropism, GranularityTradesObjectsForABoundedError) {
         const double error = largestPositionError(flat, expected);
         const InstanceGraphStats stats = instanceGraphStats(graph);
         std::printf("G %4d: objects %5zu instances %6llu compression %6.2f largest error %.2e of the plant's size\n",
-                    granularity, stats.objects, static_cast<unsigned long long>(stats.instances), stats.compression(), error);
+                    granularity, stats.objects, static_cast<unsigned long long>(stats.instances), stats.compression(),
+                    error);
         EXPECT_GE(stats.objects, previousObjects);
         previousObjects = stats.objects;
-        if (granularity == 0) EXPECT_LE(error, 1e-4);
-        else EXPECT_LE(error, 2.0 * M_PI / granularity * steps);
+        if (granularity == 0)
+            EXPECT_LE(error, 1e-4);
+        else
+            EXPECT_LE(error, 2.0 * M_PI / granularity * steps);
     }
 }
 
@@ -78,5 +81,5 @@ TEST(InstanceGraphTropism, DegenerateTropismVectorsStillFlatten) {
     }
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

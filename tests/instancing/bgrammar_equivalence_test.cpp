@@ -66,19 +66,19 @@ TEST(BGrammarEquivalence, NodesAreLegalSharedAndInTopologicalOrder) {
 }
 
 TEST(BGrammarEquivalence, DecompositionInterpretationAndErasure) {
-    Grammar grammar = parseOk(
-        "Axiom: A(1)E\n"
-        "A(x) : x < 40 --> S(x)[+A(x*2)]E A(x+1)\n"
-        "E -->\n"
-        "decomposition:\nmaximum depth: 3\nS(x) --> T(x)T(x+1)\nT(x) : x > 2 --> U(x)V\n"
-        "interpretation:\nV --> [F(1)]F(2)\n");
+    Grammar grammar = parseOk("Axiom: A(1)E\n"
+                              "A(x) : x < 40 --> S(x)[+A(x*2)]E A(x+1)\n"
+                              "E -->\n"
+                              "decomposition:\nmaximum depth: 3\nS(x) --> T(x)T(x+1)\nT(x) : x > 2 --> U(x)V\n"
+                              "interpretation:\nV --> [F(1)]F(2)\n");
     for (int steps : {0, 1, 2, 5, 9}) {
         SCOPED_TRACE(steps);
         BGrammarOptions options;
         options.steps = steps;
         expectGeneratesWord(grammar, buildBGrammar(grammar, options), derive(grammar, stepsOf(steps)));
         options.interpreted = true;
-        expectGeneratesWord(grammar, buildBGrammar(grammar, options), applyInterpretation(grammar, derive(grammar, stepsOf(steps))));
+        expectGeneratesWord(grammar, buildBGrammar(grammar, options),
+                            applyInterpretation(grammar, derive(grammar, stepsOf(steps))));
     }
 }
 
@@ -91,7 +91,7 @@ TEST(BGrammarEquivalence, IllegalNodesAreInlined) {
     BGrammar graph = buildBGrammar(grammar, options);
     expectGeneratesWord(grammar, graph, derive(grammar, stepsOf(6)));
     for (uint32_t node = 0; node + 1 < graph.nodes.size(); ++node) EXPECT_TRUE(nodeIsLegal(graph, node));
-    EXPECT_EQ(graph.nodes.size(), 1u);  // every B pops below its start: all of it is inlined into the axiom
+    EXPECT_EQ(graph.nodes.size(), 1u); // every B pops below its start: all of it is inlined into the axiom
 }
 
 TEST(BGrammarEquivalence, SingleModuleSuccessorsAreSubstituted) {
@@ -135,9 +135,10 @@ TEST(BGrammarBudget, TooManyNodesIsAClearError) {
         buildBGrammar(loadOk("plants/fractal_bush.lsys"), options);
         FAIL() << "expected a budget error";
     } catch (const DerivationError& error) {
-        EXPECT_NE(std::string(error.what()).find("b-grammar budget exceeded: more than 5 nodes"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("b-grammar budget exceeded: more than 5 nodes"), std::string::npos)
+            << error.what();
     }
-    options.limits.maxNodes = 10;  // 8 shared nodes, the axiom, and while building the one inlined into it
+    options.limits.maxNodes = 10; // 8 shared nodes, the axiom, and while building the one inlined into it
     EXPECT_NO_THROW(buildBGrammar(loadOk("plants/fractal_bush.lsys"), options));
 }
 
@@ -162,11 +163,11 @@ TEST(BGrammarBudget, TooManyBodyItemsIsAClearError) {
 TEST(BGrammarBudget, CountsPastTwoToTheSixtyFourAreAnError) {
     Grammar doubling = parseOk("Axiom: F\nF --> FF\n");
     BGrammarOptions options;
-    options.steps = 70;  // 2^70 modules
+    options.steps = 70; // 2^70 modules
     EXPECT_THROW(buildBGrammar(doubling, options), DerivationError);
     options.steps = 63;
     EXPECT_EQ(countModules(buildBGrammar(doubling, options))[*doubling.symbols.find("F")], uint64_t{1} << 63);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

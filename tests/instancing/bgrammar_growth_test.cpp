@@ -77,7 +77,8 @@ TEST(BGrammarGrowth, CountsMatchTheRecurrenceAtEveryStep) {
     Grammar grammar = bush();
     for (int steps = 0; steps <= 12; ++steps) {
         const std::vector<uint64_t> counts = countModules(bushGraph(grammar, steps));
-        for (const auto& [c, count] : bushCounts(steps)) EXPECT_EQ(counts[*grammar.symbols.find(std::string(1, c))], count) << steps;
+        for (const auto& [c, count] : bushCounts(steps))
+            EXPECT_EQ(counts[*grammar.symbols.find(std::string(1, c))], count) << steps;
     }
 }
 
@@ -88,7 +89,7 @@ TEST(BGrammarGrowth, InstanceStatsCountEveryKindOfPrimitive) {
     options.steps = 3;
     BGrammar graph = buildBGrammar(grammar, options);
     InstanceGraphStats stats = instanceGraphStats(buildInstanceGraph(graph, grammar));
-    EXPECT_EQ(stats.joints, 7u);          // 1 + 2 + 4 A were rewritten
+    EXPECT_EQ(stats.joints, 7u); // 1 + 2 + 4 A were rewritten
     EXPECT_EQ(stats.primitives, 4u * 7u);
     // Nodes: A after 1 and 2 steps (the 3-step one is the axiom's only reference, inlined).
     EXPECT_EQ(stats.nodes, 3u);
@@ -98,5 +99,5 @@ TEST(BGrammarGrowth, InstanceStatsCountEveryKindOfPrimitive) {
     EXPECT_EQ(stats.bytesFlat, stats.primitives * sizeof(Primitive));
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

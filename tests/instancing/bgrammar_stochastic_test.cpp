@@ -26,7 +26,8 @@ void expectSameGraph(const BGrammar& a, const BGrammar& b) {
 }
 
 TEST(BGrammarStochastic, SameSeedGivesTheSameGraph) {
-    for (const char* file : {"plants/stochastic.lsys", "plants/stochastic_bush.lsys", "plants/dialects/stochastic.crankshaw"}) {
+    for (const char* file :
+         {"plants/stochastic.lsys", "plants/stochastic_bush.lsys", "plants/dialects/stochastic.crankshaw"}) {
         SCOPED_TRACE(file);
         Grammar grammar = loadOk(file);
         BGrammar first = pseudoStochastic(grammar, 4, 7, 6);
@@ -74,7 +75,8 @@ Sample segments(const Grammar& grammar, int k, int steps, int seeds) {
             options.seed = static_cast<uint64_t>(seed);
             count = static_cast<double>(histogram(derive(grammar, options), grammar.symbols.size())[f]);
         } else {
-            count = static_cast<double>(countModules(pseudoStochastic(grammar, k, static_cast<uint64_t>(seed), steps))[f]);
+            count =
+                static_cast<double>(countModules(pseudoStochastic(grammar, k, static_cast<uint64_t>(seed), steps))[f]);
         }
         sum += count;
         squares += count * count;
@@ -89,7 +91,8 @@ TEST(BGrammarStochastic, SegmentCountsHaveDerivesMean) {
     const struct {
         const char* file;
         double segmentsPerRewrite;
-    } cases[] = {{"plants/stochastic_bush.lsys", 5.0 / 3 + 3.0 / 3 + 3.0 / 3}, {"plants/stochastic.lsys", 0.33 * 5 + 0.33 * 3 + 0.34 * 3}};
+    } cases[] = {{"plants/stochastic_bush.lsys", 5.0 / 3 + 3.0 / 3 + 3.0 / 3},
+                 {"plants/stochastic.lsys", 0.33 * 5 + 0.33 * 3 + 0.34 * 3}};
     for (const auto& [file, perRewrite] : cases) {
         SCOPED_TRACE(file);
         Grammar grammar = loadOk(file);
@@ -154,5 +157,5 @@ TEST(BGrammarStochastic, DeterministicGrammarsIgnoreTheFactor) {
     expectSameWord(expand(graph), derive(grammar, stepsOf(6)), grammar.symbols);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

@@ -77,4 +77,4 @@ inline std::vector<uint32_t> referenceCounts(const BGrammar& grammar) {
     return uses;
 }
 
-}  // namespace lsys::test
+} // namespace lsys::test

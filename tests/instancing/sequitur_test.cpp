@@ -49,8 +49,8 @@ TEST(Sequitur, ContextSensitiveWordsAreCompressedExactly) {
         expectLegalRules(graph);
         expectRulesUsedTwice(graph);
         const double ratio = static_cast<double>(word.size()) / static_cast<double>(graph.body.size());
-        std::cout << file << ": " << word.size() << " modules in " << graph.nodes.size() << " rules, " << graph.body.size()
-                  << " body items (" << ratio << ":1)\n";
+        std::cout << file << ": " << word.size() << " modules in " << graph.nodes.size() << " rules, "
+                  << graph.body.size() << " body items (" << ratio << ":1)\n";
         if (word.size() > 10'000) {
             EXPECT_GT(ratio, 5.0);
         }
@@ -93,7 +93,7 @@ TEST(Sequitur, RulesRespectBracketLegality) {
         int depth = 0;
         for (int i = 0; i < 2000; ++i) {
             char c = alphabet[random() % alphabet.size()];
-            if (c == ']' && depth == 0 && round % 2 == 0) c = 'F';  // odd rounds pop below the start too
+            if (c == ']' && depth == 0 && round % 2 == 0) c = 'F'; // odd rounds pop below the start too
             depth += c == '[' ? 1 : c == ']' ? -1 : 0;
             text += c;
         }
@@ -135,7 +135,7 @@ TEST(Sequitur, ParametersTellModulesApart) {
     BGrammar graph = compressWord(word, grammar.symbols.size());
     expectSameWord(expand(graph), word, grammar.symbols);
     EXPECT_EQ(graph.modules.size(), 2u);
-    EXPECT_EQ(graph.nodes.size(), 2u);  // A(1)A(2) and the axiom
+    EXPECT_EQ(graph.nodes.size(), 2u); // A(1)A(2) and the axiom
 }
 
 TEST(Sequitur, LongWordsAreRefusedByTheBudget) {
@@ -149,5 +149,5 @@ TEST(Sequitur, LongWordsAreRefusedByTheBudget) {
     EXPECT_EQ(compressWord(ModuleString{}, symbols.size()).nodes.back().modules, 0u);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

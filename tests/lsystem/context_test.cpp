@@ -11,13 +11,9 @@ std::string once(const std::string& header, const std::string& axiom, const std:
     return derived(header + "Axiom: " + axiom + "\n" + rule + "\n", 1);
 }
 
-TEST(LsysRightContext, ImmediateNeighbour) {
-    EXPECT_EQ(once("", "ABAC", "A > B --> X"), "XBAC");
-}
+TEST(LsysRightContext, ImmediateNeighbour) { EXPECT_EQ(once("", "ABAC", "A > B --> X"), "XBAC"); }
 
-TEST(LsysRightContext, SkipsALateralBranch) {
-    EXPECT_EQ(once("", "A[C]B", "A > B --> X"), "X[C]B");
-}
+TEST(LsysRightContext, SkipsALateralBranch) { EXPECT_EQ(once("", "A[C]B", "A > B --> X"), "X[C]B"); }
 
 TEST(LsysRightContext, SkipsSeveralLateralBranchesAtOneNode) {
     EXPECT_EQ(once("", "A[C][D[E]F][G]B", "A > B --> X"), "X[C][D[E]F][G]B");
@@ -28,9 +24,7 @@ TEST(LsysRightContext, EndOfBranchStopsTheSearch) {
     EXPECT_EQ(once("", "C[A]B", "A > B --> X"), "C[A]B");
 }
 
-TEST(LsysRightContext, EndOfStringDoesNotMatch) {
-    EXPECT_EQ(once("", "BA", "A > B --> X"), "BA");
-}
+TEST(LsysRightContext, EndOfStringDoesNotMatch) { EXPECT_EQ(once("", "BA", "A > B --> X"), "BA"); }
 
 TEST(LsysRightContext, DoesNotSeeTheNextModuleOfAParentBranch) {
     EXPECT_EQ(once("", "[[A]]B", "A > B --> X"), "[[A]]B");
@@ -40,42 +34,30 @@ TEST(LsysRightContext, DescendsIntoALateralBranch) {
     EXPECT_EQ(once("", "A[B]C A[C]B", "A > [B] --> X"), "X[B]CA[C]B");
 }
 
-TEST(LsysRightContext, TriesEachLateralBranchAtTheNode) {
-    EXPECT_EQ(once("", "A[C][B]", "A > [B] --> X"), "X[C][B]");
-}
+TEST(LsysRightContext, TriesEachLateralBranchAtTheNode) { EXPECT_EQ(once("", "A[C][B]", "A > [B] --> X"), "X[C][B]"); }
 
 TEST(LsysRightContext, ClosingBracketInPatternSkipsRestOfBranch) {
     // After matching B inside the branch, ']' skips D and the nested [E], then C must follow A.
     EXPECT_EQ(once("", "A[BD[E]]C A[BD]E", "A > [B]C --> X"), "X[BD[E]]CA[BD]E");
 }
 
-TEST(LsysRightContext, MultiModule) {
-    EXPECT_EQ(once("", "AB[D]C ABD", "A > BC --> X"), "XB[D]CABD");
-}
+TEST(LsysRightContext, MultiModule) { EXPECT_EQ(once("", "AB[D]C ABD", "A > BC --> X"), "XB[D]CABD"); }
 
 TEST(LsysRightContext, NestedBranchesInsideASkippedBranch) {
     EXPECT_EQ(once("", "A[C[D[E]]F]B", "A > B --> X"), "X[C[D[E]]F]B");
 }
 
-TEST(LsysLeftContext, ImmediateNeighbour) {
-    EXPECT_EQ(once("", "BACA", "B < A --> X"), "BXCA");
-}
+TEST(LsysLeftContext, ImmediateNeighbour) { EXPECT_EQ(once("", "BACA", "B < A --> X"), "BXCA"); }
 
-TEST(LsysLeftContext, ClimbsToTheParentAxisAtABracket) {
-    EXPECT_EQ(once("", "B[A]C[A]", "B < A --> X"), "B[X]C[A]");
-}
+TEST(LsysLeftContext, ClimbsToTheParentAxisAtABracket) { EXPECT_EQ(once("", "B[A]C[A]", "B < A --> X"), "B[X]C[A]"); }
 
-TEST(LsysLeftContext, ClimbsSeveralLevels) {
-    EXPECT_EQ(once("", "B[[[A]]]", "B < A --> X"), "B[[[X]]]");
-}
+TEST(LsysLeftContext, ClimbsSeveralLevels) { EXPECT_EQ(once("", "B[[[A]]]", "B < A --> X"), "B[[[X]]]"); }
 
 TEST(LsysLeftContext, SkipsEarlierBranchesOnTheSameAxis) {
     EXPECT_EQ(once("", "B[C][D[E]]A", "B < A --> X"), "B[C][D[E]]X");
 }
 
-TEST(LsysLeftContext, SkipsSiblingBranchesBeforeClimbing) {
-    EXPECT_EQ(once("", "B[C][A]", "B < A --> X"), "B[C][X]");
-}
+TEST(LsysLeftContext, SkipsSiblingBranchesBeforeClimbing) { EXPECT_EQ(once("", "B[C][A]", "B < A --> X"), "B[C][X]"); }
 
 TEST(LsysLeftContext, DoesNotLookIntoBranches) {
     // The B inside the branch is not on A's path to the root.
@@ -94,22 +76,18 @@ TEST(LsysLeftContext, StartOfStringDoesNotMatch) {
 TEST(LsysLeftContext, UnmatchedBracketsAreHarmless) {
     EXPECT_EQ(once("", "]A", "B < A --> X"), "]A");
     EXPECT_EQ(once("", "B]A", "B < A --> X"), "B]A");
-    EXPECT_EQ(once("", "A[B", "A > B --> X"), "A[B");  // the unclosed branch is skipped to the end: nothing follows A
+    EXPECT_EQ(once("", "A[B", "A > B --> X"), "A[B"); // the unclosed branch is skipped to the end: nothing follows A
     EXPECT_EQ(once("", "A[", "A > B --> X"), "A[");
     EXPECT_EQ(once("", "B[A", "B < A --> X"), "B[X");
 }
 
-TEST(LsysBothContexts, MustMatchTogether) {
-    EXPECT_EQ(once("", "BAC BAD EAC", "B < A > C --> X"), "BXCBADEAC");
-}
+TEST(LsysBothContexts, MustMatchTogether) { EXPECT_EQ(once("", "BAC BAD EAC", "B < A > C --> X"), "BXCBADEAC"); }
 
 TEST(LsysIgnoredSymbols, AreSkippedOnBothSides) {
     EXPECT_EQ(once("ignore: + -\n", "B+-A-+C", "B < A > C --> X"), "B+-X-+C");
 }
 
-TEST(LsysIgnoredSymbols, NotIgnoredWithoutTheDeclaration) {
-    EXPECT_EQ(once("", "B+A", "B < A --> X"), "B+A");
-}
+TEST(LsysIgnoredSymbols, NotIgnoredWithoutTheDeclaration) { EXPECT_EQ(once("", "B+A", "B < A --> X"), "B+A"); }
 
 TEST(LsysIgnoredSymbols, SkippedInsideBranchesAndBeforeBrackets) {
     EXPECT_EQ(once("ignore: F\n", "BF[FA]", "B < A --> X"), "BF[FX]");
@@ -145,5 +123,5 @@ TEST(LsysMatching, ContextIsReadFromThePreviousWord) {
     EXPECT_EQ(derived("Axiom: BAA\nB < A --> B\n", 1), "BBA");
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

@@ -32,9 +32,9 @@ TEST(LsysDataFiles, EveryPlantLoadsAndDerives) {
         EXPECT_TRUE(source.find("//") != std::string::npos || source.find("/*") != std::string::npos)
             << "each plant file documents where it comes from";
         ModuleString string = derive(result.grammar);
-        EXPECT_GT(string.size(), 0u);  // tests/turtle interprets each one
+        EXPECT_GT(string.size(), 0u); // tests/turtle interprets each one
     }
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

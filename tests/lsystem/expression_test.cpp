@@ -31,7 +31,8 @@ Evaluated evaluateText(std::string_view text, std::vector<std::string> variables
 
 double value(std::string_view text) {
     Evaluated result = evaluateText(text);
-    EXPECT_TRUE(result.value.has_value()) << text << ": " << (result.diagnostics.empty() ? "" : result.diagnostics[0].message);
+    EXPECT_TRUE(result.value.has_value())
+        << text << ": " << (result.diagnostics.empty() ? "" : result.diagnostics[0].message);
     return result.value.value_or(NAN);
 }
 
@@ -55,7 +56,7 @@ TEST(LsysExpression, ComparisonsAndLogic) {
     EXPECT_EQ(value("0 || 1 == 1"), 1);
     EXPECT_EQ(value("!0"), 1);
     EXPECT_EQ(value("!(2>1)"), 0);
-    EXPECT_EQ(value("1 + 1 == 2"), 1);  // comparison binds looser than arithmetic
+    EXPECT_EQ(value("1 + 1 == 2"), 1); // comparison binds looser than arithmetic
 }
 
 TEST(LsysExpression, Conditional) {
@@ -142,14 +143,10 @@ struct BadExpression {
 
 TEST(LsysExpression, Errors) {
     const BadExpression cases[] = {
-        {"1 +", 4, "expression ends too early"},
-        {"(1 + 2", 7, "unbalanced parenthesis"},
-        {"foo + 1", 1, "unknown name 'foo'"},
-        {"sin 1", 5, "needs arguments"},
-        {"min(1)", 6, "takes 2 arguments"},
-        {"1 ? 2", 6, "incomplete conditional"},
-        {"1..2", 1, "malformed number"},
-        {"* 2", 1, "unexpected '*'"},
+        {"1 +", 4, "expression ends too early"}, {"(1 + 2", 7, "unbalanced parenthesis"},
+        {"foo + 1", 1, "unknown name 'foo'"},    {"sin 1", 5, "needs arguments"},
+        {"min(1)", 6, "takes 2 arguments"},      {"1 ? 2", 6, "incomplete conditional"},
+        {"1..2", 1, "malformed number"},         {"* 2", 1, "unexpected '*'"},
     };
     for (const BadExpression& c : cases) {
         Evaluated result = evaluateText(c.text);
@@ -184,5 +181,5 @@ TEST(LsysExpression, LongFlatExpressionStaysWithinTheStack) {
     EXPECT_NE(result.diagnostics[0].message.find("too complex"), std::string::npos);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

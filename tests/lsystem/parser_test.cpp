@@ -9,19 +9,18 @@ namespace lsys::test {
 namespace {
 
 TEST(LsysParser, HeaderSettings) {
-    Grammar grammar = parseOk(
-        "/* a block comment\n spanning lines */\n"
-        "#define N 3 // trailing comment\n"
-        "#define half N/2\n"
-        "seed: 42\n"
-        "derivation length: N+1\n"
-        "angle: 22.5\n"
-        "step: half\n"
-        "width: 0.1\n"
-        "Axiom: F(N)\n"
-        "F(x) -> F(x+half)\n"
-        "endlsystem\n"
-        "anything after endlsystem is ignored\n");
+    Grammar grammar = parseOk("/* a block comment\n spanning lines */\n"
+                              "#define N 3 // trailing comment\n"
+                              "#define half N/2\n"
+                              "seed: 42\n"
+                              "derivation length: N+1\n"
+                              "angle: 22.5\n"
+                              "step: half\n"
+                              "width: 0.1\n"
+                              "Axiom: F(N)\n"
+                              "F(x) -> F(x+half)\n"
+                              "endlsystem\n"
+                              "anything after endlsystem is ignored\n");
     EXPECT_EQ(grammar.seed, 42u);
     EXPECT_EQ(grammar.derivationLength, 4);
     EXPECT_DOUBLE_EQ(grammar.angle, 22.5);
@@ -50,7 +49,8 @@ TEST(LsysParser, SingleCharacterModules) {
 }
 
 TEST(LsysParser, DeclaredMultiLetterModules) {
-    Grammar grammar = parseOk("module Apex, Leaf(size)\nmodule Ap\nAxiom: Apex(1)ApLeafA\nApex(x) --> Leaf(x) Apex(x+1)\n");
+    Grammar grammar =
+        parseOk("module Apex, Leaf(size)\nmodule Ap\nAxiom: Apex(1)ApLeafA\nApex(x) --> Leaf(x) Apex(x+1)\n");
     EXPECT_EQ(toString(derive(grammar, stepsOf(1)), grammar.symbols), "Leaf(1)Apex(2)ApLeafA");
     EXPECT_EQ(derive(grammar, stepsOf(1)).size(), 5u);
 }
@@ -68,15 +68,12 @@ TEST(LsysParser, LabelsAndStarCondition) {
     EXPECT_EQ(derived("Axiom: A(1)\np1: A(x) : * --> B(x)\np2 : B(x) : x > 0 -> C\n", 2), "C");
 }
 
-TEST(LsysParser, EmptySuccessor) {
-    EXPECT_EQ(derived("Axiom: ABA\nA -->\nB --> *\n", 1), "");
-}
+TEST(LsysParser, EmptySuccessor) { EXPECT_EQ(derived("Axiom: ABA\nA -->\nB --> *\n", 1), ""); }
 
 TEST(LsysParser, SectionsAndMaximumDepth) {
-    Grammar grammar = parseOk(
-        "Axiom: A\nA --> AS\n"
-        "decomposition:\nmaximum depth: 5\nS --> T\nT --> U\n"
-        "homomorphism: maximum depth: 2\nU --> F\n");
+    Grammar grammar = parseOk("Axiom: A\nA --> AS\n"
+                              "decomposition:\nmaximum depth: 5\nS --> T\nT --> U\n"
+                              "homomorphism: maximum depth: 2\nU --> F\n");
     EXPECT_EQ(grammar.decomposition.productions.size(), 2u);
     EXPECT_EQ(grammar.decomposition.maxDepth, 5);
     EXPECT_EQ(grammar.interpretation.productions.size(), 1u);
@@ -95,10 +92,11 @@ TEST(LsysParser, DiagnosticFormat) {
     const std::string source = "Axiom: A\nA(x) --> B(x +* 2)\n";
     ParseResult result = parseLsystem(source, {"plant.lsys"});
     ASSERT_EQ(result.diagnostics.size(), 1u);
-    EXPECT_EQ(formatDiagnostic(result.diagnostics[0], source),
-              "plant.lsys:2:15: error: unexpected '*' in expression (expected a number, a name, '(' or a unary operator)\n"
-              "  A(x) --> B(x +* 2)\n"
-              "                ^\n");
+    EXPECT_EQ(
+        formatDiagnostic(result.diagnostics[0], source),
+        "plant.lsys:2:15: error: unexpected '*' in expression (expected a number, a name, '(' or a unary operator)\n"
+        "  A(x) --> B(x +* 2)\n"
+        "                ^\n");
 }
 
 struct Malformed {
@@ -123,29 +121,28 @@ TEST_P(LsysMalformedInput, IsReportedAtTheRightPlace) {
 
 INSTANTIATE_TEST_SUITE_P(
     Parser, LsysMalformedInput,
-    ::testing::Values(
-        Malformed{"A --> B\n", 1, 1, "no axiom"},
-        Malformed{"Axiom: A\nA B --> C\n", 2, 5, "exactly one module"},
-        Malformed{"Axiom: A\nA < < B --> C\n", 2, 5, "misplaced '<'"},
-        Malformed{"Axiom: A\nA > B > C --> D\n", 2, 7, "second '>'"},
-        Malformed{"Axiom: A\nB[C] < A --> D\n", 2, 6, "brackets are not allowed in a left context"},
-        Malformed{"Axiom: A\nA(1) --> B\n", 2, 3, "must be a name"},
-        Malformed{"Axiom: A\nA(x) --> B(y)\n", 2, 12, "unknown name 'y'"},
-        Malformed{"Axiom: A\nA : x > 1 --> B\n", 2, 5, "unknown name 'x'"},
-        Malformed{"Axiom: A\nA(x) : x > 1 B\n", 2, 1, "unrecognised line"},
-        Malformed{"Axiom: A\nA --> B(1,)\n", 2, 11, "expression"},
-        Malformed{"Axiom: A\nA --> B(1 2)\n", 2, 11, "malformed parameter list"},
-        Malformed{"Axiom: A\nA --> B : 1.5\n", 2, 11, "probability out of range"},
-        Malformed{"Axiom: A\nA --> B <\n", 2, 9, "unexpected '<'"},
-        Malformed{"Axiom: A\n#include foo\n", 2, 1, "unknown directive"},
-        Malformed{"Axiom: A\n#define\n", 2, 8, "missing constant name"},
-        Malformed{"Axiom: A\nseed: -1\n", 2, 7, "invalid seed"},
-        Malformed{"Axiom: A\nderivation length: 2.5\n", 2, 20, "invalid derivation length"},
-        Malformed{"Axiom: A\nmaximum depth: 3\n", 2, 16, "outside a decomposition"},
-        Malformed{"Axiom: A\nangle: 10 20\n", 2, 11, "unexpected '2'"},
-        Malformed{"Axiom: A /* never closed\n", 1, 10, "unterminated comment"},
-        Malformed{"Axiom: A\nmodule 3D\n", 2, 8, "unexpected '3'"},
-        Malformed{"Axiom: A\nignore: + ( -\n", 2, 11, "unexpected '('"}));
+    ::testing::Values(Malformed{"A --> B\n", 1, 1, "no axiom"},
+                      Malformed{"Axiom: A\nA B --> C\n", 2, 5, "exactly one module"},
+                      Malformed{"Axiom: A\nA < < B --> C\n", 2, 5, "misplaced '<'"},
+                      Malformed{"Axiom: A\nA > B > C --> D\n", 2, 7, "second '>'"},
+                      Malformed{"Axiom: A\nB[C] < A --> D\n", 2, 6, "brackets are not allowed in a left context"},
+                      Malformed{"Axiom: A\nA(1) --> B\n", 2, 3, "must be a name"},
+                      Malformed{"Axiom: A\nA(x) --> B(y)\n", 2, 12, "unknown name 'y'"},
+                      Malformed{"Axiom: A\nA : x > 1 --> B\n", 2, 5, "unknown name 'x'"},
+                      Malformed{"Axiom: A\nA(x) : x > 1 B\n", 2, 1, "unrecognised line"},
+                      Malformed{"Axiom: A\nA --> B(1,)\n", 2, 11, "expression"},
+                      Malformed{"Axiom: A\nA --> B(1 2)\n", 2, 11, "malformed parameter list"},
+                      Malformed{"Axiom: A\nA --> B : 1.5\n", 2, 11, "probability out of range"},
+                      Malformed{"Axiom: A\nA --> B <\n", 2, 9, "unexpected '<'"},
+                      Malformed{"Axiom: A\n#include foo\n", 2, 1, "unknown directive"},
+                      Malformed{"Axiom: A\n#define\n", 2, 8, "missing constant name"},
+                      Malformed{"Axiom: A\nseed: -1\n", 2, 7, "invalid seed"},
+                      Malformed{"Axiom: A\nderivation length: 2.5\n", 2, 20, "invalid derivation length"},
+                      Malformed{"Axiom: A\nmaximum depth: 3\n", 2, 16, "outside a decomposition"},
+                      Malformed{"Axiom: A\nangle: 10 20\n", 2, 11, "unexpected '2'"},
+                      Malformed{"Axiom: A /* never closed\n", 1, 10, "unterminated comment"},
+                      Malformed{"Axiom: A\nmodule 3D\n", 2, 8, "unexpected '3'"},
+                      Malformed{"Axiom: A\nignore: + ( -\n", 2, 11, "unexpected '('"}));
 
 TEST(LsysParser, GarbageNeverCrashesOrHangs) {
     // A small deterministic fuzz: random mixtures of the language's characters and random bytes.
@@ -162,11 +159,10 @@ TEST(LsysParser, GarbageNeverCrashesOrHangs) {
             options.maxModules = 10000;
             try {
                 derive(result.grammar, options);
-            } catch (const DerivationError&) {
-            }
+            } catch (const DerivationError&) {}
         }
     }
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

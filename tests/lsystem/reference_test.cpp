@@ -25,32 +25,32 @@ TEST_P(LsysReferenceCounts, ModulesAndF) {
     EXPECT_EQ(countOf(string, grammar, "F"), c.f);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Reference, LsysReferenceCounts,
-    ::testing::Values(CountCase{"plants/koch_curve.lsys", 4, 1249, 625},
-                      CountCase{"plants/dialects/koch_curve.crankshaw", 4, 1249, 625},
-                      CountCase{"plants/fractal_bush.lsys", 5, 88940, 32768},
-                      CountCase{"plants/dialects/fractal_bush.crankshaw", 5, 88940, 32768},
-                      CountCase{"plants/fractal_tree.lsys", 5, 6263, 1488},
-                      CountCase{"plants/dialects/fractal_tree.crankshaw", 5, 6263, 1488},
-                      CountCase{"plants/decreasing_tree.lsys", 8, 2296, 255},
-                      CountCase{"plants/dialects/decreasing_tree.crankshaw", 8, 2296, 255},
-                      CountCase{"plants/gravity_tree_2d.lsys", 6, 4608, 1330},
-                      CountCase{"plants/dialects/gravity_tree_2d.crankshaw", 6, 4608, 1330}),
-    [](const auto& info) {
-        std::string name = info.param.file;
-        name = name.substr(name.rfind('/') + 1);
-        for (char& c : name)
-            if (c == '.') c = '_';
-        return name;
-    });
+INSTANTIATE_TEST_SUITE_P(Reference, LsysReferenceCounts,
+                         ::testing::Values(CountCase{"plants/koch_curve.lsys", 4, 1249, 625},
+                                           CountCase{"plants/dialects/koch_curve.crankshaw", 4, 1249, 625},
+                                           CountCase{"plants/fractal_bush.lsys", 5, 88940, 32768},
+                                           CountCase{"plants/dialects/fractal_bush.crankshaw", 5, 88940, 32768},
+                                           CountCase{"plants/fractal_tree.lsys", 5, 6263, 1488},
+                                           CountCase{"plants/dialects/fractal_tree.crankshaw", 5, 6263, 1488},
+                                           CountCase{"plants/decreasing_tree.lsys", 8, 2296, 255},
+                                           CountCase{"plants/dialects/decreasing_tree.crankshaw", 8, 2296, 255},
+                                           CountCase{"plants/gravity_tree_2d.lsys", 6, 4608, 1330},
+                                           CountCase{"plants/dialects/gravity_tree_2d.crankshaw", 6, 4608, 1330}),
+                         [](const auto& info) {
+                             std::string name = info.param.file;
+                             name = name.substr(name.rfind('/') + 1);
+                             for (char& c : name)
+                                 if (c == '.') c = '_';
+                             return name;
+                         });
 
 TEST(LsysReference, AnabaenaGrowsAsFibonacci) {
     for (const char* file : {"plants/anabaena.lsys", "plants/dialects/anabaena.crankshaw"}) {
         SCOPED_TRACE(file);
         Grammar grammar = loadOk(file);
         const size_t expected[] = {1, 2, 3, 5, 8, 13};
-        for (int steps = 0; steps <= 5; ++steps) EXPECT_EQ(derive(grammar, stepsOf(steps)).size(), expected[steps]) << steps;
+        for (int steps = 0; steps <= 5; ++steps)
+            EXPECT_EQ(derive(grammar, stepsOf(steps)).size(), expected[steps]) << steps;
     }
     Grammar grammar = loadOk("plants/anabaena.lsys");
     EXPECT_EQ(toString(derive(grammar, stepsOf(3)), grammar.symbols), "alalbralbr");
@@ -82,7 +82,8 @@ TEST(LsysReference, RobbinsSampleA) {
     for (const char* file : {"plants/robbins_sample_a.lsys", "plants/dialects/robbins_sample_a.robbins"}) {
         Grammar grammar = loadOk(file);
         const std::pair<int, size_t> expected[] = {{5, 17}, {7, 53}, {9, 161}, {11, 485}};
-        for (auto [steps, f] : expected) EXPECT_EQ(countOf(derive(grammar, stepsOf(steps)), grammar, "F"), f) << file << ", " << steps;
+        for (auto [steps, f] : expected)
+            EXPECT_EQ(countOf(derive(grammar, stepsOf(steps)), grammar, "F"), f) << file << ", " << steps;
     }
 }
 
@@ -103,7 +104,7 @@ TEST(LsysReference, StochasticSameSeedSameStringOtherSeedsDiffer) {
         options.seed = seed;
         different += toString(derive(grammar, options), grammar.symbols) != first;
     }
-    EXPECT_GE(different, 9);  // two seeds may collide by chance, not nine
+    EXPECT_GE(different, 9); // two seeds may collide by chance, not nine
 }
 
 TEST(LsysReference, ContextBenchmarkSize) {
@@ -111,5 +112,5 @@ TEST(LsysReference, ContextBenchmarkSize) {
     EXPECT_EQ(derive(grammar, stepsOf(28)).size(), 3206768u);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

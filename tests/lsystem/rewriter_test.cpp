@@ -25,7 +25,7 @@ TEST_P(LsysThreadIndependence, TwoThreadsGiveTheSameStringAsOne) {
     single.threads = 1;
     DeriveOptions parallel = stepsOf(steps);
     parallel.threads = 2;
-    parallel.parallelThreshold = 1;  // split even the smallest strings
+    parallel.parallelThreshold = 1; // split even the smallest strings
     DeriveOptions many = parallel;
     many.threads = 5;
     ModuleString reference = derive(grammar, single);
@@ -33,15 +33,16 @@ TEST_P(LsysThreadIndependence, TwoThreadsGiveTheSameStringAsOne) {
     expectIdentical(derive(grammar, many), reference);
 }
 
-INSTANTIATE_TEST_SUITE_P(Rewriter, LsysThreadIndependence,
-                         ::testing::Values(std::pair{"plants/fractal_bush.lsys", 4}, std::pair{"plants/decreasing_tree.lsys", 8},
-                                           std::pair{"plants/context_benchmark.lsys", 16}, std::pair{"plants/stochastic.lsys", 5},
-                                           std::pair{"plants/context_brackets.lsys", 2}, std::pair{"plants/robbins_sample_a.lsys", 7}),
-                         [](const auto& info) {
-                             std::string name = info.param.first;
-                             name = name.substr(name.find('/') + 1);
-                             return name.substr(0, name.find('.'));
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Rewriter, LsysThreadIndependence,
+    ::testing::Values(std::pair{"plants/fractal_bush.lsys", 4}, std::pair{"plants/decreasing_tree.lsys", 8},
+                      std::pair{"plants/context_benchmark.lsys", 16}, std::pair{"plants/stochastic.lsys", 5},
+                      std::pair{"plants/context_brackets.lsys", 2}, std::pair{"plants/robbins_sample_a.lsys", 7}),
+    [](const auto& info) {
+        std::string name = info.param.first;
+        name = name.substr(name.find('/') + 1);
+        return name.substr(0, name.find('.'));
+    });
 
 TEST(LsysRewriter, RandomParametersDoNotDependOnThreads) {
     Grammar grammar = parseOk("Axiom: A(1)\nA(x) --> A(x+ran(1))[B(nran(0,1))]A(ran(x))\n");
@@ -104,7 +105,7 @@ TEST(LsysRewriter, InterpretationIsOnlyForTheTurtle) {
 TEST(LsysRewriter, ModuleBudgetStopsWithAClearError) {
     Grammar grammar = loadOk("plants/fractal_bush.lsys");
     DeriveOptions options = stepsOf(7);
-    options.maxModules = 100000;  // step 5 gives 88 940 modules, step 6 about 711 500
+    options.maxModules = 100000; // step 5 gives 88 940 modules, step 6 about 711 500
     try {
         derive(grammar, options);
         FAIL() << "expected the budget to be exceeded";
@@ -151,5 +152,5 @@ TEST(LsysRewriter, ModuleBudgetAppliesToDecomposition) {
     EXPECT_THROW(derive(grammar, options), DerivationError);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

@@ -20,7 +20,8 @@ TEST(LsysStochastic, FrequenciesFollowTheProbabilities) {
         for (auto [name, p] : {std::pair{"B", 0.2}, std::pair{"C", 0.3}, std::pair{"D", 0.5}}) {
             const double expected = n * p;
             const double sd = std::sqrt(n * p * (1 - p));
-            EXPECT_NEAR(static_cast<double>(countOf(string, grammar, name)), expected, 5 * sd) << name << " seed " << seed;
+            EXPECT_NEAR(static_cast<double>(countOf(string, grammar, name)), expected, 5 * sd)
+                << name << " seed " << seed;
         }
     }
 }
@@ -79,5 +80,5 @@ TEST(LsysStochastic, SeedFromTheHeaderIsUsed) {
     EXPECT_EQ(toString(derive(a, options), a.symbols), toString(derive(b, stepsOf(1)), b.symbols));
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

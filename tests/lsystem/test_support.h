@@ -48,4 +48,4 @@ inline size_t countOf(const ModuleString& string, const Grammar& grammar, const 
     return count;
 }
 
-}  // namespace lsys::test
+} // namespace lsys::test

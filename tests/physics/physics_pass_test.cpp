@@ -98,7 +98,8 @@ std::vector<gpu::JointParams> treeModel() {
                 if (k == 0) b.add(branch, bend(50, {0, 0.2f, 1}), 0.3f, 0.008f, 0.12f);
             }
         }
-        if (level < 2) trunk = b.add(trunk, bend(4, {0, 0, 1}), 1.2f - 0.3f * float(level), 0.1f - 0.025f * float(level), 0.0f);
+        if (level < 2)
+            trunk = b.add(trunk, bend(4, {0, 0, 1}), 1.2f - 0.3f * float(level), 0.1f - 0.025f * float(level), 0.0f);
     }
     return b.finish();
 }
@@ -180,8 +181,9 @@ TEST_F(PhysicsPassTest, MatchesCpuReferenceAfter600SubStepsInGustyWind) {
             translationDeviation, glm::length(glm::vec3(poses[j].translation) - glm::vec3(cpu.poses[j].translation)));
         largestBend = std::max(largestBend, glm::length(gpu::rotationVectorOf(cpu.states[j].rotation)));
     }
-    std::printf("%u joints: deviation %.3g rad (states), %.3g rad (poses), %.3g m (translations); largest bend %.3g rad\n",
-                joints, stateDeviation, poseDeviation, translationDeviation, largestBend);
+    std::printf(
+        "%u joints: deviation %.3g rad (states), %.3g rad (poses), %.3g m (translations); largest bend %.3g rad\n",
+        joints, stateDeviation, poseDeviation, translationDeviation, largestBend);
     EXPECT_GT(largestBend, 0.02f) << "the wind should move the forest";
     EXPECT_LT(stateDeviation, 1e-4f);
     EXPECT_LT(poseDeviation, 1e-4f);
@@ -192,8 +194,9 @@ TEST_F(PhysicsPassTest, RestInRestOutWithZeroSubSteps) {
     SkeletonSet cpu = makeForest(2);
     PhysicsPass pass = createPhysicsPass(ctx, cpu);
     const uint32_t joints = uint32_t(cpu.states.size());
-    runFrame(ctx, pass, makePhysicsUniforms(gustyWind(), PhysicsSettings{}, 3.0f, 1.0f / 240.0f, 0,
-                                            uint32_t(cpu.skeletons.size()), joints));
+    runFrame(ctx, pass,
+             makePhysicsUniforms(gustyWind(), PhysicsSettings{}, 3.0f, 1.0f / 240.0f, 0, uint32_t(cpu.skeletons.size()),
+                                 joints));
     poseSkeletonsOnCpu(cpu);
     std::vector<gpu::JointState> states;
     std::vector<gpu::JointPose> poses;
@@ -230,8 +233,8 @@ TEST_F(PhysicsPassTest, MillionJointsDispatchRuns) {
     const uint32_t joints = uint32_t(set.states.size());
     ASSERT_GE(joints, 1000000u);
     PhysicsPass pass = createPhysicsPass(ctx, set);
-    const gpu::PhysicsUniforms u = makePhysicsUniforms(gustyWind(), PhysicsSettings{}, 0.0f, 1.0f / 240.0f,
-                                                       kStepsPerFrame, trees, joints);
+    const gpu::PhysicsUniforms u =
+        makePhysicsUniforms(gustyWind(), PhysicsSettings{}, 0.0f, 1.0f / 240.0f, kStepsPerFrame, trees, joints);
     runFrame(ctx, pass, u); // pipelines warm up
     const auto start = std::chrono::steady_clock::now();
     runFrame(ctx, pass, u);

@@ -3,8 +3,8 @@
 // joint swings with period 2π·sqrt(I/k), energy only decays without wind,
 // every plant of data/plants stays finite in a gale over the whole stiffness
 // range, and the model's parameters follow beam theory and the leaves.
-#include "engine/scene/plant_models.h"
 #include "engine/physics/plant_physics.h"
+#include "engine/scene/plant_models.h"
 #include "shaders/joint_physics.h"
 
 #include "lsystem/dialects/dialect.h"
@@ -13,8 +13,8 @@
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"
 
-#include <gtest/gtest.h>
 #include <glm/gtc/quaternion.hpp>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -34,7 +34,8 @@ lsys::PlantAsset rodAsset(const glm::quat& rest, float length, float radius, flo
     lsys::PlantAsset asset;
     asset.materials = {{"bark", glm::vec3(0.5f), false}, {"leaf", glm::vec3(0.3f), true}};
     asset.joints.push_back({-1, {glm::vec3(0.0f), rest}, length, radius, radius, stiffness});
-    asset.primitives.push_back({{glm::vec3(0.0f), rest}, lsys::PrimitiveKind::Segment, 0, 0, 0, length, radius, radius});
+    asset.primitives.push_back(
+        {{glm::vec3(0.0f), rest}, lsys::PrimitiveKind::Segment, 0, 0, 0, length, radius, radius});
     return asset;
 }
 
@@ -149,8 +150,8 @@ TEST(PlantPhysics, RotationLogMatchesExactFormulaOverTheWholeAngleRange) {
             const gpu::vec4 q(float(v.x), float(v.y), float(v.z), float(std::cos(0.5 * angle) * sign));
             const glm::dvec3 got(gpu::rotationVectorOf(q));
             // Near π the axis flips with float rounding of w: compare the turn.
-            const double error = angle < std::numbers::pi - 1e-3 ? glm::length(got - exact)
-                                                                : std::abs(glm::length(got) - angle);
+            const double error =
+                angle < std::numbers::pi - 1e-3 ? glm::length(got - exact) : std::abs(glm::length(got) - angle);
             worst = std::max(worst, error);
         }
     }
@@ -180,7 +181,8 @@ TEST(PlantPhysics, RodSettlesWhereSpringBalancesWeight) {
     // A horizontal rod drooping by θ carries its weight M·g at d·cos θ from
     // the base: it rests where k·θ = M·g·d·cos θ. Choosing θ* sets k exactly.
     for (float expected : {0.05f, 0.3f, 0.8f, 1.2f}) {
-        std::vector<gpu::JointParams> params = pf::buildJointParams(rodAsset(horizontal(), 1.2f, 0.02f), 1.0f, settings);
+        std::vector<gpu::JointParams> params =
+            pf::buildJointParams(rodAsset(horizontal(), 1.2f, 0.02f), 1.0f, settings);
         gpu::JointParams& p = params[0];
         const double weightTorque = double(p.load.w) * settings.gravity * p.load.y;
         ASSERT_NEAR(p.load.y, 0.6f, 1e-6f); // a rod's centre of mass is half way
@@ -204,7 +206,8 @@ TEST(PlantPhysics, UndampedPeriodIsTwoPiSqrtInertiaOverStiffness) {
     settings.airDensity = 0.0f;
     settings.subStep = 1.0f / 240.0f;
     for (float radius : {0.01f, 0.02f}) {
-        const std::vector<gpu::JointParams> params = pf::buildJointParams(rodAsset(glm::quat(1, 0, 0, 0), 1.0f, radius), 1.0f, settings);
+        const std::vector<gpu::JointParams> params =
+            pf::buildJointParams(rodAsset(glm::quat(1, 0, 0, 0), 1.0f, radius), 1.0f, settings);
         pf::SkeletonSet set = oneSkeleton(params);
         set.states[0].rotation = gpu::quatFromRotationVector({0.01f, 0.0f, 0.0f});
         const double expected = 2.0 * std::numbers::pi * std::sqrt(double(params[0].dynamics.y) / params[0].dynamics.z);
@@ -227,7 +230,8 @@ TEST(PlantPhysics, UndampedPeriodIsTwoPiSqrtInertiaOverStiffness) {
 
 TEST(PlantPhysics, EnergyOnlyDecaysWithoutWind) {
     pf::PhysicsSettings settings; // default damping, gravity and air
-    const std::vector<gpu::JointParams> params = pf::buildJointParams(rodAsset(horizontal(), 1.0f, 0.01f), 1.0f, settings);
+    const std::vector<gpu::JointParams> params =
+        pf::buildJointParams(rodAsset(horizontal(), 1.0f, 0.01f), 1.0f, settings);
     ASSERT_GT(params[0].dynamics.z, params[0].load.w * settings.gravity * params[0].load.y);
     pf::SkeletonSet set = oneSkeleton(params);
     double energy = energyOf(params[0], set.states[0], settings);
@@ -309,9 +313,9 @@ TEST(PlantPhysics, RestPoseAtTimeZero) {
     pf::SkeletonSet set = oneSkeleton(pf::buildJointParams(*plant, scaleTo(*plant, 12.0f), settings));
     const std::vector<gpu::JointState> rest = set.states;
     EXPECT_EQ(pf::subStepsBetween(0.0, 0.0, settings), 0u);
-    const gpu::PhysicsUniforms u = pf::makePhysicsUniforms(gale(), settings, 0.0f, settings.subStep,
-                                                           pf::subStepsBetween(0.0, 0.0, settings), 1,
-                                                           uint32_t(set.states.size()));
+    const gpu::PhysicsUniforms u =
+        pf::makePhysicsUniforms(gale(), settings, 0.0f, settings.subStep, pf::subStepsBetween(0.0, 0.0, settings), 1,
+                                uint32_t(set.states.size()));
     pf::stepSkeletonsOnCpu(set, u);
     pf::poseSkeletonsOnCpu(set);
     ASSERT_EQ(std::memcmp(rest.data(), set.states.data(), rest.size() * sizeof(gpu::JointState)), 0);
@@ -468,7 +472,8 @@ TEST(PlantPhysics, DefaultForestSwaysTwigsMoreThanTrunks) {
             for (const pf::MeshRange& range : model.meshes[lod])
                 for (uint32_t i = 0; i < range.indexCount; ++i)
                     ASSERT_LT(pool.vertices[range.vertexOffset + pool.indices[range.firstIndex + i]].joint.x,
-                              std::max(model.joints, 1u)) << model.name;
+                              std::max(model.joints, 1u))
+                        << model.name;
     }
     const pf::PlantModelInfo& tree = pool.models[pool.modelOf(0, 0)];
     ASSERT_EQ(scene.species[0].name, "broadleaf");

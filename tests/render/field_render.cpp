@@ -15,7 +15,8 @@ FieldShotResult renderField(const GpuContext& ctx, const FieldShot& shot) {
         view.time = float(shot.time);
         view.forcedLod = shot.forcedLod;
         renderer.setView(view, shot.size);
-        result.image = captureFrame(ctx, target, [&](VkCommandBuffer cmd, const RenderTarget& t) { renderer.record(cmd, t); });
+        result.image =
+            captureFrame(ctx, target, [&](VkCommandBuffer cmd, const RenderTarget& t) { renderer.record(cmd, t); });
         result.stats = renderer.readStats();
         destroyRenderTarget(ctx, target);
     }

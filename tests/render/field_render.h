@@ -1,8 +1,8 @@
 // Renders scene files headless through the FieldRenderer for the render tests.
 #pragma once
 
-#include "engine/vk/capture.h"
 #include "engine/field/field_renderer.h"
+#include "engine/vk/capture.h"
 
 #include <optional>
 #include <string>
@@ -10,10 +10,10 @@
 namespace pf::test {
 
 struct FieldShot {
-    std::string scene;             // file name in data/scenes
+    std::string scene; // file name in data/scenes
     VkExtent2D size{640, 360};
     double time = 0.0;
-    std::optional<Camera> camera;  // replaces the scene's camera path
+    std::optional<Camera> camera; // replaces the scene's camera path
     std::optional<uint32_t> forcedLod;
     bool shadows = true;
 };

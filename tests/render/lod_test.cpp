@@ -16,7 +16,8 @@ std::vector<bool> plantMask(const RgbaImage& image, const RgbaImage& empty) {
     std::vector<bool> mask(size_t(image.width) * image.height);
     for (size_t i = 0; i < mask.size(); ++i) {
         int delta = 0;
-        for (int c = 0; c < 3; ++c) delta = std::max(delta, std::abs(image.pixels[i * 4 + c] - empty.pixels[i * 4 + c]));
+        for (int c = 0; c < 3; ++c)
+            delta = std::max(delta, std::abs(image.pixels[i * 4 + c] - empty.pixels[i * 4 + c]));
         mask[i] = delta > 12;
     }
     return mask;

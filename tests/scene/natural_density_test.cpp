@@ -51,7 +51,8 @@ TEST(NaturalDensity, AsManyAsTheSceneHoldsGivesTheSceneAsWritten) {
     const PlacedField counted = placeField(scene, PlantCount{generatedOf(scene, written.plants)});
     EXPECT_EQ(counted.terrain, scene.terrain);
     ASSERT_EQ(counted.plants.size(), written.plants.size());
-    for (size_t i = 0; i < written.plants.size(); ++i) EXPECT_EQ(counted.plants[i].position, written.plants[i].position);
+    for (size_t i = 0; i < written.plants.size(); ++i)
+        EXPECT_EQ(counted.plants[i].position, written.plants[i].position);
     EXPECT_TRUE(counted.note.empty());
 }
 
@@ -66,12 +67,14 @@ TEST(NaturalDensity, FewerPlantsFillACentralSquareOfTheScenesField) {
     EXPECT_EQ(generatedOf(scene, field.plants), count);
     // A quarter of the plants: a square of about half the side, at the scene's density.
     for (const PlantInstance& p : field.plants)
-        EXPECT_TRUE(scene.species[p.species].placement.mode == PlacementMode::Explicit || maxNorm(p) <= 0.25f * 100 * 1.15f)
+        EXPECT_TRUE(scene.species[p.species].placement.mode == PlacementMode::Explicit ||
+                    maxNorm(p) <= 0.25f * 100 * 1.15f)
             << p.position.x << ", " << p.position.z;
     // And they are the scene's own plants there, not a thinned field.
     for (const PlantInstance& p : field.plants)
-        EXPECT_TRUE(std::any_of(written.plants.begin(), written.plants.end(),
-                                [&](const PlantInstance& w) { return w.position == p.position && w.species == p.species; }));
+        EXPECT_TRUE(std::any_of(written.plants.begin(), written.plants.end(), [&](const PlantInstance& w) {
+            return w.position == p.position && w.species == p.species;
+        }));
     // Every species keeps its share.
     for (uint32_t s = 0; s < 2; ++s) {
         const auto ofSpecies = [&](const std::vector<PlantInstance>& v) {
@@ -99,11 +102,13 @@ TEST(NaturalDensity, MorePlantsGrowTheNoiseTerrainKeepingItsSpacingAndHills) {
     // The same hills in the same places: heights agree across the scene's square.
     const Heightfield own = terrainOf(scene);
     for (float x = -50; x <= 50; x += 7.3f)
-        for (float z = -50; z <= 50; z += 6.1f) EXPECT_NEAR(heightAt(field.heightfield, x, z), heightAt(own, x, z), 0.15f);
+        for (float z = -50; z <= 50; z += 6.1f)
+            EXPECT_NEAR(heightAt(field.heightfield, x, z), heightAt(own, x, z), 0.15f);
     // The scene's own square holds about as many plants as the scene gives it.
     EXPECT_NEAR(double(generatedWithin(scene, field.plants, 50)), double(natural), 0.1 * double(natural));
     // Hand-placed plants stay where they were.
-    for (const PlantInstance& p : field.plants) EXPECT_TRUE(p.species != 2 || p.position.x == 3.0f || p.position.x == -20.0f);
+    for (const PlantInstance& p : field.plants)
+        EXPECT_TRUE(p.species != 2 || p.position.x == 3.0f || p.position.x == -20.0f);
     EXPECT_EQ(field.plants.size() - generatedOf(scene, field.plants), 2u);
 }
 
@@ -116,8 +121,9 @@ TEST(NaturalDensity, CountsAreExactAndTheSameEveryTime) {
         ASSERT_EQ(a.plants.size(), b.plants.size());
         for (size_t i = 0; i < a.plants.size(); ++i) ASSERT_EQ(a.plants[i].position, b.plants[i].position) << count;
         // Grouped by species in scene order.
-        EXPECT_TRUE(std::is_sorted(a.plants.begin(), a.plants.end(),
-                                   [](const PlantInstance& l, const PlantInstance& r) { return l.species < r.species; }));
+        EXPECT_TRUE(
+            std::is_sorted(a.plants.begin(), a.plants.end(),
+                           [](const PlantInstance& l, const PlantInstance& r) { return l.species < r.species; }));
     }
 }
 
@@ -141,7 +147,8 @@ TEST(NaturalDensity, DensifyKeepsTheScenesTerrainAndScalesTheDistances) {
 
 TEST(NaturalDensity, AnImageTerrainCannotGrowSoItIsDensifiedWithANote) {
     RgbaImage image{33, 33, std::vector<uint8_t>(33 * 33 * 4, 255)};
-    for (size_t i = 0; i < 33 * 33; ++i) image.pixels[i * 4] = image.pixels[i * 4 + 1] = image.pixels[i * 4 + 2] = uint8_t(i % 7);
+    for (size_t i = 0; i < 33 * 33; ++i)
+        image.pixels[i * 4] = image.pixels[i * 4 + 1] = image.pixels[i * 4 + 2] = uint8_t(i % 7);
     const auto png = test::testFolder() / "ground.png";
     writePng(png.string(), image);
     const Scene scene = loadScene(test::writeFile("image.json", R"({

@@ -28,8 +28,8 @@ pf::PlacementRule ruleWithDistance(float distance, uint32_t species = 0) {
 
 bool sameInstances(const std::vector<pf::PlantInstance>& a, const std::vector<pf::PlantInstance>& b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](const auto& x, const auto& y) {
-               return x.position == y.position && x.rotation == y.rotation && x.scale == y.scale && x.species == y.species &&
-                      x.variant == y.variant && x.windPhase == y.windPhase;
+               return x.position == y.position && x.rotation == y.rotation && x.scale == y.scale &&
+                      x.species == y.species && x.variant == y.variant && x.windPhase == y.windPhase;
            });
 }
 
@@ -153,7 +153,8 @@ TEST(PoissonDisk, RejectsInvalidRules) {
 
 std::vector<glm::vec2> pointsOf(const std::vector<pf::PlantInstance>& instances, uint32_t species) {
     std::vector<pf::PlantInstance> selected;
-    std::copy_if(instances.begin(), instances.end(), std::back_inserter(selected), [&](const auto& i) { return i.species == species; });
+    std::copy_if(instances.begin(), instances.end(), std::back_inserter(selected),
+                 [&](const auto& i) { return i.species == species; });
     return groundPoints(selected);
 }
 

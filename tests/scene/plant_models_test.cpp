@@ -33,7 +33,8 @@ bool isTree(const pf::Species& species) { return species.height && *species.heig
 template <typename F>
 void forEachMesh(const pf::PlantModelInfo& model, F f) {
     for (uint32_t lod = 0; lod < pf::kMeshLodCount; ++lod)
-        for (uint32_t drawClass = 0; drawClass < pf::kMeshClassCount; ++drawClass) f(lod, drawClass, model.meshes[lod][drawClass]);
+        for (uint32_t drawClass = 0; drawClass < pf::kMeshClassCount; ++drawClass)
+            f(lod, drawClass, model.meshes[lod][drawClass]);
 }
 
 // Vertices a mesh's indices may reach: up to the next mesh's first vertex.
@@ -91,14 +92,17 @@ TEST(PlantModels, RangesAndIndicesLieInsideThePool) {
             const uint32_t vertices = verticesOf(pool, range);
             ASSERT_LE(uint64_t(range.vertexOffset) + vertices, pool.vertices.size());
             for (uint32_t i = 0; i < range.indexCount; ++i)
-                ASSERT_LT(pool.indices[range.firstIndex + i], vertices) << model.name << " lod " << lod << " class " << drawClass;
+                ASSERT_LT(pool.indices[range.firstIndex + i], vertices)
+                    << model.name << " lod " << lod << " class " << drawClass;
             for (uint32_t i = 0; i < vertices; ++i) {
                 const gpu::FieldVertex& v = pool.vertices[range.vertexOffset + i];
                 ASSERT_LT(v.joint.x, model.joints) << model.name;
                 ASSERT_NEAR(glm::length(glm::vec3(v.normal)), 1.0f, 1e-3f) << model.name;
                 const float kind = v.albedo.w;
-                if (drawClass == DRAW_BARK) ASSERT_EQ(kind, SURFACE_BARK);
-                else ASSERT_TRUE(kind == SURFACE_LEAF || kind == SURFACE_BLADE);
+                if (drawClass == DRAW_BARK)
+                    ASSERT_EQ(kind, SURFACE_BARK);
+                else
+                    ASSERT_TRUE(kind == SURFACE_LEAF || kind == SURFACE_BLADE);
                 if (kind == SURFACE_LEAF) {
                     ASSERT_GE(v.position.w, 0.0f);
                     ASSERT_LE(v.position.w, 1.0f);
@@ -138,7 +142,8 @@ TEST(PlantModels, BoundsContainEveryVertex) {
         forEachMesh(model, [&](uint32_t, uint32_t, const pf::MeshRange& range) {
             for (uint32_t i = 0; i < range.indexCount; ++i) {
                 const glm::vec3 p(pool.vertices[range.vertexOffset + pool.indices[range.firstIndex + i]].position);
-                ASSERT_TRUE(glm::all(glm::greaterThanEqual(p, lo)) && glm::all(glm::lessThanEqual(p, hi))) << model.name;
+                ASSERT_TRUE(glm::all(glm::greaterThanEqual(p, lo)) && glm::all(glm::lessThanEqual(p, hi)))
+                    << model.name;
                 ASSERT_LE(glm::distance(p, centre), model.gpu.sphere.w * 1.0001f) << model.name;
             }
         });
@@ -166,7 +171,9 @@ TEST(PlantModels, SameSceneGivesTheSamePoolBitForBit) {
     const pf::PlantModelPool second = pf::buildPlantModels(defaultScene());
     ASSERT_EQ(first.vertices.size(), second.vertices.size());
     ASSERT_EQ(first.indices, second.indices);
-    EXPECT_EQ(std::memcmp(first.vertices.data(), second.vertices.data(), first.vertices.size() * sizeof(gpu::FieldVertex)), 0);
+    EXPECT_EQ(
+        std::memcmp(first.vertices.data(), second.vertices.data(), first.vertices.size() * sizeof(gpu::FieldVertex)),
+        0);
     ASSERT_EQ(first.models.size(), second.models.size());
     for (size_t m = 0; m < first.models.size(); ++m) {
         EXPECT_EQ(first.models[m].meshes, second.models[m].meshes);

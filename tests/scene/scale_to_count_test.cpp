@@ -21,7 +21,8 @@ std::vector<pf::PlacementRule> forest() {
 }
 
 size_t countOf(const std::vector<pf::PlantInstance>& instances, uint32_t species) {
-    return size_t(std::count_if(instances.begin(), instances.end(), [&](const auto& i) { return i.species == species; }));
+    return size_t(
+        std::count_if(instances.begin(), instances.end(), [&](const auto& i) { return i.species == species; }));
 }
 
 TEST(ScaleToCount, FewerPlantsGiveASparserPoissonField) {
@@ -38,10 +39,12 @@ TEST(ScaleToCount, FewerPlantsGiveASparserPoissonField) {
     // grown bush distance (a random third of the full field would).
     const float grownBush = pf::ruleDistance(rules[1]) * std::sqrt(3.0f);
     std::vector<pf::PlantInstance> bushes;
-    std::copy_if(sparse.begin(), sparse.end(), std::back_inserter(bushes), [](const auto& i) { return i.species == 1; });
+    std::copy_if(sparse.begin(), sparse.end(), std::back_inserter(bushes),
+                 [](const auto& i) { return i.species == 1; });
     EXPECT_GE(fieldtest::NearestPoints(fieldtest::groundPoints(bushes), 200, grownBush).minimumPairDistance(grownBush),
               0.9f * grownBush);
-    EXPECT_LT(fieldtest::largestEmptyRadius(fieldtest::groundPoints(sparse), 200, 0, 0.5f, 3 * grownBush), 2 * grownBush);
+    EXPECT_LT(fieldtest::largestEmptyRadius(fieldtest::groundPoints(sparse), 200, 0, 0.5f, 3 * grownBush),
+              2 * grownBush);
 }
 
 TEST(ScaleToCount, DensifiesToExactlyNWithEverySpecies) {

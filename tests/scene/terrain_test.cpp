@@ -38,7 +38,8 @@ TEST(NoiseTerrain, RollingHillsWithinTheFbmBound) {
     const pf::Heightfield terrain = pf::makeNoiseTerrain(settings);
     ASSERT_EQ(terrain.heights.size(), size_t(65 * 65));
     float amplitudeSum = 0;
-    for (uint32_t octave = 0; octave < settings.octaves; ++octave) amplitudeSum += settings.amplitude * std::pow(settings.gain, float(octave));
+    for (uint32_t octave = 0; octave < settings.octaves; ++octave)
+        amplitudeSum += settings.amplitude * std::pow(settings.gain, float(octave));
     const auto [low, high] = std::minmax_element(terrain.heights.begin(), terrain.heights.end());
     EXPECT_LE(*high, amplitudeSum * std::sqrt(0.5f));
     EXPECT_GE(*low, -amplitudeSum * std::sqrt(0.5f));
@@ -65,16 +66,18 @@ TEST(HeightAt, ReturnsTheSamplesAtGridPoints) {
     const pf::Heightfield terrain = threeByThree();
     for (uint32_t iz = 0; iz < 3; ++iz)
         for (uint32_t ix = 0; ix < 3; ++ix)
-            EXPECT_FLOAT_EQ(pf::heightAt(terrain, terrain.coordinate(ix), terrain.coordinate(iz)), terrain.height(ix, iz))
+            EXPECT_FLOAT_EQ(pf::heightAt(terrain, terrain.coordinate(ix), terrain.coordinate(iz)),
+                            terrain.height(ix, iz))
                 << ix << "," << iz;
 }
 
 TEST(HeightAt, InterpolatesBilinearlyBetweenSamples) {
     const pf::Heightfield terrain = threeByThree();
-    EXPECT_FLOAT_EQ(pf::heightAt(terrain, -1.0f, -2.0f), 0.5f);                  // half way along the first row
-    EXPECT_FLOAT_EQ(pf::heightAt(terrain, -2.0f, -1.0f), 1.5f);                  // half way down the first column
+    EXPECT_FLOAT_EQ(pf::heightAt(terrain, -1.0f, -2.0f), 0.5f);                 // half way along the first row
+    EXPECT_FLOAT_EQ(pf::heightAt(terrain, -2.0f, -1.0f), 1.5f);                 // half way down the first column
     EXPECT_FLOAT_EQ(pf::heightAt(terrain, 1.0f, 1.0f), (4 + 5 + 7 + 9) / 4.0f); // centre of the last cell
-    EXPECT_FLOAT_EQ(pf::heightAt(terrain, 1.5f, 0.5f), 4 * 0.25f * 0.75f + 5 * 0.75f * 0.75f + 7 * 0.25f * 0.25f + 9 * 0.75f * 0.25f);
+    EXPECT_FLOAT_EQ(pf::heightAt(terrain, 1.5f, 0.5f),
+                    4 * 0.25f * 0.75f + 5 * 0.75f * 0.75f + 7 * 0.25f * 0.25f + 9 * 0.75f * 0.25f);
 }
 
 TEST(HeightAt, ClampsOutsideTheSquare) {
@@ -106,9 +109,11 @@ class ImageTerrain : public ::testing::Test {
 protected:
     void SetUp() override { std::filesystem::create_directories(PLANTFIELD_TEST_OUTPUT_DIR); }
 
-    static std::string writeImage(const std::string& name, uint32_t width, uint32_t height, const std::vector<uint8_t>& rgb) {
+    static std::string writeImage(const std::string& name, uint32_t width, uint32_t height,
+                                  const std::vector<uint8_t>& rgb) {
         pf::RgbaImage image{width, height, {}};
-        for (size_t i = 0; i < rgb.size(); i += 3) image.pixels.insert(image.pixels.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 255});
+        for (size_t i = 0; i < rgb.size(); i += 3)
+            image.pixels.insert(image.pixels.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 255});
         const std::string path = std::string(PLANTFIELD_TEST_OUTPUT_DIR) + "/" + name;
         pf::writePng(path, image);
         return path;
@@ -131,8 +136,8 @@ TEST_F(ImageTerrain, MapsGreyLevelsToHeightsColumnToXRowToZ) {
     ASSERT_EQ(terrain.resolution, 2u);
     EXPECT_FLOAT_EQ(terrain.size, 10.0f);
     EXPECT_FLOAT_EQ(pf::heightAt(terrain, -5, -5), 0.0f);
-    EXPECT_FLOAT_EQ(pf::heightAt(terrain, 5, -5), 4.0f);   // 51/255 · 20
-    EXPECT_FLOAT_EQ(pf::heightAt(terrain, -5, 5), 16.0f);  // 204/255 · 20
+    EXPECT_FLOAT_EQ(pf::heightAt(terrain, 5, -5), 4.0f);  // 51/255 · 20
+    EXPECT_FLOAT_EQ(pf::heightAt(terrain, -5, 5), 16.0f); // 204/255 · 20
     EXPECT_FLOAT_EQ(pf::heightAt(terrain, 5, 5), 20.0f);
 }
 
@@ -168,11 +173,13 @@ TEST(TerrainMesh, VerticesSitOnTheSamplesAndTrianglesFaceUp) {
     for (uint32_t iz = 0; iz < terrain.resolution; iz += 16)
         for (uint32_t ix = 0; ix < terrain.resolution; ix += 16) {
             const size_t v = size_t(iz) * terrain.resolution + ix;
-            EXPECT_EQ(mesh.positions[v], glm::vec3(terrain.coordinate(ix), terrain.height(ix, iz), terrain.coordinate(iz)));
+            EXPECT_EQ(mesh.positions[v],
+                      glm::vec3(terrain.coordinate(ix), terrain.height(ix, iz), terrain.coordinate(iz)));
             EXPECT_EQ(mesh.normals[v], pf::normalAt(terrain, mesh.positions[v].x, mesh.positions[v].z));
         }
     for (size_t i = 0; i < mesh.indices.size(); i += 3) {
-        const glm::vec3 a = mesh.positions[mesh.indices[i]], b = mesh.positions[mesh.indices[i + 1]], c = mesh.positions[mesh.indices[i + 2]];
+        const glm::vec3 a = mesh.positions[mesh.indices[i]], b = mesh.positions[mesh.indices[i + 1]],
+                        c = mesh.positions[mesh.indices[i + 2]];
         ASSERT_GT(glm::cross(b - a, c - a).y, 0.0f) << "triangle " << i / 3 << " faces down";
     }
     // Every vertex is used: no cell is missing.

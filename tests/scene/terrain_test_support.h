@@ -41,8 +41,10 @@ inline std::vector<glm::vec2> groundPoints(const std::vector<pf::PlantInstance>&
 class NearestPoints {
 public:
     NearestPoints(const std::vector<glm::vec2>& points, float size, float cell)
-        : points_(points), origin_(-0.5f * size), cell_(cell), side_(int(size / cell) + 1), buckets_(size_t(side_) * side_) {
-        for (size_t i = 0; i < points.size(); ++i) buckets_[bucket(cellOf(points[i].x), cellOf(points[i].y))].push_back(i);
+        : points_(points), origin_(-0.5f * size), cell_(cell), side_(int(size / cell) + 1),
+          buckets_(size_t(side_) * side_) {
+        for (size_t i = 0; i < points.size(); ++i)
+            buckets_[bucket(cellOf(points[i].x), cellOf(points[i].y))].push_back(i);
     }
 
     // Distance from p to the nearest point other than `exclude`, searched out
@@ -78,9 +80,9 @@ private:
 // square shrunk by `margin`, where probeHere holds) to its nearest plant: the
 // radius of the largest empty disk, to within `step`. Holes wider than
 // `searchRadius` come back as infinity.
-inline float largestEmptyRadius(const std::vector<glm::vec2>& points, float size, float margin, float step,
-                                float searchRadius,
-                                const std::function<bool(glm::vec2)>& probeHere = [](glm::vec2) { return true; }) {
+inline float largestEmptyRadius(
+    const std::vector<glm::vec2>& points, float size, float margin, float step, float searchRadius,
+    const std::function<bool(glm::vec2)>& probeHere = [](glm::vec2) { return true; }) {
     const NearestPoints nearest(points, size, searchRadius);
     float largest = 0;
     for (float z = -0.5f * size + margin; z <= 0.5f * size - margin; z += step)

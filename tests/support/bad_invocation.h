@@ -11,8 +11,8 @@
 namespace pf::test {
 
 struct BadInvocation {
-    const char* name;              // the ctest name suffix
-    const char* args;              // OUT is replaced by a path in an empty scratch folder
+    const char* name; // the ctest name suffix
+    const char* args; // OUT is replaced by a path in an empty scratch folder
     const char* expectedInMessage;
 };
 

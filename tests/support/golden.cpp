@@ -60,8 +60,8 @@ RgbaImage makeDiffImage(const RgbaImage& actual, const RgbaImage& expected, int 
         return ::testing::AssertionSuccess() << "golden " << goldenPath << " rewritten";
     }
     if (!fs::exists(goldenPath))
-        return ::testing::AssertionFailure() << "golden " << goldenPath
-                                             << " is missing; create it with PLANTFIELD_UPDATE_GOLDENS=1";
+        return ::testing::AssertionFailure()
+               << "golden " << goldenPath << " is missing; create it with PLANTFIELD_UPDATE_GOLDENS=1";
     const RgbaImage expected = readPng(goldenPath);
     const ImageDiff diff = compareImages(actual, expected, tolerance.channel);
     std::ostringstream report;

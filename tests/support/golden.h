@@ -13,7 +13,7 @@
 namespace pf::test {
 
 struct ImageTolerance {
-    int channel = 5;                    // largest allowed |actual - expected| per channel, in 1/255
+    int channel = 5;                     // largest allowed |actual - expected| per channel, in 1/255
     double failingPixelFraction = 0.001; // pixels allowed beyond `channel`
 };
 

@@ -56,8 +56,8 @@ TEST(GoldenCompare, FailureWritesActualAndDiffImages) {
     fs::create_directories(dir / "goldens");
     writePng((dir / "goldens" / "square.png").string(), solid(6, 6, 0, 0, 0));
 
-    const ::testing::AssertionResult result =
-        matchesGolden(solid(6, 6, 255, 0, 0), "square", ImageTolerance{5, 0.0}, (dir / "goldens").string(), dir.string());
+    const ::testing::AssertionResult result = matchesGolden(solid(6, 6, 255, 0, 0), "square", ImageTolerance{5, 0.0},
+                                                            (dir / "goldens").string(), dir.string());
     EXPECT_FALSE(result);
     ASSERT_TRUE(fs::exists(dir / "square-actual.png"));
     ASSERT_TRUE(fs::exists(dir / "square-diff.png"));

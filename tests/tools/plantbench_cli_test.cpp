@@ -182,7 +182,8 @@ TEST(PlantbenchCli, SmallSweepWritesJsonAndCsvWithEveryPass) {
         for (const char* statistic : {"median", "p95"}) {
             const std::string name = "gpu_" + pass + "_ms_" + statistic;
             ASSERT_LT(column(name), rows[0].size()) << name;
-            for (size_t i = 1; i < rows.size(); ++i) EXPECT_FALSE(rows[i][column(name)].empty()) << name << " row " << i;
+            for (size_t i = 1; i < rows.size(); ++i)
+                EXPECT_FALSE(rows[i][column(name)].empty()) << name << " row " << i;
         }
     ASSERT_LT(column("joints_simulated"), rows[0].size());
     EXPECT_EQ(rows[1][0], "50");
@@ -197,8 +198,8 @@ TEST(PlantbenchCli, SmallSweepWritesJsonAndCsvWithEveryPass) {
 
 TEST(PlantbenchCli, DefaultSceneSweepMatchesCounts) {
     const fs::path json = scratchDir("default") / "sweep.json";
-    const CommandResult r = runCommand(kPlantbench + " --counts 100,300 --frames 2 --warmup 1 --size 160x90 --json " +
-                                       json.string());
+    const CommandResult r =
+        runCommand(kPlantbench + " --counts 100,300 --frames 2 --warmup 1 --size 160x90 --json " + json.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     expectWellFormedSweep(nlohmann::json::parse(readText(json)), kDefaultScene, {100, 300}, false);
 }
@@ -221,7 +222,8 @@ TEST(PlantbenchCli, PathSweepReportsEveryTimeAndTheWorst) {
             const nlohmann::json& point = result["path"][i];
             EXPECT_DOUBLE_EQ(point["time"].get<double>(), times[i]) << at;
             expectSpread(point["frame_ms"], at + " path frame_ms");
-            for (const std::string& pass : timedPasses()) expectSpread(point["gpu_ms"][pass], at + " path gpu_ms." + pass);
+            for (const std::string& pass : timedPasses())
+                expectSpread(point["gpu_ms"][pass], at + " path gpu_ms." + pass);
             EXPECT_EQ(point["triangles"].is_number(), true) << at;
             const double ms = point["frame_ms"]["median"].get<double>();
             if (ms > worst) worst = ms, worstTime = times[i];
@@ -243,9 +245,10 @@ TEST(PlantbenchCli, CountsKeepTheScenesDensitiesUnlessDensified) {
     // test_small places 20 bushes on its 40 m: 200 need about 126 m, unless densified.
     for (const bool densify : {false, true}) {
         const fs::path json = dir / (densify ? "densified.json" : "natural.json");
-        const CommandResult r = runCommand(kPlantbench + " " + kSmallScene + " --counts 10,200 --frames 1 --warmup 0"
-                                           " --size 32x32 --samples 1 --json " + json.string() +
-                                           (densify ? " --densify" : ""));
+        const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
+                                           " --counts 10,200 --frames 1 --warmup 0"
+                                           " --size 32x32 --samples 1 --json " +
+                                           json.string() + (densify ? " --densify" : ""));
         ASSERT_EQ(r.exitCode, 0) << r.output;
         const nlohmann::json j = nlohmann::json::parse(readText(json));
         EXPECT_EQ(j["count_mode"], densify ? "densify" : "natural");
@@ -262,7 +265,8 @@ TEST(PlantbenchCli, NaiveAboveNaiveMaxIsSkippedWithANote) {
     const fs::path json = scratchDir("naive-max") / "sweep.json";
     const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
                                        " --counts 30,60 --frames 1 --warmup 0 --size 64x64 --compare naive"
-                                       " --naive-max 40 --json " + json.string());
+                                       " --naive-max 40 --json " +
+                                       json.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const nlohmann::json j = nlohmann::json::parse(readText(json));
     EXPECT_TRUE(j["results"][0]["naive"].is_object());
@@ -275,9 +279,9 @@ TEST(PlantbenchCli, PlotWritesReadablePng) {
     ASSERT_EQ(runCommand("command -v gnuplot").exitCode, 0) << "gnuplot is missing: run tools/deps.sh";
     const fs::path dir = scratchDir("plot");
     const fs::path png = dir / "sweep.png";
-    const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
-                                       " --counts 20,40 --frames 1 --warmup 0 --size 64x64 --compare naive --plot " +
-                                       png.string());
+    const CommandResult r =
+        runCommand(kPlantbench + " " + kSmallScene +
+                   " --counts 20,40 --frames 1 --warmup 0 --size 64x64 --compare naive --plot " + png.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const RgbaImage image = readPng(png.string());
     EXPECT_GE(image.width, 800u);
@@ -321,8 +325,8 @@ TEST(PlantbenchCli, MalformedSceneFailsClearlyWithoutWriting) {
     const fs::path dir = scratchDir("bad-scene");
     const fs::path scene = dir / "broken.json";
     std::ofstream(scene) << "{\n  \"species\": [ { \"name\": 3 } ]\n}\n";
-    const CommandResult r = runCommand(kPlantbench + " " + scene.string() + " --counts 10 --json " +
-                                       (dir / "out.json").string());
+    const CommandResult r =
+        runCommand(kPlantbench + " " + scene.string() + " --counts 10 --json " + (dir / "out.json").string());
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("broken.json:"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(dir / "out.json"));
@@ -349,9 +353,9 @@ TEST(PlantbenchCli, UnwritableOutputLeavesExistingFileUntouched) {
 TEST(PlantbenchCli, HelpListsEveryOption) {
     const CommandResult r = runCommand(kPlantbench + " --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* flag : {"--counts", "--frames", "--warmup", "--size", "--samples", "--no-shadows", "--compare",
-                             "--naive-max", "--json", "--csv", "--plot", "--seed", "--device", "--validation", "--path",
-                             "--densify"})
+    for (const char* flag :
+         {"--counts", "--frames", "--warmup", "--size", "--samples", "--no-shadows", "--compare", "--naive-max",
+          "--json", "--csv", "--plot", "--seed", "--device", "--validation", "--path", "--densify"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 

@@ -12,7 +12,8 @@ constexpr uint64_t kMiB = 1ull << 20, kGiB = 1ull << 30;
 constexpr uint64_t kMaxPlants = 16777216;
 
 void expectMentions(const std::string& message, std::initializer_list<std::string> parts) {
-    for (const std::string& part : parts) EXPECT_NE(message.find(part), std::string::npos) << part << " in: " << message;
+    for (const std::string& part : parts)
+        EXPECT_NE(message.find(part), std::string::npos) << part << " in: " << message;
 }
 
 TEST(PlantbenchMemory, FieldEstimateGrowsWithThePlants) {
@@ -31,17 +32,18 @@ TEST(PlantbenchMemory, FieldEstimateGrowsWithThePlants) {
 }
 
 TEST(PlantbenchMemory, FittingCountIsAccepted) {
-    EXPECT_EQ(gpuMemoryProblem(100000, estimatedFieldBytes(100000, nullptr, 1280, 720, 4), "fake GPU", {4 * kGiB, false}),
-              "");
+    EXPECT_EQ(
+        gpuMemoryProblem(100000, estimatedFieldBytes(100000, nullptr, 1280, 720, 4), "fake GPU", {4 * kGiB, false}),
+        "");
     EXPECT_EQ(hostMemoryProblem(100000, estimatedHostBytes(100000, CountMode::NaturalDensity), 8 * kGiB), "");
 }
 
 TEST(PlantbenchMemory, CountAboveTheHeapIsRefusedNamingCountNeedAndHeap) {
     const uint64_t need = estimatedFieldBytes(kMaxPlants, nullptr, 1280, 720, 4);
     ASSERT_GT(need, 512 * kMiB);
-    expectMentions(gpuMemoryProblem(kMaxPlants, need, "fake GPU", {512 * kMiB, false}),
-                   {"16777216 plants", formatBytes(need), "GPU memory", "fake GPU", "holds 512.0 MiB",
-                    "measure fewer plants"});
+    expectMentions(
+        gpuMemoryProblem(kMaxPlants, need, "fake GPU", {512 * kMiB, false}),
+        {"16777216 plants", formatBytes(need), "GPU memory", "fake GPU", "holds 512.0 MiB", "measure fewer plants"});
 }
 
 TEST(PlantbenchMemory, HeapBudgetIsNamedAsABudget) {

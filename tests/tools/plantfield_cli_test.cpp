@@ -52,7 +52,8 @@ TEST(PlantfieldCli, CaptureWritesPngOfRequestedSize) {
 TEST(PlantfieldCli, SameInputsGiveBitIdenticalPng) {
     const fs::path dir = scratchDir("determinism");
     for (const char* name : {"a.png", "b.png"})
-        ASSERT_EQ(runCommand(kPlantfield + " --capture " + (dir / name).string() + " --size 320x200 --time 2").exitCode, 0);
+        ASSERT_EQ(runCommand(kPlantfield + " --capture " + (dir / name).string() + " --size 320x200 --time 2").exitCode,
+                  0);
     const auto read = [](const fs::path& p) {
         std::ifstream in(p, std::ios::binary);
         return std::string(std::istreambuf_iterator<char>(in), {});
@@ -66,7 +67,8 @@ class PlantfieldBadFlags : public ::testing::TestWithParam<BadInvocation> {};
 
 TEST_P(PlantfieldBadFlags, FailsClearlyWithoutWriting) {
     // One folder per case: ctest runs the cases in parallel.
-    expectFailsClearlyWithoutWriting(kPlantfield, GetParam(), scratchDir(std::string("bad-") + GetParam().name), "out.png");
+    expectFailsClearlyWithoutWriting(kPlantfield, GetParam(), scratchDir(std::string("bad-") + GetParam().name),
+                                     "out.png");
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -80,7 +82,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"NoOutputChosen", "--size 640x360", "nothing to do"},
                       BadInvocation{"ZeroInstances", "--capture OUT --instances 0", "--instances"},
                       BadInvocation{"TooManyInstances", "--capture OUT --instances 16777217", "--instances"},
-                      BadInvocation{"DensifyWithoutInstances", "--capture OUT --densify", "--densify needs --instances"},
+                      BadInvocation{"DensifyWithoutInstances", "--capture OUT --densify",
+                                    "--densify needs --instances"},
                       BadInvocation{"LodOutOfRange", "--capture OUT --lod 3", "--lod"},
                       BadInvocation{"FramesWithoutOutDir", "--frames 5", "--out-dir"},
                       BadInvocation{"MalformedWind", "--capture OUT --wind fast", "--wind"},

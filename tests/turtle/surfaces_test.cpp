@@ -31,7 +31,7 @@ void expectGrowsAlongHeading(const SurfaceMesh& mesh) {
     for (const glm::vec3& p : mesh.positions) bounds.extend(p);
     EXPECT_NEAR(bounds.min.y, 0.0f, 1e-6f);
     EXPECT_NEAR(bounds.max.y, 1.0f, 1e-6f);
-    EXPECT_NEAR(bounds.min.x, -bounds.max.x, 1e-6f);  // symmetric about the midrib
+    EXPECT_NEAR(bounds.min.x, -bounds.max.x, 1e-6f); // symmetric about the midrib
     EXPECT_GT(bounds.max.x, 0.2f);
     glm::vec3 facing(0.0f);
     for (size_t i = 0; i < mesh.indices.size(); i += 3) {
@@ -65,7 +65,7 @@ TEST(LsysSurfaces, GltfMeshFromDataMeshes) {
     EXPECT_EQ(flower.positions.size(), 20u);
     EXPECT_EQ(flower.indices.size(), 30u);
     EXPECT_EQ(flower.normals.size(), 20u);
-    EXPECT_TRUE(flower.uvs.empty());  // the file has none
+    EXPECT_TRUE(flower.uvs.empty()); // the file has none
 }
 
 TEST(LsysSurfaces, GlbMeshFromDataMeshes) {
@@ -106,8 +106,9 @@ std::string surfaceErrorOf(Work work) {
 }
 
 struct TemporaryDirectory {
-    fs::path path = fs::temp_directory_path() / ("plantfield_surfaces_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::path path = fs::temp_directory_path() /
+                    ("plantfield_surfaces_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                     ::testing::UnitTest::GetInstance()->current_test_info()->name());
     TemporaryDirectory() { fs::create_directories(path); }
     ~TemporaryDirectory() { fs::remove_all(path); }
 };
@@ -117,7 +118,7 @@ TEST(LsysSurfaces, LibraryLoadsEachSurfaceOnce) {
     fs::copy_file(dataPath("meshes/flower.gltf"), directory.path / "flower.gltf");
     const SurfaceLibrary library({directory.path});
     const SurfaceMesh& flower = library.surface("flower");
-    fs::remove(directory.path / "flower.gltf");  // a second read would fail now
+    fs::remove(directory.path / "flower.gltf"); // a second read would fail now
     EXPECT_EQ(&flower, &library.surface("flower"));
     EXPECT_EQ(&library.surface("leaf"), &library.surface("leaf"));
 }
@@ -162,9 +163,10 @@ TEST(LsysSurfaces, IndicesPastTheVerticesAreRejected) {
       "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]},
                     {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]
     })";
-    const std::string message = surfaceErrorOf([&] { (void)loadSurfaceFile(directory.path / "bad_index.gltf", "bad"); });
+    const std::string message =
+        surfaceErrorOf([&] { (void)loadSurfaceFile(directory.path / "bad_index.gltf", "bad"); });
     EXPECT_NE(message.find("index"), std::string::npos) << message;
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

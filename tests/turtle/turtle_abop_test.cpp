@@ -20,7 +20,7 @@ TEST(LsysTurtleAbop, KochCurveEndsStraightAhead) {
         const std::vector<Span> spans = spansOf(plantFromGrammar(parsed.grammar, derive(parsed.grammar, options)));
         ASSERT_EQ(spans.size(), static_cast<size_t>(std::pow(5, steps)));
         expectNear(spans.back().end, {0, std::pow(3.0f, static_cast<float>(steps)), 0}, 1e-3f);
-        for (const Span& span : spans) ASSERT_NEAR(span.start.z, 0.0f, 1e-5f);  // a plane curve
+        for (const Span& span : spans) ASSERT_NEAR(span.start.z, 0.0f, 1e-5f); // a plane curve
     }
 }
 
@@ -52,8 +52,8 @@ TEST(LsysTurtleAbop, BranchesInThreeDimensions) {
     const std::vector<Span> spans = spansOf("angle: 90\nAxiom: F[&F][/&F][\\&F]F\n");
     ASSERT_EQ(spans.size(), 5u);
     expectNear(spans[1].end, {0, 1, -1});
-    expectNear(spans[2].end, {1, 1, 0});   // rolled right, down points to +X
-    expectNear(spans[3].end, {-1, 1, 0});  // rolled left, down points to -X
+    expectNear(spans[2].end, {1, 1, 0});  // rolled right, down points to +X
+    expectNear(spans[3].end, {-1, 1, 0}); // rolled left, down points to -X
     expectNear(spans[4].end, {0, 2, 0});
 }
 
@@ -77,7 +77,7 @@ TEST(LsysTurtleAbop, RollToHorizontalLeavesLHorizontalAndHUnchanged) {
         const Frame& after = plant.primitives[1].frame;
         expectNear(headingOf(after), headingOf(before));
         EXPECT_NEAR(leftOf(after).y, 0.0f, 1e-5f);
-        EXPECT_GT(std::abs(leftOf(before).y), 0.01f);  // the roll did something
+        EXPECT_GT(std::abs(leftOf(before).y), 0.01f); // the roll did something
         // ABOP: L = V x H / |V x H|, so U points upwards.
         EXPECT_GE((after.rotation * glm::vec3(0, 0, 1)).y, 0.0f);
     }
@@ -105,7 +105,7 @@ TEST(LsysTurtleAbop, TropismBendsMoreForLargerElasticity) {
     const float none = finalAngle("0");
     const float some = finalAngle("0.1");
     const float more = finalAngle("0.3");
-    EXPECT_NEAR(none, glm::radians(120.0f), 1e-4f);  // H starts 60 degrees from +Y
+    EXPECT_NEAR(none, glm::radians(120.0f), 1e-4f); // H starts 60 degrees from +Y
     EXPECT_LT(some, none);
     EXPECT_LT(more, some);
 }
@@ -113,9 +113,9 @@ TEST(LsysTurtleAbop, TropismBendsMoreForLargerElasticity) {
 TEST(LsysTurtleAbop, TropismVectorCanBeSetAndOnlySegmentsBend) {
     const std::vector<Span> spans = spansOf("Axiom: @Tv(1,0,0)@Ts(0.2)ffF[F]f(0)F\n");
     ASSERT_EQ(spans.size(), 3u);
-    expectNear(spans[0].start, {0, 2, 0});  // f does not bend
+    expectNear(spans[0].start, {0, 2, 0}); // f does not bend
     expectNear(spans[1].end - spans[1].start, {std::sin(0.2f), std::cos(0.2f), 0});
-    expectNear(spans[2].start, spans[1].start);  // the branch was popped
+    expectNear(spans[2].start, spans[1].start); // the branch was popped
     expectNear(spans[2].end - spans[2].start, {std::sin(0.2f), std::cos(0.2f), 0});
 }
 
@@ -125,7 +125,8 @@ TEST(LsysTurtleAbop, TropismFromTheSettings) {
     TurtleSettings settings = turtleSettings(parsed.grammar);
     settings.elasticity = 0.3f;
     settings.tropism = {0, 1, 0};
-    const std::vector<Span> spans = spansOf(interpretPlant(derive(parsed.grammar), parsed.grammar.symbols, settings, SurfaceLibrary{}));
+    const std::vector<Span> spans =
+        spansOf(interpretPlant(derive(parsed.grammar), parsed.grammar.symbols, settings, SurfaceLibrary{}));
     ASSERT_EQ(spans.size(), 2u);
     expectNear(spans[1].end - spans[1].start, {-std::cos(0.3f), std::sin(0.3f), 0});
 }
@@ -136,5 +137,5 @@ TEST(LsysTurtleAbop, HeadingAlongTropismDoesNotBend) {
     expectNear(spans[1].end, {0, -2, 0});
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

@@ -23,7 +23,7 @@ TEST(LsysTurtleCommands, EveryDefinedSymbolNamesItsCommand) {
         }
     }
     EXPECT_EQ(turtleCommand("A").action, TurtleAction::None);
-    EXPECT_EQ(turtleCommand("~").action, TurtleAction::None);  // a surface needs a name
+    EXPECT_EQ(turtleCommand("~").action, TurtleAction::None); // a surface needs a name
 }
 
 TEST(LsysTurtleCommands, TheHelpHasARowForEverySymbol) {
@@ -48,5 +48,5 @@ TEST(LsysTurtleCommands, FInsideAPolygonActsAsSmallF) {
     EXPECT_EQ(parameterCount(turtleCommandDefinition(TurtleAction::TurnAround)), 0u);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

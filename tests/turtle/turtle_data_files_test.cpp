@@ -13,16 +13,19 @@ namespace {
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 bool finite(const Frame& f) {
-    return finite(f.position) && std::isfinite(f.rotation.w) && finite(glm::vec3(f.rotation.x, f.rotation.y, f.rotation.z));
+    return finite(f.position) && std::isfinite(f.rotation.w) &&
+           finite(glm::vec3(f.rotation.x, f.rotation.y, f.rotation.z));
 }
 
 void expectFinite(const PlantAsset& plant) {
     for (const Primitive& p : plant.primitives) {
-        ASSERT_TRUE(finite(p.frame) && std::isfinite(p.length) && std::isfinite(p.startRadius) && std::isfinite(p.endRadius));
+        ASSERT_TRUE(finite(p.frame) && std::isfinite(p.length) && std::isfinite(p.startRadius) &&
+                    std::isfinite(p.endRadius));
         ASSERT_LT(p.material, plant.materials.size());
     }
     for (const Joint& j : plant.joints)
-        ASSERT_TRUE(finite(j.rest) && std::isfinite(j.length) && std::isfinite(j.startRadius) && std::isfinite(j.stiffness));
+        ASSERT_TRUE(finite(j.rest) && std::isfinite(j.length) && std::isfinite(j.startRadius) &&
+                    std::isfinite(j.stiffness));
     for (const PolygonShape& polygon : plant.polygons)
         for (const glm::vec3& v : polygon.outline) ASSERT_TRUE(finite(v));
     if (!plant.primitives.empty()) {
@@ -44,7 +47,7 @@ TEST(LsysTurtleDataFiles, EveryPlantInterpretsWithoutNaN) {
         ParseResult parsed = loadDialectFile(file.string());
         ASSERT_TRUE(parsed.ok());
         const ModuleString derived = derive(parsed.grammar);
-        if (derived.size() > 2'000'000) continue;  // the benchmark-sized systems
+        if (derived.size() > 2'000'000) continue; // the benchmark-sized systems
         const SurfaceLibrary surfaces(meshDirectoriesFor(file));
         const PlantAsset plant = plantFromGrammar(parsed.grammar, derived, surfaces);
         expectFinite(plant);
@@ -55,7 +58,8 @@ TEST(LsysTurtleDataFiles, EveryPlantInterpretsWithoutNaN) {
 
 // The first example of Robbins 1998 draws its leaves as { +F -F -F } triangles.
 TEST(LsysTurtleDataFiles, RobbinsLeavesAreTriangles) {
-    for (const char* file : {"plants/dialects/robbins_first_example.robbins", "plants/dialects/robbins_first_example.lsys"}) {
+    for (const char* file :
+         {"plants/dialects/robbins_first_example.robbins", "plants/dialects/robbins_first_example.lsys"}) {
         SCOPED_TRACE(file);
         ParseResult parsed = loadDialectFile(dataPath(file));
         ASSERT_TRUE(parsed.ok());
@@ -64,9 +68,9 @@ TEST(LsysTurtleDataFiles, RobbinsLeavesAreTriangles) {
         const PlantAsset plant = plantFromGrammar(parsed.grammar, derive(parsed.grammar, options));
         ASSERT_GT(plant.polygons.size(), 10u);
         for (const PolygonShape& leaf : plant.polygons) ASSERT_EQ(leaf.outline.size(), 3u);
-        EXPECT_TRUE(plant.materials.at(0).twoSided);  // the leaves share the bark's material
+        EXPECT_TRUE(plant.materials.at(0).twoSided); // the leaves share the bark's material
     }
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

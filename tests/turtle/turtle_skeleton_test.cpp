@@ -25,7 +25,7 @@ TEST(LsysTurtleSkeleton, EverySegmentIsAJointOnItsPath) {
     for (size_t i = 0; i < plant.primitives.size(); ++i) {
         const Primitive& segment = plant.primitives[i];
         const Joint& joint = plant.joints[i];
-        EXPECT_EQ(segment.joint, static_cast<int32_t>(i));  // a segment is its own joint
+        EXPECT_EQ(segment.joint, static_cast<int32_t>(i)); // a segment is its own joint
         expectNear(joint.rest.position, segment.frame.position);
         EXPECT_NEAR(std::abs(glm::dot(joint.rest.rotation, segment.frame.rotation)), 1.0f, 1e-6f);
         EXPECT_FLOAT_EQ(joint.length, segment.length);
@@ -51,13 +51,14 @@ TEST(LsysTurtleSkeleton, JointRadiiThroughBranches) {
     EXPECT_FLOAT_EQ(plant.joints[0].startRadius, 1.0f);
     EXPECT_FLOAT_EQ(plant.joints[1].startRadius, 0.5f);
     EXPECT_FLOAT_EQ(plant.joints[1].endRadius, 0.25f);
-    EXPECT_FLOAT_EQ(plant.joints[2].startRadius, 1.0f);  // the branch's width was popped
+    EXPECT_FLOAT_EQ(plant.joints[2].startRadius, 1.0f); // the branch's width was popped
     EXPECT_FLOAT_EQ(plant.joints[2].endRadius, 0.5f);
     EXPECT_FLOAT_EQ(plant.joints[3].startRadius, 0.5f);
 }
 
 TEST(LsysTurtleSkeleton, CrankshawSpringConstantBecomesStiffness) {
-    ParseResult parsed = parseDialect(Dialect::Crankshaw, "#n = 1;\n#w : A;\n#p1 : A : * : F(1, 30)[+(20)F(0.5, 12)]F(1, 30);\n");
+    ParseResult parsed =
+        parseDialect(Dialect::Crankshaw, "#n = 1;\n#w : A;\n#p1 : A : * : F(1, 30)[+(20)F(0.5, 12)]F(1, 30);\n");
     ASSERT_TRUE(parsed.ok());
     const PlantAsset plant = plantFromGrammar(parsed.grammar, derive(parsed.grammar));
     EXPECT_EQ(stiffnessOf(plant), (std::vector<float>{30, 12, 30}));
@@ -105,16 +106,16 @@ TEST(LsysTurtleSkeleton, MaterialTableHoldsThePaletteAndEveryIndexUsed) {
     EXPECT_FALSE(plant.materials[0].twoSided);
     EXPECT_TRUE(plant.materials[1].twoSided);
     EXPECT_TRUE(plant.materials[2].twoSided);
-    EXPECT_EQ(plant.materials[12].name, "fruit 12");  // the palette repeats
+    EXPECT_EQ(plant.materials[12].name, "fruit 12"); // the palette repeats
     EXPECT_EQ(plant.materials[12].albedo, plant.materials[4].albedo);
     for (const Primitive& p : plant.primitives) EXPECT_LT(p.material, plant.materials.size());
 }
 
 TEST(LsysTurtleSkeleton, MaterialsOfSurfacesAndPolygonsAreTwoSided) {
     const PlantAsset plant = plantOf("angle: 90\nAxiom: F~leaf;(3){.f.+f.+f.};(4)F\n");
-    EXPECT_TRUE(plant.materials[0].twoSided);   // a leaf drawn with the bark material
-    EXPECT_TRUE(plant.materials[3].twoSided);   // a polygon
-    EXPECT_FALSE(plant.materials[4].twoSided);  // segments only
+    EXPECT_TRUE(plant.materials[0].twoSided);  // a leaf drawn with the bark material
+    EXPECT_TRUE(plant.materials[3].twoSided);  // a polygon
+    EXPECT_FALSE(plant.materials[4].twoSided); // segments only
 }
 
 // Points on the surface of every primitive, in plant space.
@@ -123,36 +124,37 @@ std::vector<glm::vec3> geometryOf(const PlantAsset& plant) {
     for (const Primitive& p : plant.primitives) {
         const glm::mat3 axes = glm::mat3_cast(p.frame.rotation);
         switch (p.kind) {
-            case PrimitiveKind::Segment:
-                for (int k = 0; k < 64; ++k) {
-                    const float a = 2.0f * std::numbers::pi_v<float> * static_cast<float>(k) / 64.0f;
-                    const glm::vec3 around = axes * glm::vec3(std::cos(a), 0, std::sin(a));
-                    points.push_back(p.frame.position + around * p.startRadius);
-                    points.push_back(p.frame.position + axes[1] * p.length + around * p.endRadius);
+        case PrimitiveKind::Segment:
+            for (int k = 0; k < 64; ++k) {
+                const float a = 2.0f * std::numbers::pi_v<float> * static_cast<float>(k) / 64.0f;
+                const glm::vec3 around = axes * glm::vec3(std::cos(a), 0, std::sin(a));
+                points.push_back(p.frame.position + around * p.startRadius);
+                points.push_back(p.frame.position + axes[1] * p.length + around * p.endRadius);
+            }
+            break;
+        case PrimitiveKind::Sphere:
+            for (int axis = 0; axis < 3; ++axis)
+                for (float sign : {-1.0f, 1.0f}) {
+                    glm::vec3 offset(0.0f);
+                    offset[axis] = sign * p.startRadius;
+                    points.push_back(p.frame.position + offset);
                 }
-                break;
-            case PrimitiveKind::Sphere:
-                for (int axis = 0; axis < 3; ++axis)
-                    for (float sign : {-1.0f, 1.0f}) {
-                        glm::vec3 offset(0.0f);
-                        offset[axis] = sign * p.startRadius;
-                        points.push_back(p.frame.position + offset);
-                    }
-                break;
-            case PrimitiveKind::Surface:
-                for (const glm::vec3& v : plant.surfaces[p.shape].positions)
-                    points.push_back(p.frame.position + p.frame.rotation * (v * p.length));
-                break;
-            case PrimitiveKind::Polygon:
-                for (const glm::vec3& v : plant.polygons[p.shape].outline) points.push_back(v);
-                break;
+            break;
+        case PrimitiveKind::Surface:
+            for (const glm::vec3& v : plant.surfaces[p.shape].positions)
+                points.push_back(p.frame.position + p.frame.rotation * (v * p.length));
+            break;
+        case PrimitiveKind::Polygon:
+            for (const glm::vec3& v : plant.polygons[p.shape].outline) points.push_back(v);
+            break;
         }
     }
     return points;
 }
 
 TEST(LsysTurtleSkeleton, BoundsContainEveryPrimitive) {
-    const PlantAsset plant = plantOf("angle: 40\nwidth: 0.3\nAxiom: F(2)[&F~leaf(1.5)][/&@O(0.8)]!(0.1)^F(1,0.05)~petal[{.f.+f.+f.}]F(-1)\n");
+    const PlantAsset plant = plantOf(
+        "angle: 40\nwidth: 0.3\nAxiom: F(2)[&F~leaf(1.5)][/&@O(0.8)]!(0.1)^F(1,0.05)~petal[{.f.+f.+f.}]F(-1)\n");
     ASSERT_FALSE(plant.bounds.empty());
     const std::vector<glm::vec3> points = geometryOf(plant);
     ASSERT_GT(points.size(), 100u);
@@ -218,7 +220,7 @@ TEST(LsysTurtleSkeleton, AModuleActsOnTheStateItIsGiven) {
     state.left = {0, 1, 0};
     state.up = {0, 0, 1};
     state.width = 0.5f;
-    state.joint = 7;  // a joint of an enclosing node
+    state.joint = 7; // a joint of an enclosing node
     state.stiffness = 4.0f;
     TurtleStack stack;
     const float length = 2.0f;
@@ -233,5 +235,5 @@ TEST(LsysTurtleSkeleton, AModuleActsOnTheStateItIsGiven) {
     expectNear(plant.joints[0].rest.position, {5, 0, 0});
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

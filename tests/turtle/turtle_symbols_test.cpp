@@ -65,7 +65,7 @@ TEST(LsysTurtle, WidthAndTaper) {
     ASSERT_EQ(segments.size(), 3u);
     EXPECT_FLOAT_EQ(segments[0].startRadius, 1.0f);
     EXPECT_FLOAT_EQ(segments[1].startRadius, 0.5f);
-    EXPECT_FLOAT_EQ(segments[2].startRadius, 0.35f);  // bare ! multiplies by 0.7
+    EXPECT_FLOAT_EQ(segments[2].startRadius, 0.35f); // bare ! multiplies by 0.7
     EXPECT_FLOAT_EQ(segments[2].endRadius, 0.1f);
 }
 
@@ -91,11 +91,11 @@ TEST(LsysTurtle, ScalingModules) {
     auto segments = spansOf("angle: 90\nwidth: 1\nAxiom: @Lm(2)F@Am(0.5)+@Wm(0.5)F[@Lm(3)F]F\n");
     ASSERT_EQ(segments.size(), 4u);
     expectNear(segments[0].end, {0, 2, 0});
-    const float d = 2.0f * std::sqrt(0.5f);  // length 2 at 45 degrees
+    const float d = 2.0f * std::sqrt(0.5f); // length 2 at 45 degrees
     expectNear(segments[1].end, {-d, 2 + d, 0});
     EXPECT_FLOAT_EQ(segments[1].startRadius, 0.25f);
     EXPECT_NEAR(glm::distance(segments[2].start, segments[2].end), 6.0f, 1e-5f);
-    EXPECT_NEAR(glm::distance(segments[3].start, segments[3].end), 2.0f, 1e-5f);  // the branch's scale was popped
+    EXPECT_NEAR(glm::distance(segments[3].start, segments[3].end), 2.0f, 1e-5f); // the branch's scale was popped
 }
 
 std::vector<float> lengthsOf(const std::string& source) {
@@ -110,14 +110,16 @@ void expectLengthsNear(const std::vector<float>& actual, const std::vector<float
 }
 
 // The branch's change is popped; a bare @La changes nothing.
-TEST(LsysTurtle, AddToLength) { expectLengthsNear(lengthsOf("step: 2\nAxiom: @La(0.5)F[@La(-1)F]F@La F\n"), {2.5f, 1.5f, 2.5f, 2.5f}); }
+TEST(LsysTurtle, AddToLength) {
+    expectLengthsNear(lengthsOf("step: 2\nAxiom: @La(0.5)F[@La(-1)F]F@La F\n"), {2.5f, 1.5f, 2.5f, 2.5f});
+}
 
 TEST(LsysTurtle, SetLength) { expectLengthsNear(lengthsOf("step: 2\nAxiom: @Ls(3)F@LsF@Lm(2)F\n"), {3, 3, 6}); }
 
 TEST(LsysTurtle, AddToAngle) {
     auto segments = spansOf("angle: 60\nAxiom: @Aa(30)+F\n");
     ASSERT_EQ(segments.size(), 1u);
-    expectNear(segments[0].end, {-1, 0, 0});  // 90 degrees towards L = -X
+    expectNear(segments[0].end, {-1, 0, 0}); // 90 degrees towards L = -X
 }
 
 TEST(LsysTurtle, SetAngle) {
@@ -134,7 +136,9 @@ TEST(LsysTurtle, AddToWidth) {
 }
 
 // Never below 0.
-TEST(LsysTurtle, AddToMaterialIndex) { EXPECT_EQ(materialsOf("Axiom: @Ca(2)F@Ca(-1)F@Ca(-5)F\n"), (std::vector<uint32_t>{2, 1, 0})); }
+TEST(LsysTurtle, AddToMaterialIndex) {
+    EXPECT_EQ(materialsOf("Axiom: @Ca(2)F@Ca(-1)F@Ca(-5)F\n"), (std::vector<uint32_t>{2, 1, 0}));
+}
 
 TEST(LsysTurtle, CutSkipsTheRestOfTheBranch) {
     auto segments = spansOf("Axiom: F[F%F[F]F]F\n");
@@ -195,7 +199,7 @@ TEST(LsysTurtle, CircleIsIgnored) { EXPECT_TRUE(plantOf("Axiom: @Oc(2)@Oc\n").pr
 TEST(LsysTurtle, SurfacesAreScaledAndShared) {
     const PlantAsset plant = plantOf("Axiom: F~leaf(2)~petal~leaf\n");
     ASSERT_EQ(plant.primitives.size(), 4u);
-    ASSERT_EQ(plant.surfaces.size(), 2u);  // the second ~leaf reuses the first's mesh
+    ASSERT_EQ(plant.surfaces.size(), 2u); // the second ~leaf reuses the first's mesh
     EXPECT_EQ(plant.surfaces[0].name, "leaf");
     EXPECT_EQ(plant.surfaces[1].name, "petal");
     const Primitive& leaf = plant.primitives[1];
@@ -204,7 +208,7 @@ TEST(LsysTurtle, SurfacesAreScaledAndShared) {
     EXPECT_FLOAT_EQ(leaf.length, 2.0f);
     expectNear(leaf.frame.position, {0, 1, 0});
     EXPECT_EQ(plant.primitives[2].shape, 1u);
-    EXPECT_FLOAT_EQ(plant.primitives[2].length, 1.0f);  // bare: scale 1
+    EXPECT_FLOAT_EQ(plant.primitives[2].length, 1.0f); // bare: scale 1
     EXPECT_EQ(plant.primitives[3].shape, 0u);
 }
 
@@ -228,8 +232,8 @@ TEST(LsysTurtle, PolygonTracedWithFDrawsNoSegments) {
     // Robbins' leaf: F inside { } records the vertex it reaches and draws nothing.
     const PlantAsset plant = plantOf("Axiom: {+(30)F-(120)F-(120)F}F\n");
     ASSERT_EQ(plant.polygons.size(), 1u);
-    EXPECT_EQ(plant.polygons[0].outline.size(), 3u);  // the third F returns to the start
-    EXPECT_EQ(spansOf(plant).size(), 1u);           // only the F after }
+    EXPECT_EQ(plant.polygons[0].outline.size(), 3u); // the third F returns to the start
+    EXPECT_EQ(spansOf(plant).size(), 1u);            // only the F after }
     expectNear(plant.polygons[0].outline[2], {0, 0, 0});
 }
 
@@ -252,9 +256,9 @@ TEST(LsysTurtle, DegenerateOrUnclosedPolygonsDrawNothing) {
 TEST(LsysTurtle, NestedPolygonsCloseInnermostFirst) {
     const PlantAsset plant = plantOf("angle: 90\nAxiom: {.f.{.+f.+f.}f.}\n");
     ASSERT_EQ(plant.polygons.size(), 2u);
-    EXPECT_EQ(plant.polygons[0].outline.size(), 3u);  // the inner one closes first
+    EXPECT_EQ(plant.polygons[0].outline.size(), 3u); // the inner one closes first
     EXPECT_EQ(plant.polygons[1].outline.size(), 3u);
 }
 
-}  // namespace
-}  // namespace lsys::test
+} // namespace
+} // namespace lsys::test

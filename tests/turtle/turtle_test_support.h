@@ -33,7 +33,7 @@ struct Span {
     float startRadius;
     float endRadius;
     uint32_t material;
-    int32_t parent;  // the parent joint, which is the index of its segment among the spans
+    int32_t parent; // the parent joint, which is the index of its segment among the spans
 };
 
 // The segments of a plant, in drawing order.
@@ -58,4 +58,4 @@ inline void expectNear(glm::vec3 actual, glm::vec3 expected, float tolerance = 1
     EXPECT_NEAR(glm::distance(actual, expected), 0.0f, tolerance) << actual.x << "," << actual.y << "," << actual.z;
 }
 
-}  // namespace lsys::test
+} // namespace lsys::test

@@ -37,7 +37,7 @@ struct Arguments {
     std::optional<int> steps;
     std::optional<uint64_t> seed;
     std::vector<std::string> defines;
-    std::optional<lsys::Dialect> dialect;  // none: the file's "dialect:" line, else native
+    std::optional<lsys::Dialect> dialect; // none: the file's "dialect:" line, else native
     bool print = false;
     bool json = false;
     size_t maxModules = 50'000'000;
@@ -46,7 +46,7 @@ struct Arguments {
     lsys::BGrammarLimits limits;
     lsys::InstanceGraphOptions graphOptions;
     std::string output;
-    bool instanced = false;  // export: the InstanceGraph's hierarchy rather than the flat plant
+    bool instanced = false; // export: the InstanceGraph's hierarchy rather than the flat plant
     lsys::ExportOptions exportOptions;
     lsys::GraphExportOptions graphExportOptions;
 };
@@ -121,19 +121,19 @@ int derive(const Arguments& arguments) {
         nlohmann::json countsJson = nlohmann::json::object();
         for (size_t id = 0; id < counts.size(); ++id)
             if (counts[id]) countsJson[grammar->symbols.name(static_cast<lsys::SymbolId>(id))] = counts[id];
-        nlohmann::json out = {{"modules", string.size()}, {"steps", steps}, {"counts", countsJson}, {"seconds", seconds}};
+        nlohmann::json out = {
+            {"modules", string.size()}, {"steps", steps}, {"counts", countsJson}, {"seconds", seconds}};
         std::cout << out.dump() << '\n';
     }
-    if (!arguments.print && !arguments.json)
-        std::cout << string.size() << " modules after " << steps << " steps\n";
+    if (!arguments.print && !arguments.json) std::cout << string.size() << " modules after " << steps << " steps\n";
     return 0;
 }
 
 const char* methodName(lsys::BGrammarMethod method) {
     switch (method) {
-        case lsys::BGrammarMethod::Memoised: return "memoised";
-        case lsys::BGrammarMethod::PseudoStochastic: return "pseudo-stochastic";
-        case lsys::BGrammarMethod::Compressed: return "compressed";
+    case lsys::BGrammarMethod::Memoised: return "memoised";
+    case lsys::BGrammarMethod::PseudoStochastic: return "pseudo-stochastic";
+    case lsys::BGrammarMethod::Compressed: return "compressed";
     }
     return "";
 }
@@ -143,7 +143,7 @@ lsys::BGrammarOptions bgrammarOptions(const Arguments& arguments) {
     lsys::BGrammarOptions options;
     options.steps = arguments.steps;
     options.seed = arguments.seed;
-    options.interpreted = true;  // the word the turtle reads
+    options.interpreted = true; // the word the turtle reads
     options.randomness = arguments.randomness;
     options.limits = arguments.limits;
     options.maxModules = arguments.maxModules;
@@ -160,23 +160,31 @@ int instance(const Arguments& arguments) {
     try {
         const lsys::BGrammar bgrammar = lsys::buildBGrammar(*grammar, options);
         method = bgrammar.method;
-        stats = lsys::instanceGraphStats(lsys::buildInstanceGraph(
-            bgrammar, *grammar, arguments.graphOptions, lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file))));
-    } catch (const std::runtime_error& error) {  // DerivationError, SurfaceError
+        stats = lsys::instanceGraphStats(
+            lsys::buildInstanceGraph(bgrammar, *grammar, arguments.graphOptions,
+                                     lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file))));
+    } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
         std::cerr << arguments.file << ": error: " << error.what() << '\n';
         return kBadInput;
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (arguments.json) {
-        nlohmann::ordered_json out = {{"primitives", stats.primitives}, {"joints", stats.joints},       {"nodes", stats.nodes},
-                              {"objects", stats.objects}, {"instances", stats.instances},   {"compression", stats.compression()},
-                              {"bytes_graph", stats.bytesGraph}, {"bytes_flat", stats.bytesFlat}, {"method", methodName(method)},
-                              {"seconds", seconds}};
+        nlohmann::ordered_json out = {{"primitives", stats.primitives},
+                                      {"joints", stats.joints},
+                                      {"nodes", stats.nodes},
+                                      {"objects", stats.objects},
+                                      {"instances", stats.instances},
+                                      {"compression", stats.compression()},
+                                      {"bytes_graph", stats.bytesGraph},
+                                      {"bytes_flat", stats.bytesFlat},
+                                      {"method", methodName(method)},
+                                      {"seconds", seconds}};
         std::cout << out.dump() << '\n';
     } else {
-        std::cout << stats.primitives << " primitives (" << stats.joints << " joints) in " << stats.instances << " instances of "
-                  << stats.objects << " objects from " << stats.nodes << " nodes, " << stats.compression() << ":1, " << stats.bytesGraph << " bytes against "
-                  << stats.bytesFlat << " flat (" << methodName(method) << ", " << seconds << " s)\n";
+        std::cout << stats.primitives << " primitives (" << stats.joints << " joints) in " << stats.instances
+                  << " instances of " << stats.objects << " objects from " << stats.nodes << " nodes, "
+                  << stats.compression() << ":1, " << stats.bytesGraph << " bytes against " << stats.bytesFlat
+                  << " flat (" << methodName(method) << ", " << seconds << " s)\n";
     }
     return 0;
 }
@@ -189,7 +197,7 @@ int exportGraph(const Arguments& arguments, const lsys::Grammar& grammar) {
     try {
         graph = lsys::buildInstanceGraph(lsys::buildBGrammar(grammar, bgrammarOptions(arguments)), grammar,
                                          arguments.graphOptions, surfaces);
-    } catch (const std::runtime_error& error) {  // DerivationError, SurfaceError
+    } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
         std::cerr << arguments.file << ": error: " << error.what() << '\n';
         return kBadInput;
     }
@@ -216,8 +224,9 @@ int exportCommand(const Arguments& arguments) {
     lsys::PlantAsset plant;
     try {
         const lsys::ModuleString string = lsys::derive(*grammar, deriveOptions(arguments));
-        plant = lsys::plantFromGrammar(*grammar, string, lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file)));
-    } catch (const std::runtime_error& error) {  // DerivationError, SurfaceError
+        plant =
+            lsys::plantFromGrammar(*grammar, string, lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file)));
+    } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
         std::cerr << arguments.file << ": error: " << error.what() << '\n';
         return kBadInput;
     }
@@ -240,7 +249,9 @@ void addDialectOption(CLI::App& command, Arguments& arguments) {
             "--dialect", [&arguments](const std::string& name) { arguments.dialect = lsys::dialectFromName(name); },
             "Input notation: " + lsys::knownDialects() + " (default: the file's 'dialect:' line, else native)")
         ->check([](const std::string& name) {
-            return lsys::dialectFromName(name) ? std::string() : "unknown dialect '" + name + "' (expected " + lsys::knownDialects() + ")";
+            return lsys::dialectFromName(name)
+                       ? std::string()
+                       : "unknown dialect '" + name + "' (expected " + lsys::knownDialects() + ")";
         });
 }
 
@@ -255,13 +266,16 @@ void addDerivationOptions(CLI::App& command, Arguments& arguments) {
 
 // --randomness and --granularity: how the InstanceGraph is built.
 void addGraphOptions(CLI::App& command, Arguments& arguments) {
-    command.add_option("--randomness", arguments.randomness,
-        "Randomness factor k (Calgary b-grammar thesis, §5.1): at most k rewrites per module and step "
-        "for random rules; the plant then differs from derive's (same statistics). 0: exact, derived and compressed")
+    command
+        .add_option("--randomness", arguments.randomness,
+                    "Randomness factor k (Calgary b-grammar thesis, §5.1): at most k rewrites per module and step "
+                    "for random rules; the plant then differs from derive's (same statistics). 0: exact, derived and "
+                    "compressed")
         ->check(CLI::Range(0, 1'000'000));
-    command.add_option("--granularity", arguments.graphOptions.orientationGranularity,
-        "G of the Calgary b-grammar thesis, §5.3: share subtrees whose entry orientation relative to "
-        "the tropism vector falls in the same pi/G cell (approximate); 0: exact sharing only")
+    command
+        .add_option("--granularity", arguments.graphOptions.orientationGranularity,
+                    "G of the Calgary b-grammar thesis, §5.3: share subtrees whose entry orientation relative to "
+                    "the tropism vector falls in the same pi/G cell (approximate); 0: exact sharing only")
         ->check(CLI::Range(0, 1'000'000));
 }
 
@@ -271,10 +285,11 @@ int check(const Arguments& arguments) {
     return 0;
 }
 
-}  // namespace
+} // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"lsys: derive, check, instance and export L-systems written in the .lsys notation or a dialect (docs/DIALECTS.md)"};
+    CLI::App app{"lsys: derive, check, instance and export L-systems written in the .lsys notation or a dialect "
+                 "(docs/DIALECTS.md)"};
     app.require_subcommand(1);
     // Printed from the commands' definitions, so it cannot fall behind the turtle.
     app.add_flag_callback(
@@ -289,7 +304,8 @@ int main(int argc, char** argv) {
     CLI::App* deriveCommand = app.add_subcommand("derive", "Derive an L-system and report, print or count the result");
     addDerivationOptions(*deriveCommand, arguments);
     deriveCommand->add_flag("--print", arguments.print, "Print the final string, e.g. F(1,0.5)[+A(2)]");
-    deriveCommand->add_flag("--json", arguments.json, "Print {\"modules\", \"steps\", \"counts\", \"seconds\"} as JSON");
+    deriveCommand->add_flag("--json", arguments.json,
+                            "Print {\"modules\", \"steps\", \"counts\", \"seconds\"} as JSON");
     deriveCommand->add_option("--max-modules", arguments.maxModules, "Module budget; exceeding it is an error")
         ->check(CLI::PositiveNumber);
     deriveCommand->add_option("--threads", arguments.threads, "Rewriting threads")->check(CLI::Range(1, 64));
@@ -311,29 +327,37 @@ int main(int argc, char** argv) {
         "and compressed (SEQUITUR). docs/INSTANCING.md");
     addDerivationOptions(*instanceCommand, arguments);
     addGraphOptions(*instanceCommand, arguments);
-    instanceCommand->add_flag("--json", arguments.json,
-                              "Print {\"primitives\", \"joints\", \"nodes\", \"objects\", \"instances\", \"compression\", \"bytes_graph\", "
-                              "\"bytes_flat\", \"method\", \"seconds\"} as JSON");
-    instanceCommand->add_option("--max-nodes", arguments.limits.maxNodes, "Node budget of the graph; exceeding it is an error")
+    instanceCommand->add_flag(
+        "--json", arguments.json,
+        "Print {\"primitives\", \"joints\", \"nodes\", \"objects\", \"instances\", \"compression\", \"bytes_graph\", "
+        "\"bytes_flat\", \"method\", \"seconds\"} as JSON");
+    instanceCommand
+        ->add_option("--max-nodes", arguments.limits.maxNodes, "Node budget of the graph; exceeding it is an error")
         ->check(CLI::PositiveNumber);
-    instanceCommand->add_option("--max-items", arguments.limits.maxItems, "Budget of body entries of the graph; exceeding it is an error")
+    instanceCommand
+        ->add_option("--max-items", arguments.limits.maxItems,
+                     "Budget of body entries of the graph; exceeding it is an error")
         ->check(CLI::PositiveNumber);
-    instanceCommand->add_option("--max-modules", arguments.maxModules, "Module budget when the word must be derived first")
+    instanceCommand
+        ->add_option("--max-modules", arguments.maxModules, "Module budget when the word must be derived first")
         ->check(CLI::PositiveNumber);
 
     CLI::App* exportSubcommand = app.add_subcommand(
-        "export", "Derive and interpret an L-system and write the plant as glTF 2.0 (.gltf, .glb) or OBJ (docs/EXPORT.md)");
+        "export",
+        "Derive and interpret an L-system and write the plant as glTF 2.0 (.gltf, .glb) or OBJ (docs/EXPORT.md)");
     addDerivationOptions(*exportSubcommand, arguments);
     exportSubcommand->add_option("-o,--output", arguments.output, "Output file: .gltf, .glb or .obj")->required();
     exportSubcommand->add_flag_callback(
-        "--flat", [&arguments] { arguments.instanced = false; }, "One mesh per material with every primitive baked in (default)");
+        "--flat", [&arguments] { arguments.instanced = false; },
+        "One mesh per material with every primitive baked in (default)");
     exportSubcommand->add_flag_callback(
         "--instanced", [&arguments] { arguments.instanced = true; },
         "Keep the InstanceGraph's hierarchy: one mesh per object shared by all its instances, one node per instance "
         "(glTF only)");
     addGraphOptions(*exportSubcommand, arguments);
-    exportSubcommand->add_option("--max-gltf-nodes", arguments.graphExportOptions.maxNodes,
-                                 "With --instanced: node budget (one node per instance path); exceeding it is an error")
+    exportSubcommand
+        ->add_option("--max-gltf-nodes", arguments.graphExportOptions.maxNodes,
+                     "With --instanced: node budget (one node per instance path); exceeding it is an error")
         ->check(CLI::PositiveNumber);
     exportSubcommand->add_flag_callback(
         "--generalized-cylinders",

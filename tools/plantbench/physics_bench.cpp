@@ -11,9 +11,9 @@
 // millisecond of that time (GPU: timestamps; CPU: wall time of one thread).
 #include "options.h"
 
-#include "engine/vk/gpu_timer.h"
 #include "engine/physics/physics_pass.h"
 #include "engine/scene/plant_models.h"
+#include "engine/vk/gpu_timer.h"
 
 #include <benchmark/benchmark.h>
 
@@ -62,8 +62,8 @@ SkeletonSet cloneForest(const PlantModelPool& pool, uint32_t joints) {
 
 gpu::PhysicsUniforms frameUniforms(const Scene& scene, const SkeletonSet& set, uint64_t frame) {
     const float dt = scene.physics.subStep;
-    return makePhysicsUniforms(scene.wind, scene.physics, float(double(frame) * kStepsPerFrame * dt), dt, kStepsPerFrame,
-                               uint32_t(set.skeletons.size()), uint32_t(set.states.size()));
+    return makePhysicsUniforms(scene.wind, scene.physics, float(double(frame) * kStepsPerFrame * dt), dt,
+                               kStepsPerFrame, uint32_t(set.skeletons.size()), uint32_t(set.states.size()));
 }
 
 void setCounters(benchmark::State& state, size_t joints, double totalMs) {

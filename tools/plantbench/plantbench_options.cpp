@@ -2,8 +2,8 @@
 
 #include "tools/plantfield/options.h"
 
-#include "engine/vk/device.h"
 #include "engine/image/image.h"
+#include "engine/vk/device.h"
 #include "shaders/field_layouts.h"
 
 #include <CLI/CLI.hpp>
@@ -38,8 +38,8 @@ std::optional<std::vector<uint64_t>> parseCounts(const std::string& text, uint64
             return std::nullopt;
         }
         if (count > maxCount) {
-            *problem = std::to_string(count) + " is above the most plants a field can hold (" +
-                       std::to_string(maxCount) + ")";
+            *problem =
+                std::to_string(count) + " is above the most plants a field can hold (" + std::to_string(maxCount) + ")";
             return std::nullopt;
         }
         counts.push_back(count);
@@ -96,22 +96,28 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     app.add_option("scene", o.scenePath, "Scene file (.json)")->default_str("data/scenes/default.json");
     app.add_option("--counts", countsText, "Plant counts to measure, comma-separated, e.g. 1000,10000,100000")
         ->required();
-    app.add_option("--frames", o.frames, "Measured frames per count")->check(CLI::Range(1u, 100000u))
+    app.add_option("--frames", o.frames, "Measured frames per count")
+        ->check(CLI::Range(1u, 100000u))
         ->default_val(o.frames);
     app.add_option("--warmup", o.warmup, "Frames rendered before measuring (shaders compile on the first)")
-        ->check(CLI::Range(0u, 100000u))->default_val(o.warmup);
+        ->check(CLI::Range(0u, 100000u))
+        ->default_val(o.warmup);
     app.add_option("--size", sizeText, "Render size as WIDTHxHEIGHT (1 to 16384 per side)")->default_str(sizeText);
-    app.add_option("--samples", o.samples, "Multisample anti-aliasing samples")->check(CLI::IsMember({1, 2, 4, 8}))
+    app.add_option("--samples", o.samples, "Multisample anti-aliasing samples")
+        ->check(CLI::IsMember({1, 2, 4, 8}))
         ->default_val(o.samples);
     app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
     app.add_option("--time", o.time, "Scene time of the camera on the scene's camera path, seconds")
-        ->check(CLI::NonNegativeNumber)->default_val(o.time);
+        ->check(CLI::NonNegativeNumber)
+        ->default_val(o.time);
     std::string pathText;
     app.add_option("--path", pathText,
                    "Measure at K times spread evenly over the camera path (default " +
-                       std::to_string(kDefaultPathTimes) + ") instead of one --time;\n"
+                       std::to_string(kDefaultPathTimes) +
+                       ") instead of one --time;\n"
                        "report every time's frame and the worst")
-        ->expected(0, 1)->type_name("[K]");
+        ->expected(0, 1)
+        ->type_name("[K]");
     app.add_flag("--densify", o.densify,
                  "Fit each count on the scene's terrain by scaling every plant distance (default: the scene's\n"
                  "densities, the planted area and the noise terrain growing with the count)");
@@ -119,7 +125,8 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     app.add_option("--compare", compare, "Also render every count the naive way (full detail, one draw per plant)")
         ->check(CLI::IsMember({"naive"}));
     app.add_option("--naive-max", o.naiveMax, "Skip the naive path above this many plants")
-        ->check(CLI::PositiveNumber)->default_val(o.naiveMax);
+        ->check(CLI::PositiveNumber)
+        ->default_val(o.naiveMax);
     app.add_option("--json", o.jsonPath, "Write the results as JSON to this file");
     app.add_option("--csv", o.csvPath, "Write one row per count as CSV to this file");
     app.add_option("--plot", o.plotPath, "Draw ms per pass against plants (log-log) to this PNG with gnuplot");
@@ -150,14 +157,17 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     if (!counts) return fail("invalid --counts '" + countsText + "': " + problem);
     o.counts = *counts;
     const std::optional<ImageSize> size = parseImageSize(sizeText);
-    if (!size) return fail("invalid --size '" + sizeText + "': expected WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720");
+    if (!size)
+        return fail("invalid --size '" + sizeText +
+                    "': expected WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720");
     o.width = size->width;
     o.height = size->height;
     o.compareNaive = compare == "naive";
     if (app.count("--path")) {
         const auto times = parsePathTimes(pathText, &problem);
         if (!times) return fail("invalid --path '" + pathText + "': " + problem);
-        if (app.count("--time")) return fail("--path and --time are alternatives: --path measures along the whole path");
+        if (app.count("--time"))
+            return fail("--path and --time are alternatives: --path measures along the whole path");
         o.pathTimes = *times;
     }
     if (!std::filesystem::is_regular_file(o.scenePath))

@@ -28,11 +28,11 @@ struct PlantbenchOptions {
     uint32_t width = 1280, height = 720;
     uint32_t samples = 4;
     bool shadows = true;
-    double time = 0.0;            // scene time of the camera on its path
+    double time = 0.0;                 // scene time of the camera on its path
     std::optional<uint32_t> pathTimes; // --path: measure at this many times along the camera path instead
-    bool densify = false;         // counts on the scene's terrain, distances scaled (not natural densities)
+    bool densify = false;              // counts on the scene's terrain, distances scaled (not natural densities)
     bool compareNaive = false;
-    uint64_t naiveMax = 100000;   // counts above this skip the naive path
+    uint64_t naiveMax = 100000; // counts above this skip the naive path
     std::string jsonPath, csvPath, plotPath;
     std::optional<uint32_t> seed;
     std::string deviceName;

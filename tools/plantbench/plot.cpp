@@ -85,9 +85,9 @@ std::string plotCommand(const std::string& data, bool perThousand, bool naive) {
                                  : filledPoints[topLevel++ % std::size(filledPoints)];
         const bool capture = kBenchPasses[p] == std::string_view(kCapturePass);
         const char* label = nested ? " (inside colour)" : capture ? " (GPU, image to host)" : " (GPU)";
-        plot << ", '' using 1:" << y(4 + int(p)) << " with linespoints" << (nested ? " lw 1.5 dt 3" : " lw 2")
-             << " pt " << point << " lc rgb '" << colours[p % std::size(colours)] << "' title '" << kBenchPasses[p]
-             << label << "'";
+        plot << ", '' using 1:" << y(4 + int(p)) << " with linespoints" << (nested ? " lw 1.5 dt 3" : " lw 2") << " pt "
+             << point << " lc rgb '" << colours[p % std::size(colours)] << "' title '" << kBenchPasses[p] << label
+             << "'";
     }
     return plot.str() + "\n";
 }
@@ -114,8 +114,8 @@ std::string script(const PlantbenchOptions& o, const SweepResult& result, const 
     title << "plantbench: " << scene << " on " << result.device << ", " << o.width << "x" << o.height << ", "
           << o.samples << "x MSAA, median of " << o.frames << " frames";
     // With --path every count's point is its worst time's.
-    const std::string panelTitle = o.pathTimes ? "Milliseconds per frame, the worst of " + std::to_string(*o.pathTimes) +
-                                                     " times along the camera path"
+    const std::string panelTitle = o.pathTimes ? "Milliseconds per frame, the worst of " +
+                                                     std::to_string(*o.pathTimes) + " times along the camera path"
                                                : std::string("Milliseconds per frame");
     std::ostringstream s;
     s << "set terminal " << terminal << " noenhanced size 1100,1200 font 'DejaVu Sans,11'\n"
@@ -124,14 +124,12 @@ std::string script(const PlantbenchOptions& o, const SweepResult& result, const 
       << "set multiplot layout 2,1 title " << quoted(title.str()) << " font ',13'\n"
       << "set logscale xy\n"
       << "set format x '%.0s%c'\n"
-      << xAxis(result)
-      << "set grid xtics ytics mxtics mytics lc rgb '#dddddd'\n"
+      << xAxis(result) << "set grid xtics ytics mxtics mytics lc rgb '#dddddd'\n"
       << "set key outside right top vertical box opaque\n"
       << "set xlabel 'plants (instances)'\n"
       << "set ylabel 'GPU time per pass, frame wall time (ms)'\n"
       << "set title " << quoted(panelTitle) << "\n"
-      << plotCommand(data, false, hasNaive(result))
-      << "set ylabel 'cost per 1000 plants (ms)'\n"
+      << plotCommand(data, false, hasNaive(result)) << "set ylabel 'cost per 1000 plants (ms)'\n"
       << "set title 'Cost per thousand plants: ms x 1000 / plants'\n"
       << plotCommand(data, true, hasNaive(result)) << "unset multiplot\n";
     return s.str();
@@ -170,7 +168,8 @@ std::string pngTerminal(const fs::path& dir) {
 
 void drawPlot(const PlantbenchOptions& o, const SweepResult& result) {
     std::string dirTemplate = (fs::temp_directory_path() / "plantbench-plot-XXXXXX").string();
-    if (!mkdtemp(dirTemplate.data())) throw std::runtime_error(std::string("cannot create a temporary folder: ") + std::strerror(errno));
+    if (!mkdtemp(dirTemplate.data()))
+        throw std::runtime_error(std::string("cannot create a temporary folder: ") + std::strerror(errno));
     const fs::path dir = dirTemplate;
     const fs::path data = dir / "sweep.dat", scriptPath = dir / "sweep.gp", errors = dir / "gnuplot.err";
     const std::string partial = partialPathOf(o.plotPath);

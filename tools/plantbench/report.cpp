@@ -33,9 +33,7 @@ std::optional<double> medianOf(const std::optional<Spread>& s) {
     return s ? std::optional<double>(s->median) : std::nullopt;
 }
 
-std::optional<double> p95Of(const std::optional<Spread>& s) {
-    return s ? std::optional<double>(s->p95) : std::nullopt;
-}
+std::optional<double> p95Of(const std::optional<Spread>& s) { return s ? std::optional<double>(s->p95) : std::nullopt; }
 
 nlohmann::json spreadJson(const std::optional<Spread>& s) {
     if (!s) return nullptr;
@@ -200,7 +198,8 @@ std::string sweepCsv(const PlantbenchOptions& o, const SweepResult& result) {
     std::ostringstream csv;
     csv << "count,instances,frame_ms_median,frame_ms_p95,cpu_ms_median,cpu_ms_p95";
     for (const char* pass : kBenchPasses) csv << ",gpu_" << pass << "_ms_median,gpu_" << pass << "_ms_p95";
-    csv << ",plants_full,plants_reduced,plants_impostor,culled,triangles,joints_simulated,draws_bark,draws_foliage,draws_impostor"
+    csv << ",plants_full,plants_reduced,plants_impostor,culled,triangles,joints_simulated,draws_bark,draws_foliage,"
+           "draws_impostor"
            ",gpu_memory_bytes,naive_frame_ms_median,naive_frame_ms_p95,naive_triangles,ratio,terrain_size_m,time";
     for (uint32_t i = 1; i <= o.pathTimes.value_or(0); ++i)
         csv << ",path_time_" << i << ",path_frame_ms_median_" << i << ",path_frame_ms_p95_" << i;

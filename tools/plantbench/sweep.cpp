@@ -37,9 +37,7 @@ size_t slowestTime(const std::vector<CameraTimeResult>& times) {
     return slowest;
 }
 
-bool nestedInColour(size_t pass) {
-    return pass < std::size(kFieldPasses) && nestedInColourPass(kFieldPasses[pass]);
-}
+bool nestedInColour(size_t pass) { return pass < std::size(kFieldPasses) && nestedInColourPass(kFieldPasses[pass]); }
 
 namespace {
 
@@ -96,9 +94,9 @@ constexpr double kFrameSeconds = 1.0 / 60.0;
 
 // Warm-up then measured frames of one path, every frame from the same camera
 // while the scene time runs on from `view.time`, so the physics has steps to take.
-PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRenderer& renderer,
-                      FrameResources& frame, const FieldView& view, Path path, const SweepProgress& progress,
-                      double progressStart, double progressSpan) {
+PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRenderer& renderer, FrameResources& frame,
+                      const FieldView& view, Path path, const SweepProgress& progress, double progressStart,
+                      double progressSpan) {
     std::vector<double> frameMs, cpuMs;
     std::array<std::vector<double>, kPassCount> gpuMs;
     const uint32_t all = o.warmup + o.frames;
@@ -107,8 +105,7 @@ PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRe
     for (uint32_t i = 0; i < all; ++i) {
         const bool warm = i < o.warmup;
         showProgress(progress, progressStart + progressSpan * double(i) / all,
-                     name + (warm ? " warm-up " : " frame ") +
-                         std::to_string(warm ? i + 1 : i - o.warmup + 1) + "/" +
+                     name + (warm ? " warm-up " : " frame ") + std::to_string(warm ? i + 1 : i - o.warmup + 1) + "/" +
                          std::to_string(warm ? o.warmup : o.frames));
         FieldView v = view;
         v.firstFrame = i == 0;
@@ -154,16 +151,16 @@ FieldView viewAt(const Scene& scene, double t) {
     return view;
 }
 
-CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scene& scene, uint64_t count,
-                         bool budget, const HeapCapacity& heap, const SweepProgress& progress) {
+CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scene& scene, uint64_t count, bool budget,
+                         const HeapCapacity& heap, const SweepProgress& progress) {
     CountResult r;
     r.count = count;
     const Clock::time_point buildStart = Clock::now();
     const PlantCount plants{size_t(count), countMode(o)};
     showProgress(progress, 0.0, "placing plants"); // buildFieldContent reports only the models after
     FieldContent content = buildFieldContent(scene, plants, [&](size_t done, size_t all, const std::string& name) {
-        showProgress(progress, 0.0, "building plant models " + std::to_string(done) + "/" + std::to_string(all) +
-                                        " (" + name + ")");
+        showProgress(progress, 0.0,
+                     "building plant models " + std::to_string(done) + "/" + std::to_string(all) + " (" + name + ")");
     });
     r.buildSeconds = std::chrono::duration<double>(Clock::now() - buildStart).count();
     r.terrainSize = content.scene.terrain.size;
@@ -201,8 +198,8 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
         r.naive = measurePath(o, ctx, renderer, frame, viewAt(scene, r.time), Path::Naive, progress, 0.5, 0.5);
         r.naiveTriangles = renderer.naiveTriangles();
     } else if (o.compareNaive) {
-        r.note = "naive skipped: " + std::to_string(count) + " plants is above --naive-max " +
-                 std::to_string(o.naiveMax);
+        r.note =
+            "naive skipped: " + std::to_string(count) + " plants is above --naive-max " + std::to_string(o.naiveMax);
     }
     return r;
 }
@@ -239,10 +236,10 @@ void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, S
                                      " plants the host ran out of memory: measure fewer plants");
         } catch (const std::runtime_error& e) {
             const bool outOfGpuMemory = std::strstr(e.what(), "VK_ERROR_OUT_OF_DEVICE_MEMORY") != nullptr;
-            throw std::runtime_error("at " + std::to_string(o.counts[i]) + " plants " +
-                                     (outOfGpuMemory ? "the device ran out of GPU memory (measure fewer plants): "
-                                                     : "the frame failed: ") +
-                                     e.what());
+            throw std::runtime_error(
+                "at " + std::to_string(o.counts[i]) + " plants " +
+                (outOfGpuMemory ? "the device ran out of GPU memory (measure fewer plants): " : "the frame failed: ") +
+                e.what());
         }
         finishCount(progress, result.counts.back());
     }

@@ -7,9 +7,9 @@
 
 #include "plantbench_options.h"
 
-#include "engine/vk/device.h"
 #include "engine/field/field_renderer.h"
 #include "engine/scene/scene.h"
+#include "engine/vk/device.h"
 
 #include <algorithm>
 #include <array>
@@ -45,8 +45,8 @@ std::optional<Spread> spreadOf(std::vector<double> samples);
 
 // What one path (GPU-driven or naive) measured over its frames.
 struct PathTimes {
-    Spread frameMs; // wall time of a frame: set the view, record, submit, wait
-    Spread cpuMs;   // host time to set the view and record the command buffer
+    Spread frameMs;                                      // wall time of a frame: set the view, record, submit, wait
+    Spread cpuMs;                                        // host time to set the view and record the command buffer
     std::array<std::optional<Spread>, kPassCount> gpuMs; // per kBenchPasses entry
 };
 
@@ -58,20 +58,20 @@ struct CameraTimeResult {
 };
 
 struct CountResult {
-    uint64_t count = 0;              // requested
-    double time = 0.0;               // the camera time of `driven`: --time, or the worst of --path
-    PathTimes driven;                // the GPU-driven frame (FieldRenderer::record) at `time`
-    FieldFrameStats stats;           // of the last measured GPU-driven frame at `time`
+    uint64_t count = 0;                      // requested
+    double time = 0.0;                       // the camera time of `driven`: --time, or the worst of --path
+    PathTimes driven;                        // the GPU-driven frame (FieldRenderer::record) at `time`
+    FieldFrameStats stats;                   // of the last measured GPU-driven frame at `time`
     std::vector<CameraTimeResult> alongPath; // with --path: every time in order (`time` the slowest); else empty
-    uint64_t gpuMemoryBytes = 0;     // after the frames, from the sweep's memory source
-    uint64_t rendererBytes = 0;      // FieldRenderer::gpuBytes()
-    std::optional<PathTimes> naive;  // with --compare naive, unless skipped
+    uint64_t gpuMemoryBytes = 0;             // after the frames, from the sweep's memory source
+    uint64_t rendererBytes = 0;              // FieldRenderer::gpuBytes()
+    std::optional<PathTimes> naive;          // with --compare naive, unless skipped
     uint64_t naiveTriangles = 0;
-    uint64_t jointsSimulated = 0;    // FieldRenderer::simulatedJoints(): joints the physics pass steps
-    std::string note;                // why naive was skipped, or empty
-    double buildSeconds = 0.0;       // CPU build of the field (not part of any frame)
-    float terrainSize = 0.0f;        // side of the terrain the plants stand on, metres (grows with the count)
-    std::string placementNote;       // FieldContent::note: the count could not keep the densities
+    uint64_t jointsSimulated = 0; // FieldRenderer::simulatedJoints(): joints the physics pass steps
+    std::string note;             // why naive was skipped, or empty
+    double buildSeconds = 0.0;    // CPU build of the field (not part of any frame)
+    float terrainSize = 0.0f;     // side of the terrain the plants stand on, metres (grows with the count)
+    std::string placementNote;    // FieldContent::note: the count could not keep the densities
 };
 
 struct SweepResult {

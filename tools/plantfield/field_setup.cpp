@@ -27,7 +27,8 @@ FieldContent loadFieldContent(const PlantfieldOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     const Scene scene = loadSceneOf(o);
     std::optional<PlantCount> count;
-    if (o.instances) count = PlantCount{size_t(*o.instances), o.densify ? CountMode::Densify : CountMode::NaturalDensity};
+    if (o.instances)
+        count = PlantCount{size_t(*o.instances), o.densify ? CountMode::Densify : CountMode::NaturalDensity};
     // Progress on a terminal only; logs get the summary line below.
     const bool terminal = isatty(fileno(stderr));
     // buildFieldContent places the plants before it reports the models.

@@ -5,8 +5,8 @@
 
 #include "options.h"
 
-#include "engine/vk/device.h"
 #include "engine/field/field_renderer.h"
+#include "engine/vk/device.h"
 
 #include <memory>
 

@@ -2,9 +2,9 @@
 #include "field_setup.h"
 #include "modes.h"
 
+#include "engine/image/image.h"
 #include "engine/vk/capture.h"
 #include "engine/vk/gpu_timer.h"
-#include "engine/image/image.h"
 
 #include <nlohmann/json.hpp>
 
@@ -19,8 +19,7 @@ namespace pf {
 namespace {
 
 nlohmann::json statsJson(const PlantfieldOptions& o, const GpuContext& ctx, const FieldRenderer& renderer,
-                         const FieldFrameStats& stats, const std::vector<ScopeTime>& gpu, double time,
-                         double wallMs) {
+                         const FieldFrameStats& stats, const std::vector<ScopeTime>& gpu, double time, double wallMs) {
     nlohmann::json j;
     j["scene"] = o.scenePath;
     j["device"] = ctx.properties.deviceName;
@@ -75,9 +74,8 @@ int runHeadless(const PlantfieldOptions& o) {
             time = o.time + i * step;
             renderer.setView(pathView(o, scene, time, i == 0 ? 0.0 : step, i == 0), extent);
             const auto start = std::chrono::steady_clock::now();
-            const RgbaImage image = captureFrame(ctx, target, [&](VkCommandBuffer cmd, const RenderTarget& t) {
-                renderer.record(cmd, t, &timer);
-            });
+            const RgbaImage image = captureFrame(
+                ctx, target, [&](VkCommandBuffer cmd, const RenderTarget& t) { renderer.record(cmd, t, &timer); });
             wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             if (!o.outDir.empty()) {
                 writePng(framePath(o.outDir, i), image);

@@ -1,17 +1,17 @@
 #include "options.h"
 
-#include "engine/vk/device.h"
 #include "engine/image/image.h"
+#include "engine/vk/device.h"
 #include "shaders/field_layouts.h"
 
 #include <CLI/CLI.hpp>
 
 #include <charconv>
 #include <cmath>
-#include <string_view>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <string_view>
 
 namespace pf {
 namespace {
@@ -85,13 +85,15 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_flag("--densify", o.densify,
                  "With --instances: keep the scene's terrain and scale every plant distance to fit N on it");
     app.add_option("--seed", o.seed, "Replace the scene's seed (terrain, plants and placement change)");
-    app.add_flag("--stats", o.stats,
-                 "Print JSON statistics of the (last) frame: plants per LOD, culled, draws, triangles, GPU ms per pass");
+    app.add_flag(
+        "--stats", o.stats,
+        "Print JSON statistics of the (last) frame: plants per LOD, culled, draws, triangles, GPU ms per pass");
     app.add_flag("--physics-check", o.physicsCheck,
                  "Simulate one skeleton of every plant model for 600 sub-steps on the GPU and the CPU and print\n"
                  "JSON: joints, steps, max_deviation_rad (exit 1 when 1e-3 rad or more), gpu_ms, cpu_ms");
     std::string windText;
-    app.add_option("--wind", windText, "Replace the scene's wind: SPEED[,DIRECTION] in m/s and degrees clockwise from north");
+    app.add_option("--wind", windText,
+                   "Replace the scene's wind: SPEED[,DIRECTION] in m/s and degrees clockwise from north");
     app.add_option("--joint-budget", o.jointBudget,
                    "Replace the scene's joint budget: joints of the nearest plants simulated each with their own\n"
                    "state (0 to 10000000; farther plants share per-species copies)")
@@ -103,8 +105,7 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_flag("--list-devices", o.listDevices, "List the Vulkan devices and exit");
     app.add_flag("--validation,!--no-validation", o.validation,
                  "Enable the Khronos validation layer (default: on in debug builds)");
-    app.add_option("--samples", o.samples, "Multisample anti-aliasing samples")
-        ->check(CLI::IsMember({1, 2, 4, 8}));
+    app.add_option("--samples", o.samples, "Multisample anti-aliasing samples")->check(CLI::IsMember({1, 2, 4, 8}));
 
     try {
         app.parse(argc, argv);
@@ -124,11 +125,15 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
         return std::nullopt;
     };
     const std::optional<ImageSize> size = parseImageSize(sizeText);
-    if (!size) return fail("invalid --size '" + sizeText + "': expected WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720");
+    if (!size)
+        return fail("invalid --size '" + sizeText +
+                    "': expected WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720");
     o.size = *size;
     if (!windText.empty()) {
         const std::optional<Wind> wind = parseWind(windText);
-        if (!wind) return fail("invalid --wind '" + windText + "': expected SPEED[,DIRECTION], e.g. 12 or 12,270, speed 0 to 100 m/s");
+        if (!wind)
+            return fail("invalid --wind '" + windText +
+                        "': expected SPEED[,DIRECTION], e.g. 12 or 12,270, speed 0 to 100 m/s");
         o.windSpeed = wind->speed;
         if (windText.find(',') != std::string::npos) o.windDirectionDegrees = wind->directionDegrees;
     }
@@ -137,7 +142,8 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     if (o.physicsCheck && (!o.capturePath.empty() || o.window || o.frames > 0 || o.stats))
         return fail("--physics-check is a mode of its own: no --capture, --frames, --stats or --window");
     if (o.capturePath.empty() && !o.window && !sequence && !o.stats && !o.physicsCheck)
-        return fail("nothing to do: pass --capture FILE.png, --frames N --out-dir DIR, --stats, --physics-check or --window");
+        return fail(
+            "nothing to do: pass --capture FILE.png, --frames N --out-dir DIR, --stats, --physics-check or --window");
     if (o.densify && !o.instances) return fail("--densify needs --instances N");
     if (sequence && o.outDir.empty()) return fail("--frames without --window needs --out-dir DIR for the images");
     if (!o.outDir.empty() && !sequence) return fail("--out-dir needs --frames N (and no --window)");

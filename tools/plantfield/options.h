@@ -30,17 +30,17 @@ struct PlantfieldOptions {
     std::string capturePath;
     ImageSize size{1280, 720};
     bool window = false;
-    uint32_t frames = 0;  // window: stop after this many; headless: capture this many into outDir
-    double fps = 30.0;    // scene seconds per frame of a --frames sequence: 1/fps
-    std::string outDir;   // --frames sequence: DIR/frame_0000.png …
-    double time = 0.0;    // scene time of the (first) frame, seconds
-    std::optional<uint64_t> instances; // exactly this many generated plants, at the scene's densities
-    bool densify = false;              // --instances on the scene's terrain, distances scaled instead
-    std::optional<uint32_t> seed;      // replaces the scene's seed
-    bool stats = false;   // print the frame's JSON statistics on stdout
-    bool physicsCheck = false; // run GPU and CPU physics side by side, print their deviation as JSON
-    std::optional<uint32_t> forcedLod; // draw every visible plant at this LOD
-    std::optional<float> windSpeed;          // replaces the scene's wind speed (m/s)
+    uint32_t frames = 0;                       // window: stop after this many; headless: capture this many into outDir
+    double fps = 30.0;                         // scene seconds per frame of a --frames sequence: 1/fps
+    std::string outDir;                        // --frames sequence: DIR/frame_0000.png …
+    double time = 0.0;                         // scene time of the (first) frame, seconds
+    std::optional<uint64_t> instances;         // exactly this many generated plants, at the scene's densities
+    bool densify = false;                      // --instances on the scene's terrain, distances scaled instead
+    std::optional<uint32_t> seed;              // replaces the scene's seed
+    bool stats = false;                        // print the frame's JSON statistics on stdout
+    bool physicsCheck = false;                 // run GPU and CPU physics side by side, print their deviation as JSON
+    std::optional<uint32_t> forcedLod;         // draw every visible plant at this LOD
+    std::optional<float> windSpeed;            // replaces the scene's wind speed (m/s)
     std::optional<float> windDirectionDegrees; // and direction, clockwise from north (-z) toward +x
     std::optional<uint32_t> jointBudget;       // replaces the scene's physics.joint_budget
     bool shadows = true;

@@ -6,9 +6,9 @@
 #include "field_setup.h"
 #include "modes.h"
 
-#include "engine/vk/gpu_timer.h"
 #include "engine/physics/physics_pass.h"
 #include "engine/scene/plant_models.h"
+#include "engine/vk/gpu_timer.h"
 #include "shaders/joint_physics.h"
 
 #include <nlohmann/json.hpp>

@@ -17,9 +17,9 @@ namespace {
 std::string overlayText(double frameMs, const FieldFrameStats& stats, const std::vector<ScopeTime>& gpu,
                         bool freeFlight) {
     char text[512];
-    int n = std::snprintf(text, sizeof(text),
-                          "%.1f fps  %.2f ms\nplants %u: %s\ntriangles %.2f M\n", frameMs > 0 ? 1000.0 / frameMs : 0.0,
-                          frameMs, stats.instances, plantsPerLodText(stats).c_str(), double(stats.triangles) / 1e6);
+    int n = std::snprintf(text, sizeof(text), "%.1f fps  %.2f ms\nplants %u: %s\ntriangles %.2f M\n",
+                          frameMs > 0 ? 1000.0 / frameMs : 0.0, frameMs, stats.instances,
+                          plantsPerLodText(stats).c_str(), double(stats.triangles) / 1e6);
     for (const ScopeTime& s : gpu)
         if (n > 0 && size_t(n) < sizeof(text))
             n += std::snprintf(text + n, sizeof(text) - size_t(n), "%s %.2f ms  ", s.name.c_str(), s.milliseconds);
