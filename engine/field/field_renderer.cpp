@@ -60,16 +60,21 @@ Buffer uploadVector(GpuResources& owner, const std::vector<T>& data, VkBufferUsa
 // finer grid are a pixel or two wide, and a CPU rasteriser pays per triangle.
 constexpr uint32_t kTerrainDrawSamples = 129;
 
-// Every k-th sample (k the smallest step that fits), edges kept.
+// Every k-th sample (k the smallest step that fits), edges kept; a grid the
+// step does not divide (a terrain grown to a plant count) is resampled
+// bilinearly at maxSamples a side instead.
 Heightfield decimated(const Heightfield& terrain, uint32_t maxSamples) {
     const uint32_t step = (terrain.resolution - 1 + maxSamples - 2) / (maxSamples - 1);
-    if (step <= 1 || (terrain.resolution - 1) % step != 0) return terrain;
+    if (step <= 1) return terrain;
+    const bool whole = (terrain.resolution - 1) % step == 0;
     Heightfield coarse;
-    coarse.resolution = (terrain.resolution - 1) / step + 1;
+    coarse.resolution = whole ? (terrain.resolution - 1) / step + 1 : maxSamples;
     coarse.size = terrain.size;
     coarse.heights.reserve(size_t(coarse.resolution) * coarse.resolution);
     for (uint32_t z = 0; z < coarse.resolution; ++z)
-        for (uint32_t x = 0; x < coarse.resolution; ++x) coarse.heights.push_back(terrain.height(x * step, z * step));
+        for (uint32_t x = 0; x < coarse.resolution; ++x)
+            coarse.heights.push_back(whole ? terrain.height(x * step, z * step)
+                                           : heightAt(terrain, coarse.coordinate(x), coarse.coordinate(z)));
     return coarse;
 }
 

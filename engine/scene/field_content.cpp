@@ -1,5 +1,7 @@
 #include "engine/scene/field_content.h"
 
+#include "engine/scene/natural_density.h"
+
 #include <glm/glm.hpp>
 
 #include <numbers>
@@ -78,33 +80,47 @@ std::vector<PlacementRule> placementRules(const Scene& scene) {
     return rules;
 }
 
-std::vector<PlantInstance> placePlants(const Scene& scene, const Heightfield& terrain, std::optional<size_t> count) {
+PlacedField placeField(const Scene& scene, std::optional<PlantCount> count) {
     const std::vector<PlacementRule> rules = placementRules(scene);
     const uint64_t seed = placementSeed(scene, 0);
+    PlacedField field;
+    field.terrain = scene.terrain;
     std::vector<PlantInstance> generated;
-    if (!rules.empty())
-        generated = count ? scaleToCount(terrain, rules, *count, seed) : placeSpecies(terrain, rules, seed);
+    if (count && count->mode == CountMode::NaturalDensity && !rules.empty()) {
+        NaturalField natural = placeAtNaturalDensity(scene, rules, count->plants, seed);
+        field.terrain = natural.terrain;
+        field.heightfield = std::move(natural.heightfield);
+        field.note = std::move(natural.note);
+        generated = std::move(natural.plants);
+    } else {
+        field.heightfield = terrainOf(scene);
+        if (!rules.empty())
+            generated = count ? scaleToCount(field.heightfield, rules, count->plants, seed)
+                              : placeSpecies(field.heightfield, rules, seed);
+    }
 
     // Group by species in scene order: generated plants are already grouped
     // by rule, and rules follow scene order; explicit species slot in.
-    std::vector<PlantInstance> plants;
-    plants.reserve(generated.size());
+    field.plants.reserve(generated.size());
     size_t next = 0;
     for (size_t s = 0; s < scene.species.size(); ++s) {
         if (scene.species[s].placement.mode == PlacementMode::Explicit) {
-            appendExplicit(scene, terrain, s, plants);
+            appendExplicit(scene, field.heightfield, s, field.plants);
             continue;
         }
-        while (next < generated.size() && generated[next].species == s) plants.push_back(generated[next++]);
+        while (next < generated.size() && generated[next].species == s) field.plants.push_back(generated[next++]);
     }
-    return plants;
+    return field;
 }
 
-FieldContent buildFieldContent(const Scene& scene, std::optional<size_t> count, const ModelProgress& progress) {
+FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> count, const ModelProgress& progress) {
+    PlacedField field = placeField(scene, count);
     FieldContent content;
     content.scene = scene;
-    content.terrain = terrainOf(scene);
-    content.plants = placePlants(scene, content.terrain, count);
+    content.scene.terrain = field.terrain;
+    content.terrain = std::move(field.heightfield);
+    content.plants = std::move(field.plants);
+    content.note = std::move(field.note);
     content.models = buildPlantModels(scene, progress);
     return content;
 }

@@ -8,6 +8,7 @@
 #include "engine/scene/terrain.h"
 
 #include <optional>
+#include <string>
 
 namespace pf {
 
@@ -15,26 +16,46 @@ namespace pf {
 Heightfield terrainOf(const Scene& scene);
 
 // One placement rule per species placed by density or distance (Count
-// species get the distance that gives about `count` plants on the terrain).
+// species get the distance that gives about `count` plants on the scene's
+// terrain, so a grown terrain keeps their density).
 std::vector<PlacementRule> placementRules(const Scene& scene);
 
-// Every plant of the scene, grouped by species in scene order. With
-// `count`, all generated plants together are scaled to exactly `count`
-// (scaleToCount) — explicit ones are added unchanged on top. Same scene and
-// count ⇒ same plants in the same order.
-std::vector<PlantInstance> placePlants(const Scene& scene, const Heightfield& terrain,
-                                       std::optional<size_t> count = std::nullopt);
+// How a requested number of generated plants is reached.
+enum class CountMode {
+    NaturalDensity, // the scene's densities: the planted square, and the terrain with it, follow the count
+    Densify,        // the scene's terrain: every distance scaled to fit the count on it (scaleToCount)
+};
+
+// Exactly `plants` generated plants (hand-placed ones come on top).
+struct PlantCount {
+    size_t plants = 0;
+    CountMode mode = CountMode::NaturalDensity;
+};
+
+// The ground and every plant of the scene standing on it, grouped by species
+// in scene order. Without a count, the scene as written. With one, the
+// generated plants number exactly `count->plants` (placeAtNaturalDensity or
+// scaleToCount); hand-placed plants are added unchanged. Same scene and count
+// ⇒ same plants in the same order.
+struct PlacedField {
+    Terrain terrain;         // the scene's, or grown to hold the count at natural densities
+    Heightfield heightfield; // of `terrain`
+    std::vector<PlantInstance> plants;
+    std::string note; // set when the count could not be reached as asked (an image terrain densified)
+};
+PlacedField placeField(const Scene& scene, std::optional<PlantCount> count = std::nullopt);
 
 // Everything the field renderer draws, built on the CPU.
 struct FieldContent {
-    Scene scene;
+    Scene scene; // its terrain the one the plants stand on (grown, for a natural-density count)
     Heightfield terrain;
     PlantModelPool models;
     std::vector<PlantInstance> plants;
+    std::string note; // PlacedField::note
 };
 
-// Terrain, plants (scaled to `count` when given) and every species' meshes.
-FieldContent buildFieldContent(const Scene& scene, std::optional<size_t> count = std::nullopt,
+// Terrain, plants (exactly `count` generated ones when given) and every species' meshes.
+FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> count = std::nullopt,
                                const ModelProgress& progress = {});
 
 } // namespace pf

@@ -8,10 +8,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <functional>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 namespace pf {
 
@@ -106,8 +110,7 @@ PointGrid sampleRule(const Heightfield& terrain, const PlacementRule& rule, std:
         }
         if (rule.maxSlopeDegrees < 90 && normalAt(terrain, p.x, p.y).y < minNormalY) return false;
         return std::none_of(earlier.begin(), earlier.end(), [&](const Neighbour& n) {
-            const float clearance = std::max(n.clearance, rule.clearance);
-            return clearance > 0 && n.kept->anyWithin(p, clearance);
+            return n.kept->anyWithin(p, std::max(n.clearance, rule.clearance));
         });
     };
 
@@ -147,6 +150,29 @@ PointGrid sampleRule(const Heightfield& terrain, const PlacementRule& rule, std:
     return kept;
 }
 
+// Whether plants of two rules keep a distance from each other (the larger of
+// their clearances): only then does the later rule read the earlier's plants.
+bool keepApart(const PlacementRule& a, const PlacementRule& b) { return std::max(a.clearance, b.clearance) > 0; }
+
+// Runs every task, all but the first on threads of their own, and rethrows
+// the first failure once all have ended.
+void runTogether(const std::vector<std::function<void()>>& tasks) {
+    std::vector<std::exception_ptr> failures(tasks.size());
+    auto run = [&](size_t i) {
+        try {
+            tasks[i]();
+        } catch (...) {
+            failures[i] = std::current_exception();
+        }
+    };
+    std::vector<std::thread> threads;
+    for (size_t i = 1; i < tasks.size(); ++i) threads.emplace_back(run, i);
+    if (!tasks.empty()) run(0);
+    for (std::thread& thread : threads) thread.join();
+    for (const std::exception_ptr& failure : failures)
+        if (failure) std::rethrow_exception(failure);
+}
+
 // Uniform in [0, 2π): rounding to float can reach 2π itself, the same angle as 0.
 float randomAngle(lsys::RandomStream& random) {
     const float angle = float(random.uniform() * 2.0 * std::numbers::pi);
@@ -168,18 +194,26 @@ PlantInstance makeInstance(const Heightfield& terrain, const PlacementRule& rule
     return instance;
 }
 
-std::vector<PlantInstance> thinToCount(const std::vector<PlantInstance>& placed, size_t count, uint64_t seed) {
-    std::vector<std::pair<uint64_t, uint32_t>> order(placed.size());
-    const uint64_t key = lsys::splitmix64(seed ^ kThinningSalt);
-    for (uint32_t i = 0; i < order.size(); ++i) order[i] = {lsys::splitmix64(key ^ i), i};
+// The `count` plants of `placed` with the smallest keys (ties by position),
+// back in placement order, which is spatially coherent.
+template <typename Key>
+std::vector<PlantInstance> keepSmallest(const std::vector<PlantInstance>& placed, size_t count, Key keyOf) {
+    using Keyed = std::pair<decltype(keyOf(placed[0], uint32_t(0))), uint32_t>;
+    std::vector<Keyed> order(placed.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = {keyOf(placed[i], i), i};
+    count = std::min(count, placed.size());
     std::nth_element(order.begin(), order.begin() + ptrdiff_t(count), order.end());
     order.resize(count);
-    // Back to placement order, which is spatially coherent.
-    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+    std::sort(order.begin(), order.end(), [](const Keyed& a, const Keyed& b) { return a.second < b.second; });
     std::vector<PlantInstance> kept;
     kept.reserve(count);
-    for (const auto& [hash, index] : order) kept.push_back(placed[index]);
+    for (const Keyed& entry : order) kept.push_back(placed[entry.second]);
     return kept;
+}
+
+std::vector<PlantInstance> thinToCount(const std::vector<PlantInstance>& placed, size_t count, uint64_t seed) {
+    const uint64_t key = lsys::splitmix64(seed ^ kThinningSalt);
+    return keepSmallest(placed, count, [&](const PlantInstance&, uint32_t i) { return lsys::splitmix64(key ^ i); });
 }
 
 // About how many plants a rule with distance r places on open flat ground.
@@ -210,23 +244,48 @@ std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<co
     std::stable_sort(sampling.begin(), sampling.end(),
                      [&](size_t a, size_t b) { return ruleDistance(rules[a]) > ruleDistance(rules[b]); });
 
-    std::vector<PointGrid> kept;
-    kept.reserve(rules.size()); // Neighbour points into it
-    std::vector<Neighbour> earlier;
-    std::vector<const PointGrid*> keptOfRule(rules.size());
-    for (size_t ruleIndex : sampling) {
-        kept.push_back(sampleRule(terrain, rules[ruleIndex], earlier, seed ^ rules[ruleIndex].seed, ruleIndex));
-        earlier.push_back({&kept.back(), rules[ruleIndex].clearance});
-        keptOfRule[ruleIndex] = &kept.back();
+    // A rule reads the kept plants of the earlier rules it keeps a clearance
+    // from, so it waits for them; rules that keep none from each other are
+    // sampled together, each on its own thread. Each sampling is
+    // single-threaded with its own streams, so the field does not depend on
+    // how many run at once.
+    std::vector<size_t> wave(rules.size(), 0);
+    for (size_t j = 0; j < sampling.size(); ++j)
+        for (size_t i = 0; i < j; ++i)
+            if (keepApart(rules[sampling[i]], rules[sampling[j]]))
+                wave[sampling[j]] = std::max(wave[sampling[j]], wave[sampling[i]] + 1);
+    std::vector<std::optional<PointGrid>> kept(rules.size());
+    for (size_t w = 0; std::find(wave.begin(), wave.end(), w) != wave.end(); ++w) {
+        std::vector<std::function<void()>> tasks;
+        for (size_t j = 0; j < sampling.size(); ++j) {
+            const size_t ruleIndex = sampling[j];
+            if (wave[ruleIndex] != w) continue;
+            std::vector<Neighbour> earlier;
+            for (size_t i = 0; i < j; ++i)
+                if (keepApart(rules[sampling[i]], rules[ruleIndex]))
+                    earlier.push_back({&*kept[sampling[i]], rules[sampling[i]].clearance});
+            tasks.push_back([&, ruleIndex, earlier = std::move(earlier)] {
+                kept[ruleIndex].emplace(
+                    sampleRule(terrain, rules[ruleIndex], earlier, seed ^ rules[ruleIndex].seed, ruleIndex));
+            });
+        }
+        runTogether(tasks);
     }
 
-    std::vector<PlantInstance> instances;
-    for (size_t ruleIndex = 0; ruleIndex < rules.size(); ++ruleIndex) {
-        const std::vector<glm::vec2>& points = keptOfRule[ruleIndex]->points;
-        for (size_t i = 0; i < points.size(); ++i)
-            instances.push_back(
-                makeInstance(terrain, rules[ruleIndex], points[i], seed ^ rules[ruleIndex].seed, ruleIndex, i));
-    }
+    // Grouped by rule in the order of `rules`; each rule's plants made on a thread of their own.
+    std::vector<size_t> first(rules.size() + 1, 0);
+    for (size_t ruleIndex = 0; ruleIndex < rules.size(); ++ruleIndex)
+        first[ruleIndex + 1] = first[ruleIndex] + kept[ruleIndex]->points.size();
+    std::vector<PlantInstance> instances(first.back());
+    std::vector<std::function<void()>> tasks;
+    for (size_t ruleIndex = 0; ruleIndex < rules.size(); ++ruleIndex)
+        tasks.push_back([&, ruleIndex] {
+            const std::vector<glm::vec2>& points = kept[ruleIndex]->points;
+            for (size_t i = 0; i < points.size(); ++i)
+                instances[first[ruleIndex] + i] =
+                    makeInstance(terrain, rules[ruleIndex], points[i], seed ^ rules[ruleIndex].seed, ruleIndex, i);
+        });
+    runTogether(tasks);
     return instances;
 }
 
@@ -258,6 +317,12 @@ std::vector<PlantInstance> scaleToCount(const Heightfield& terrain, std::span<co
         placed = placeScaled(scale);
     }
     return thinToCount(placed, count, seed);
+}
+
+std::vector<PlantInstance> keepCentralSquare(const std::vector<PlantInstance>& plants, size_t count) {
+    return keepSmallest(plants, count, [](const PlantInstance& p, uint32_t) {
+        return std::max(std::abs(p.position.x), std::abs(p.position.z));
+    });
 }
 
 } // namespace pf

@@ -66,4 +66,10 @@ std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<co
 std::vector<PlantInstance> scaleToCount(const Heightfield& terrain, std::span<const PlacementRule> rules, size_t count,
                                         uint64_t seed);
 
+// The `count` plants nearest the terrain's centre in the maximum norm, so
+// they fill a square around the origin at the density they were placed
+// with; in their given order (grouping by rule survives). All of them when
+// there are no more than `count`.
+std::vector<PlantInstance> keepCentralSquare(const std::vector<PlantInstance>& plants, size_t count);
+
 } // namespace pf

@@ -43,8 +43,10 @@ T splineAt(const std::vector<CameraKeyframe>& keys, size_t i, float u, Value val
 }
 
 // Without keyframes: circle the origin once every two minutes, 60 m out and 20 m up.
+constexpr double kDefaultOrbitSeconds = 120.0;
 Camera defaultOrbit(double t) {
-    constexpr float kRadius = 60.0f, kHeight = 20.0f, kRadiansPerSecond = 2.0f * 3.14159265f / 120.0f;
+    constexpr float kRadius = 60.0f, kHeight = 20.0f,
+                    kRadiansPerSecond = 2.0f * 3.14159265f / float(kDefaultOrbitSeconds);
     const float angle = glm::radians(30.0f) + float(t) * kRadiansPerSecond;
     Camera camera;
     camera.position = glm::vec3(std::sin(angle) * kRadius, kHeight, std::cos(angle) * kRadius);
@@ -82,6 +84,18 @@ Camera cameraAt(const CameraPath& path, double t) {
     // The spline may overshoot between keys; a field of view must stay valid.
     camera.fovYDegrees = std::clamp(splineAt<float>(keys, i, u, fov), 1.0f, 179.0f);
     return camera;
+}
+
+std::vector<double> timesAlongPath(const CameraPath& path, uint32_t count) {
+    std::vector<double> times;
+    if (path.keyframes.empty()) {
+        // The orbit comes back to its start, so the last step stops short of a full turn.
+        for (uint32_t i = 0; i < count; ++i) times.push_back(kDefaultOrbitSeconds * i / count);
+        return times;
+    }
+    const double first = path.keyframes.front().time, last = path.keyframes.back().time;
+    for (uint32_t i = 0; i < count; ++i) times.push_back(count == 1 ? first : first + (last - first) * i / (count - 1));
+    return times;
 }
 
 uint32_t terrainSeed(const Scene& scene) {

@@ -43,6 +43,9 @@ struct ImageHeightfield {
     bool operator==(const ImageHeightfield&) const = default;
 };
 
+// The most height samples a terrain side may have: 8193² floats are 256 MiB.
+constexpr uint32_t kMaxTerrainResolution = 8193;
+
 // A square centred on the origin.
 struct Terrain {
     float size = 512.0f;       // side in metres
@@ -203,6 +206,11 @@ Scene loadScene(const std::filesystem::path& file);
 // keyframes with tangents from the neighbouring keys' times, held at the first
 // and last keyframe outside them. An empty path orbits the origin.
 Camera cameraAt(const CameraPath& path, double t);
+
+// `count` scene times spread evenly over the path: from its first keyframe to
+// its last, both included (a single time is the first keyframe's); without
+// keyframes, steps through one turn of the default orbit from t = 0.
+std::vector<double> timesAlongPath(const CameraPath& path, uint32_t count);
 
 // Seeds that the file leaves out come from the scene seed, one independent
 // stream each, so changing the scene seed changes the whole scene.

@@ -55,7 +55,7 @@ Terrain readTerrain(const JsonNode& node, const std::filesystem::path& sceneFold
     requireObject(node, {"size", "resolution", "noise", "image", "albedo"});
     Terrain terrain;
     readField(node, "size", terrain.size, above(0.0));
-    readField(node, "resolution", terrain.resolution, between(2, 8193));
+    readField(node, "resolution", terrain.resolution, between(2, kMaxTerrainResolution));
     readField(node, "albedo", terrain.albedo, between(0.0, 1.0));
     const std::optional<JsonNode> noise = member(node, "noise");
     const std::optional<JsonNode> image = member(node, "image");

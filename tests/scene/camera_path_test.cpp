@@ -88,5 +88,23 @@ TEST(CameraPath, CarriesThePathsLens) {
     EXPECT_EQ(camera.farPlane, 500.0f);
 }
 
+TEST(TimesAlongPath, SpreadsEvenlyFromTheFirstKeyframeToTheLast) {
+    const CameraPath path = curvedPath(); // keys at 0, 2, 5, 6 s
+    EXPECT_EQ(timesAlongPath(path, 4), (std::vector<double>{0.0, 2.0, 4.0, 6.0}));
+    EXPECT_EQ(timesAlongPath(path, 1), std::vector<double>{0.0});
+    const std::vector<double> many = timesAlongPath(path, 25);
+    ASSERT_EQ(many.size(), 25u);
+    EXPECT_EQ(many.front(), 0.0);
+    EXPECT_EQ(many.back(), 6.0);
+    for (size_t i = 1; i < many.size(); ++i) EXPECT_NEAR(many[i] - many[i - 1], 0.25, 1e-12);
+}
+
+TEST(TimesAlongPath, StepsThroughOneTurnOfTheDefaultOrbit) {
+    const std::vector<double> times = timesAlongPath(CameraPath{}, 4);
+    EXPECT_EQ(times, (std::vector<double>{0.0, 30.0, 60.0, 90.0}));
+    // A full turn later the orbit is back where it began, so 120 s is not among them.
+    expectNear(cameraAt(CameraPath{}, 120.0).position, cameraAt(CameraPath{}, 0.0).position);
+}
+
 } // namespace
 } // namespace pf

@@ -137,24 +137,41 @@ std::vector<std::vector<std::string>> csvRows(const std::string& text) {
     return rows;
 }
 
-TEST(PlantbenchCli, SmallSweepWritesJsonAndCsvWithEveryPass) {
-    const fs::path dir = scratchDir("small");
+// plantbench on test_small.json with `args`, writing JSON and CSV into a
+// scratch folder of its own; both read back when it succeeded.
+struct SmallSweep {
+    CommandResult result;
+    nlohmann::json json;
+    std::string csv;
+};
+SmallSweep runSmallSweep(const std::string& name, const std::string& args) {
+    const fs::path dir = scratchDir(name);
     const fs::path json = dir / "sweep.json", csv = dir / "sweep.csv";
-    const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
-                                       " --validation --counts 50,200 --frames 2 --warmup 1 --size 160x90"
-                                       " --compare naive --json " +
-                                       json.string() + " --csv " + csv.string());
+    SmallSweep sweep;
+    sweep.result = runCommand(kPlantbench + " " + kSmallScene + " " + args + " --json " + json.string() + " --csv " +
+                              csv.string());
+    if (sweep.result.exitCode == 0) {
+        sweep.json = nlohmann::json::parse(readText(json));
+        sweep.csv = readText(csv);
+    }
+    return sweep;
+}
+
+TEST(PlantbenchCli, SmallSweepWritesJsonAndCsvWithEveryPass) {
+    const SmallSweep sweep =
+        runSmallSweep("small", "--validation --counts 50,200 --frames 2 --warmup 1 --size 160x90 --compare naive");
+    const CommandResult& r = sweep.result;
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("ratio"), std::string::npos) << "no summary table:\n" << r.output;
 
-    const nlohmann::json j = nlohmann::json::parse(readText(json));
+    const nlohmann::json& j = sweep.json;
     EXPECT_EQ(j["frames"], 2);
     EXPECT_EQ(j["warmup"], 1);
     EXPECT_EQ(j["size"], nlohmann::json({160, 90}));
     expectWellFormedSweep(j, kSmallScene, {50, 200}, true);
 
-    const auto rows = csvRows(readText(csv));
+    const auto rows = csvRows(sweep.csv);
     ASSERT_EQ(rows.size(), 3u) << "a header and one row per count";
     EXPECT_EQ(rows[0][0], "count");
     for (size_t i = 1; i < rows.size(); ++i) ASSERT_EQ(rows[i].size(), rows[0].size()) << "row " << i;
@@ -185,6 +202,63 @@ TEST(PlantbenchCli, DefaultSceneSweepMatchesCounts) {
         runCommand(kPlantbench + " --counts 100,300 --frames 2 --warmup 1 --size 160x90 --json " + json.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     expectWellFormedSweep(nlohmann::json::parse(readText(json)), kDefaultScene, {100, 300}, false);
+}
+
+TEST(PlantbenchCli, PathSweepReportsEveryTimeAndTheWorst) {
+    const SmallSweep sweep =
+        runSmallSweep("path", "--counts 20,40 --frames 2 --warmup 1 --size 64x64 --samples 1 --path 3 --compare naive");
+    ASSERT_EQ(sweep.result.exitCode, 0) << sweep.result.output;
+    const nlohmann::json& j = sweep.json;
+    EXPECT_EQ(j["path"], 3);
+    EXPECT_TRUE(j["time"].is_null());
+    expectWellFormedSweep(j, kSmallScene, {20, 40}, true);
+    const std::vector<double> times = timesAlongPath(loadScene(kSmallScene).camera, 3);
+    for (const nlohmann::json& result : j["results"]) {
+        const std::string at = result["count"].dump() + " plants";
+        ASSERT_TRUE(result["path"].is_array()) << at;
+        ASSERT_EQ(result["path"].size(), times.size()) << at;
+        double worst = 0.0, worstTime = -1.0;
+        for (size_t i = 0; i < times.size(); ++i) {
+            const nlohmann::json& point = result["path"][i];
+            EXPECT_DOUBLE_EQ(point["time"].get<double>(), times[i]) << at;
+            expectSpread(point["frame_ms"], at + " path frame_ms");
+            for (const std::string& pass : timedPasses())
+                expectSpread(point["gpu_ms"][pass], at + " path gpu_ms." + pass);
+            EXPECT_EQ(point["triangles"].is_number(), true) << at;
+            const double ms = point["frame_ms"]["median"].get<double>();
+            if (ms > worst) worst = ms, worstTime = times[i];
+        }
+        // The count's figures are those of the worst time.
+        EXPECT_DOUBLE_EQ(result["frame_ms"]["median"].get<double>(), worst) << at;
+        EXPECT_DOUBLE_EQ(result["time"].get<double>(), worstTime) << at;
+    }
+    const auto rows = csvRows(sweep.csv);
+    ASSERT_EQ(rows.size(), 3u);
+    for (size_t i = 1; i < rows.size(); ++i) ASSERT_EQ(rows[i].size(), rows[0].size()) << "row " << i;
+    for (const char* name : {"time", "path_time_1", "path_frame_ms_median_3", "path_frame_ms_p95_3"})
+        EXPECT_NE(std::find(rows[0].begin(), rows[0].end(), name), rows[0].end()) << name;
+    EXPECT_NE(sweep.result.output.find("along the camera path"), std::string::npos) << sweep.result.output;
+}
+
+TEST(PlantbenchCli, CountsKeepTheScenesDensitiesUnlessDensified) {
+    const fs::path dir = scratchDir("densities");
+    // test_small places 20 bushes on its 40 m: 200 need about 126 m, unless densified.
+    for (const bool densify : {false, true}) {
+        const fs::path json = dir / (densify ? "densified.json" : "natural.json");
+        const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
+                                           " --counts 10,200 --frames 1 --warmup 0"
+                                           " --size 32x32 --samples 1 --json " +
+                                           json.string() + (densify ? " --densify" : ""));
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        const nlohmann::json j = nlohmann::json::parse(readText(json));
+        EXPECT_EQ(j["count_mode"], densify ? "densify" : "natural");
+        expectWellFormedSweep(j, kSmallScene, {10, 200}, false);
+        EXPECT_EQ(j["results"][0]["terrain_size_m"].get<double>(), 40.0);
+        if (densify)
+            EXPECT_EQ(j["results"][1]["terrain_size_m"].get<double>(), 40.0);
+        else
+            EXPECT_GT(j["results"][1]["terrain_size_m"].get<double>(), 110.0);
+    }
 }
 
 TEST(PlantbenchCli, NaiveAboveNaiveMaxIsSkippedWithANote) {
@@ -239,7 +313,12 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"MalformedSize", "--counts 10 --size 640by360 --json OUT.json", "--size"},
                       BadInvocation{"UnknownCompare", "--counts 10 --compare fancy --json OUT.json", "--compare"},
                       BadInvocation{"MissingOutputFolder", "--counts 10 --json OUT/missing/x.json", "does not exist"},
-                      BadInvocation{"UnknownScene", "OUT/nosuch.json --counts 10", "does not exist"}),
+                      BadInvocation{"UnknownScene", "OUT/nosuch.json --counts 10", "does not exist"},
+                      BadInvocation{"ZeroPathTimes", "--counts 10 --path 0 --json OUT.json", "--path"},
+                      BadInvocation{"NegativePathTimes", "--counts 10 --path -3 --json OUT.json", "--path"},
+                      BadInvocation{"MalformedPathTimes", "--counts 10 --path 3x --csv OUT.csv", "--path"},
+                      BadInvocation{"TooManyPathTimes", "--counts 10 --path 1001 --json OUT.json", "1 to 1000"},
+                      BadInvocation{"PathAndTime", "--counts 10 --path 4 --time 2 --json OUT.json", "alternatives"}),
     invocationName);
 
 TEST(PlantbenchCli, MalformedSceneFailsClearlyWithoutWriting) {
@@ -274,8 +353,9 @@ TEST(PlantbenchCli, UnwritableOutputLeavesExistingFileUntouched) {
 TEST(PlantbenchCli, HelpListsEveryOption) {
     const CommandResult r = runCommand(kPlantbench + " --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* flag : {"--counts", "--frames", "--warmup", "--size", "--samples", "--no-shadows", "--compare",
-                             "--naive-max", "--json", "--csv", "--plot", "--seed", "--device", "--validation"})
+    for (const char* flag :
+         {"--counts", "--frames", "--warmup", "--size", "--samples", "--no-shadows", "--compare", "--naive-max",
+          "--json", "--csv", "--plot", "--seed", "--device", "--validation", "--path", "--densify"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 

@@ -26,14 +26,16 @@ TEST(PlantbenchMemory, FieldEstimateGrowsWithThePlants) {
     pool.indices.resize(300);
     EXPECT_EQ(estimatedFieldBytes(1000, &pool, 1280, 720, 4) - estimatedFieldBytes(1000, nullptr, 1280, 720, 4),
               300u * 4);
-    EXPECT_EQ(estimatedHostBytes(1000), 1000 * kHostBytesPerPlant);
+    EXPECT_EQ(estimatedHostBytes(1000, CountMode::Densify), 1000 * kHostBytesPerPlant);
+    // At natural densities the grown terrain's heights come on top.
+    EXPECT_EQ(estimatedHostBytes(1000, CountMode::NaturalDensity), 1000 * (kHostBytesPerPlant + 16 * 4));
 }
 
 TEST(PlantbenchMemory, FittingCountIsAccepted) {
     EXPECT_EQ(
         gpuMemoryProblem(100000, estimatedFieldBytes(100000, nullptr, 1280, 720, 4), "fake GPU", {4 * kGiB, false}),
         "");
-    EXPECT_EQ(hostMemoryProblem(100000, estimatedHostBytes(100000), 8 * kGiB), "");
+    EXPECT_EQ(hostMemoryProblem(100000, estimatedHostBytes(100000, CountMode::NaturalDensity), 8 * kGiB), "");
 }
 
 TEST(PlantbenchMemory, CountAboveTheHeapIsRefusedNamingCountNeedAndHeap) {
@@ -50,7 +52,7 @@ TEST(PlantbenchMemory, HeapBudgetIsNamedAsABudget) {
 }
 
 TEST(PlantbenchMemory, CountAboveAvailableHostMemoryIsRefused) {
-    const uint64_t need = estimatedHostBytes(kMaxPlants);
+    const uint64_t need = estimatedHostBytes(kMaxPlants, CountMode::NaturalDensity);
     ASSERT_GT(need, 100 * kMiB);
     expectMentions(hostMemoryProblem(kMaxPlants, need, 100 * kMiB),
                    {"16777216 plants", formatBytes(need), "host memory", "only 100.0 MiB", "MemAvailable",

@@ -82,6 +82,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"NoOutputChosen", "--size 640x360", "nothing to do"},
                       BadInvocation{"ZeroInstances", "--capture OUT --instances 0", "--instances"},
                       BadInvocation{"TooManyInstances", "--capture OUT --instances 16777217", "--instances"},
+                      BadInvocation{"DensifyWithoutInstances", "--capture OUT --densify",
+                                    "--densify needs --instances"},
                       BadInvocation{"LodOutOfRange", "--capture OUT --lod 3", "--lod"},
                       BadInvocation{"FramesWithoutOutDir", "--frames 5", "--out-dir"},
                       BadInvocation{"MalformedWind", "--capture OUT --wind fast", "--wind"},
@@ -127,7 +129,7 @@ TEST(PlantfieldCli, HelpListsEveryOption) {
     const CommandResult r = runCommand(kPlantfield + " --help");
     EXPECT_EQ(r.exitCode, 0);
     for (const char* flag : {"--capture", "--size", "--window", "--frames", "--time", "--device", "--validation",
-                             "--wind", "--joint-budget", "--physics-check"})
+                             "--wind", "--joint-budget", "--physics-check", "--instances", "--densify"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 

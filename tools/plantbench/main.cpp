@@ -16,7 +16,7 @@ namespace {
 void writeOutputs(const PlantbenchOptions& o, const SweepResult& result) {
     if (!o.plotPath.empty()) drawPlot(o, result);
     if (!o.jsonPath.empty()) writeTextFile(o.jsonPath, sweepJson(o, result).dump(2) + "\n");
-    if (!o.csvPath.empty()) writeTextFile(o.csvPath, sweepCsv(result));
+    if (!o.csvPath.empty()) writeTextFile(o.csvPath, sweepCsv(o, result));
     for (const std::string* path : {&o.jsonPath, &o.csvPath, &o.plotPath})
         if (!path->empty()) std::cerr << "plantbench: wrote " << *path << "\n";
 }

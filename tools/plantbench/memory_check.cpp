@@ -20,7 +20,9 @@ uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_
     return bytes;
 }
 
-uint64_t estimatedHostBytes(uint64_t count) { return count * kHostBytesPerPlant; }
+uint64_t estimatedHostBytes(uint64_t count, CountMode mode) {
+    return count * (kHostBytesPerPlant + (mode == CountMode::NaturalDensity ? kGrownTerrainBytesPerPlant : 0));
+}
 
 std::optional<uint64_t> memAvailableOf(const std::string& meminfo) {
     std::istringstream lines(meminfo);

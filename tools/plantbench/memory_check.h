@@ -3,6 +3,8 @@
 // check is unit-tested with made-up limits (tests/tools/plantbench_memory_test.cpp).
 #pragma once
 
+#include "engine/scene/field_content.h"
+#include "engine/scene/natural_density.h"
 #include "engine/scene/plant_models.h"
 
 #include <cstdint>
@@ -28,9 +30,11 @@ uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_
 // Host bytes building a field of `count` plants needs at its peak
 // (kHostBytesPerPlant each, docs/PLANTBENCH.md): placement's grid and
 // points, the placed, thinned and kept PlantInstance arrays, and the
-// renderer's per-plant upload arrays.
+// renderer's per-plant upload arrays; at natural densities also the heights
+// of the grown terrain (kGrownTerrainBytesPerPlant at most).
 inline constexpr uint64_t kHostBytesPerPlant = 160;
-uint64_t estimatedHostBytes(uint64_t count);
+inline constexpr uint64_t kGrownTerrainBytesPerPlant = kGrownSamplesPerPlant * sizeof(float);
+uint64_t estimatedHostBytes(uint64_t count, CountMode mode);
 
 // MemAvailable of a /proc/meminfo text in bytes; nullopt when absent.
 std::optional<uint64_t> memAvailableOf(const std::string& meminfo);

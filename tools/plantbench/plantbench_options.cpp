@@ -48,6 +48,17 @@ std::optional<std::vector<uint64_t>> parseCounts(const std::string& text, uint64
     }
 }
 
+std::optional<uint32_t> parsePathTimes(const std::string& text, std::string* problem) {
+    if (text.empty()) return kDefaultPathTimes;
+    uint32_t times = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), times);
+    if (ec != std::errc() || end != text.data() + text.size() || times < 1 || times > kMaxPathTimes) {
+        *problem = "expected a whole number of times along the camera path, 1 to " + std::to_string(kMaxPathTimes);
+        return std::nullopt;
+    }
+    return times;
+}
+
 namespace {
 
 bool onPath(const std::string& program) {
@@ -77,6 +88,7 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
                  "warm-up frames, then times the measured frames: GPU ms per pass, frame wall time, plants per LOD."};
     app.footer("Examples:\n"
                "  plantbench --counts 1000,10000,100000 --compare naive\n"
+               "  plantbench data/scenes/valley.json --counts 1000000 --path 8   the worst frame along the path\n"
                "  plantbench data/scenes/default.json --counts 1000,10000 --json sweep.json --csv sweep.csv "
                "--plot sweep.png\n"
                "Environment: PLANTFIELD_DEVICE picks the device by name, PLANTFIELD_VALIDATION=1 turns on\n"
@@ -98,6 +110,17 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     app.add_option("--time", o.time, "Scene time of the camera on the scene's camera path, seconds")
         ->check(CLI::NonNegativeNumber)
         ->default_val(o.time);
+    std::string pathText;
+    app.add_option("--path", pathText,
+                   "Measure at K times spread evenly over the camera path (default " +
+                       std::to_string(kDefaultPathTimes) +
+                       ") instead of one --time;\n"
+                       "report every time's frame and the worst")
+        ->expected(0, 1)
+        ->type_name("[K]");
+    app.add_flag("--densify", o.densify,
+                 "Fit each count on the scene's terrain by scaling every plant distance (default: the scene's\n"
+                 "densities, the planted area and the noise terrain growing with the count)");
     std::string compare;
     app.add_option("--compare", compare, "Also render every count the naive way (full detail, one draw per plant)")
         ->check(CLI::IsMember({"naive"}));
@@ -140,6 +163,13 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     o.width = size->width;
     o.height = size->height;
     o.compareNaive = compare == "naive";
+    if (app.count("--path")) {
+        const auto times = parsePathTimes(pathText, &problem);
+        if (!times) return fail("invalid --path '" + pathText + "': " + problem);
+        if (app.count("--time"))
+            return fail("--path and --time are alternatives: --path measures along the whole path");
+        o.pathTimes = *times;
+    }
     if (!std::filesystem::is_regular_file(o.scenePath))
         return fail("scene file '" + o.scenePath + "' does not exist or is not a file");
     for (auto [flag, path] : {std::pair{"--json", &o.jsonPath}, {"--csv", &o.csvPath}, {"--plot", &o.plotPath}}) {

@@ -12,6 +12,14 @@ namespace pf {
 // count above `maxCount`. `problem` says which.
 std::optional<std::vector<uint64_t>> parseCounts(const std::string& text, uint64_t maxCount, std::string* problem);
 
+// `--path` without a value: times along the camera path.
+inline constexpr uint32_t kDefaultPathTimes = 8;
+inline constexpr uint32_t kMaxPathTimes = 1000;
+
+// The K of "--path K": a whole number 1 to kMaxPathTimes; an empty text is
+// kDefaultPathTimes. nullopt for anything else, `problem` says why.
+std::optional<uint32_t> parsePathTimes(const std::string& text, std::string* problem);
+
 struct PlantbenchOptions {
     std::string scenePath;
     std::vector<uint64_t> counts; // plants per sweep step, in the order given
@@ -20,7 +28,9 @@ struct PlantbenchOptions {
     uint32_t width = 1280, height = 720;
     uint32_t samples = 4;
     bool shadows = true;
-    double time = 0.0; // scene time of the camera on its path
+    double time = 0.0;                 // scene time of the camera on its path
+    std::optional<uint32_t> pathTimes; // --path: measure at this many times along the camera path instead
+    bool densify = false;              // counts on the scene's terrain, distances scaled (not natural densities)
     bool compareNaive = false;
     uint64_t naiveMax = 100000; // counts above this skip the naive path
     std::string jsonPath, csvPath, plotPath;

@@ -113,6 +113,10 @@ std::string script(const PlantbenchOptions& o, const SweepResult& result, const 
     std::ostringstream title;
     title << "plantbench: " << scene << " on " << result.device << ", " << o.width << "x" << o.height << ", "
           << o.samples << "x MSAA, median of " << o.frames << " frames";
+    // With --path every count's point is its worst time's.
+    const std::string panelTitle = o.pathTimes ? "Milliseconds per frame, the worst of " +
+                                                     std::to_string(*o.pathTimes) + " times along the camera path"
+                                               : std::string("Milliseconds per frame");
     std::ostringstream s;
     s << "set terminal " << terminal << " noenhanced size 1100,1200 font 'DejaVu Sans,11'\n"
       << "set output " << quoted(output) << "\n"
@@ -124,7 +128,7 @@ std::string script(const PlantbenchOptions& o, const SweepResult& result, const 
       << "set key outside right top vertical box opaque\n"
       << "set xlabel 'plants (instances)'\n"
       << "set ylabel 'GPU time per pass, frame wall time (ms)'\n"
-      << "set title 'Milliseconds per frame'\n"
+      << "set title " << quoted(panelTitle) << "\n"
       << plotCommand(data, false, hasNaive(result)) << "set ylabel 'cost per 1000 plants (ms)'\n"
       << "set title 'Cost per thousand plants: ms x 1000 / plants'\n"
       << plotCommand(data, true, hasNaive(result)) << "unset multiplot\n";

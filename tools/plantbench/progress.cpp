@@ -29,6 +29,8 @@ void finishCount(const SweepProgress& p, const CountResult& r) {
     if (p.terminal) std::fprintf(stderr, "\r\x1b[K");
     std::fprintf(stderr, "plantbench: %zu/%zu: %llu plants (built in %.1f s): frame %.2f ms median", p.countIndex + 1,
                  p.countTotal, static_cast<unsigned long long>(r.count), r.buildSeconds, r.driven.frameMs.median);
+    if (!r.alongPath.empty())
+        std::fprintf(stderr, " (the worst of %zu camera times, at t = %.1f s)", r.alongPath.size(), r.time);
     if (r.naive)
         std::fprintf(stderr, ", naive %.2f ms (%.1fx)", r.naive->frameMs.median,
                      r.naive->frameMs.median / r.driven.frameMs.median);

@@ -17,7 +17,8 @@ std::optional<double> naiveRatio(const CountResult& r);
 void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const SweepResult& result);
 nlohmann::json sweepJson(const PlantbenchOptions& o, const SweepResult& result);
 // A header row, then one row per count; empty cells where a value is absent.
-std::string sweepCsv(const SweepResult& result);
+// With --path the row is the worst time's, followed by every time's frame ms.
+std::string sweepCsv(const PlantbenchOptions& o, const SweepResult& result);
 
 // Writes `text` to a temporary file next to `path` and renames it into
 // place, so a failure never leaves a half-written file. Throws with the path.

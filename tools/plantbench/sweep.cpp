@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <new>
 #include <stdexcept>
@@ -25,11 +26,28 @@ std::optional<Spread> spreadOf(std::vector<double> samples) {
     return s;
 }
 
+std::vector<double> measuredTimes(const PlantbenchOptions& o, const Scene& scene) {
+    return o.pathTimes ? timesAlongPath(scene.camera, *o.pathTimes) : std::vector<double>{o.time};
+}
+
+size_t slowestTime(const std::vector<CameraTimeResult>& times) {
+    size_t slowest = 0;
+    for (size_t i = 1; i < times.size(); ++i)
+        if (times[i].driven.frameMs.median > times[slowest].driven.frameMs.median) slowest = i;
+    return slowest;
+}
+
 bool nestedInColour(size_t pass) { return pass < std::size(kFieldPasses) && nestedInColourPass(kFieldPasses[pass]); }
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+std::string secondsText(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.1f", seconds);
+    return text;
+}
 
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -81,12 +99,12 @@ PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRe
     std::vector<double> frameMs, cpuMs;
     std::array<std::vector<double>, kPassCount> gpuMs;
     const uint32_t all = o.warmup + o.frames;
-    const char* name = path == Path::Driven ? "GPU-driven" : "naive";
+    std::string name = path == Path::Driven ? "GPU-driven" : "naive";
+    if (o.pathTimes) name += " at t = " + secondsText(view.time) + " s";
     for (uint32_t i = 0; i < all; ++i) {
         const bool warm = i < o.warmup;
         showProgress(progress, progressStart + progressSpan * double(i) / all,
-                     std::string(name) + (warm ? " warm-up " : " frame ") +
-                         std::to_string(warm ? i + 1 : i - o.warmup + 1) + "/" +
+                     name + (warm ? " warm-up " : " frame ") + std::to_string(warm ? i + 1 : i - o.warmup + 1) + "/" +
                          std::to_string(warm ? o.warmup : o.frames));
         FieldView v = view;
         v.firstFrame = i == 0;
@@ -122,18 +140,30 @@ void refuseIf(const std::string& problem) {
     if (!problem.empty()) throw std::runtime_error(problem);
 }
 
+CountMode countMode(const PlantbenchOptions& o) { return o.densify ? CountMode::Densify : CountMode::NaturalDensity; }
+
+// The scene's camera at time t, the scene time starting there.
+FieldView viewAt(const Scene& scene, double t) {
+    FieldView view;
+    view.camera = cameraAt(scene.camera, t);
+    view.time = float(t);
+    return view;
+}
+
 CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scene& scene, uint64_t count, bool budget,
                          const HeapCapacity& heap, const SweepProgress& progress) {
     CountResult r;
     r.count = count;
     const Clock::time_point buildStart = Clock::now();
-    FieldContent content =
-        buildFieldContent(scene, size_t(count), [&](size_t done, size_t all, const std::string& name) {
-            showProgress(progress, 0.0,
-                         "building plant models " + std::to_string(done) + "/" + std::to_string(all) + " (" + name +
-                             ")");
-        });
+    const PlantCount plants{size_t(count), countMode(o)};
+    showProgress(progress, 0.0, "placing plants"); // buildFieldContent reports only the models after
+    FieldContent content = buildFieldContent(scene, plants, [&](size_t done, size_t all, const std::string& name) {
+        showProgress(progress, 0.0,
+                     "building plant models " + std::to_string(done) + "/" + std::to_string(all) + " (" + name + ")");
+    });
     r.buildSeconds = std::chrono::duration<double>(Clock::now() - buildStart).count();
+    r.terrainSize = content.scene.terrain.size;
+    r.placementNote = content.note;
     // Again with the model pool's size, now known.
     refuseIf(gpuMemoryProblem(count, estimatedFieldBytes(count, &content.models, o.width, o.height, o.samples),
                               ctx.properties.deviceName, heap));
@@ -145,18 +175,25 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
     FieldRenderer renderer(ctx, std::move(content), settings);
     FrameResources frame(ctx, {o.width, o.height}, renderer.samples());
 
-    FieldView view;
-    view.camera = cameraAt(scene.camera, o.time);
-    view.time = float(o.time);
     const bool naive = o.compareNaive && count <= o.naiveMax;
-    const double drivenSpan = naive ? 0.5 : 1.0;
-    r.driven = measurePath(o, ctx, renderer, frame, view, Path::Driven, progress, 0.0, drivenSpan);
-    r.stats = renderer.readStats();
+    const std::vector<double> times = measuredTimes(o, scene);
+    const double drivenSpan = (naive ? 0.5 : 1.0) / double(times.size());
+    std::vector<CameraTimeResult> measured;
+    for (size_t t = 0; t < times.size(); ++t) {
+        const PathTimes driven = measurePath(o, ctx, renderer, frame, viewAt(scene, times[t]), Path::Driven, progress,
+                                             drivenSpan * double(t), drivenSpan);
+        measured.push_back({times[t], driven, renderer.readStats()});
+    }
+    const CameraTimeResult& slowest = measured[slowestTime(measured)];
+    r.time = slowest.time;
+    r.driven = slowest.driven;
+    r.stats = slowest.stats;
+    if (o.pathTimes) r.alongPath = measured;
     r.rendererBytes = renderer.gpuBytes();
     r.jointsSimulated = renderer.simulatedJoints();
     r.gpuMemoryBytes = budget ? deviceLocalUsage(ctx) : r.rendererBytes;
     if (naive) {
-        r.naive = measurePath(o, ctx, renderer, frame, view, Path::Naive, progress, drivenSpan, 1.0 - drivenSpan);
+        r.naive = measurePath(o, ctx, renderer, frame, viewAt(scene, r.time), Path::Naive, progress, 0.5, 0.5);
         r.naiveTriangles = renderer.naiveTriangles();
     } else if (o.compareNaive) {
         r.note =
@@ -180,7 +217,8 @@ void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, S
     for (uint64_t count : o.counts) {
         const uint64_t gpuBytes = estimatedFieldBytes(count, nullptr, o.width, o.height, o.samples);
         refuseIf(gpuMemoryProblem(count, gpuBytes, ctx.properties.deviceName, heap));
-        refuseIf(hostMemoryProblem(count, estimatedHostBytes(count) + (hostHoldsGpu ? gpuBytes : 0), hostAvailable));
+        refuseIf(hostMemoryProblem(count, estimatedHostBytes(count, countMode(o)) + (hostHoldsGpu ? gpuBytes : 0),
+                                   hostAvailable));
     }
 
     SweepProgress progress = startProgress(o.counts.size());

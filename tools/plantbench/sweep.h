@@ -1,7 +1,8 @@
 // The measurement: for each count, the scene's field with that many plants,
-// warm-up frames, then measured frames of the GPU-driven path (and, with
-// --compare naive, of the naive path), each copying its image to a host
-// buffer as a capture does, submitted and waited for.
+// warm-up frames, then measured frames of the GPU-driven path from one camera
+// time or, with --path, from each of several along the camera path (and, with
+// --compare naive, of the naive path at the slowest of them), each copying its
+// image to a host buffer as a capture does, submitted and waited for.
 #pragma once
 
 #include "plantbench_options.h"
@@ -49,17 +50,28 @@ struct PathTimes {
     std::array<std::optional<Spread>, kPassCount> gpuMs; // per kBenchPasses entry
 };
 
+// The GPU-driven frame from one camera time.
+struct CameraTimeResult {
+    double time = 0.0;     // scene time on the camera path
+    PathTimes driven;      // FieldRenderer::record
+    FieldFrameStats stats; // of its last measured frame
+};
+
 struct CountResult {
-    uint64_t count = 0;             // requested
-    PathTimes driven;               // the GPU-driven frame (FieldRenderer::record)
-    FieldFrameStats stats;          // of the last measured GPU-driven frame
-    uint64_t gpuMemoryBytes = 0;    // after the frames, from the sweep's memory source
-    uint64_t rendererBytes = 0;     // FieldRenderer::gpuBytes()
-    std::optional<PathTimes> naive; // with --compare naive, unless skipped
+    uint64_t count = 0;                      // requested
+    double time = 0.0;                       // the camera time of `driven`: --time, or the worst of --path
+    PathTimes driven;                        // the GPU-driven frame (FieldRenderer::record) at `time`
+    FieldFrameStats stats;                   // of the last measured GPU-driven frame at `time`
+    std::vector<CameraTimeResult> alongPath; // with --path: every time in order (`time` the slowest); else empty
+    uint64_t gpuMemoryBytes = 0;             // after the frames, from the sweep's memory source
+    uint64_t rendererBytes = 0;              // FieldRenderer::gpuBytes()
+    std::optional<PathTimes> naive;          // with --compare naive, unless skipped
     uint64_t naiveTriangles = 0;
     uint64_t jointsSimulated = 0; // FieldRenderer::simulatedJoints(): joints the physics pass steps
     std::string note;             // why naive was skipped, or empty
     double buildSeconds = 0.0;    // CPU build of the field (not part of any frame)
+    float terrainSize = 0.0f;     // side of the terrain the plants stand on, metres (grows with the count)
+    std::string placementNote;    // FieldContent::note: the count could not keep the densities
 };
 
 struct SweepResult {
@@ -68,6 +80,14 @@ struct SweepResult {
     std::string memorySource; // "VK_EXT_memory_budget" or "renderer accounting"
     std::vector<CountResult> counts;
 };
+
+// The camera times each count is measured at: --time, or the --path times
+// spread over the scene's camera path (timesAlongPath).
+std::vector<double> measuredTimes(const PlantbenchOptions& o, const Scene& scene);
+
+// Index of the time whose median frame wall time is the largest (the first
+// of equals): the worst frame along the path.
+size_t slowestTime(const std::vector<CameraTimeResult>& times);
 
 // Fills `result` count by count (so a failure keeps what was measured).
 // `scene` is o.scenePath loaded, with --seed applied. Throws SceneError for a

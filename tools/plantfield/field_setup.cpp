@@ -26,19 +26,23 @@ Scene loadSceneOf(const PlantfieldOptions& o) {
 FieldContent loadFieldContent(const PlantfieldOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     const Scene scene = loadSceneOf(o);
-    std::optional<size_t> count;
-    if (o.instances) count = size_t(*o.instances);
+    std::optional<PlantCount> count;
+    if (o.instances)
+        count = PlantCount{size_t(*o.instances), o.densify ? CountMode::Densify : CountMode::NaturalDensity};
     // Progress on a terminal only; logs get the summary line below.
     const bool terminal = isatty(fileno(stderr));
+    // buildFieldContent places the plants before it reports the models.
+    if (terminal) std::fprintf(stderr, "\rplantfield: placing plants\x1b[K");
     FieldContent content = buildFieldContent(scene, count, [&](size_t done, size_t all, const std::string& name) {
         if (!terminal) return;
         std::fprintf(stderr, "\rplantfield: plant models %zu/%zu (%s)\x1b[K", done, all, name.c_str());
         if (done == all) std::fprintf(stderr, "\r\x1b[K");
     });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr, "plantfield: %s: %zu plants of %zu species, %zu models, built in %.1f s\n",
-                 o.scenePath.c_str(), content.plants.size(), content.scene.species.size(), content.models.models.size(),
-                 seconds);
+    std::fprintf(stderr, "plantfield: %s: %zu plants of %zu species on %.0f m x %.0f m, %zu models, built in %.1f s\n",
+                 o.scenePath.c_str(), content.plants.size(), content.scene.species.size(), content.scene.terrain.size,
+                 content.scene.terrain.size, content.models.models.size(), seconds);
+    if (!content.note.empty()) std::fprintf(stderr, "plantfield: note: %s\n", content.note.c_str());
     return content;
 }
 

@@ -61,10 +61,11 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     CLI::App app{"plantfield: renders a field of L-system plants (a scene file, docs/SCENE_FORMAT.md), in a window\n"
                  "or headless to PNG."};
     app.footer("Examples:\n"
-               "  plantfield --capture frame.png                 the default forest at 1280x720\n"
-               "  plantfield data/scenes/default.json --window   fly through it (docs/WINDOW.md)\n"
-               "  plantfield --instances 100000 --stats          one frame of 100 000 plants: JSON statistics\n"
-               "  plantfield --frames 60 --fps 30 --out-dir seq  two seconds of frames\n"
+               "  plantfield --capture frame.png                      the default forest at 1280x720\n"
+               "  plantfield data/scenes/default.json --window        fly through it (docs/WINDOW.md)\n"
+               "  plantfield --instances 100000 --stats               one frame of 100 000 plants: JSON statistics\n"
+               "  plantfield data/scenes/valley.json --capture v.png  a million plants on 2 km x 2 km\n"
+               "  plantfield --frames 60 --fps 30 --out-dir seq       two seconds of frames\n"
                "Environment: PLANTFIELD_DEVICE picks the device by name, PLANTFIELD_VALIDATION=1 turns on\n"
                "the Khronos validation layer, PLANTFIELD_DATA_DIR replaces the data folder.");
     app.add_option("scene", o.scenePath, "Scene file (.json)")->default_str("data/scenes/default.json");
@@ -77,8 +78,12 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_option("--fps", o.fps, "Frames per scene second of a --frames sequence")->check(CLI::Range(0.1, 1000.0));
     app.add_option("--out-dir", o.outDir, "Folder of a --frames sequence (frame_0000.png, ...), created if missing");
     app.add_option("--time", o.time, "Scene time of the (first) frame in seconds")->check(CLI::NonNegativeNumber);
-    app.add_option("--instances", o.instances, "Scale the scene's placement to exactly this many plants")
+    app.add_option("--instances", o.instances,
+                   "Exactly this many generated plants at the scene's densities: they fill a square around the\n"
+                   "origin that grows with N, the noise terrain growing with it (hand-placed plants come on top)")
         ->check(CLI::Range(uint64_t(1), uint64_t(FIELD_MAX_INSTANCES)));
+    app.add_flag("--densify", o.densify,
+                 "With --instances: keep the scene's terrain and scale every plant distance to fit N on it");
     app.add_option("--seed", o.seed, "Replace the scene's seed (terrain, plants and placement change)");
     app.add_flag(
         "--stats", o.stats,
@@ -139,6 +144,7 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     if (o.capturePath.empty() && !o.window && !sequence && !o.stats && !o.physicsCheck)
         return fail(
             "nothing to do: pass --capture FILE.png, --frames N --out-dir DIR, --stats, --physics-check or --window");
+    if (o.densify && !o.instances) return fail("--densify needs --instances N");
     if (sequence && o.outDir.empty()) return fail("--frames without --window needs --out-dir DIR for the images");
     if (!o.outDir.empty() && !sequence) return fail("--out-dir needs --frames N (and no --window)");
     if (!std::filesystem::is_regular_file(o.scenePath))

@@ -34,7 +34,8 @@ struct PlantfieldOptions {
     double fps = 30.0;                         // scene seconds per frame of a --frames sequence: 1/fps
     std::string outDir;                        // --frames sequence: DIR/frame_0000.png …
     double time = 0.0;                         // scene time of the (first) frame, seconds
-    std::optional<uint64_t> instances;         // scale the placement to exactly this many plants
+    std::optional<uint64_t> instances;         // exactly this many generated plants, at the scene's densities
+    bool densify = false;                      // --instances on the scene's terrain, distances scaled instead
     std::optional<uint32_t> seed;              // replaces the scene's seed
     bool stats = false;                        // print the frame's JSON statistics on stdout
     bool physicsCheck = false;                 // run GPU and CPU physics side by side, print their deviation as JSON
