@@ -12,12 +12,15 @@ namespace {
 // lavapipe gives the same pixels for the same driver; the tolerance absorbs
 // rounding differences between LLVM versions (stated in docs/TESTING.md).
 const ImageTolerance kFieldTolerance{6, 0.002};
+// The goldens were rendered with 4x MSAA.
+constexpr Antialiasing kGoldenAntialiasing{AntialiasMethod::msaa, 4};
 
 class FieldRenderTest : public GpuTest {};
 
 // t = 0 of the default path: 120 m out and 40 m up, the forest below.
 TEST_F(FieldRenderTest, FarViewMatchesGolden) {
-    const FieldShotResult r = renderField(ctx, {.scene = "default.json", .time = 0.0});
+    const FieldShotResult r =
+        renderField(ctx, {.scene = "default.json", .time = 0.0, .antialiasing = kGoldenAntialiasing});
     EXPECT_GT(r.stats.plantsPerLod[LOD_IMPOSTOR], 1000u) << "the far field should be impostors";
     EXPECT_TRUE(matchesGolden(r.image, "field_far_640x360", kFieldTolerance, PLANTFIELD_GOLDEN_DIR,
                               PLANTFIELD_TEST_OUTPUT_DIR));
@@ -30,7 +33,8 @@ TEST_F(FieldRenderTest, NearViewMatchesGolden) {
     camera.target = {5.0f, 4.0f, 10.0f};
     camera.fovYDegrees = 55.0f;
     camera.nearPlane = 0.1f;
-    const FieldShotResult r = renderField(ctx, {.scene = "default.json", .camera = camera});
+    const FieldShotResult r =
+        renderField(ctx, {.scene = "default.json", .camera = camera, .antialiasing = kGoldenAntialiasing});
     EXPECT_GT(r.stats.plantsPerLod[LOD_FULL] + r.stats.plantsPerLod[LOD_REDUCED], 0u)
         << "near plants should be drawn as meshes, not impostors";
     EXPECT_TRUE(matchesGolden(r.image, "field_near_640x360", kFieldTolerance, PLANTFIELD_GOLDEN_DIR,
@@ -74,8 +78,8 @@ TEST_F(FieldRenderTest, SameInputsGiveIdenticalPixels) {
 
 TEST_F(FieldRenderTest, TooLargeImageIsRejected) {
     const uint32_t tooLarge = ctx.properties.limits.maxImageDimension2D + 1;
-    EXPECT_THROW(createRenderTarget(ctx, {tooLarge, 16}, VK_SAMPLE_COUNT_1_BIT), std::runtime_error);
-    EXPECT_THROW(createRenderTarget(ctx, {0, 16}, VK_SAMPLE_COUNT_1_BIT), std::runtime_error);
+    EXPECT_THROW(createRenderTarget(ctx, {tooLarge, 16}, {}), std::runtime_error);
+    EXPECT_THROW(createRenderTarget(ctx, {0, 16}, {}), std::runtime_error);
 }
 
 } // namespace

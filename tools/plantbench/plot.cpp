@@ -112,7 +112,7 @@ std::string script(const PlantbenchOptions& o, const SweepResult& result, const 
     const std::string scene = fs::path(result.scenePath).filename().string();
     std::ostringstream title;
     title << "plantbench: " << scene << " on " << result.device << ", " << o.width << "x" << o.height << ", "
-          << o.samples << "x MSAA, median of " << o.frames << " frames";
+          << antialiasingText(o.antialiasing) << ", median of " << o.frames << " frames";
     std::ostringstream s;
     s << "set terminal " << terminal << " noenhanced size 1100,1200 font 'DejaVu Sans,11'\n"
       << "set output " << quoted(output) << "\n"

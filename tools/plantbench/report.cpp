@@ -108,7 +108,7 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
         out << "\n";
     };
     out << "plantbench: " << result.scenePath << " on " << result.device << ", " << o.width << "x" << o.height << ", "
-        << o.samples << "x MSAA, shadows " << (o.shadows ? "on" : "off") << ", median of " << o.frames
+        << antialiasingText(o.antialiasing) << ", shadows " << (o.shadows ? "on" : "off") << ", median of " << o.frames
         << " frames after " << o.warmup << " warm-up\n";
     printRow(headers);
     for (const auto& row : rows) printRow(row);
@@ -124,7 +124,8 @@ nlohmann::json sweepJson(const PlantbenchOptions& o, const SweepResult& result) 
     j["scene"] = result.scenePath;
     j["device"] = result.device;
     j["size"] = {o.width, o.height};
-    j["samples"] = o.samples;
+    j["antialiasing"] = antialiasMethodName(o.antialiasing.method);
+    j["samples"] = colourPassSamples(o.antialiasing);
     j["shadows"] = o.shadows;
     j["time"] = o.time;
     j["frames"] = o.frames;
