@@ -12,15 +12,12 @@ namespace {
 // lavapipe gives the same pixels for the same driver; the tolerance absorbs
 // rounding differences between LLVM versions (stated in docs/TESTING.md).
 const ImageTolerance kFieldTolerance{6, 0.002};
-// The goldens were rendered with 4x MSAA.
-constexpr Antialiasing kGoldenAntialiasing{AntialiasMethod::msaa, 4};
 
 class FieldRenderTest : public GpuTest {};
 
 // t = 0 of the default path: 120 m out and 40 m up, the forest below.
 TEST_F(FieldRenderTest, FarViewMatchesGolden) {
-    const FieldShotResult r =
-        renderField(ctx, {.scene = "default.json", .time = 0.0, .antialiasing = kGoldenAntialiasing});
+    const FieldShotResult r = renderField(ctx, {.scene = "default.json", .time = 0.0});
     EXPECT_GT(r.stats.plantsPerLod[LOD_IMPOSTOR], 1000u) << "the far field should be impostors";
     EXPECT_TRUE(matchesGolden(r.image, "field_far_640x360", kFieldTolerance, PLANTFIELD_GOLDEN_DIR,
                               PLANTFIELD_TEST_OUTPUT_DIR));
@@ -33,8 +30,7 @@ TEST_F(FieldRenderTest, NearViewMatchesGolden) {
     camera.target = {5.0f, 4.0f, 10.0f};
     camera.fovYDegrees = 55.0f;
     camera.nearPlane = 0.1f;
-    const FieldShotResult r =
-        renderField(ctx, {.scene = "default.json", .camera = camera, .antialiasing = kGoldenAntialiasing});
+    const FieldShotResult r = renderField(ctx, {.scene = "default.json", .camera = camera});
     EXPECT_GT(r.stats.plantsPerLod[LOD_FULL] + r.stats.plantsPerLod[LOD_REDUCED], 0u)
         << "near plants should be drawn as meshes, not impostors";
     EXPECT_TRUE(matchesGolden(r.image, "field_near_640x360", kFieldTolerance, PLANTFIELD_GOLDEN_DIR,
