@@ -87,6 +87,7 @@ bool nestedInColourPass(std::string_view pass) {
 
 FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const FieldRenderSettings& settings)
     : ctx_(ctx), content_(std::move(content)), settings_(settings), resources_(ctx) {
+    settings_.antialiasing = supportedAntialiasing(ctx_, settings.antialiasing);
     if (content_.plants.empty()) throw std::runtime_error("the scene places no plant");
     if (content_.plants.size() > FIELD_MAX_INSTANCES)
         throw std::runtime_error("at most " + std::to_string(FIELD_MAX_INSTANCES) + " plants can be drawn");
@@ -221,7 +222,7 @@ void FieldRenderer::createPipelines() {
     desc.layout = pipelineLayout_;
     desc.colorFormat = kColorFormat;
     desc.depthFormat = kDepthFormat;
-    desc.samples = settings_.samples;
+    desc.samples = VkSampleCountFlagBits(colourPassSamples(settings_.antialiasing));
     auto make = [&](const Stages& s, VkCullModeFlags cull) {
         desc.vertex = s.vertex;
         desc.fragment = s.fragment;
@@ -296,9 +297,10 @@ void FieldRenderer::recordShadowPass(VkCommandBuffer cmd, bool naive) const {
 
 void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& target, bool naive,
                                      GpuTimer* timer) const {
-    // The whole pass, resolve included, is one scope: tiling and CPU
-    // rasterisers (lavapipe) shade at the end of the pass, so the scopes
+    // The whole pass, anti-aliasing included, is one scope: tiling and CPU
+    // rasterisers (lavapipe) shade at the end of the pass, so the draw scopes
     // inside it measure only their share of vertex work and binning there.
+    // The FXAA pass (kAntialiasScope) is a rendering of its own after it.
     Timed pass(cmd, timer, "colour");
     beginTargetPass(cmd, target);
     const uint32_t colourPass = 0;
@@ -334,7 +336,7 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sky);
         vkCmdDraw(cmd, 3, 1, 0, 0);
     }
-    endTargetPass(cmd, target);
+    endTargetPass(cmd, target, timer);
 }
 
 void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const {

@@ -13,6 +13,7 @@
 #include "engine/scene/camera.h"
 #include "engine/scene/field_content.h"
 #include "engine/vk/render_target.h"
+#include "engine/vk/target_pass.h"
 
 #include <array>
 #include <optional>
@@ -24,7 +25,7 @@ namespace pf {
 struct GpuTimer;
 
 struct FieldRenderSettings {
-    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_4_BIT;
+    Antialiasing antialiasing; // FXAA unless set (antialiasing.h)
     bool shadows = true;
     uint32_t shadowMapSize = 1024;
     float shadowRadius = 60.0f; // metres: half the side of the shadowed square ahead of the camera
@@ -62,9 +63,10 @@ struct FieldFrameStats {
 std::string plantsPerLodText(const FieldFrameStats& stats);
 
 // GPU timer scope names, in recording order. "colour" is the whole colour
-// pass and the three after it are nested inside it.
-inline constexpr const char* kFieldPasses[] = {"physics", "pose",   "cull",      "shadow",
-                                               "colour",  "plants", "impostors", "terrain_sky"};
+// pass, its anti-aliasing included, and the four after it are nested inside
+// it: three groups of draws, then the anti-aliasing (target_pass.h).
+inline constexpr const char* kFieldPasses[] = {"physics", "pose",      "cull",        "shadow",       "colour",
+                                               "plants",  "impostors", "terrain_sky", kAntialiasScope};
 
 // True for the draw scopes recorded inside "colour" (those after it in
 // kFieldPasses): a frame's total adds only the others.
@@ -81,8 +83,9 @@ public:
     // (advanceFieldMotion), nothing submitted. Call only while no frame is
     // in flight, once before each record.
     void setView(const FieldView& view, VkExtent2D extent);
-    // Leaves target.color in TRANSFER_SRC_OPTIMAL. With a timer, writes
-    // one scope per entry of kFieldPasses.
+    // Into a target made with antialiasing(). Leaves target.color in
+    // TRANSFER_SRC_OPTIMAL. With a timer, writes one scope per entry of
+    // kFieldPasses.
     void record(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer = nullptr) const;
     // The baseline: no culling, no LOD, one vkCmdDrawIndexed per plant and class.
     void recordNaive(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer = nullptr) const;
@@ -90,7 +93,9 @@ public:
     FieldFrameStats readStats() const;
 
     const FieldContent& content() const { return content_; }
-    VkSampleCountFlagBits samples() const { return settings_.samples; }
+    // The settings' anti-aliasing as the device supports it
+    // (supportedAntialiasing): make render targets with it.
+    const Antialiasing& antialiasing() const { return settings_.antialiasing; }
     uint64_t naiveTriangles() const;                                     // what recordNaive draws in its colour pass
     uint32_t simulatedJoints() const { return motion_.pass.jointCount; } // shared copies and near plants' own
     VkDeviceSize gpuBytes() const; // device memory this renderer and its passes hold

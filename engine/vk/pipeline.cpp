@@ -89,6 +89,20 @@ VkPipeline createGraphicsPipeline(GpuResources& owner, const GraphicsPipelineDes
     return owner.own(pipeline);
 }
 
+VkPipeline createColorOnlyPipeline(GpuResources& owner, std::span<const uint32_t> vertexSpirv,
+                                   std::span<const uint32_t> fragmentSpirv, VkPipelineLayout layout,
+                                   VkFormat colorFormat) {
+    GpuResources modules(owner.ctx());
+    GraphicsPipelineDesc desc;
+    desc.vertex = createShaderModule(modules, vertexSpirv);
+    desc.fragment = createShaderModule(modules, fragmentSpirv);
+    desc.layout = layout;
+    desc.colorFormat = colorFormat;
+    desc.cullMode = VK_CULL_MODE_NONE;
+    desc.depthTest = desc.depthWrite = false;
+    return createGraphicsPipeline(owner, desc);
+}
+
 VkPipeline createComputePipeline(GpuResources& owner, VkPipelineLayout layout, std::span<const uint32_t> spirv) {
     GpuResources scratch(owner.ctx());
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};

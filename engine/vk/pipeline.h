@@ -45,5 +45,11 @@ VkPipeline createComputePipeline(GpuResources& owner, VkPipelineLayout layout, s
 // Vertices are pulled from storage buffers, so there is no vertex input;
 // viewport and scissor are dynamic.
 VkPipeline createGraphicsPipeline(GpuResources& owner, const GraphicsPipelineDesc& desc);
+// A pipeline of the full-frame passes over one colour attachment (FXAA, the
+// text overlay): no depth, no face culling; its shader modules live only
+// while it is made.
+VkPipeline createColorOnlyPipeline(GpuResources& owner, std::span<const uint32_t> vertexSpirv,
+                                   std::span<const uint32_t> fragmentSpirv, VkPipelineLayout layout,
+                                   VkFormat colorFormat);
 
 } // namespace pf

@@ -1,22 +1,21 @@
 #include "engine/vk/render_target.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
 namespace pf {
-namespace {
 
-VkSampleCountFlagBits supportedSamples(const GpuContext& ctx, VkSampleCountFlagBits wanted) {
+Antialiasing supportedAntialiasing(const GpuContext& ctx, Antialiasing wanted) {
     const VkSampleCountFlags counts =
         ctx.properties.limits.framebufferColorSampleCounts & ctx.properties.limits.framebufferDepthSampleCounts;
-    for (uint32_t s = wanted; s > 1; s >>= 1)
-        if (counts & s) return VkSampleCountFlagBits(s);
-    return VK_SAMPLE_COUNT_1_BIT;
+    uint32_t samples = wanted.msaaSamples;
+    while (samples > 1 && !(counts & samples)) samples >>= 1;
+    wanted.msaaSamples = std::max(samples, 1u);
+    return wanted;
 }
 
-} // namespace
-
-RenderTarget createRenderTarget(const GpuContext& ctx, VkExtent2D extent, VkSampleCountFlagBits samples) {
+RenderTarget createRenderTarget(const GpuContext& ctx, VkExtent2D extent, Antialiasing antialiasing) {
     const uint32_t maxSize = ctx.properties.limits.maxImageDimension2D;
     if (extent.width == 0 || extent.height == 0 || extent.width > maxSize || extent.height > maxSize)
         throw std::runtime_error("image size " + std::to_string(extent.width) + "x" + std::to_string(extent.height) +
@@ -25,18 +24,30 @@ RenderTarget createRenderTarget(const GpuContext& ctx, VkExtent2D extent, VkSamp
     RenderTarget target;
     target.resources = GpuResources(ctx);
     target.extent = extent;
-    target.samples = supportedSamples(ctx, samples);
-    const bool msaa = target.samples != VK_SAMPLE_COUNT_1_BIT;
-    if (msaa)
+    target.antialiasing = supportedAntialiasing(ctx, antialiasing);
+    target.samples = VkSampleCountFlagBits(colourPassSamples(target.antialiasing));
+    if (target.samples != VK_SAMPLE_COUNT_1_BIT)
         target.msaaColor = createImage(
             target.resources, {.extent = extent,
                                .format = kColorFormat,
                                .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
                                .samples = target.samples});
+    // The FXAA pass reads and writes these images' bytes through views of
+    // another format (fxaa_pass.h).
+    const bool fxaa = target.antialiasing.method == AntialiasMethod::fxaa;
+    const VkImageCreateFlags fxaaViews = fxaa ? VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT : 0;
+    if (fxaa)
+        target.fxaaInput =
+            createImage(target.resources, {.extent = extent,
+                                           .format = kColorFormat,
+                                           .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                           .flags = fxaaViews});
     target.color =
         createImage(target.resources, {.extent = extent,
                                        .format = kColorFormat,
-                                       .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+                                       .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                       .flags = fxaaViews});
+    if (fxaa) target.fxaa = createFxaaPass(target.resources, target.fxaaInput, target.color);
     target.depth = createImage(target.resources, {.extent = extent,
                                                   .format = kDepthFormat,
                                                   .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
@@ -48,6 +59,12 @@ RenderTarget createRenderTarget(const GpuContext& ctx, VkExtent2D extent, VkSamp
 void destroyRenderTarget(RenderTarget& target) {
     target.resources.destroy();
     target = {};
+}
+
+const Image& drawnColor(const RenderTarget& target) {
+    if (target.samples != VK_SAMPLE_COUNT_1_BIT) return target.msaaColor;
+    if (target.antialiasing.method == AntialiasMethod::fxaa) return target.fxaaInput;
+    return target.color;
 }
 
 } // namespace pf

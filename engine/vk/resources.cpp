@@ -77,6 +77,22 @@ VkBufferView createTexelView(GpuResources& owner, const Buffer& buffer, VkFormat
     return owner.own(view);
 }
 
+namespace {
+
+VkImageView createView(GpuResources& owner, VkImage image, VkImageViewType type, VkFormat format,
+                       const VkImageSubresourceRange& range) {
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = image;
+    view.viewType = type;
+    view.format = format;
+    view.subresourceRange = range;
+    VkImageView out = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImageView(owner.ctx().device, &view, nullptr, &out));
+    return owner.own(out);
+}
+
+} // namespace
+
 Image createImage(GpuResources& owner, const ImageDesc& desc) {
     VkDevice device = owner.ctx().device;
     Image out;
@@ -84,6 +100,7 @@ Image createImage(GpuResources& owner, const ImageDesc& desc) {
     out.extent = desc.extent;
     out.samples = desc.samples;
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.flags = desc.flags;
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = desc.format;
     info.extent = {desc.extent.width, desc.extent.height, 1};
@@ -102,14 +119,13 @@ Image createImage(GpuResources& owner, const ImageDesc& desc) {
     owner.own(out.image);
     VK_CHECK(vkBindImageMemory(device, out.image, memory, 0));
 
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view.image = out.image;
-    view.viewType = desc.viewType;
-    view.format = desc.format;
-    view.subresourceRange = {desc.aspect, 0, desc.mipLevels, 0, desc.layers};
-    VK_CHECK(vkCreateImageView(device, &view, nullptr, &out.view));
-    owner.own(out.view);
+    out.view =
+        createView(owner, out.image, desc.viewType, desc.format, {desc.aspect, 0, desc.mipLevels, 0, desc.layers});
     return out;
+}
+
+VkImageView createImageView(GpuResources& owner, const Image& image, VkFormat format) {
+    return createView(owner, image.image, VK_IMAGE_VIEW_TYPE_2D, format, {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1});
 }
 
 VkSampler createSampler(GpuResources& owner, const VkSamplerCreateInfo& info) {

@@ -48,9 +48,13 @@ struct ImageDesc {
     uint32_t mipLevels = 1;
     uint32_t layers = 1;
     VkImageViewType viewType = VK_IMAGE_VIEW_TYPE_2D;
+    VkImageCreateFlags flags = 0; // VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT: views of other formats (createImageView)
 };
 // A device-local 2D image (or array) and its view.
 Image createImage(GpuResources& owner, const ImageDesc& desc);
+// Another view of a colour image's first mip and layer, in `format` of the
+// same texel size: the image was made with VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT.
+VkImageView createImageView(GpuResources& owner, const Image& image, VkFormat format);
 
 VkSampler createSampler(GpuResources& owner, const VkSamplerCreateInfo& info);
 

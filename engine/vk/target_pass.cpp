@@ -1,5 +1,7 @@
 #include "engine/vk/target_pass.h"
 
+#include "engine/vk/gpu_timer.h"
+
 namespace pf {
 
 VkRenderingAttachmentInfo clearedDepthAttachment(VkImageView view, VkAttachmentStoreOp store) {
@@ -14,19 +16,21 @@ VkRenderingAttachmentInfo clearedDepthAttachment(VkImageView view, VkAttachmentS
 
 void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target) {
     const bool msaa = target.samples != VK_SAMPLE_COUNT_1_BIT;
-    const VkImage drawnColor = msaa ? target.msaaColor.image : target.color.image;
+    const Image& drawn = drawnColor(target);
 
     // Previous contents are discarded (UNDEFINED): the colour image waits only
-    // for the last frame's copy or blit out of it, depth for its last writes.
+    // for the last frame's copy or blit out of it, an MSAA or FXAA image for
+    // the last frame's writes and reads, depth for its last writes.
     imageBarrier(cmd, target.color.image, VK_IMAGE_ASPECT_COLOR_BIT,
                  {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
-    if (msaa)
-        imageBarrier(cmd, drawnColor, VK_IMAGE_ASPECT_COLOR_BIT,
-                     {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+    if (drawn.image != target.color.image)
+        imageBarrier(cmd, drawn.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                     {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                      VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                      VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
     const VkPipelineStageFlags2 depthStages =
         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
     imageBarrier(cmd, target.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT,
@@ -35,7 +39,7 @@ void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target) {
                   VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
 
     VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = msaa ? target.msaaColor.view : target.color.view;
+    color.imageView = drawn.view;
     color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     color.storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
@@ -63,8 +67,39 @@ void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target) {
     vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
-void endTargetPass(VkCommandBuffer cmd, const RenderTarget& target) {
+void beginColorOnlyRendering(VkCommandBuffer cmd, VkImageView view, VkAttachmentLoadOp load, VkExtent2D extent,
+                             VkClearColorValue clear) {
+    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    color.imageView = view;
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = load;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    color.clearValue.color = clear;
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, extent};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &color;
+    vkCmdBeginRendering(cmd, &rendering);
+
+    const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, extent};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+void endTargetPass(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) {
     vkCmdEndRendering(cmd);
+
+    if (timer) beginScope(cmd, *timer, kAntialiasScope);
+    if (target.antialiasing.method == AntialiasMethod::fxaa) {
+        imageBarrier(cmd, target.fxaaInput.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                     {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+        recordFxaaPass(cmd, target.fxaa);
+    }
+    if (timer) endScope(cmd, *timer);
 
     imageBarrier(cmd, target.color.image, VK_IMAGE_ASPECT_COLOR_BIT,
                  {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,

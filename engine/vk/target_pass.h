@@ -1,11 +1,19 @@
 // The main colour pass into a RenderTarget, shared by every renderer: clears
-// colour and depth, resolves multisampling into target.color, and leaves
-// target.color in TRANSFER_SRC_OPTIMAL for readback or the swapchain blit.
+// colour and depth, draws into the target's drawn image, and as it ends
+// anti-aliases into target.color (the MSAA resolve, or the FXAA pass),
+// leaving target.color in TRANSFER_SRC_OPTIMAL for readback or the swapchain
+// blit.
 #pragma once
 
 #include "engine/vk/render_target.h"
 
 namespace pf {
+
+struct GpuTimer;
+
+// The timer scope of the anti-aliasing after the colour pass's draws: the
+// FXAA pass; empty with MSAA (resolved as the rendering ends) and none.
+inline constexpr const char* kAntialiasScope = "antialias";
 
 // Begins dynamic rendering and sets a viewport with negative height, so
 // world and clip space stay y-up (pipeline.h: front faces are counter-clockwise).
@@ -13,6 +21,15 @@ void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target);
 // A depth attachment in DEPTH_ATTACHMENT_OPTIMAL cleared to the far plane (1)
 // at the start of rendering; `store` keeps it (a shadow map) or drops it.
 VkRenderingAttachmentInfo clearedDepthAttachment(VkImageView view, VkAttachmentStoreOp store);
-void endTargetPass(VkCommandBuffer cmd, const RenderTarget& target);
+// Begins dynamic rendering into one colour attachment in
+// COLOR_ATTACHMENT_OPTIMAL, stored, without depth, and sets an ordinary
+// viewport and scissor over `extent`: the full-frame passes after the colour
+// pass (FXAA, the window's text overlay). `clear` is used with LOAD_OP_CLEAR.
+void beginColorOnlyRendering(VkCommandBuffer cmd, VkImageView view, VkAttachmentLoadOp load, VkExtent2D extent,
+                             VkClearColorValue clear = {});
+// Ends the rendering, runs the FXAA pass when the target has one, and leaves
+// target.color in TRANSFER_SRC_OPTIMAL. With a timer, records the scope
+// kAntialiasScope whatever the method, so every frame has the same scopes.
+void endTargetPass(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer = nullptr);
 
 } // namespace pf

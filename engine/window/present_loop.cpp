@@ -34,7 +34,7 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
                             const PresentLoopOptions& options) {
     Swapchain swapchain;
     swapchain = createSwapchain(ctx, surface, window.framebufferExtent(), swapchain);
-    RenderTarget target = createRenderTarget(ctx, swapchain.extent, options.samples);
+    RenderTarget target = createRenderTarget(ctx, swapchain.extent, options.antialiasing);
 
     VkCommandBuffer cmd = allocateCommandBuffer(ctx);
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
@@ -49,7 +49,7 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
         vkDeviceWaitIdle(ctx.device);
         swapchain = createSwapchain(ctx, surface, window.framebufferExtent(), swapchain);
         destroyRenderTarget(target);
-        target = createRenderTarget(ctx, swapchain.extent, options.samples);
+        target = createRenderTarget(ctx, swapchain.extent, options.antialiasing);
     };
 
     using Clock = std::chrono::steady_clock;

@@ -18,7 +18,7 @@ struct PresentLoopOptions {
     uint32_t maxFrames = 0;     // 0: until the window is closed
     double fixedTimeStep = 0.0; // seconds per frame; 0: wall-clock time
     std::string screenshotPath; // PNG of the last frame, when not empty
-    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_4_BIT;
+    Antialiasing antialiasing;  // the renderer's (FieldRenderer::antialiasing())
     // Called once the previous frame has finished on the GPU and before this
     // one is recorded: scene time t, seconds since the last frame, the
     // target's size, and the last frame's time in milliseconds (0 at first).

@@ -2,6 +2,7 @@
 
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
+#include "engine/vk/target_pass.h"
 #include "shaders/text_layouts.h"
 
 #include <glm/glm.hpp>
@@ -48,15 +49,8 @@ TextOverlay createTextOverlay(GpuResources& owner) {
     overlay.descriptorSet = createSet(owner, setLayout, table);
     overlay.pipelineLayout = createPipelineLayout(owner, setLayout, {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::vec2)});
 
-    GpuResources modules(owner.ctx());
-    GraphicsPipelineDesc desc;
-    desc.vertex = createShaderModule(modules, spirv_text_vert);
-    desc.fragment = createShaderModule(modules, spirv_text_frag);
-    desc.layout = overlay.pipelineLayout;
-    desc.colorFormat = kColorFormat;
-    desc.cullMode = VK_CULL_MODE_NONE;
-    desc.depthTest = desc.depthWrite = false;
-    overlay.pipeline = createGraphicsPipeline(owner, desc);
+    overlay.pipeline =
+        createColorOnlyPipeline(owner, spirv_text_vert, spirv_text_frag, overlay.pipelineLayout, kColorFormat);
     return overlay;
 }
 
@@ -98,22 +92,7 @@ void recordTextOverlay(VkCommandBuffer cmd, const TextOverlay& overlay, const Re
                   VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                   VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
 
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = target.color.view;
-    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, target.extent};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color;
-    vkCmdBeginRendering(cmd, &rendering);
-
-    const VkViewport viewport{0.0f, 0.0f, float(target.extent.width), float(target.extent.height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, target.extent};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    beginColorOnlyRendering(cmd, target.color.view, VK_ATTACHMENT_LOAD_OP_LOAD, target.extent);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, overlay.pipeline);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, overlay.pipelineLayout, 0, 1, &overlay.descriptorSet,
                             0, nullptr);

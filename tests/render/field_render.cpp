@@ -6,10 +6,11 @@ FieldShotResult renderField(const GpuContext& ctx, const FieldShot& shot) {
     const Scene scene = loadScene(std::string(PLANTFIELD_DATA_DIR) + "/scenes/" + shot.scene);
     FieldRenderSettings settings;
     settings.shadows = shot.shadows;
+    settings.antialiasing = shot.antialiasing;
     FieldShotResult result;
     {
         FieldRenderer renderer(ctx, buildFieldContent(scene), settings);
-        RenderTarget target = createRenderTarget(ctx, shot.size, renderer.samples());
+        RenderTarget target = createRenderTarget(ctx, shot.size, renderer.antialiasing());
         FieldView view;
         view.camera = shot.camera.value_or(cameraAt(scene.camera, shot.time));
         view.time = float(shot.time);

@@ -16,6 +16,7 @@ struct FieldShot {
     std::optional<Camera> camera; // replaces the scene's camera path
     std::optional<uint32_t> forcedLod;
     bool shadows = true;
+    Antialiasing antialiasing; // the renderer's default
 };
 
 struct FieldShotResult {

@@ -169,6 +169,8 @@ TEST(PlantbenchCli, SmallSweepWritesJsonAndCsvWithEveryPass) {
     EXPECT_EQ(j["frames"], 2);
     EXPECT_EQ(j["warmup"], 1);
     EXPECT_EQ(j["size"], nlohmann::json({160, 90}));
+    EXPECT_EQ(j["antialiasing"], "fxaa") << "the default";
+    EXPECT_EQ(j["samples"], 1);
     expectWellFormedSweep(j, kSmallScene, {50, 200}, true);
 
     const auto rows = csvRows(sweep.csv);
@@ -206,7 +208,7 @@ TEST(PlantbenchCli, DefaultSceneSweepMatchesCounts) {
 
 TEST(PlantbenchCli, PathSweepReportsEveryTimeAndTheWorst) {
     const SmallSweep sweep =
-        runSmallSweep("path", "--counts 20,40 --frames 2 --warmup 1 --size 64x64 --samples 1 --path 3 --compare naive");
+        runSmallSweep("path", "--counts 20,40 --frames 2 --warmup 1 --size 64x64 --aa none --path 3 --compare naive");
     ASSERT_EQ(sweep.result.exitCode, 0) << sweep.result.output;
     const nlohmann::json& j = sweep.json;
     EXPECT_EQ(j["path"], 3);
@@ -247,7 +249,7 @@ TEST(PlantbenchCli, CountsKeepTheScenesDensitiesUnlessDensified) {
         const fs::path json = dir / (densify ? "densified.json" : "natural.json");
         const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
                                            " --counts 10,200 --frames 1 --warmup 0"
-                                           " --size 32x32 --samples 1 --json " +
+                                           " --size 32x32 --aa none --json " +
                                            json.string() + (densify ? " --densify" : ""));
         ASSERT_EQ(r.exitCode, 0) << r.output;
         const nlohmann::json j = nlohmann::json::parse(readText(json));
@@ -259,6 +261,20 @@ TEST(PlantbenchCli, CountsKeepTheScenesDensitiesUnlessDensified) {
         else
             EXPECT_GT(j["results"][1]["terrain_size_m"].get<double>(), 110.0);
     }
+}
+
+TEST(PlantbenchCli, MsaaIsChosenWithAaAndSamples) {
+    const fs::path json = scratchDir("msaa") / "sweep.json";
+    const CommandResult r = runCommand(kPlantbench + " " + kSmallScene +
+                                       " --validation --counts 20 --frames 1 --warmup 0 --size 64x64 --aa msaa"
+                                       " --samples 4 --json " +
+                                       json.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("4x MSAA"), std::string::npos) << r.output;
+    const nlohmann::json j = nlohmann::json::parse(readText(json));
+    EXPECT_EQ(j["antialiasing"], "msaa");
+    EXPECT_EQ(j["samples"], 4);
 }
 
 TEST(PlantbenchCli, NaiveAboveNaiveMaxIsSkippedWithANote) {
@@ -312,6 +328,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"ZeroFrames", "--counts 10 --frames 0 --json OUT.json", "--frames"},
                       BadInvocation{"MalformedSize", "--counts 10 --size 640by360 --json OUT.json", "--size"},
                       BadInvocation{"UnknownCompare", "--counts 10 --compare fancy --json OUT.json", "--compare"},
+                      BadInvocation{"UnknownAntialiasing", "--counts 10 --aa smaa --json OUT.json", "--aa"},
+                      BadInvocation{"UnsupportedSamples", "--counts 10 --aa msaa --samples 3 --json OUT.json",
+                                    "--samples"},
+                      BadInvocation{"SamplesWithoutMsaa", "--counts 10 --samples 4 --json OUT.json", "--aa msaa"},
                       BadInvocation{"MissingOutputFolder", "--counts 10 --json OUT/missing/x.json", "does not exist"},
                       BadInvocation{"UnknownScene", "OUT/nosuch.json --counts 10", "does not exist"},
                       BadInvocation{"ZeroPathTimes", "--counts 10 --path 0 --json OUT.json", "--path"},
@@ -354,7 +374,7 @@ TEST(PlantbenchCli, HelpListsEveryOption) {
     const CommandResult r = runCommand(kPlantbench + " --help");
     EXPECT_EQ(r.exitCode, 0);
     for (const char* flag :
-         {"--counts", "--frames", "--warmup", "--size", "--samples", "--no-shadows", "--compare", "--naive-max",
+         {"--counts", "--frames", "--warmup", "--size", "--aa", "--samples", "--no-shadows", "--compare", "--naive-max",
           "--json", "--csv", "--plot", "--seed", "--device", "--validation", "--path", "--densify"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }

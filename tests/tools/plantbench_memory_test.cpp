@@ -10,6 +10,7 @@ namespace {
 
 constexpr uint64_t kMiB = 1ull << 20, kGiB = 1ull << 30;
 constexpr uint64_t kMaxPlants = 16777216;
+constexpr Antialiasing kMsaa4{AntialiasMethod::msaa, 4};
 
 void expectMentions(const std::string& message, std::initializer_list<std::string> parts) {
     for (const std::string& part : parts)
@@ -17,29 +18,40 @@ void expectMentions(const std::string& message, std::initializer_list<std::strin
 }
 
 TEST(PlantbenchMemory, FieldEstimateGrowsWithThePlants) {
-    const uint64_t fixed = estimatedFieldBytes(0, nullptr, 1280, 720, 4);
+    const uint64_t fixed = estimatedFieldBytes(0, nullptr, 1280, 720, kMsaa4);
     EXPECT_GT(fixed, uint64_t(1280) * 720 * 4 * 4) << "the multisampled target at least";
-    const uint64_t perPlant = estimatedFieldBytes(1000, nullptr, 1280, 720, 4) - fixed;
+    const uint64_t perPlant = estimatedFieldBytes(1000, nullptr, 1280, 720, kMsaa4) - fixed;
     EXPECT_EQ(perPlant % 1000, 0u);
     EXPECT_GE(perPlant / 1000, 48u + 3 * 4) << "an instance and a visible entry per LOD";
     PlantModelPool pool;
     pool.indices.resize(300);
-    EXPECT_EQ(estimatedFieldBytes(1000, &pool, 1280, 720, 4) - estimatedFieldBytes(1000, nullptr, 1280, 720, 4),
+    EXPECT_EQ(estimatedFieldBytes(1000, &pool, 1280, 720, kMsaa4) -
+                  estimatedFieldBytes(1000, nullptr, 1280, 720, kMsaa4),
               300u * 4);
     EXPECT_EQ(estimatedHostBytes(1000, CountMode::Densify), 1000 * kHostBytesPerPlant);
     // At natural densities the grown terrain's heights come on top.
     EXPECT_EQ(estimatedHostBytes(1000, CountMode::NaturalDensity), 1000 * (kHostBytesPerPlant + 16 * 4));
 }
 
+// FXAA's one-sample image the colour pass draws into, besides the finished one.
+TEST(PlantbenchMemory, FieldEstimateCountsTheFxaaImage) {
+    const uint64_t pixels = uint64_t(1280) * 720;
+    EXPECT_EQ(estimatedFieldBytes(0, nullptr, 1280, 720, {AntialiasMethod::fxaa}) -
+                  estimatedFieldBytes(0, nullptr, 1280, 720, {AntialiasMethod::none}),
+              pixels * 4);
+    EXPECT_LT(estimatedFieldBytes(0, nullptr, 1280, 720, {AntialiasMethod::fxaa}),
+              estimatedFieldBytes(0, nullptr, 1280, 720, kMsaa4));
+}
+
 TEST(PlantbenchMemory, FittingCountIsAccepted) {
-    EXPECT_EQ(
-        gpuMemoryProblem(100000, estimatedFieldBytes(100000, nullptr, 1280, 720, 4), "fake GPU", {4 * kGiB, false}),
-        "");
+    EXPECT_EQ(gpuMemoryProblem(100000, estimatedFieldBytes(100000, nullptr, 1280, 720, kMsaa4), "fake GPU",
+                               {4 * kGiB, false}),
+              "");
     EXPECT_EQ(hostMemoryProblem(100000, estimatedHostBytes(100000, CountMode::NaturalDensity), 8 * kGiB), "");
 }
 
 TEST(PlantbenchMemory, CountAboveTheHeapIsRefusedNamingCountNeedAndHeap) {
-    const uint64_t need = estimatedFieldBytes(kMaxPlants, nullptr, 1280, 720, 4);
+    const uint64_t need = estimatedFieldBytes(kMaxPlants, nullptr, 1280, 720, kMsaa4);
     ASSERT_GT(need, 512 * kMiB);
     expectMentions(
         gpuMemoryProblem(kMaxPlants, need, "fake GPU", {512 * kMiB, false}),

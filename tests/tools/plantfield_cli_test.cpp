@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 
 namespace pf::test {
@@ -78,7 +79,12 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"MalformedSize", "--capture OUT --size 640by360", "--size"},
                       BadInvocation{"HugeSize", "--capture OUT --size 99999x10", "--size"},
                       BadInvocation{"MissingOutputFolder", "--capture /nonexistent-dir/x.png", "does not exist"},
-                      BadInvocation{"UnsupportedSamples", "--capture OUT --samples 3", "samples"},
+                      BadInvocation{"UnsupportedSamples", "--capture OUT --aa msaa --samples 3", "samples"},
+                      BadInvocation{"OneSampleMsaa", "--capture OUT --aa msaa --samples 1", "samples"},
+                      BadInvocation{"UnknownAntialiasing", "--capture OUT --aa smaa", "--aa"},
+                      BadInvocation{"SamplesWithoutMsaa", "--capture OUT --samples 4", "--aa msaa"},
+                      BadInvocation{"SamplesWithFxaa", "--capture OUT --aa fxaa --samples 8", "--aa msaa"},
+                      BadInvocation{"SamplesWithNone", "--capture OUT --aa none --samples 2", "--aa msaa"},
                       BadInvocation{"NoOutputChosen", "--size 640x360", "nothing to do"},
                       BadInvocation{"ZeroInstances", "--capture OUT --instances 0", "--instances"},
                       BadInvocation{"TooManyInstances", "--capture OUT --instances 16777217", "--instances"},
@@ -128,9 +134,30 @@ TEST(PlantfieldCli, UnwritableOutputLeavesExistingFileUntouched) {
 TEST(PlantfieldCli, HelpListsEveryOption) {
     const CommandResult r = runCommand(kPlantfield + " --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* flag : {"--capture", "--size", "--window", "--frames", "--time", "--device", "--validation",
-                             "--wind", "--joint-budget", "--physics-check", "--instances", "--densify"})
+    for (const char* flag :
+         {"--capture", "--size", "--window", "--frames", "--time", "--device", "--validation", "--wind",
+          "--joint-budget", "--physics-check", "--instances", "--densify", "--aa", "--samples"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
+}
+
+// Each --aa method renders under validation, with its timer scope in the
+// statistics; an MSAA count beyond the device's (lavapipe has 1 and 4) is
+// lowered for the pipelines and the target alike. FXAA changes the frame's
+// edges, so its capture differs from the one without anti-aliasing.
+TEST(PlantfieldCli, EveryAntialiasingRendersUnderValidation) {
+    const fs::path dir = scratchDir("antialiasing");
+    std::map<std::string, std::string> captures;
+    for (const char* flags : {"--aa fxaa", "--aa msaa --samples 8", "--aa msaa --samples 2", "--aa none"}) {
+        const fs::path out = dir / (std::to_string(captures.size()) + ".png");
+        const CommandResult r = runCommand(kPlantfield + " --validation --stats --size 160x90 --time 2 " + flags +
+                                           " --capture " + out.string());
+        ASSERT_EQ(r.exitCode, 0) << flags << "\n" << r.output;
+        EXPECT_EQ(r.output.find("validation"), std::string::npos) << flags << "\n" << r.output;
+        EXPECT_NE(r.output.find("\"antialias\""), std::string::npos) << flags << ": no antialias scope\n" << r.output;
+        const RgbaImage image = readPng(out.string());
+        captures[flags] = std::string(image.pixels.begin(), image.pixels.end());
+    }
+    EXPECT_NE(captures["--aa fxaa"], captures["--aa none"]);
 }
 
 TEST(PlantfieldCli, WindowUnderXvfbRendersFrames) {

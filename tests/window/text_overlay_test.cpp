@@ -3,6 +3,7 @@
 #include "gpu_test.h"
 
 #include "engine/image/image.h"
+#include "engine/vk/target_pass.h"
 #include "engine/window/text_overlay.h"
 
 #include <gtest/gtest.h>
@@ -26,7 +27,7 @@ protected:
         GpuResources scratch(ctx);
         TextOverlay overlay = createTextOverlay(scratch);
         if (text) setOverlayText(overlay, *text);
-        RenderTarget target = createRenderTarget(ctx, kExtent, VK_SAMPLE_COUNT_1_BIT);
+        RenderTarget target = createRenderTarget(ctx, kExtent, {.method = AntialiasMethod::none});
         const VkDeviceSize bytes = VkDeviceSize(kExtent.width) * kExtent.height * 4;
         Buffer readback = createHostBuffer(scratch, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 
@@ -39,18 +40,8 @@ protected:
                          {VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
-            VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-            color.imageView = target.color.view;
-            color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-            color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-            color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-            color.clearValue.color = {{0.05f, 0.2f, 0.4f, 1.0f}};
-            VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-            rendering.renderArea = {{0, 0}, kExtent};
-            rendering.layerCount = 1;
-            rendering.colorAttachmentCount = 1;
-            rendering.pColorAttachments = &color;
-            vkCmdBeginRendering(cmd, &rendering);
+            beginColorOnlyRendering(cmd, target.color.view, VK_ATTACHMENT_LOAD_OP_CLEAR, kExtent,
+                                    {{0.05f, 0.2f, 0.4f, 1.0f}});
             vkCmdEndRendering(cmd);
             imageBarrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT,
                          {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,

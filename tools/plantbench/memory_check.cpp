@@ -9,11 +9,15 @@
 namespace pf {
 
 uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_t width, uint32_t height,
-                             uint32_t samples) {
+                             const Antialiasing& antialiasing) {
     constexpr uint64_t kPerPlant = sizeof(gpu::FieldInstance) + LOD_COUNT * 4 + 4 + 4;
     constexpr uint64_t kShadowMap = 2048ull * 2048 * 4;
     const uint64_t pixels = uint64_t(width) * height;
-    const uint64_t target = pixels * 4 + pixels * samples * (samples > 1 ? 8 : 4);
+    const uint64_t samples = colourPassSamples(antialiasing);
+    // The finished colour image and the depth, plus the image the colour pass
+    // draws into when it is another (MSAA or FXAA), 4 bytes a sample each.
+    const bool drawnApart = samples > 1 || antialiasing.method == AntialiasMethod::fxaa;
+    const uint64_t target = pixels * 4 + pixels * samples * 4 * (drawnApart ? 2 : 1);
     const uint64_t capture = pixels * 4;
     uint64_t bytes = count * kPerPlant + target + capture + kShadowMap;
     if (pool) bytes += pool->vertices.size() * sizeof(gpu::FieldVertex) + pool->indices.size() * 4;

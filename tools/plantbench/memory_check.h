@@ -6,6 +6,7 @@
 #include "engine/scene/field_content.h"
 #include "engine/scene/natural_density.h"
 #include "engine/scene/plant_models.h"
+#include "engine/vk/antialiasing.h"
 
 #include <cstdint>
 #include <optional>
@@ -23,9 +24,10 @@ struct HeapCapacity {
 // Bytes a field of `count` plants needs on the GPU, about: per plant the
 // instance (48 B), a visible-list entry per LOD (LOD_COUNT × 4 B), the LOD state
 // (4 B) and the naive list entry (4 B); the model pool's vertices and
-// indices when known; the render target, its capture buffer and the shadow map.
+// indices when known; the render target (with its MSAA or FXAA image), its
+// capture buffer and the shadow map.
 uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_t width, uint32_t height,
-                             uint32_t samples);
+                             const Antialiasing& antialiasing);
 
 // Host bytes building a field of `count` plants needs at its peak
 // (kHostBytesPerPlant each, docs/PLANTBENCH.md): placement's grid and

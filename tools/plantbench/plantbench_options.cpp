@@ -103,9 +103,8 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
         ->check(CLI::Range(0u, 100000u))
         ->default_val(o.warmup);
     app.add_option("--size", sizeText, "Render size as WIDTHxHEIGHT (1 to 16384 per side)")->default_str(sizeText);
-    app.add_option("--samples", o.samples, "Multisample anti-aliasing samples")
-        ->check(CLI::IsMember({1, 2, 4, 8}))
-        ->default_val(o.samples);
+    AntialiasFlags antialias;
+    addAntialiasOptions(app, antialias);
     app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
     app.add_option("--time", o.time, "Scene time of the camera on the scene's camera path, seconds")
         ->check(CLI::NonNegativeNumber)
@@ -162,6 +161,9 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
                     "': expected WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720");
     o.width = size->width;
     o.height = size->height;
+    const std::optional<Antialiasing> antialiasing = antialiasingOf(antialias, &problem);
+    if (!antialiasing) return fail(problem);
+    o.antialiasing = *antialiasing;
     o.compareNaive = compare == "naive";
     if (app.count("--path")) {
         const auto times = parsePathTimes(pathText, &problem);

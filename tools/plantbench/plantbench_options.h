@@ -1,6 +1,8 @@
 // Command-line options of plantbench, parsed and checked before any GPU work.
 #pragma once
 
+#include "engine/vk/antialiasing.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -26,7 +28,7 @@ struct PlantbenchOptions {
     uint32_t frames = 10;         // measured frames per count (and per path)
     uint32_t warmup = 2;          // frames rendered first and not measured
     uint32_t width = 1280, height = 720;
-    uint32_t samples = 4;
+    Antialiasing antialiasing;
     bool shadows = true;
     double time = 0.0;                 // scene time of the camera on its path
     std::optional<uint32_t> pathTimes; // --path: measure at this many times along the camera path instead

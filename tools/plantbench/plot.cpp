@@ -112,7 +112,7 @@ std::string script(const PlantbenchOptions& o, const SweepResult& result, const 
     const std::string scene = fs::path(result.scenePath).filename().string();
     std::ostringstream title;
     title << "plantbench: " << scene << " on " << result.device << ", " << o.width << "x" << o.height << ", "
-          << o.samples << "x MSAA, median of " << o.frames << " frames";
+          << antialiasingText(o.antialiasing) << ", median of " << o.frames << " frames";
     // With --path every count's point is its worst time's.
     const std::string panelTitle = o.pathTimes ? "Milliseconds per frame, the worst of " +
                                                      std::to_string(*o.pathTimes) + " times along the camera path"

@@ -160,7 +160,7 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
         rows.push_back(row);
     }
     out << "plantbench: " << result.scenePath << " on " << result.device << ", " << o.width << "x" << o.height << ", "
-        << o.samples << "x MSAA, shadows " << (o.shadows ? "on" : "off") << ", median of " << o.frames
+        << antialiasingText(o.antialiasing) << ", shadows " << (o.shadows ? "on" : "off") << ", median of " << o.frames
         << " frames after " << o.warmup << " warm-up";
     if (o.pathTimes) out << ", the worst of " << *o.pathTimes << " times along the camera path";
     out << (o.densify ? ", counts densified on the scene's terrain" : ", counts at the scene's densities") << "\n";
@@ -181,7 +181,8 @@ nlohmann::json sweepJson(const PlantbenchOptions& o, const SweepResult& result) 
     j["scene"] = result.scenePath;
     j["device"] = result.device;
     j["size"] = {o.width, o.height};
-    j["samples"] = o.samples;
+    j["antialiasing"] = antialiasMethodName(o.antialiasing.method);
+    j["samples"] = colourPassSamples(o.antialiasing);
     j["shadows"] = o.shadows;
     j["time"] = o.pathTimes ? nlohmann::json(nullptr) : nlohmann::json(o.time);
     j["path"] = o.pathTimes ? nlohmann::json(*o.pathTimes) : nlohmann::json(nullptr);

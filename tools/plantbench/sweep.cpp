@@ -56,8 +56,8 @@ double msSince(Clock::time_point start) {
 // The render target, the host buffer its captures go to and the timer of
 // one count, released however the count ends.
 struct FrameResources {
-    FrameResources(const GpuContext& ctx, VkExtent2D extent, VkSampleCountFlagBits samples)
-        : ctx(ctx), resources(ctx), target(createRenderTarget(ctx, extent, samples)),
+    FrameResources(const GpuContext& ctx, VkExtent2D extent, const Antialiasing& antialiasing)
+        : ctx(ctx), resources(ctx), target(createRenderTarget(ctx, extent, antialiasing)),
           capture(createHostBuffer(resources, VkDeviceSize(extent.width) * extent.height * 4,
                                    VK_BUFFER_USAGE_TRANSFER_DST_BIT)),
           timer(createGpuTimer(ctx, uint32_t(kPassCount))) {}
@@ -165,15 +165,15 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
     r.terrainSize = content.scene.terrain.size;
     r.placementNote = content.note;
     // Again with the model pool's size, now known.
-    refuseIf(gpuMemoryProblem(count, estimatedFieldBytes(count, &content.models, o.width, o.height, o.samples),
+    refuseIf(gpuMemoryProblem(count, estimatedFieldBytes(count, &content.models, o.width, o.height, o.antialiasing),
                               ctx.properties.deviceName, heap));
 
     FieldRenderSettings settings;
-    settings.samples = VkSampleCountFlagBits(o.samples);
+    settings.antialiasing = o.antialiasing;
     settings.shadows = o.shadows;
     showProgress(progress, 0.0, "uploading the field and baking impostors");
     FieldRenderer renderer(ctx, std::move(content), settings);
-    FrameResources frame(ctx, {o.width, o.height}, renderer.samples());
+    FrameResources frame(ctx, {o.width, o.height}, renderer.antialiasing());
 
     const bool naive = o.compareNaive && count <= o.naiveMax;
     const std::vector<double> times = measuredTimes(o, scene);
@@ -215,7 +215,7 @@ void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, S
     const bool hostHoldsGpu = ctx.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     // Refuse the whole sweep up front rather than after hours of smaller counts.
     for (uint64_t count : o.counts) {
-        const uint64_t gpuBytes = estimatedFieldBytes(count, nullptr, o.width, o.height, o.samples);
+        const uint64_t gpuBytes = estimatedFieldBytes(count, nullptr, o.width, o.height, o.antialiasing);
         refuseIf(gpuMemoryProblem(count, gpuBytes, ctx.properties.deviceName, heap));
         refuseIf(hostMemoryProblem(count, estimatedHostBytes(count, countMode(o)) + (hostHoldsGpu ? gpuBytes : 0),
                                    hostAvailable));

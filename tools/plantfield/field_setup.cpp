@@ -48,7 +48,7 @@ FieldContent loadFieldContent(const PlantfieldOptions& o) {
 
 FieldRenderSettings renderSettings(const PlantfieldOptions& o) {
     FieldRenderSettings s;
-    s.samples = VkSampleCountFlagBits(o.samples);
+    s.antialiasing = o.antialiasing;
     s.shadows = o.shadows;
     return s;
 }

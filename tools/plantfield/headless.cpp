@@ -63,7 +63,7 @@ int runHeadless(const PlantfieldOptions& o) {
     const VkExtent2D extent{o.size.width, o.size.height};
     {
         FieldRenderer renderer(ctx, std::move(content), renderSettings(o));
-        RenderTarget target = createRenderTarget(ctx, extent, renderer.samples());
+        RenderTarget target = createRenderTarget(ctx, extent, renderer.antialiasing());
         GpuTimer timer = createGpuTimer(ctx, 16);
         if (!o.outDir.empty()) std::filesystem::create_directories(o.outDir);
 

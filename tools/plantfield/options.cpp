@@ -47,6 +47,32 @@ std::optional<Wind> parseWind(const std::string& text) {
     return wind;
 }
 
+void addAntialiasOptions(CLI::App& app, AntialiasFlags& flags) {
+    const CLI::Validator method(
+        [](std::string& name) { return antialiasMethodNamed(name) ? "" : "expected fxaa, msaa or none"; },
+        "fxaa|msaa|none");
+    app.add_option("--aa", flags.method,
+                   "Anti-aliasing: fxaa (one sample a pixel, then an FXAA pass), msaa (--samples a pixel,\n"
+                   "resolved) or none")
+        ->check(method)
+        ->default_str(flags.method);
+    app.add_option("--samples", flags.samples,
+                   "With --aa msaa: samples a pixel, 2, 4 or 8 (default 4; lowered to what the device supports)")
+        ->check(CLI::IsMember({2, 4, 8}));
+}
+
+std::optional<Antialiasing> antialiasingOf(const AntialiasFlags& flags, std::string* problem) {
+    Antialiasing aa;
+    aa.method = *antialiasMethodNamed(flags.method);
+    if (flags.samples && aa.method != AntialiasMethod::msaa) {
+        *problem =
+            "--samples is the MSAA sample count: it needs --aa msaa (anti-aliasing is --aa " + flags.method + ")";
+        return std::nullopt;
+    }
+    aa.msaaSamples = flags.samples.value_or(aa.msaaSamples);
+    return aa;
+}
+
 std::string defaultScenePath() {
     const char* data = std::getenv("PLANTFIELD_DATA_DIR");
     return std::string(data && *data ? data : PLANTFIELD_DATA_DIR) + "/scenes/default.json";
@@ -66,6 +92,7 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                "  plantfield --instances 100000 --stats               one frame of 100 000 plants: JSON statistics\n"
                "  plantfield data/scenes/valley.json --capture v.png  a million plants on 2 km x 2 km\n"
                "  plantfield --frames 60 --fps 30 --out-dir seq       two seconds of frames\n"
+               "  plantfield --capture frame.png --aa msaa            4x multisampling instead of FXAA\n"
                "Environment: PLANTFIELD_DEVICE picks the device by name, PLANTFIELD_VALIDATION=1 turns on\n"
                "the Khronos validation layer, PLANTFIELD_DATA_DIR replaces the data folder.");
     app.add_option("scene", o.scenePath, "Scene file (.json)")->default_str("data/scenes/default.json");
@@ -105,7 +132,8 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_flag("--list-devices", o.listDevices, "List the Vulkan devices and exit");
     app.add_flag("--validation,!--no-validation", o.validation,
                  "Enable the Khronos validation layer (default: on in debug builds)");
-    app.add_option("--samples", o.samples, "Multisample anti-aliasing samples")->check(CLI::IsMember({1, 2, 4, 8}));
+    AntialiasFlags antialias;
+    addAntialiasOptions(app, antialias);
 
     try {
         app.parse(argc, argv);
@@ -129,6 +157,10 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
         return fail("invalid --size '" + sizeText +
                     "': expected WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720");
     o.size = *size;
+    std::string problem;
+    const std::optional<Antialiasing> antialiasing = antialiasingOf(antialias, &problem);
+    if (!antialiasing) return fail(problem);
+    o.antialiasing = *antialiasing;
     if (!windText.empty()) {
         const std::optional<Wind> wind = parseWind(windText);
         if (!wind)

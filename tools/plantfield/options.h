@@ -2,10 +2,15 @@
 #pragma once
 
 #include "engine/scene/scene.h"
+#include "engine/vk/antialiasing.h"
 
 #include <cstdint>
 #include <optional>
 #include <string>
+
+namespace CLI {
+class App;
+}
 
 namespace pf {
 
@@ -20,6 +25,17 @@ std::optional<ImageSize> parseImageSize(const std::string& text);
 // "SPEED[,DIRECTION]" of --wind; nullopt when malformed or the speed is
 // outside 0–100 m/s (the direction is left at its default when absent).
 std::optional<Wind> parseWind(const std::string& text);
+
+// --aa METHOD and --samples S, the same on plantfield and plantbench: FXAA
+// by default; the MSAA sample count only with --aa msaa.
+struct AntialiasFlags {
+    std::string method = antialiasMethodName(AntialiasMethod::fxaa);
+    std::optional<uint32_t> samples;
+};
+void addAntialiasOptions(CLI::App& app, AntialiasFlags& flags);
+// What the flags choose, or nullopt with `problem` set when --samples comes
+// with another method than msaa.
+std::optional<Antialiasing> antialiasingOf(const AntialiasFlags& flags, std::string* problem);
 
 // The scene a tool renders when none is named: data/scenes/default.json of
 // the source tree (PLANTFIELD_DATA_DIR overrides the data folder).
@@ -47,7 +63,7 @@ struct PlantfieldOptions {
     std::string deviceName;
     bool listDevices = false;
     bool validation = false;
-    uint32_t samples = 4;
+    Antialiasing antialiasing;
 };
 
 // Parses argv. On --help prints usage and returns exit code 0 through

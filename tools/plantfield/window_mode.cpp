@@ -54,7 +54,7 @@ int runWindow(const PlantfieldOptions& o) {
         PresentLoopOptions loop;
         loop.maxFrames = o.frames;
         loop.screenshotPath = o.capturePath;
-        loop.samples = renderer.samples();
+        loop.antialiasing = renderer.antialiasing();
         loop.prepare = [&](double t, double dt, VkExtent2D extent, double frameMs) {
             if (frameMs > 0) { // the previous frame has finished: its counters are ready
                 stats = renderer.readStats();
