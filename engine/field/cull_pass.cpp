@@ -122,12 +122,16 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
     return pass;
 }
 
+float pixelsPerMetre(float fovYRadians, uint32_t viewportHeight) {
+    return float(viewportHeight) / (2.0f * std::tan(fovYRadians * 0.5f));
+}
+
 gpu::CullUniforms makeCullUniforms(const glm::mat4& viewProj, const glm::vec3& cameraPosition, float fovYRadians,
                                    uint32_t viewportHeight, float deltaSeconds, bool firstFrame, uint32_t forcedLod) {
     gpu::CullUniforms u{};
     const std::array<glm::vec4, 6> planes = frustumPlanes(viewProj);
     std::copy(planes.begin(), planes.end(), u.frustum);
-    u.camera = glm::vec4(cameraPosition, float(viewportHeight) / (2.0f * std::tan(fovYRadians * 0.5f)));
+    u.camera = glm::vec4(cameraPosition, pixelsPerMetre(fovYRadians, viewportHeight));
     u.counts = glm::uvec4(0, 0, forcedLod, firstFrame ? 1u : 0u);
     u.timing = glm::vec4(deltaSeconds, 0, 0, 0);
     return u;

@@ -69,6 +69,10 @@ struct CullPass {
 // instances than FIELD_MAX_INSTANCES. What the pass creates is owned by `owner`.
 CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs);
 
+// Pixels per metre at one metre of distance of a camera with this vertical
+// field of view over this many pixels (CullUniforms::camera.w).
+float pixelsPerMetre(float fovYRadians, uint32_t viewportHeight);
+
 // Per frame, before record: frustum, camera, forced LOD, delta time.
 // `firstFrame` resets every instance's LOD state to settled at its target LOD.
 // counts.x and counts.y (instances, templates) are left 0: setCullUniforms
