@@ -87,13 +87,14 @@ Field layOut(std::vector<gpu::FieldInstance> instances, std::vector<gpu::PlantMo
     return f;
 }
 
-void CullPassTest::create(const Field& f) {
+void CullPassTest::create(const Field& f, CullKind kind) {
     field = &f;
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     instances = createDeviceBufferWithData(resources, f.instances.data(),
                                            f.instances.size() * sizeof(gpu::FieldInstance), storage);
     models = createDeviceBufferWithData(resources, f.models.data(), f.models.size() * sizeof(gpu::PlantModel), storage);
     CullPassInputs inputs;
+    inputs.kind = kind;
     inputs.instances = &instances;
     inputs.models = &models;
     inputs.instanceCount = uint32_t(f.instances.size());
@@ -123,6 +124,15 @@ bool CullPassTest::hasTimestamps() {
 
 GpuFrame CullPassTest::run(const gpu::CullUniforms& uniforms) {
     setCullUniforms(pass, uniforms);
+    return record();
+}
+
+GpuFrame CullPassTest::run(const gpu::ShadowCullUniforms& uniforms) {
+    setCullUniforms(pass, uniforms);
+    return record();
+}
+
+GpuFrame CullPassTest::record() {
     const bool timed = hasTimestamps();
     const VkBufferCopy visibleRegion{0, 0, pass.visible.size};
     const VkBufferCopy commandsRegion{0, visibleRegion.size, pass.commands.size};
@@ -161,8 +171,8 @@ GpuFrame CullPassTest::run(const gpu::CullUniforms& uniforms) {
     std::memcpy(out.commands.data(), bytes + commandsRegion.dstOffset, out.commands.size() * sizeof(gpu::DrawCommand));
     out.allCommands.resize(templateCount);
     std::memcpy(out.allCommands.data(), bytes + allRegion.dstOffset, templateCount * sizeof(gpu::DrawCommand));
-    out.state.resize(pass.instanceCount);
-    std::memcpy(out.state.data(), bytes + stateRegion.dstOffset, pass.instanceCount * 4);
+    out.state.resize(pass.state.size / 4);
+    std::memcpy(out.state.data(), bytes + stateRegion.dstOffset, pass.state.size);
     if (timed) {
         uint64_t stamps[2];
         VK_CHECK(vkGetQueryPoolResults(ctx.device, queries, 0, 2, sizeof(stamps), stamps, sizeof(uint64_t),

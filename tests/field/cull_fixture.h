@@ -1,6 +1,6 @@
 // What the cull-pass tests share: synthetic models and fields, and a fixture
-// that runs a cull pass on the GPU and reads back its lists, commands and
-// state.
+// that runs a cull pass (the camera's or the shadow casters') on the GPU and
+// reads back its lists, commands and state.
 #pragma once
 
 #include "engine/field/cull_pass.h"
@@ -71,9 +71,10 @@ struct GpuFrame {
 
 class CullPassTest : public GpuTest {
 protected:
-    void create(const Field& f);
+    void create(const Field& f, CullKind kind = CullKind::Camera);
     void TearDown() override;
     GpuFrame run(const gpu::CullUniforms& uniforms);
+    GpuFrame run(const gpu::ShadowCullUniforms& uniforms);
 
     const Field* field = nullptr;
     Buffer instances, models, host;
@@ -82,6 +83,7 @@ protected:
 
 private:
     bool hasTimestamps();
+    GpuFrame record();
 };
 
 } // namespace pf::test

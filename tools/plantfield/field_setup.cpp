@@ -46,6 +46,7 @@ FieldRenderSettings renderSettings(const PlantfieldOptions& o) {
     FieldRenderSettings s;
     s.samples = VkSampleCountFlagBits(o.samples);
     s.shadows = o.shadows;
+    s.shadowCache.reuse = o.shadowCache;
     return s;
 }
 
