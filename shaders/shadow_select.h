@@ -33,8 +33,7 @@ SHADOW_SELECT_FN bool heldByShadowCache(vec4 sphere, PlantModel model, vec4 cach
     float d = distance(vec3(cacheCamera), vec3(sphere));
     float most = pixelsAtDistance(sphere.w, cachePixels.y, d - cacheCamera.w);
     float fewest = pixelsAtDistance(sphere.w, cachePixels.x, d + cacheCamera.w);
-    return lodForPixels(most, model.lod.x, model.lod.y) == LOD_IMPOSTOR &&
-           largeEnoughToDraw(fewest, model, forcedLod);
+    return lodForPixels(most, model.lod.x, model.lod.y) == LOD_IMPOSTOR && largeEnoughToDraw(fewest, model, forcedLod);
 }
 
 // True when the sphere's shadow volume, the sphere swept away from the sun

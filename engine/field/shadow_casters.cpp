@@ -22,13 +22,13 @@ gpu::ShadowCullUniforms makeShadowCullUniforms(const glm::mat4& boxViewProj, con
     // a frame it serves sees otherwise.
     u.cacheCamera = glm::vec4(cache.camera, settings.reach + 0.01f);
     const float tolerance = settings.pixelTolerance + 0.001f;
-    u.cachePixels = glm::vec4(cache.pixelsPerMetre * (1.0f - tolerance), cache.pixelsPerMetre * (1.0f + tolerance),
-                              0.0f, 0.0f);
+    u.cachePixels =
+        glm::vec4(cache.pixelsPerMetre * (1.0f - tolerance), cache.pixelsPerMetre * (1.0f + tolerance), 0.0f, 0.0f);
     return u;
 }
 
-CpuCullResult shadowCastersOnCpu(std::span<const gpu::FieldInstance> instances,
-                                 std::span<const gpu::PlantModel> models, const gpu::ShadowCullUniforms& uniforms) {
+CpuCullResult shadowCastersOnCpu(std::span<const gpu::FieldInstance> instances, std::span<const gpu::PlantModel> models,
+                                 const gpu::ShadowCullUniforms& uniforms) {
     CpuCullResult out;
     out.lists.resize(models.size() * LOD_COUNT);
     for (uint32_t i = 0; i < instances.size(); ++i) {

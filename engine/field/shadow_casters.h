@@ -24,7 +24,7 @@ gpu::ShadowCullUniforms makeShadowCullUniforms(const glm::mat4& boxViewProj, con
 
 // The same decision on the CPU, the reference the tests check the GPU
 // against: the entries of each (model, LOD) list, sorted.
-CpuCullResult shadowCastersOnCpu(std::span<const gpu::FieldInstance> instances,
-                                 std::span<const gpu::PlantModel> models, const gpu::ShadowCullUniforms& uniforms);
+CpuCullResult shadowCastersOnCpu(std::span<const gpu::FieldInstance> instances, std::span<const gpu::PlantModel> models,
+                                 const gpu::ShadowCullUniforms& uniforms);
 
 } // namespace pf

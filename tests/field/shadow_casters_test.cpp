@@ -44,8 +44,8 @@ ShadowPasses shadowPasses(const View& cacheView, const View& frameView, const gl
     square.depth = cache.square.depth;
     return {makeShadowCullUniforms(sunViewProjection(cache.square, kDepthRadius), viewProj(frameView), frame, cache,
                                    settings, SHADOW_CULL_CACHE),
-            makeShadowCullUniforms(sunViewProjection(square, kDepthRadius), viewProj(frameView), frame, cache,
-                                   settings, SHADOW_CULL_FRAME)};
+            makeShadowCullUniforms(sunViewProjection(square, kDepthRadius), viewProj(frameView), frame, cache, settings,
+                                   SHADOW_CULL_FRAME)};
 }
 
 // True when float rounding could flip a decision of either pass: the sphere
@@ -59,7 +59,8 @@ bool ambiguous(const gpu::FieldInstance& inst, const gpu::PlantModel& model, con
     const double toCache = glm::distance(glm::dvec3(u.cacheCamera), s.centre), reach = u.cacheCamera.w;
     std::vector<double> pixels = {2.0 * s.radius * u.camera.w / glm::distance(glm::dvec3(u.camera), s.centre)};
     for (double scale : {u.cachePixels.x, u.cachePixels.y})
-        for (double d : {toCache - reach, toCache + reach}) pixels.push_back(2.0 * s.radius * scale / std::max(d, 0.001));
+        for (double d : {toCache - reach, toCache + reach})
+            pixels.push_back(2.0 * s.radius * scale / std::max(d, 0.001));
     for (double p : pixels)
         for (double threshold : {model.lod.x, model.lod.y, model.boxMax.w})
             if (nearBoundary(p, threshold)) return true;
@@ -67,7 +68,7 @@ bool ambiguous(const gpu::FieldInstance& inst, const gpu::PlantModel& model, con
 }
 
 const View kStart{{0.0f, 1.7f, 0.0f}, {0.0f, 1.7f, 1.0f}};
-const View kMoved{{3.0f, 1.9f, 6.0f}, {4.0f, 1.8f, 7.0f}};   // 6.7 m on, turned 45°
+const View kMoved{{3.0f, 1.9f, 6.0f}, {4.0f, 1.8f, 7.0f}}; // 6.7 m on, turned 45°
 const View kAhead{{2.0f, 2.2f, 5.5f}, {2.0f, 2.0f, 6.5f}}; // 5.9 m on: one the cache still serves
 
 // Random instances unambiguous in both passes of every case, the last
@@ -100,8 +101,8 @@ TEST_F(CullPassTest, ShadowCastersOnTheGpuEqualTheCpuReference) {
             const CpuCullResult cpu = shadowCastersOnCpu(f.instances, f.models, u);
             ASSERT_EQ(gpuFrame.lists.size(), cpu.lists.size());
             for (size_t l = 0; l < cpu.lists.size(); ++l)
-                EXPECT_EQ(gpuFrame.lists[l], cpu.lists[l]) << "case " << c << " mode " << u.counts.w << " model "
-                                                           << l / LOD_COUNT << " LOD " << l % LOD_COUNT;
+                EXPECT_EQ(gpuFrame.lists[l], cpu.lists[l])
+                    << "case " << c << " mode " << u.counts.w << " model " << l / LOD_COUNT << " LOD " << l % LOD_COUNT;
             if (u.counts.w == SHADOW_CULL_CACHE) {
                 EXPECT_GT(entriesOfLod(cpu.lists, LOD_IMPOSTOR), 100u);
                 EXPECT_EQ(entriesOfLod(cpu.lists, LOD_FULL) + entriesOfLod(cpu.lists, LOD_REDUCED), 0u);

@@ -78,9 +78,9 @@ TEST_F(ShadowCacheTest, FrameDrawnWithTheCacheEqualsTheMapDrawnFromScratch) {
     EXPECT_GT(a.stats.shadowCastersPerLod[LOD_FULL] + a.stats.shadowCastersPerLod[LOD_REDUCED], 0u)
         << "the near trees are drawn every frame as meshes";
     const ImageDiff diff = compareImages(a.image, b.image, kFieldTolerance.channel);
-    std::printf("cached against scratch after %u frames: %llu pixels beyond %d/255, largest %d, PSNR %.1f dB\n", kFrames,
-                static_cast<unsigned long long>(diff.failingPixels), kFieldTolerance.channel, diff.maxChannelDelta,
-                diff.psnr);
+    std::printf("cached against scratch after %u frames: %llu pixels beyond %d/255, largest %d, PSNR %.1f dB\n",
+                kFrames, static_cast<unsigned long long>(diff.failingPixels), kFieldTolerance.channel,
+                diff.maxChannelDelta, diff.psnr);
     EXPECT_TRUE(diff.sameSize);
     EXPECT_LE(diff.failingFraction, kFieldTolerance.failingPixelFraction);
 }
