@@ -81,14 +81,15 @@ vec3 fieldWindAt(vec3 worldPos) {
     return windAt(worldPos, field.wind.w, u);
 }
 
-// The same vertex shaders draw the camera view and the sun's shadow map:
-// the pipeline layout's push constant says which.
+// The same vertex shaders draw the camera view and the sun's shadow maps:
+// the pipeline layout's push constant says which (FIELD_PASS_*).
 layout(push_constant) uniform FieldPush {
-    uint shadowPass; // 1: depth from the sun
+    uint shadowPass; // not FIELD_PASS_COLOUR: depth from the sun
 } fieldPush;
 
 mat4 passViewProj() {
-    return fieldPush.shadowPass != 0u ? field.sunViewProj : frame.viewProj;
+    if (fieldPush.shadowPass == FIELD_PASS_COLOUR) return frame.viewProj;
+    return fieldPush.shadowPass == FIELD_PASS_SHADOW ? field.sunViewProj : field.sunCacheViewProj;
 }
 
 // The plant a draw's instance stands for: gl_InstanceIndex already includes

@@ -7,6 +7,7 @@
 #include "layouts.h"
 
 #ifdef __cplusplus
+#include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
 namespace gpu {
@@ -152,6 +153,23 @@ struct CullUniforms {
     vec4 timing;  // x seconds since the previous frame, yzw 0
 };
 
+// The shadow-caster pass (shadow_cull.comp, engine/field/shadow_casters.h):
+// one invocation per instance picks the plants whose bounding sphere meets
+// the sun's box, split between the cached map of static casters and the
+// casters drawn every frame on top of it (shadow_select.h). counts sits where
+// CullUniforms has it: build_draws.comp reads counts.y of either.
+#define SHADOW_CULL_CACHE 0u // the plants the cache holds
+#define SHADOW_CULL_FRAME 1u // every other caster, at the LOD the camera sees it at
+struct ShadowCullUniforms {
+    vec4 box[6];      // planes of the sun's box (frustumPlanes of its view-projection), as CullUniforms::frustum
+    vec4 camera;      // xyz the camera, w its pixels per metre at one metre (CullUniforms::camera)
+    uvec4 counts;     // x instances, y templates, z forced LOD (LOD_NOT_FORCED: none), w SHADOW_CULL_CACHE or _FRAME
+    vec4 cacheCamera; // xyz where the camera stood when the cache was drawn, w how far it may move from there (m)
+    vec4 cachePixels; // x the fewest, y the most pixels per metre at one metre the cache serves; zw 0
+    vec4 view[6];     // the camera's frustum planes (SHADOW_CULL_FRAME: casters whose shadow may fall in view)
+    vec4 sun;         // xyz unit vector toward the sun, w 0
+};
+
 // The push constants of one impostor bake frame (engine/field/impostor_atlas.h):
 // the orthographic view from azimuth a, fitted to the model's box.
 struct ImpostorBakePush {
@@ -160,13 +178,20 @@ struct ImpostorBakePush {
     vec4 height; // x bottom, y 1 / (top - bottom)
 };
 
+// The field's draw push constant (field_common.glsl fieldPush.shadowPass):
+// which view the vertex shaders project into.
+#define FIELD_PASS_COLOUR 0u       // the camera's
+#define FIELD_PASS_SHADOW 1u       // the sun's, into the frame's shadow map (FieldFrame::sunViewProj)
+#define FIELD_PASS_SHADOW_CACHE 2u // the sun's, into the cache of static casters (FieldFrame::sunCacheViewProj)
+
 // Field additions to the frame uniforms (after FrameUniforms in the same block).
 struct FieldFrame {
-    mat4 sunViewProj; // world → shadow map clip space
-    vec4 viewport;    // x width, y height (pixels), z shadow map texel size (m), w 1 when shadows are on
-    vec4 wind;        // xz direction × speed (m/s), y gust strength, w time (s)
-    vec4 windDetail;  // x turbulence, y gust wavelength (m), z gust front speed (m/s), w impostor sway (m per m/s of
-                      // gust, at the top)
+    mat4 sunViewProj;      // world → shadow map clip space
+    mat4 sunCacheViewProj; // world → the shadow cache's clip space (the frame's map is a window of it)
+    vec4 viewport;         // x width, y height (pixels), z shadow map texel size (m), w 1 when shadows are on
+    vec4 wind;             // xz direction × speed (m/s), y gust strength, w time (s)
+    vec4 windDetail; // x turbulence, y gust wavelength (m), z gust front speed (m/s), w impostor sway (m per m/s of
+                     // gust, at the top)
 };
 
 #ifdef __cplusplus
@@ -180,7 +205,9 @@ static_assert(sizeof(gpu::TerrainVertex) == TERRAIN_VERTEX_TEXELS * 16);
 static_assert(sizeof(gpu::DrawTemplate) == 32);
 static_assert(sizeof(gpu::DrawCommand) == 20);
 static_assert(sizeof(gpu::CullUniforms) == 9 * 16);
-static_assert(sizeof(gpu::FieldFrame) == 64 + 3 * 16);
+static_assert(sizeof(gpu::ShadowCullUniforms) == 17 * 16);
+static_assert(offsetof(gpu::ShadowCullUniforms, counts) == offsetof(gpu::CullUniforms, counts));
+static_assert(sizeof(gpu::FieldFrame) == 2 * 64 + 3 * 16);
 static_assert(sizeof(gpu::ImpostorBakePush) == 3 * 16);
 #endif
 

@@ -31,7 +31,7 @@ void main() {
     uint frames = m.impostor.y;
     uint quads = m.impostor.z;
     // Where the view comes from, in plant space (the instance's yaw undone).
-    vec3 toView = fieldPush.shadowPass != 0u ? frame.sunDirection.xyz : frame.cameraPosition.xyz - inst.positionScale.xyz;
+    vec3 toView = fieldPush.shadowPass != FIELD_PASS_COLOUR ? frame.sunDirection.xyz : frame.cameraPosition.xyz - inst.positionScale.xyz;
     vec3 local = transpose(yawMatrix(inst.orientation.x)) * toView;
     float viewAzimuth = dot(local.xz, local.xz) > 1e-12 ? atan(local.x, local.z) : 0.0;
 
@@ -65,13 +65,15 @@ void main() {
     // Far plants have no skeleton: the quad's top leans with the gusts and
     // turbulence (the wind beyond its mean), growing with height squared.
     // Like the skeletons, which start at rest at time 0, the lean rises over
-    // the first second.
+    // the first second. Their shadows stand at rest: most are drawn once into
+    // the cache of static casters and copied for many frames (a lean of a
+    // tenth of a metre is about one texel of the shadow map).
     vec3 gust = fieldWindAt(inst.positionScale.xyz) - vec3(field.wind.x, 0.0, field.wind.z);
-    float lean = height * height * min(field.wind.w, 1.0);
+    float lean = fieldPush.shadowPass != FIELD_PASS_COLOUR ? 0.0 : height * height * min(field.wind.w, 1.0);
     outWorldPos += vec3(gust.x, 0.0, gust.z) * (field.windDetail.w * lean * inst.positionScale.w);
     outUv = uv;
     outFade = packFade(p);
     outYaw = inst.orientation.x;
-    outFog = fieldPush.shadowPass != 0u ? vec4(0.0) : vertexFog(outWorldPos);
+    outFog = fieldPush.shadowPass != FIELD_PASS_COLOUR ? vec4(0.0) : vertexFog(outWorldPos);
     gl_Position = passViewProj() * vec4(outWorldPos, 1.0);
 }

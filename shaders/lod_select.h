@@ -55,10 +55,16 @@ LOD_SELECT_FN bool sphereInFrustum(vec4 sphere, vec4 plane0, vec4 plane1, vec4 p
            dot(vec3(plane4), c) + plane4.w >= r && dot(vec3(plane5), c) + plane5.w >= r;
 }
 
+// Projected height in pixels of a sphere of `radius` at `distance` from a
+// camera of `pixelsPerMetre` pixels per metre at one metre of distance.
+LOD_SELECT_FN float pixelsAtDistance(float radius, float pixelsPerMetre, float distance) {
+    return 2.0f * radius * pixelsPerMetre / max(distance, 0.001f);
+}
+
 // Projected height of the sphere in pixels; camera.w is pixels per metre at
 // one metre of distance.
 LOD_SELECT_FN float projectedPixels(vec4 sphere, vec4 camera) {
-    return 2.0f * sphere.w * camera.w / max(distance(vec3(camera), vec3(sphere)), 0.001f);
+    return pixelsAtDistance(sphere.w, camera.w, distance(vec3(camera), vec3(sphere)));
 }
 
 // Contribution culling: a plant smaller on screen than model.boxMax.w pixels

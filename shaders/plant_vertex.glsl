@@ -25,6 +25,6 @@ void main() {
     outUv = vec2(v.position.w, v.normal.w);
     outFade = packFade(p);
     outKind = v.albedo.a;
-    outFog = fieldPush.shadowPass != 0u ? vec4(0.0) : vertexFog(outWorldPos);
+    outFog = fieldPush.shadowPass != FIELD_PASS_COLOUR ? vec4(0.0) : vertexFog(outWorldPos);
     gl_Position = passViewProj() * vec4(outWorldPos, 1.0);
 }

@@ -5,6 +5,7 @@
 
 #include "shaders/build_draws_comp.spv.h"
 #include "shaders/cull_comp.spv.h"
+#include "shaders/shadow_cull_comp.spv.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,14 @@ VkDeviceSize atLeastOneWord(VkDeviceSize bytes) { return std::max<VkDeviceSize>(
 Buffer createDeviceBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFlags usage) {
     return createBuffer(owner, atLeastOneWord(size), usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                         VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+}
+
+// Writes the uniforms with counts.x and counts.y (instances, templates) taken from the pass.
+template <class Uniforms>
+void writeCullUniforms(const CullPass& pass, Uniforms u) {
+    u.counts.x = pass.instanceCount;
+    u.counts.y = pass.templateCount;
+    std::memcpy(pass.uniforms.mapped, &u, sizeof(u));
 }
 
 } // namespace
@@ -76,14 +85,16 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
 
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags indirect = storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
-    pass.uniforms = createHostBuffer(owner, sizeof(gpu::CullUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    const bool camera = inputs.kind == CullKind::Camera;
+    pass.uniforms = createHostBuffer(owner, camera ? sizeof(gpu::CullUniforms) : sizeof(gpu::ShadowCullUniforms),
+                                     VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     if (pass.templateCount > 0)
         pass.templates =
             createDeviceBufferWithData(owner, inputs.templates.data(), inputs.templates.size_bytes(), storage);
     else
         pass.templates = createDeviceBuffer(owner, 0, storage);
-    pass.state =
-        createDeviceBuffer(owner, VkDeviceSize(pass.instanceCount) * 4, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    pass.state = createDeviceBuffer(owner, camera ? VkDeviceSize(pass.instanceCount) * 4 : 0,
+                                    storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     pass.counts = createDeviceBuffer(owner, VkDeviceSize(pass.modelCount) * LOD_COUNT * 4,
                                      storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     // Written here, read by the draw shaders through a texel view.
@@ -97,13 +108,14 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 
     // Until a first frame resets it, every plant is settled at LOD 0.
-    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-        vkCmdFillBuffer(cmd, pass.state.buffer, 0, VK_WHOLE_SIZE, LOD_STATE_SETTLED << 8);
-        // Waiting for the queue is no memory dependency: the first cull reads it.
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    });
+    if (camera)
+        submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+            vkCmdFillBuffer(cmd, pass.state.buffer, 0, VK_WHOLE_SIZE, LOD_STATE_SETTLED << 8);
+            // Waiting for the queue is no memory dependency: the first cull reads it.
+            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        });
 
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
     const DescriptorBinding bindings[] = {uniformBuffer(CULL_BINDING_UNIFORMS, compute, pass.uniforms),
@@ -117,9 +129,15 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
                                           storageBuffer(CULL_BINDING_DRAW_COUNTS, compute, pass.drawCounts),
                                           storageBuffer(CULL_BINDING_ALL_COMMANDS, compute, pass.allCommands)};
     pass.set = createComputeSet(owner, bindings);
-    pass.cullPipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_cull_comp);
+    const std::span<const uint32_t> cullShader =
+        camera ? std::span<const uint32_t>(spirv_cull_comp) : std::span<const uint32_t>(spirv_shadow_cull_comp);
+    pass.cullPipeline = createComputePipeline(owner, pass.set.pipelineLayout, cullShader);
     pass.buildDrawsPipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_build_draws_comp);
     return pass;
+}
+
+float pixelsPerMetre(float fovYRadians, uint32_t viewportHeight) {
+    return float(viewportHeight) / (2.0f * std::tan(fovYRadians * 0.5f));
 }
 
 gpu::CullUniforms makeCullUniforms(const glm::mat4& viewProj, const glm::vec3& cameraPosition, float fovYRadians,
@@ -127,17 +145,16 @@ gpu::CullUniforms makeCullUniforms(const glm::mat4& viewProj, const glm::vec3& c
     gpu::CullUniforms u{};
     const std::array<glm::vec4, 6> planes = frustumPlanes(viewProj);
     std::copy(planes.begin(), planes.end(), u.frustum);
-    u.camera = glm::vec4(cameraPosition, float(viewportHeight) / (2.0f * std::tan(fovYRadians * 0.5f)));
+    u.camera = glm::vec4(cameraPosition, pixelsPerMetre(fovYRadians, viewportHeight));
     u.counts = glm::uvec4(0, 0, forcedLod, firstFrame ? 1u : 0u);
     u.timing = glm::vec4(deltaSeconds, 0, 0, 0);
     return u;
 }
 
-void setCullUniforms(const CullPass& pass, const gpu::CullUniforms& uniforms) {
-    gpu::CullUniforms u = uniforms;
-    u.counts.x = pass.instanceCount;
-    u.counts.y = pass.templateCount;
-    std::memcpy(pass.uniforms.mapped, &u, sizeof(u));
+void setCullUniforms(const CullPass& pass, const gpu::CullUniforms& uniforms) { writeCullUniforms(pass, uniforms); }
+
+void setCullUniforms(const CullPass& pass, const gpu::ShadowCullUniforms& uniforms) {
+    writeCullUniforms(pass, uniforms);
 }
 
 void recordCullPass(VkCommandBuffer cmd, const CullPass& pass) {

@@ -34,7 +34,14 @@ std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProj);
 // an instance names a model that does not exist.
 void assignVisibleLists(std::span<gpu::PlantModel> models, std::span<const gpu::FieldInstance> instances);
 
+// What the pass decides per instance before build_draws.comp makes the draws.
+enum class CullKind {
+    Camera,        // cull.comp: frustum, LOD with hysteresis and fades (CullUniforms, a LOD state per instance)
+    ShadowCasters, // shadow_cull.comp: the sun's casters of a box (ShadowCullUniforms, shadow_select.h; no state)
+};
+
 struct CullPassInputs {
+    CullKind kind = CullKind::Camera;
     const Buffer* instances = nullptr; // gpu::FieldInstance[instanceCount], storage
     const Buffer* models = nullptr;    // gpu::PlantModel[modelCount], storage (lists filled)
     uint32_t instanceCount = 0;
@@ -47,9 +54,9 @@ struct CullPass {
     VkPipeline cullPipeline = VK_NULL_HANDLE;
     VkPipeline buildDrawsPipeline = VK_NULL_HANDLE;
 
-    Buffer uniforms;    // host-visible CullUniforms
+    Buffer uniforms;    // host-visible CullUniforms (ShadowCullUniforms for ShadowCasters)
     Buffer templates;   // DrawTemplate[]
-    Buffer state;       // uint per instance: LOD state (field_layouts.h)
+    Buffer state;       // uint per instance: LOD state (field_layouts.h); one unused word for ShadowCasters
     Buffer counts;      // uint per (model, LOD)
     Buffer visible;     // uint entries: LOD lists of every model (LOD_COUNT × instanceCount)
     Buffer commands;    // DrawCommand[DRAW_CLASS_COUNT × templateCount], class c's region starts at c × templateCount
@@ -69,6 +76,10 @@ struct CullPass {
 // instances than FIELD_MAX_INSTANCES. What the pass creates is owned by `owner`.
 CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs);
 
+// Pixels per metre at one metre of distance of a camera with this vertical
+// field of view over this many pixels (CullUniforms::camera.w).
+float pixelsPerMetre(float fovYRadians, uint32_t viewportHeight);
+
 // Per frame, before record: frustum, camera, forced LOD, delta time.
 // `firstFrame` resets every instance's LOD state to settled at its target LOD.
 // counts.x and counts.y (instances, templates) are left 0: setCullUniforms
@@ -77,8 +88,10 @@ gpu::CullUniforms makeCullUniforms(const glm::mat4& viewProj, const glm::vec3& c
                                    uint32_t viewportHeight, float deltaSeconds, bool firstFrame,
                                    uint32_t forcedLod = 0xFFFFFFFFu);
 void setCullUniforms(const CullPass& pass, const gpu::CullUniforms& uniforms);
+// The same for a CullKind::ShadowCasters pass (engine/field/shadow_casters.h makes them).
+void setCullUniforms(const CullPass& pass, const gpu::ShadowCullUniforms& uniforms);
 
-// Records: clear counters, cull, build draws, copy counters to readback, and
+// Records: clear counters, cull (or pick shadow casters), build draws, copy counters to readback, and
 // the barriers that make the visible list readable by vertex shaders and the
 // commands by indirect draws.
 void recordCullPass(VkCommandBuffer cmd, const CullPass& pass);

@@ -95,7 +95,8 @@ FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const 
     uploadGeometry();
     uploadInstances();
     motion_ = createFieldMotion(resources_, content_);
-    shadow_ = createShadowMap(resources_, settings_.shadowMapSize);
+    const float texel = 2.0f * settings_.shadowRadius / float(settings_.shadowMapSize);
+    shadow_ = createShadowMap(resources_, settings_.shadowMapSize, shadowCacheMargin(settings_.shadowCache, texel));
     createDescriptors();
     createPipelines();
 }
@@ -168,10 +169,13 @@ void FieldRenderer::uploadInstances() {
     inputs.modelCount = uint32_t(pool.models.size());
     inputs.templates = templates;
     cull_ = createCullPass(resources_, inputs);
+    inputs.kind = CullKind::ShadowCasters;
+    shadowCacheCasters_ = createCullPass(resources_, inputs);
+    shadowFrameCasters_ = createCullPass(resources_, inputs);
 }
 
-// The draw set and the naive set differ only in the visible list: the cull
-// pass's lists, or every plant once.
+// The draw sets differ only in the visible list: the cull pass's lists,
+// every plant once (naive), or the shadow casters' lists.
 void FieldRenderer::createDescriptors() {
     const VkFormat uint4 = VK_FORMAT_R32G32B32A32_UINT;
     const VkFormat uint1 = VK_FORMAT_R32_UINT;
@@ -192,15 +196,23 @@ void FieldRenderer::createDescriptors() {
         texels(FIELD_BINDING_POSES, motion_.pass.poses, uint4),
         texels(FIELD_BINDING_INSTANCE_SKELETON, motion_.instanceSkeleton, uint1),
         texels(FIELD_BINDING_IMPOSTOR_OUTLINES, outlines_, uint4)};
-    std::vector<DescriptorBinding> naiveTable = drawTable;
-    for (DescriptorBinding& b : naiveTable)
-        if (b.binding == FIELD_BINDING_VISIBLE) b = texels(FIELD_BINDING_VISIBLE, naiveVisible_, uint1);
+    auto withVisible = [&](const Buffer& visible) {
+        std::vector<DescriptorBinding> table = drawTable;
+        for (DescriptorBinding& b : table)
+            if (b.binding == FIELD_BINDING_VISIBLE) b = texels(FIELD_BINDING_VISIBLE, visible, uint1);
+        return table;
+    };
+    const std::vector<DescriptorBinding> naiveTable = withVisible(naiveVisible_);
+    const std::vector<DescriptorBinding> shadowCacheTable = withVisible(shadowCacheCasters_.visible);
+    const std::vector<DescriptorBinding> shadowFrameTable = withVisible(shadowFrameCasters_.visible);
 
     const VkDescriptorSetLayout setLayout = createSetLayout(resources_, drawTable);
-    const DescriptorTable tables[] = {drawTable, naiveTable};
+    const DescriptorTable tables[] = {drawTable, naiveTable, shadowCacheTable, shadowFrameTable};
     const std::vector<VkDescriptorSet> sets = createSets(resources_, setLayout, tables);
     drawSet_ = sets[0];
     naiveSet_ = sets[1];
+    shadowCacheSet_ = sets[2];
+    shadowFrameSet_ = sets[3];
     pipelineLayout_ = createPipelineLayout(resources_, setLayout, {kDrawStages, 0, sizeof(uint32_t)});
 }
 
@@ -254,17 +266,10 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     const Environment env = environmentOf(content_.scene);
     FieldUniformBlock block{};
     block.frame = makeFrameUniforms(view.camera, env, {extent.width, extent.height}, view.time);
-
-    const glm::vec3 forward = glm::normalize(view.camera.target - view.camera.position);
-    // Shadows where they are seen large: a square reaching ahead of the camera.
-    const float radius = settings_.shadowRadius;
-    const glm::vec3 flatForward = glm::length(glm::vec2(forward.x, forward.z)) > 1e-3f
-                                      ? glm::normalize(glm::vec3(forward.x, 0.0f, forward.z))
-                                      : glm::vec3(0.0f);
-    const glm::vec3 focus = view.camera.position + flatForward * (0.6f * radius);
-    block.field.sunViewProj = sunViewProjection(sunDirection(env), focus, radius, 250.0f, shadow_.size);
-    block.field.viewport = glm::vec4(float(extent.width), float(extent.height), 2.0f * radius / float(shadow_.size),
-                                     settings_.shadows ? 1.0f : 0.0f);
+    planShadows(view, sunDirection(env), extent, block.frame.viewProj, block.field);
+    block.field.viewport =
+        glm::vec4(float(extent.width), float(extent.height), 2.0f * settings_.shadowRadius / float(shadow_.size),
+                  settings_.shadows ? 1.0f : 0.0f);
     advanceFieldMotion(motion_, view.time, view.firstFrame, view.camera.position, view.realTime);
     // The physics pass's wind field, for the shaders that sway without a skeleton.
     const gpu::PhysicsUniforms wind =
@@ -278,21 +283,8 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
                                             view.firstFrame, view.forcedLod.value_or(0xFFFFFFFFu)));
 }
 
-void FieldRenderer::recordShadowPass(VkCommandBuffer cmd, bool naive) const {
-    beginShadowPass(cmd, shadow_);
-    const uint32_t shadowPass = 1;
-    vkCmdPushConstants(cmd, pipelineLayout_, kDrawStages, 0, sizeof(shadowPass), &shadowPass);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.plantShadow);
-    vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
-    if (naive) {
-        drawPlantsNaive(cmd, true, true);
-    } else {
-        drawClassIndirect(cmd, ctx_, cull_, DRAW_BARK);
-        drawClassIndirect(cmd, ctx_, cull_, DRAW_FOLIAGE);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.impostorShadow);
-        drawClassIndirect(cmd, ctx_, cull_, DRAW_IMPOSTOR);
-    }
-    endShadowPass(cmd, shadow_);
+void FieldRenderer::pushFieldPass(VkCommandBuffer cmd, uint32_t pass) const {
+    vkCmdPushConstants(cmd, pipelineLayout_, kDrawStages, 0, sizeof(pass), &pass);
 }
 
 void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& target, bool naive,
@@ -302,9 +294,10 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
     // inside it measure only their share of vertex work and binning there.
     // The FXAA pass (kAntialiasScope) is a rendering of its own after it.
     Timed pass(cmd, timer, "colour");
+    const VkDescriptorSet set = naive ? naiveSet_ : drawSet_;
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &set, 0, nullptr);
     beginTargetPass(cmd, target);
-    const uint32_t colourPass = 0;
-    vkCmdPushConstants(cmd, pipelineLayout_, kDrawStages, 0, sizeof(colourPass), &colourPass);
+    pushFieldPass(cmd, FIELD_PASS_COLOUR);
     {
         Timed scope(cmd, timer, "plants");
         vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
@@ -341,7 +334,6 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
 
 void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const {
     if (timer) resetGpuTimer(cmd, *timer);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &drawSet_, 0, nullptr);
     recordFieldMotion(cmd, motion_, timer);
     {
         Timed scope(cmd, timer, "cull");
@@ -349,19 +341,18 @@ void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuT
     }
     {
         Timed scope(cmd, timer, "shadow");
-        if (settings_.shadows) recordShadowPass(cmd, false);
+        if (settings_.shadows) recordShadowPass(cmd);
     }
     recordColourPass(cmd, target, false, timer);
 }
 
 void FieldRenderer::recordNaive(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const {
     if (timer) resetGpuTimer(cmd, *timer);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &naiveSet_, 0, nullptr);
     recordFieldMotion(cmd, motion_, timer);
     { Timed scope(cmd, timer, "cull"); }
     {
         Timed scope(cmd, timer, "shadow");
-        if (settings_.shadows) recordShadowPass(cmd, true);
+        if (settings_.shadows) recordNaiveShadowPass(cmd);
     }
     recordColourPass(cmd, target, true, timer);
 }
@@ -403,6 +394,11 @@ FieldFrameStats FieldRenderer::readStats() const {
     stats.instances = uint32_t(content_.plants.size());
     stats.plantsPerLod = counts.perLod;
     stats.draws = counts.drawsPerClass;
+    if (settings_.shadows) {
+        stats.shadowCastersPerLod = readCullCounts(shadowFrameCasters_).perLod;
+        stats.shadowCacheCasters = readCullCounts(shadowCacheCasters_).perLod[LOD_IMPOSTOR];
+        stats.shadowCacheRenders = shadowCacheRenders_;
+    }
     const PlantModelPool& pool = content_.models;
     for (size_t m = 0; m < pool.models.size(); ++m) {
         const PlantModelInfo& model = pool.models[m];

@@ -8,6 +8,7 @@
 
 #include "engine/field/cull_pass.h"
 #include "engine/field/impostor_atlas.h"
+#include "engine/field/shadow_cache.h"
 #include "engine/field/shadow_map.h"
 #include "engine/physics/field_motion.h"
 #include "engine/scene/camera.h"
@@ -29,6 +30,7 @@ struct FieldRenderSettings {
     bool shadows = true;
     uint32_t shadowMapSize = 1024;
     float shadowRadius = 60.0f; // metres: half the side of the shadowed square ahead of the camera
+    ShadowCacheSettings shadowCache;
     float impostorSway = 0.04f; // metres an impostor's top leans per m/s of gust (times the plant's scale)
     ImpostorSettings impostors;
 };
@@ -52,6 +54,12 @@ struct FieldFrameStats {
     std::array<uint32_t, LOD_COUNT> plantsPerLod{}; // fading plants count at both LODs
     std::array<uint32_t, DRAW_CLASS_COUNT> draws{}; // indirect commands per class
     uint64_t triangles = 0;                         // colour pass, plants only
+    // The sun's shadow map (zero with shadows off): plants drawn into this
+    // frame's map on top of the cache, per LOD; impostors the cache holds
+    // (as last drawn); times this renderer has drawn the cache.
+    std::array<uint32_t, LOD_COUNT> shadowCastersPerLod{};
+    uint32_t shadowCacheCasters = 0;
+    uint64_t shadowCacheRenders = 0;
 
     // Entries of every visible list: a fading plant counts twice.
     uint32_t visibleEntries() const;
@@ -122,10 +130,20 @@ private:
     ImpostorAtlas atlas_;
     ShadowMap shadow_;
     CullPass cull_;
+    CullPass shadowCacheCasters_, shadowFrameCasters_; // CullKind::ShadowCasters: SHADOW_CULL_CACHE, _FRAME
     FieldMotion motion_;
 
-    VkDescriptorSet drawSet_ = VK_NULL_HANDLE;  // visible = the cull pass's lists
-    VkDescriptorSet naiveSet_ = VK_NULL_HANDLE; // visible = naiveVisible_
+    // The shadow cache (setView): what it holds, whether this frame draws it
+    // again, where the frame's map starts in it, how often it was drawn.
+    ShadowView shadowCache_;
+    bool drawShadowCache_ = false;
+    glm::ivec2 shadowWindow_{0};
+    uint64_t shadowCacheRenders_ = 0;
+
+    VkDescriptorSet drawSet_ = VK_NULL_HANDLE;        // visible = the cull pass's lists
+    VkDescriptorSet naiveSet_ = VK_NULL_HANDLE;       // visible = naiveVisible_
+    VkDescriptorSet shadowCacheSet_ = VK_NULL_HANDLE; // visible = shadowCacheCasters_'s lists
+    VkDescriptorSet shadowFrameSet_ = VK_NULL_HANDLE; // visible = shadowFrameCasters_'s lists
     VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
     Pipelines pipelines_;
 
@@ -133,7 +151,13 @@ private:
     void uploadInstances();
     void createDescriptors();
     void createPipelines();
-    void recordShadowPass(VkCommandBuffer cmd, bool naive) const;
+    void planShadows(const FieldView& view, const glm::vec3& sun, VkExtent2D extent, const glm::mat4& cameraViewProj,
+                     gpu::FieldFrame& field);
+    void recordShadowCache(VkCommandBuffer cmd) const;
+    void recordShadowPass(VkCommandBuffer cmd) const;
+    void recordNaiveShadowPass(VkCommandBuffer cmd) const;
+    void pushFieldPass(VkCommandBuffer cmd, uint32_t pass) const;
+    void drawShadowCasters(VkCommandBuffer cmd, const CullPass& casters, VkDescriptorSet set, uint32_t pass) const;
     void recordColourPass(VkCommandBuffer cmd, const RenderTarget& target, bool naive, GpuTimer* timer) const;
     void drawPlantsNaive(VkCommandBuffer cmd, bool bark, bool foliage) const;
 };

@@ -7,15 +7,46 @@
 #include <cmath>
 
 namespace pf {
+namespace {
 
-ShadowMap createShadowMap(GpuResources& owner, uint32_t size) {
+constexpr VkPipelineStageFlags2 kDepthStages =
+    VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+constexpr VkAccessFlags2 kDepthAccess =
+    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+
+// Depth-only rendering into `image` (size² texels, DEPTH_ATTACHMENT_OPTIMAL),
+// cleared to 1 or keeping what it holds.
+void beginDepthRendering(VkCommandBuffer cmd, const Image& image, uint32_t size, VkAttachmentLoadOp load) {
+    VkRenderingAttachmentInfo depth = clearedDepthAttachment(image.view, VK_ATTACHMENT_STORE_OP_STORE);
+    depth.loadOp = load;
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {size, size}};
+    rendering.layerCount = 1;
+    rendering.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &rendering);
+
+    const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, {size, size}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+} // namespace
+
+ShadowMap createShadowMap(GpuResources& owner, uint32_t size, uint32_t cacheMargin) {
     ShadowMap map;
     map.size = size;
+    map.cacheSize = size + 2 * cacheMargin;
     map.depth = createImage(owner, {.extent = {size, size},
                                     .format = kShadowFormat,
                                     .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                              VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                     .aspect = VK_IMAGE_ASPECT_DEPTH_BIT});
+    map.cache =
+        createImage(owner, {.extent = {map.cacheSize, map.cacheSize},
+                            .format = kShadowFormat,
+                            .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                            .aspect = VK_IMAGE_ASPECT_DEPTH_BIT});
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     info.magFilter = info.minFilter = VK_FILTER_LINEAR;
     info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
@@ -27,7 +58,8 @@ ShadowMap createShadowMap(GpuResources& owner, uint32_t size) {
     map.sampler = createSampler(owner, info);
 
     // Sampled before the first shadow pass (e.g. a frame with shadows off):
-    // start in the layout the shaders read, cleared to "lit".
+    // start in the layout the shaders read, cleared to "lit". The cache needs
+    // nothing: it is drawn before the first copy out of it.
     submitAndWait(owner.ctx(), [&](VkCommandBuffer cmd) {
         imageBarrier(cmd, map.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT,
                      {VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -43,41 +75,85 @@ ShadowMap createShadowMap(GpuResources& owner, uint32_t size) {
     return map;
 }
 
-glm::mat4 sunViewProjection(const glm::vec3& sunDirection, const glm::vec3& focus, float radius, float depthRadius,
-                            uint32_t mapSize) {
+SunSquare sunSquareAround(const glm::vec3& sunDirection, const glm::vec3& focus, float radius, uint32_t texels) {
+    SunSquare square;
     const glm::vec3 up = std::abs(sunDirection.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-    const glm::mat4 view = glm::lookAtRH(glm::vec3(0.0f), -sunDirection, up);
-    // Snap the focus, seen from the sun, to the texel grid.
-    const float texel = 2.0f * radius / float(mapSize);
-    glm::vec3 centre = glm::vec3(view * glm::vec4(focus, 1.0f));
-    centre.x = std::floor(centre.x / texel) * texel;
-    centre.y = std::floor(centre.y / texel) * texel;
-    // View space looks down -z: near and far are distances along it.
-    const glm::mat4 proj = glm::orthoRH_ZO(centre.x - radius, centre.x + radius, centre.y - radius, centre.y + radius,
-                                           -centre.z - depthRadius, -centre.z + depthRadius);
-    return proj * view;
+    square.view = glm::lookAtRH(glm::vec3(0.0f), -sunDirection, up);
+    square.texels = texels;
+    square.texel = 2.0f * radius / float(texels);
+    // The focus, seen from the sun, snapped to the texel grid.
+    const glm::vec3 centre = glm::vec3(square.view * glm::vec4(focus, 1.0f));
+    const glm::ivec2 half(int(texels / 2));
+    square.origin =
+        glm::ivec2(int(std::floor(centre.x / square.texel)), int(std::floor(centre.y / square.texel))) - half;
+    // View space looks down -z: depths are distances along it.
+    square.depth = -centre.z;
+    return square;
+}
+
+SunSquare grownSquare(const SunSquare& square, uint32_t margin) {
+    SunSquare grown = square;
+    grown.origin -= glm::ivec2(int(margin));
+    grown.texels += 2 * margin;
+    return grown;
+}
+
+bool squareContains(const SunSquare& outer, const SunSquare& inner) {
+    const glm::ivec2 start = inner.origin - outer.origin;
+    const int room = int(outer.texels) - int(inner.texels);
+    return start.x >= 0 && start.y >= 0 && start.x <= room && start.y <= room;
+}
+
+glm::mat4 sunViewProjection(const SunSquare& square, float depthRadius) {
+    const glm::vec2 low = glm::vec2(square.origin) * square.texel;
+    const glm::vec2 high = glm::vec2(square.origin + glm::ivec2(int(square.texels))) * square.texel;
+    const glm::mat4 proj =
+        glm::orthoRH_ZO(low.x, high.x, low.y, high.y, square.depth - depthRadius, square.depth + depthRadius);
+    return proj * square.view;
 }
 
 void beginShadowPass(VkCommandBuffer cmd, const ShadowMap& map) {
     // The previous frame's fragment shaders read the map; this pass overwrites it.
-    const VkPipelineStageFlags2 depthStages =
-        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
     imageBarrier(cmd, map.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT,
-                 {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0, depthStages,
-                  VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                  VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
+                 {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0, kDepthStages, kDepthAccess, VK_IMAGE_LAYOUT_UNDEFINED,
+                  VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
+    beginDepthRendering(cmd, map.depth, map.size, VK_ATTACHMENT_LOAD_OP_CLEAR);
+}
 
-    const VkRenderingAttachmentInfo depth = clearedDepthAttachment(map.depth.view, VK_ATTACHMENT_STORE_OP_STORE);
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {map.size, map.size}};
-    rendering.layerCount = 1;
-    rendering.pDepthAttachment = &depth;
-    vkCmdBeginRendering(cmd, &rendering);
+void beginShadowCachePass(VkCommandBuffer cmd, const ShadowMap& map) {
+    // Earlier frames copied out of the cache; this pass overwrites it.
+    imageBarrier(cmd, map.cache.image, VK_IMAGE_ASPECT_DEPTH_BIT,
+                 {VK_PIPELINE_STAGE_2_COPY_BIT, 0, kDepthStages, kDepthAccess, VK_IMAGE_LAYOUT_UNDEFINED,
+                  VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
+    beginDepthRendering(cmd, map.cache, map.cacheSize, VK_ATTACHMENT_LOAD_OP_CLEAR);
+}
 
-    const VkViewport viewport{0.0f, 0.0f, float(map.size), float(map.size), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, {map.size, map.size}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+void beginShadowPassFromCache(VkCommandBuffer cmd, const ShadowMap& map, glm::ivec2 offset) {
+    // The previous frame's fragment shaders read the map; the copy overwrites it.
+    imageBarrier(cmd, map.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT,
+                 {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_2_COPY_BIT,
+                  VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL});
+    VkImageCopy region{};
+    region.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+    region.srcOffset = {offset.x, offset.y, 0};
+    region.dstSubresource = region.srcSubresource;
+    region.extent = {map.size, map.size, 1};
+    vkCmdCopyImage(cmd, map.cache.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, map.depth.image,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    // The frame's casters are depth-tested against the copied depth and written over it.
+    imageBarrier(cmd, map.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT,
+                 {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, kDepthStages, kDepthAccess,
+                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
+    beginDepthRendering(cmd, map.depth, map.size, VK_ATTACHMENT_LOAD_OP_LOAD);
+}
+
+void endShadowCachePass(VkCommandBuffer cmd, const ShadowMap& map) {
+    vkCmdEndRendering(cmd);
+    // This frame's copy, and those of the frames after it, read what the pass wrote.
+    imageBarrier(cmd, map.cache.image, VK_IMAGE_ASPECT_DEPTH_BIT,
+                 {VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL});
 }
 
 void endShadowPass(VkCommandBuffer cmd, const ShadowMap& map) {

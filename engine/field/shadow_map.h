@@ -1,7 +1,9 @@
 // The sun's shadow map: one orthographic depth map over the part of the
-// field near the camera, drawn in the frame's shadow pass (after the cull
-// pass) from the same indirect lists as the colour pass, and sampled with
-// hardware depth comparison.
+// field near the camera, sampled with hardware depth comparison. Each frame
+// it starts as its window of the cache — a larger map of the static casters
+// on the same texel grid, drawn only when the frame moves out of it
+// (shadow_cache.h) — and the frame's own casters are drawn on top of it
+// (shadow_casters.h).
 #pragma once
 
 #include "engine/vk/resources.h"
@@ -13,25 +15,51 @@ namespace pf {
 constexpr VkFormat kShadowFormat = VK_FORMAT_D32_SFLOAT;
 
 struct ShadowMap {
-    Image depth;
+    Image depth;                        // the frame's map, size² texels, sampled by the colour pass
+    Image cache;                        // the static casters, cacheSize² texels, copied from
     VkSampler sampler = VK_NULL_HANDLE; // compare LESS_OR_EQUAL, linear (2×2 PCF per tap), white border
     uint32_t size = 0;
+    uint32_t cacheSize = 0;
 };
 
-// The image and sampler are owned by `owner`.
-ShadowMap createShadowMap(GpuResources& owner, uint32_t size);
+// The images and sampler are owned by `owner`; the cache is `cacheMargin`
+// texels wider than the map on every side.
+ShadowMap createShadowMap(GpuResources& owner, uint32_t size, uint32_t cacheMargin);
 
-// An orthographic view along the sun over a square of half-size `radius`
-// around `focus`, `depthRadius` metres deep either side of it. Its origin is
-// snapped to whole texels so the shadows of still plants do not crawl while
-// the camera moves.
-glm::mat4 sunViewProjection(const glm::vec3& sunDirection, const glm::vec3& focus, float radius, float depthRadius,
-                            uint32_t mapSize);
+// A square of the sun's texel grid: the orthographic view along the sun
+// whose texels are `texel` metres wide, cut into whole texels, and the depth
+// its range is centred on.
+struct SunSquare {
+    glm::mat4 view{1.0f}; // world → sun view space, looking along −sunDirection
+    glm::ivec2 origin{0}; // the square's first texel (lowest x and y) on the grid
+    uint32_t texels = 0;  // on a side
+    float texel = 0.0f;   // metres
+    float depth = 0.0f;   // distance along the view to the plane the depth range is centred on
+};
 
-// Begins depth-only rendering into the map (cleared to 1) with an ordinary
-// (positive-height) viewport, after the previous frame's reads of it.
+// The square of `texels` texels, 2·radius metres wide, around `focus`. Its
+// origin is snapped to whole texels so the shadows of still plants do not
+// crawl while the camera moves.
+SunSquare sunSquareAround(const glm::vec3& sunDirection, const glm::vec3& focus, float radius, uint32_t texels);
+// `square` grown by `margin` texels on every side: the same grid and depth.
+SunSquare grownSquare(const SunSquare& square, uint32_t margin);
+// True when `inner` lies inside `outer`, both on the same grid.
+bool squareContains(const SunSquare& outer, const SunSquare& inner);
+// The orthographic view-projection of `square`, `depthRadius` metres deep
+// either side of its depth.
+glm::mat4 sunViewProjection(const SunSquare& square, float depthRadius);
+
+// Depth-only rendering starts with an ordinary (positive-height) viewport:
+// into the frame's map cleared to 1, after the previous frame's reads of it;
 void beginShadowPass(VkCommandBuffer cmd, const ShadowMap& map);
-// Ends it and makes the depth readable by the fragment shaders that follow.
+// into the cache cleared to 1, after the copies out of it;
+void beginShadowCachePass(VkCommandBuffer cmd, const ShadowMap& map);
+// or into the frame's map after copying into it the cache's window that
+// starts `offset` texels into the cache.
+void beginShadowPassFromCache(VkCommandBuffer cmd, const ShadowMap& map, glm::ivec2 offset);
+// Ends the cache's pass and makes it the source of the copies.
+void endShadowCachePass(VkCommandBuffer cmd, const ShadowMap& map);
+// Ends the frame's pass and makes its depth readable by the fragment shaders that follow.
 void endShadowPass(VkCommandBuffer cmd, const ShadowMap& map);
 
 } // namespace pf

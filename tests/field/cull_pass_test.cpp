@@ -1,7 +1,7 @@
 // The cull + LOD compute pass (engine/field/cull_pass.h) against its CPU reference
 // cullOnCpu, on synthetic models and random fields; every GPU test runs with
 // the validation layer on.
-#include "engine/field/cull_pass.h"
+#include "cull_fixture.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/target_pass.h"
 #include "engine/vk/vk_check.h"
@@ -11,8 +11,6 @@
 #include "shaders/sky_frag.spv.h"
 #include "shaders/sky_vert.spv.h"
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,225 +19,36 @@
 #include <random>
 #include <set>
 
-namespace pf {
+namespace pf::test {
 namespace {
-
-constexpr uint32_t kModels = 4;
-constexpr float kFovY = 1.0471976f; // 60°
-constexpr uint32_t kViewportHeight = 1080;
-constexpr float kFadeSeconds = 0.25f;
-
-struct View {
-    glm::vec3 position;
-    glm::vec3 target;
-};
-
-glm::mat4 viewProj(const View& v) {
-    const glm::mat4 proj = glm::perspectiveRH_ZO(kFovY, 16.0f / 9.0f, 0.1f, 1000.0f);
-    return proj * glm::lookAtRH(v.position, v.target, glm::vec3(0, 1, 0));
-}
 
 gpu::CullUniforms uniformsFor(const View& v, float dt, bool first, uint32_t forced = LOD_NOT_FORCED) {
     return makeCullUniforms(viewProj(v), v.position, kFovY, kViewportHeight, dt, first, forced);
 }
 
-// Synthetic species: spheres of different sizes and offsets, LOD0 above
-// 200 px, LOD1 above 40 px, 10 % hysteresis, a quarter-second fade.
-std::vector<gpu::PlantModel> makeModels() {
-    std::vector<gpu::PlantModel> models(kModels);
-    for (uint32_t m = 0; m < kModels; ++m) {
-        const float r = 1.0f + 0.7f * float(m);
-        models[m].sphere = glm::vec4(0.3f * float(m), r, -0.2f * float(m), r);
-        models[m].boxMin = glm::vec4(-r, 0, -r, 0);
-        models[m].boxMax = glm::vec4(r, 2 * r, r, 0);
-        models[m].lod = glm::vec4(200.0f, 40.0f, 0.1f, kFadeSeconds);
-    }
-    return models;
-}
-
-// Per model: LOD 0 and 1 have bark and foliage meshes, LOD 2 an impostor;
-// sorted by draw class.
-std::vector<gpu::DrawTemplate> makeTemplates(const std::vector<gpu::PlantModel>& models) {
-    std::vector<gpu::DrawTemplate> templates;
-    for (uint32_t drawClass = 0; drawClass < DRAW_CLASS_COUNT; ++drawClass)
-        for (uint32_t m = 0; m < models.size(); ++m)
-            for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) {
-                if ((lod == LOD_IMPOSTOR) != (drawClass == DRAW_IMPOSTOR)) continue;
-                gpu::DrawTemplate t{};
-                t.mesh = glm::uvec4(3 * (1 + m + 10 * lod + 100 * drawClass), 1000 * m + 100 * lod + 10 * drawClass,
-                                    64 * m + lod, drawClass);
-                t.list = glm::uvec4(m * LOD_COUNT + lod, models[m].lists[lod], 0, 0);
-                templates.push_back(t);
-            }
-    return templates;
-}
-
-gpu::FieldInstance makeInstance(glm::vec3 position, float yaw, float scale, uint32_t model) {
-    gpu::FieldInstance inst{};
-    inst.positionScale = glm::vec4(position, scale);
-    inst.orientation = glm::vec4(yaw, 0, 0, 0);
-    inst.ids = glm::uvec4(model, model, 0, 0);
-    return inst;
-}
-
-// True when float rounding (sin/cos, dot products on the GPU) could flip a
-// decision for this instance under these uniforms: the sphere within a hair
-// of a plane, or its projected height within a hair of a LOD boundary.
+// True when float rounding could flip a decision for this instance under
+// these uniforms: the sphere within a hair of a plane, or its projected
+// height within a hair of a LOD boundary.
 bool ambiguous(const gpu::FieldInstance& inst, const gpu::PlantModel& model, const gpu::CullUniforms& u) {
-    const double yaw = inst.orientation.x, c = std::cos(yaw), s = std::sin(yaw), scale = inst.positionScale.w;
-    const glm::dvec3 local = glm::dvec3(model.sphere) * scale;
-    const glm::dvec3 centre =
-        glm::dvec3(inst.positionScale) + glm::dvec3(c * local.x + s * local.z, local.y, -s * local.x + c * local.z);
-    const double radius = model.sphere.w * scale;
+    const ExactSphere s = exactSphere(inst, model);
     for (const glm::vec4& p : u.frustum)
-        if (std::abs(glm::dot(glm::dvec3(p), centre) + p.w + radius) < 1e-4 * (1.0 + glm::length(centre))) return true;
-    const double pixels = 2.0 * radius * u.camera.w / std::max(glm::distance(glm::dvec3(u.camera), centre), 0.001);
+        if (grazesPlane(s, p)) return true;
+    const double pixels = 2.0 * s.radius * u.camera.w / std::max(glm::distance(glm::dvec3(u.camera), s.centre), 0.001);
     const double h = model.lod.z;
     for (double threshold : {double(model.lod.x), double(model.lod.y)})
         for (double boundary : {threshold, threshold * (1 - h), threshold * (1 + h)})
-            if (std::abs(pixels - boundary) < 1e-4 * boundary) return true;
+            if (nearBoundary(pixels, boundary)) return true;
     return false;
 }
 
-// n instances in a disc of 300 m around the origin (the camera), none of them ambiguous
-// under any of `frames`.
+// n instances around the camera, none of them ambiguous under any of `frames`.
 std::vector<gpu::FieldInstance> makeField(uint32_t n, uint32_t seed, const std::vector<gpu::PlantModel>& models,
                                           const std::vector<gpu::CullUniforms>& frames) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    std::vector<gpu::FieldInstance> out;
-    out.reserve(n);
-    while (out.size() < n) {
-        // Denser toward the centre (density ∝ 1/r), so every LOD gets plants.
-        const float radius = 300.0f * unit(rng), angle = 6.2831853f * unit(rng);
-        const gpu::FieldInstance inst =
-            makeInstance(glm::vec3(radius * std::cos(angle), 0.5f * unit(rng), radius * std::sin(angle)),
-                         6.2831853f * unit(rng), 0.5f + unit(rng), uint32_t(unit(rng) * kModels) % kModels);
-        if (std::none_of(frames.begin(), frames.end(),
-                         [&](const gpu::CullUniforms& u) { return ambiguous(inst, models[inst.ids.x], u); }))
-            out.push_back(inst);
-    }
-    return out;
+    return randomInstances(n, seed, [&](const gpu::FieldInstance& inst) {
+        return std::none_of(frames.begin(), frames.end(),
+                            [&](const gpu::CullUniforms& u) { return ambiguous(inst, models[inst.ids.x], u); });
+    });
 }
-
-struct Field {
-    std::vector<gpu::FieldInstance> instances;
-    std::vector<gpu::PlantModel> models;
-    std::vector<gpu::DrawTemplate> templates;
-};
-
-Field layOut(std::vector<gpu::FieldInstance> instances, std::vector<gpu::PlantModel> models) {
-    Field f{std::move(instances), std::move(models), {}};
-    assignVisibleLists(f.models, f.instances);
-    f.templates = makeTemplates(f.models);
-    return f;
-}
-
-// What one GPU frame produced, read back.
-struct GpuFrame {
-    std::vector<std::vector<uint32_t>> lists; // [model · LOD_COUNT + lod], sorted
-    CullCounts counts;
-    std::vector<gpu::DrawCommand> commands;    // DRAW_CLASS_COUNT × templateCount
-    std::vector<gpu::DrawCommand> allCommands; // templateCount
-    std::vector<uint32_t> state;
-    double gpuMilliseconds = -1; // of recordCullPass, when the queue has timestamps
-};
-
-class CullPassTest : public test::GpuTest {
-protected:
-    void create(const Field& f) {
-        field = &f;
-        const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-        instances = createDeviceBufferWithData(resources, f.instances.data(),
-                                               f.instances.size() * sizeof(gpu::FieldInstance), storage);
-        models =
-            createDeviceBufferWithData(resources, f.models.data(), f.models.size() * sizeof(gpu::PlantModel), storage);
-        CullPassInputs inputs;
-        inputs.instances = &instances;
-        inputs.models = &models;
-        inputs.instanceCount = uint32_t(f.instances.size());
-        inputs.modelCount = uint32_t(f.models.size());
-        inputs.templates = f.templates;
-        pass = createCullPass(resources, inputs);
-        host = createHostBuffer(resources,
-                                pass.visible.size + pass.commands.size + pass.allCommands.size + pass.state.size,
-                                VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-        VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-        queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
-        queryInfo.queryCount = 2;
-        VK_CHECK(vkCreateQueryPool(ctx.device, &queryInfo, nullptr, &queries));
-    }
-
-    void TearDown() override {
-        if (ctx.device) vkDestroyQueryPool(ctx.device, queries, nullptr);
-        test::GpuTest::TearDown();
-    }
-
-    bool hasTimestamps() {
-        uint32_t n = 0;
-        vkGetPhysicalDeviceQueueFamilyProperties(ctx.physicalDevice, &n, nullptr);
-        std::vector<VkQueueFamilyProperties> families(n);
-        vkGetPhysicalDeviceQueueFamilyProperties(ctx.physicalDevice, &n, families.data());
-        return families[ctx.queueFamily].timestampValidBits > 0;
-    }
-
-    GpuFrame run(const gpu::CullUniforms& uniforms) {
-        setCullUniforms(pass, uniforms);
-        const bool timed = hasTimestamps();
-        const VkBufferCopy visibleRegion{0, 0, pass.visible.size};
-        const VkBufferCopy commandsRegion{0, visibleRegion.size, pass.commands.size};
-        const VkBufferCopy allRegion{0, commandsRegion.dstOffset + commandsRegion.size, pass.allCommands.size};
-        const VkBufferCopy stateRegion{0, allRegion.dstOffset + allRegion.size, pass.state.size};
-        submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-            if (timed) {
-                vkCmdResetQueryPool(cmd, queries, 0, 2);
-                vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries, 0);
-            }
-            recordCullPass(cmd, pass);
-            if (timed) vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries, 1);
-            // recordCullPass's last compute barrier already covers copies.
-            vkCmdCopyBuffer(cmd, pass.visible.buffer, host.buffer, 1, &visibleRegion);
-            vkCmdCopyBuffer(cmd, pass.commands.buffer, host.buffer, 1, &commandsRegion);
-            vkCmdCopyBuffer(cmd, pass.allCommands.buffer, host.buffer, 1, &allRegion);
-            vkCmdCopyBuffer(cmd, pass.state.buffer, host.buffer, 1, &stateRegion);
-            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                          VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
-        });
-
-        GpuFrame out;
-        out.counts = readCullCounts(pass);
-        const auto* bytes = static_cast<const uint8_t*>(host.mapped);
-        const auto* visible = reinterpret_cast<const uint32_t*>(bytes);
-        out.lists.resize(field->models.size() * LOD_COUNT);
-        for (uint32_t m = 0; m < field->models.size(); ++m)
-            for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) {
-                std::vector<uint32_t>& list = out.lists[m * LOD_COUNT + lod];
-                const uint32_t first = field->models[m].lists[lod];
-                list.assign(visible + first, visible + first + out.counts.perModelLod[m * LOD_COUNT + lod]);
-                std::sort(list.begin(), list.end());
-            }
-        const uint32_t templateCount = pass.templateCount;
-        out.commands.resize(size_t(DRAW_CLASS_COUNT) * templateCount);
-        std::memcpy(out.commands.data(), bytes + commandsRegion.dstOffset,
-                    out.commands.size() * sizeof(gpu::DrawCommand));
-        out.allCommands.resize(templateCount);
-        std::memcpy(out.allCommands.data(), bytes + allRegion.dstOffset, templateCount * sizeof(gpu::DrawCommand));
-        out.state.resize(pass.instanceCount);
-        std::memcpy(out.state.data(), bytes + stateRegion.dstOffset, pass.instanceCount * 4);
-        if (timed) {
-            uint64_t stamps[2];
-            VK_CHECK(vkGetQueryPoolResults(ctx.device, queries, 0, 2, sizeof(stamps), stamps, sizeof(uint64_t),
-                                           VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
-            out.gpuMilliseconds = double(stamps[1] - stamps[0]) * ctx.properties.limits.timestampPeriod * 1e-6;
-        }
-        return out;
-    }
-
-    const Field* field = nullptr;
-    Buffer instances, models, host;
-    CullPass pass;
-    VkQueryPool queries = VK_NULL_HANDLE;
-};
 
 const View kStart{{0.0f, 1.7f, 0.0f}, {0.0f, 1.7f, 1.0f}};
 const View kMoved{{3.0f, 1.9f, 6.0f}, {4.0f, 1.8f, 7.0f}};
@@ -566,4 +375,4 @@ TEST_F(CullPassTest, MillionInstancesRunWithoutValidationErrors) {
 }
 
 } // namespace
-} // namespace pf
+} // namespace pf::test

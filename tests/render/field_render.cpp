@@ -2,26 +2,37 @@
 
 namespace pf::test {
 
+FieldSequence::FieldSequence(const GpuContext& ctx, const std::string& scene, VkExtent2D size,
+                             const FieldRenderSettings& settings)
+    : ctx_(ctx), scene_(loadScene(std::string(PLANTFIELD_DATA_DIR) + "/scenes/" + scene)), size_(size) {
+    renderer_ = std::make_unique<FieldRenderer>(ctx, buildFieldContent(scene_), settings);
+    target_ = createRenderTarget(ctx, size, renderer_->antialiasing());
+}
+
+FieldSequence::~FieldSequence() {
+    destroyRenderTarget(target_);
+    renderer_.reset();
+}
+
+FieldShotResult FieldSequence::frame(const FieldView& view) {
+    renderer_->setView(view, size_);
+    FieldShotResult result;
+    result.image =
+        captureFrame(ctx_, target_, [&](VkCommandBuffer cmd, const RenderTarget& t) { renderer_->record(cmd, t); });
+    result.stats = renderer_->readStats();
+    return result;
+}
+
 FieldShotResult renderField(const GpuContext& ctx, const FieldShot& shot) {
-    const Scene scene = loadScene(std::string(PLANTFIELD_DATA_DIR) + "/scenes/" + shot.scene);
     FieldRenderSettings settings;
     settings.shadows = shot.shadows;
     settings.antialiasing = shot.antialiasing;
-    FieldShotResult result;
-    {
-        FieldRenderer renderer(ctx, buildFieldContent(scene), settings);
-        RenderTarget target = createRenderTarget(ctx, shot.size, renderer.antialiasing());
-        FieldView view;
-        view.camera = shot.camera.value_or(cameraAt(scene.camera, shot.time));
-        view.time = float(shot.time);
-        view.forcedLod = shot.forcedLod;
-        renderer.setView(view, shot.size);
-        result.image =
-            captureFrame(ctx, target, [&](VkCommandBuffer cmd, const RenderTarget& t) { renderer.record(cmd, t); });
-        result.stats = renderer.readStats();
-        destroyRenderTarget(target);
-    }
-    return result;
+    FieldSequence sequence(ctx, shot.scene, shot.size, settings);
+    FieldView view;
+    view.camera = shot.camera.value_or(cameraAt(sequence.scene().camera, shot.time));
+    view.time = float(shot.time);
+    view.forcedLod = shot.forcedLod;
+    return sequence.frame(view);
 }
 
 } // namespace pf::test

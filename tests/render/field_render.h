@@ -3,11 +3,17 @@
 
 #include "engine/field/field_renderer.h"
 #include "engine/vk/capture.h"
+#include "golden.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 
 namespace pf::test {
+
+// lavapipe gives the same pixels for the same driver; the tolerance absorbs
+// rounding differences between LLVM versions (stated in docs/TESTING.md).
+inline const ImageTolerance kFieldTolerance{6, 0.002};
 
 struct FieldShot {
     std::string scene; // file name in data/scenes
@@ -24,6 +30,27 @@ struct FieldShotResult {
     FieldFrameStats stats;
 };
 
+// One frame of a fresh renderer.
 FieldShotResult renderField(const GpuContext& ctx, const FieldShot& shot);
+
+// One renderer drawing frame after frame, as a window or a --frames sequence does.
+class FieldSequence {
+public:
+    FieldSequence(const GpuContext& ctx, const std::string& scene, VkExtent2D size,
+                  const FieldRenderSettings& settings = {});
+    ~FieldSequence();
+    FieldSequence(const FieldSequence&) = delete;
+    FieldSequence& operator=(const FieldSequence&) = delete;
+
+    FieldShotResult frame(const FieldView& view);
+    const Scene& scene() const { return scene_; }
+
+private:
+    const GpuContext& ctx_;
+    Scene scene_;
+    VkExtent2D size_;
+    std::unique_ptr<FieldRenderer> renderer_;
+    RenderTarget target_;
+};
 
 } // namespace pf::test

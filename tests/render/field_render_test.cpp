@@ -9,10 +9,6 @@
 namespace pf::test {
 namespace {
 
-// lavapipe gives the same pixels for the same driver; the tolerance absorbs
-// rounding differences between LLVM versions (stated in docs/TESTING.md).
-const ImageTolerance kFieldTolerance{6, 0.002};
-
 class FieldRenderTest : public GpuTest {};
 
 // t = 0 of the default path: 120 m out and 40 m up, the forest below.

@@ -136,7 +136,7 @@ TEST(PlantfieldCli, HelpListsEveryOption) {
     EXPECT_EQ(r.exitCode, 0);
     for (const char* flag :
          {"--capture", "--size", "--window", "--frames", "--time", "--device", "--validation", "--wind",
-          "--joint-budget", "--physics-check", "--instances", "--densify", "--aa", "--samples"})
+          "--joint-budget", "--physics-check", "--instances", "--densify", "--aa", "--samples", "--no-shadow-cache"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 
@@ -191,6 +191,22 @@ TEST(PlantfieldCli, JointBudgetOnTheCommandLineSetsTheSimulatedJoints) {
     EXPECT_GT(shared, 0u);
     EXPECT_GT(withNear, shared);
     EXPECT_LE(withNear - shared, 100000u);
+}
+
+// A sequence from a camera that barely moves draws the shadow map's static
+// casters once; --no-shadow-cache draws them every frame.
+TEST(PlantfieldCli, NoShadowCacheDrawsTheStaticCastersEveryFrame) {
+    auto cacheRenders = [](const std::string& flags) {
+        const fs::path dir = scratchDir("shadow_cache");
+        const CommandResult r = runCommand(kPlantfield + " --stats --size 64x36 --frames 3 --fps 1000 --out-dir " +
+                                           dir.string() + " " + flags);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        const size_t start = r.output.find('{');
+        if (start == std::string::npos) return uint64_t(0);
+        return nlohmann::json::parse(r.output.substr(start)).at("shadow").at("cache_renders").get<uint64_t>();
+    };
+    EXPECT_EQ(cacheRenders(""), 1u);
+    EXPECT_EQ(cacheRenders("--no-shadow-cache"), 3u);
 }
 
 TEST(PlantfieldCli, PhysicsCheckMatchesCpuReference) {

@@ -10,8 +10,10 @@ namespace pf {
 
 uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_t width, uint32_t height,
                              const Antialiasing& antialiasing) {
-    constexpr uint64_t kPerPlant = sizeof(gpu::FieldInstance) + LOD_COUNT * 4 + 4 + 4;
-    constexpr uint64_t kShadowMap = 2048ull * 2048 * 4;
+    // An instance, its visible entries in the camera's lists and in both
+    // shadow-caster passes' lists, its LOD state and its naive entry.
+    constexpr uint64_t kPerPlant = sizeof(gpu::FieldInstance) + 3 * LOD_COUNT * 4 + 4 + 4;
+    constexpr uint64_t kShadowMap = 2048ull * 2048 * 4; // the frame's map and the cache of static casters
     const uint64_t pixels = uint64_t(width) * height;
     const uint64_t samples = colourPassSamples(antialiasing);
     // The finished colour image and the depth, plus the image the colour pass

@@ -32,6 +32,11 @@ nlohmann::json statsJson(const PlantfieldOptions& o, const GpuContext& ctx, cons
     j["culled"] = stats.culled();
     for (uint32_t c = 0; c < DRAW_CLASS_COUNT; ++c) j["draws"][kDrawClassNames[c]] = stats.draws[c];
     j["triangles"] = stats.triangles;
+    nlohmann::json& shadow = j["shadow"];
+    for (uint32_t lod = 0; lod < LOD_COUNT; ++lod)
+        shadow["casters_per_lod"][kLodNames[lod]] = stats.shadowCastersPerLod[lod];
+    shadow["cache_casters"] = stats.shadowCacheCasters;
+    shadow["cache_renders"] = stats.shadowCacheRenders;
     j["joints_simulated"] = renderer.simulatedJoints();
     j["indirect_count"] = ctx.drawIndirectCount;
     nlohmann::json ms = nlohmann::json::object();

@@ -128,6 +128,9 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_option("--lod", o.forcedLod, "Draw every visible plant at this LOD: 0 full, 1 reduced, 2 impostor")
         ->check(CLI::Range(0, 2));
     app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
+    app.add_flag("!--no-shadow-cache", o.shadowCache,
+                 "Draw the shadow map's static casters again every frame instead of keeping them while the camera "
+                 "stays near");
     app.add_option("--device", o.deviceName, "Use the Vulkan device whose name contains this text");
     app.add_flag("--list-devices", o.listDevices, "List the Vulkan devices and exit");
     app.add_flag("--validation,!--no-validation", o.validation,

@@ -60,6 +60,7 @@ struct PlantfieldOptions {
     std::optional<float> windDirectionDegrees; // and direction, clockwise from north (-z) toward +x
     std::optional<uint32_t> jointBudget;       // replaces the scene's physics.joint_budget
     bool shadows = true;
+    bool shadowCache = true; // false: every frame draws its static shadow casters again
     std::string deviceName;
     bool listDevices = false;
     bool validation = false;

@@ -1,0 +1,41 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "shadow_select.h"
+
+// The sun's shadow casters (shadow_select.h): one invocation per field
+// instance appends it, at full coverage, to the visible list of the LOD it
+// casts from in this pass, the cache's or the frame's (counts.w). The
+// layout is the cull pass's (CULL_BINDING_*), without the LOD state, so
+// build_draws.comp turns the lists into indirect draws as it does for the
+// camera's.
+layout(local_size_x = CULL_GROUP_SIZE) in;
+
+layout(set = 0, binding = CULL_BINDING_UNIFORMS, std140) uniform ShadowCullBlock {
+    ShadowCullUniforms cull;
+};
+layout(set = 0, binding = CULL_BINDING_INSTANCES, std430) readonly buffer Instances {
+    FieldInstance instances[];
+};
+layout(set = 0, binding = CULL_BINDING_MODELS, std430) readonly buffer Models {
+    PlantModel models[];
+};
+layout(set = 0, binding = CULL_BINDING_COUNTS, std430) buffer Counts {
+    uint counts[];
+};
+layout(set = 0, binding = CULL_BINDING_VISIBLE, std430) writeonly buffer Visible {
+    uint visible[];
+};
+
+void main() {
+    // Two-dimensional dispatch past maxComputeWorkGroupCount[0] groups.
+    uint index = gl_WorkGroupID.y * gl_NumWorkGroups.x * CULL_GROUP_SIZE + gl_GlobalInvocationID.x;
+    if (index >= cull.counts.x) return;
+
+    FieldInstance inst = instances[index];
+    uint modelIndex = inst.ids.x;
+    PlantModel model = models[modelIndex];
+    uint lod = shadowCasterLod(inst, model, cull);
+    if (lod == SHADOW_NOT_CAST) return;
+    uint slot = atomicAdd(counts[modelIndex * LOD_COUNT + lod], 1u);
+    visible[model.lists[lod] + slot] = visibleEntry(index, 0u, VISIBLE_COVERAGE_MAX);
+}
