@@ -49,11 +49,24 @@ using uint = uint32_t;
 #define FIELD_MAX_INSTANCES (1u << VISIBLE_INDEX_BITS)
 
 // Per-instance LOD state: current LOD in bits 0-1, the LOD it fades from in
-// bits 2-3, fade progress 0..255 in bits 8-15 (255: settled, nothing to fade).
+// bits 2-3, fade progress 0..255 in bits 8-15 (255: settled, nothing to fade),
+// and bit 16 set when the plant was drawn in the previous frame (occlusion
+// culling: the early phase draws those again, docs/CULLING.md).
 #define LOD_STATE_LOD_BITS 2u
 #define LOD_STATE_LOD_MASK 3u
 #define LOD_STATE_PROGRESS_SHIFT 8u
 #define LOD_STATE_SETTLED 255u
+#define LOD_STATE_VISIBLE_BIT 0x10000u
+
+// The phases of the camera's cull (CullPush::phase). Without occlusion
+// culling one phase draws every plant in view; with it the early phase draws
+// the plants drawn last frame and the late phase, after the depth pyramid is
+// built from what the early phase drew, the other plants the pyramid does not
+// hide. Each phase has its own region of counters, commands and draw counts.
+#define CULL_PHASE_ALL 0u
+#define CULL_PHASE_EARLY 1u
+#define CULL_PHASE_LATE 2u
+#define CULL_PHASE_REGIONS 2u // ALL and EARLY share region 0, LATE has region 1
 
 #define CULL_GROUP_SIZE 64
 
@@ -97,6 +110,9 @@ using uint = uint32_t;
 #define CULL_BINDING_COMMANDS 7     // DrawCommand[] compacted, DRAW_CLASS_COUNT regions
 #define CULL_BINDING_DRAW_COUNTS 8  // uint[DRAW_CLASS_COUNT]
 #define CULL_BINDING_ALL_COMMANDS 9 // DrawCommand[] one per template, for the no-count fallback
+// The late phase reads the depth pyramid through a set of its own (set 1,
+// engine/vk/depth_pyramid.h), made with every render target.
+#define CULL_SET_PYRAMID 1
 
 // One plant of the field: 48 bytes, so a million fit in 48 MB.
 struct FieldInstance {
@@ -151,6 +167,14 @@ struct CullUniforms {
     vec4 camera;     // xyz position, w pixels per metre at one metre of distance (viewport height / (2 tan(fov/2)))
     uvec4 counts; // x instances, y templates, z forced LOD (0xFFFFFFFF: none), w 1 on the first frame (state is reset)
     vec4 timing;  // x seconds since the previous frame, yzw 0
+    mat4 view;    // world → view space (x right, y up, looking down −z): the late phase's occlusion test
+    vec4 projection; // x P[0][0], y P[1][1], z P[2][2], w P[3][2] of the camera's projection (depth 0 near, 1 far)
+    vec4 viewport;   // x width, y height (pixels), z near plane (m), w depth pyramid levels
+};
+
+// Push constants of cull.comp, cull_late.comp and build_draws.comp.
+struct CullPush {
+    uvec4 phase; // x CULL_PHASE_*, y counters of one region (models · LOD_COUNT), zw 0
 };
 
 // The shadow-caster pass (shadow_cull.comp, engine/field/shadow_casters.h):
@@ -204,7 +228,8 @@ static_assert(sizeof(gpu::FieldVertex) == FIELD_VERTEX_TEXELS * 16);
 static_assert(sizeof(gpu::TerrainVertex) == TERRAIN_VERTEX_TEXELS * 16);
 static_assert(sizeof(gpu::DrawTemplate) == 32);
 static_assert(sizeof(gpu::DrawCommand) == 20);
-static_assert(sizeof(gpu::CullUniforms) == 9 * 16);
+static_assert(sizeof(gpu::CullUniforms) == 15 * 16);
+static_assert(sizeof(gpu::CullPush) == 16);
 static_assert(sizeof(gpu::ShadowCullUniforms) == 17 * 16);
 static_assert(offsetof(gpu::ShadowCullUniforms, counts) == offsetof(gpu::CullUniforms, counts));
 static_assert(sizeof(gpu::FieldFrame) == 2 * 64 + 3 * 16);

@@ -1,10 +1,13 @@
 #include "engine/field/cull_pass.h"
 
+#include "engine/vk/depth_pyramid.h"
 #include "engine/vk/pipeline.h"
 #include "shaders/lod_select.h"
+#include "shaders/occlusion_test.h"
 
 #include "shaders/build_draws_comp.spv.h"
 #include "shaders/cull_comp.spv.h"
+#include "shaders/cull_late_comp.spv.h"
 #include "shaders/shadow_cull_comp.spv.h"
 
 #include <algorithm>
@@ -32,6 +35,12 @@ void writeCullUniforms(const CullPass& pass, Uniforms u) {
     u.counts.y = pass.templateCount;
     std::memcpy(pass.uniforms.mapped, &u, sizeof(u));
 }
+
+// Counters of one region: one per (model, LOD).
+VkDeviceSize countersPerRegion(const CullPass& pass) { return VkDeviceSize(pass.modelCount) * LOD_COUNT; }
+// Both regions and the late phase's count of occluded plants.
+VkDeviceSize counterWords(const CullPass& pass) { return CULL_PHASE_REGIONS * countersPerRegion(pass) + 1; }
+uint32_t regionOf(uint32_t phase) { return phase == CULL_PHASE_LATE ? 1u : 0u; }
 
 } // namespace
 
@@ -95,16 +104,17 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
         pass.templates = createDeviceBuffer(owner, 0, storage);
     pass.state = createDeviceBuffer(owner, camera ? VkDeviceSize(pass.instanceCount) * 4 : 0,
                                     storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-    pass.counts = createDeviceBuffer(owner, VkDeviceSize(pass.modelCount) * LOD_COUNT * 4,
-                                     storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    pass.counts = createDeviceBuffer(owner, counterWords(pass) * 4, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     // Written here, read by the draw shaders through a texel view.
     pass.visible = createDeviceBuffer(owner, VkDeviceSize(pass.instanceCount) * LOD_COUNT * 4,
                                       storage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-    pass.commands = createDeviceBuffer(
-        owner, VkDeviceSize(DRAW_CLASS_COUNT) * pass.templateCount * sizeof(gpu::DrawCommand), indirect);
-    pass.drawCounts = createDeviceBuffer(owner, DRAW_CLASS_COUNT * 4, indirect | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-    pass.allCommands = createDeviceBuffer(owner, VkDeviceSize(pass.templateCount) * sizeof(gpu::DrawCommand), indirect);
-    pass.readback = createHostBuffer(owner, (VkDeviceSize(pass.modelCount) * LOD_COUNT + DRAW_CLASS_COUNT) * 4,
+    const VkDeviceSize regions = CULL_PHASE_REGIONS;
+    pass.commands =
+        createDeviceBuffer(owner, regions * DRAW_CLASS_COUNT * pass.templateCount * sizeof(gpu::DrawCommand), indirect);
+    pass.drawCounts =
+        createDeviceBuffer(owner, regions * DRAW_CLASS_COUNT * 4, indirect | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    pass.allCommands = createDeviceBuffer(owner, regions * pass.templateCount * sizeof(gpu::DrawCommand), indirect);
+    pass.readback = createHostBuffer(owner, (counterWords(pass) + regions * DRAW_CLASS_COUNT) * 4,
                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 
     // Until a first frame resets it, every plant is settled at LOD 0.
@@ -128,10 +138,15 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
                                           storageBuffer(CULL_BINDING_COMMANDS, compute, pass.commands),
                                           storageBuffer(CULL_BINDING_DRAW_COUNTS, compute, pass.drawCounts),
                                           storageBuffer(CULL_BINDING_ALL_COMMANDS, compute, pass.allCommands)};
-    pass.set = createComputeSet(owner, bindings);
+    const VkDescriptorSetLayout pyramid = createDepthPyramidReadLayout(owner);
+    static_assert(CULL_SET_PYRAMID == 1, "the pyramid's set follows the pass's own");
+    pass.set = createComputeSet(owner, bindings, sizeof(gpu::CullPush),
+                                camera ? std::span<const VkDescriptorSetLayout>(&pyramid, 1)
+                                       : std::span<const VkDescriptorSetLayout>());
     const std::span<const uint32_t> cullShader =
         camera ? std::span<const uint32_t>(spirv_cull_comp) : std::span<const uint32_t>(spirv_shadow_cull_comp);
     pass.cullPipeline = createComputePipeline(owner, pass.set.pipelineLayout, cullShader);
+    if (camera) pass.latePipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_cull_late_comp);
     pass.buildDrawsPipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_build_draws_comp);
     return pass;
 }
@@ -151,16 +166,24 @@ gpu::CullUniforms makeCullUniforms(const glm::mat4& viewProj, const glm::vec3& c
     return u;
 }
 
+void setOcclusionUniforms(gpu::CullUniforms& u, const glm::mat4& view, const glm::mat4& projection, glm::uvec2 viewport,
+                          float nearPlane, uint32_t pyramidLevels) {
+    u.view = view;
+    u.projection = glm::vec4(projection[0][0], projection[1][1], projection[2][2], projection[3][2]);
+    u.viewport = glm::vec4(float(viewport.x), float(viewport.y), nearPlane, float(pyramidLevels));
+}
+
 void setCullUniforms(const CullPass& pass, const gpu::CullUniforms& uniforms) { writeCullUniforms(pass, uniforms); }
 
 void setCullUniforms(const CullPass& pass, const gpu::ShadowCullUniforms& uniforms) {
     writeCullUniforms(pass, uniforms);
 }
 
-void recordCullPass(VkCommandBuffer cmd, const CullPass& pass) {
-    // The previous frame may still draw from commands and visible and copy
-    // counts (write-after-read: execution only), and its cull wrote the
-    // state this cull reads (read-after-write: make it visible).
+void recordCullPass(VkCommandBuffer cmd, const CullPass& pass, uint32_t phase, VkDescriptorSet pyramid) {
+    // The previous frame (or this frame's early phase) may still draw from
+    // commands and visible and copy counts (write-after-read: execution
+    // only), and the previous cull wrote the state and counts this cull
+    // reads (read-after-write: make them visible).
     memoryBarrier(cmd,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT |
                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
@@ -168,16 +191,26 @@ void recordCullPass(VkCommandBuffer cmd, const CullPass& pass) {
                   VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
-    vkCmdFillBuffer(cmd, pass.counts.buffer, 0, VK_WHOLE_SIZE, 0);
-    vkCmdFillBuffer(cmd, pass.drawCounts.buffer, 0, VK_WHOLE_SIZE, 0);
-    // Both shaders increment the zeroed counters with atomics. (Fills are
-    // transfer-stage work; layers disagree on CLEAR vs COPY, TRANSFER is both.)
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    // The late phase counts on from the early phase's counters and appends
+    // after its entries: only the first phase of a frame clears them.
+    if (phase != CULL_PHASE_LATE) {
+        vkCmdFillBuffer(cmd, pass.counts.buffer, 0, VK_WHOLE_SIZE, 0);
+        vkCmdFillBuffer(cmd, pass.drawCounts.buffer, 0, VK_WHOLE_SIZE, 0);
+        // Both shaders increment the zeroed counters with atomics. (Fills are
+        // transfer-stage work; layers disagree on CLEAR vs COPY, TRANSFER is both.)
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    }
 
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.cullPipeline);
+    const gpu::CullPush push{glm::uvec4(phase, uint32_t(countersPerRegion(pass)), 0u, 0u)};
+    vkCmdPushConstants(cmd, pass.set.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE,
+                      phase == CULL_PHASE_LATE ? pass.latePipeline : pass.cullPipeline);
     bindComputeSet(cmd, pass.set);
+    if (phase == CULL_PHASE_LATE)
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.set.pipelineLayout, CULL_SET_PYRAMID, 1,
+                                &pyramid, 0, nullptr);
     vkCmdDispatch(cmd, pass.cullGroups.x, pass.cullGroups.y, 1);
     // build_draws reads the final per-list counts.
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
@@ -193,24 +226,28 @@ void recordCullPass(VkCommandBuffer cmd, const CullPass& pass) {
         VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
         VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT);
 
-    const VkBufferCopy countsRegion{0, 0, VkDeviceSize(pass.modelCount) * LOD_COUNT * 4};
-    if (countsRegion.size > 0) vkCmdCopyBuffer(cmd, pass.counts.buffer, pass.readback.buffer, 1, &countsRegion);
-    const VkBufferCopy drawCountsRegion{0, countsRegion.size, DRAW_CLASS_COUNT * 4};
+    // Every phase copies all counters: the frame's last phase leaves them final.
+    const VkBufferCopy countsRegion{0, 0, counterWords(pass) * 4};
+    vkCmdCopyBuffer(cmd, pass.counts.buffer, pass.readback.buffer, 1, &countsRegion);
+    const VkBufferCopy drawCountsRegion{0, countsRegion.size, CULL_PHASE_REGIONS * DRAW_CLASS_COUNT * 4};
     vkCmdCopyBuffer(cmd, pass.drawCounts.buffer, pass.readback.buffer, 1, &drawCountsRegion);
     // The host reads the counters after the frame's fence.
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
                   VK_ACCESS_2_HOST_READ_BIT);
 }
 
-void drawClassIndirect(VkCommandBuffer cmd, const GpuContext& ctx, const CullPass& pass, uint32_t drawClass) {
+void drawClassIndirect(VkCommandBuffer cmd, const GpuContext& ctx, const CullPass& pass, uint32_t drawClass,
+                       uint32_t phase) {
     const uint32_t stride = sizeof(gpu::DrawCommand);
+    const VkDeviceSize region = regionOf(phase);
     if (ctx.drawIndirectCount) {
-        vkCmdDrawIndexedIndirectCount(cmd, pass.commands.buffer, VkDeviceSize(drawClass) * pass.templateCount * stride,
-                                      pass.drawCounts.buffer, VkDeviceSize(drawClass) * 4, pass.templateCount, stride);
+        const VkDeviceSize list = region * DRAW_CLASS_COUNT + drawClass;
+        vkCmdDrawIndexedIndirectCount(cmd, pass.commands.buffer, list * pass.templateCount * stride,
+                                      pass.drawCounts.buffer, list * 4, pass.templateCount, stride);
         return;
     }
     const uint32_t count = pass.templatesPerClass[drawClass];
-    const VkDeviceSize first = VkDeviceSize(pass.firstTemplateOfClass[drawClass]) * stride;
+    const VkDeviceSize first = (region * pass.templateCount + pass.firstTemplateOfClass[drawClass]) * stride;
     if (count == 0) return;
     if (ctx.multiDrawIndirect) {
         vkCmdDrawIndexedIndirect(cmd, pass.allCommands.buffer, first, count, stride);
@@ -222,9 +259,14 @@ void drawClassIndirect(VkCommandBuffer cmd, const GpuContext& ctx, const CullPas
 
 CullCounts readCullCounts(const CullPass& pass) {
     const auto* words = static_cast<const uint32_t*>(pass.readback.mapped);
+    const size_t perRegion = countersPerRegion(pass);
+    const uint32_t* drawCounts = words + counterWords(pass);
     CullCounts out;
-    out.perModelLod.assign(words, words + size_t(pass.modelCount) * LOD_COUNT);
-    for (uint32_t c = 0; c < DRAW_CLASS_COUNT; ++c) out.drawsPerClass[c] = words[out.perModelLod.size() + c];
+    out.perModelLod.assign(words, words + perRegion);
+    for (size_t i = 0; i < perRegion; ++i) out.perModelLod[i] += words[perRegion + i];
+    out.occluded = words[CULL_PHASE_REGIONS * perRegion];
+    for (uint32_t c = 0; c < DRAW_CLASS_COUNT; ++c)
+        out.drawsPerClass[c] = drawCounts[c] + drawCounts[DRAW_CLASS_COUNT + c];
     for (size_t i = 0; i < out.perModelLod.size(); ++i) out.perLod[i % LOD_COUNT] += out.perModelLod[i];
     return out;
 }
@@ -259,6 +301,20 @@ CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span
     }
     for (std::vector<uint32_t>& list : out.lists) std::sort(list.begin(), list.end());
     return out;
+}
+
+bool sphereOccludedOnCpu(const glm::vec4& sphere, const gpu::CullUniforms& u,
+                         const std::vector<std::vector<float>>& pyramid) {
+    const glm::vec4 viewSphere(glm::vec3(u.view * glm::vec4(glm::vec3(sphere), 1.0f)), sphere.w);
+    if (gpu::sphereNearCamera(viewSphere, u.viewport.z)) return false;
+    const glm::uvec4 pixels =
+        gpu::rectPixels(gpu::sphereScreenRect(viewSphere, u.projection), glm::vec2(u.viewport.x, u.viewport.y));
+    const uint32_t level = gpu::pyramidLevel(pixels, uint32_t(u.viewport.w));
+    const glm::uvec4 t = pixels >> (level + 1u);
+    const uint32_t width = depthPyramidExtents({uint32_t(u.viewport.x), uint32_t(u.viewport.y)})[level].width;
+    auto at = [&](uint32_t x, uint32_t y) { return pyramid[level][size_t(y) * width + x]; };
+    const float farthest = std::max(std::max(at(t.x, t.y), at(t.z, t.y)), std::max(at(t.x, t.w), at(t.z, t.w)));
+    return !(gpu::sphereNearestDepth(viewSphere, u.projection) <= farthest);
 }
 
 } // namespace pf

@@ -49,20 +49,25 @@ struct CullPassInputs {
     std::span<const gpu::DrawTemplate> templates; // copied to the GPU at creation
 };
 
+// Each phase's buffers below are regions of CULL_PHASE_REGIONS: region 0
+// for CULL_PHASE_ALL and CULL_PHASE_EARLY, region 1 for CULL_PHASE_LATE.
 struct CullPass {
-    ComputeSet set; // CULL_BINDING_*: the uniforms, the inputs' buffers and the storage buffers below
+    ComputeSet set; // CULL_BINDING_*: the uniforms, the inputs' buffers and the storage buffers below; Camera: set 1
+                    // is a depth pyramid's readSet (createDepthPyramidReadLayout)
     VkPipeline cullPipeline = VK_NULL_HANDLE;
+    VkPipeline latePipeline = VK_NULL_HANDLE; // Camera: cull_late.comp
     VkPipeline buildDrawsPipeline = VK_NULL_HANDLE;
 
     Buffer uniforms;    // host-visible CullUniforms (ShadowCullUniforms for ShadowCasters)
     Buffer templates;   // DrawTemplate[]
     Buffer state;       // uint per instance: LOD state (field_layouts.h); one unused word for ShadowCasters
-    Buffer counts;      // uint per (model, LOD)
-    Buffer visible;     // uint entries: LOD lists of every model (LOD_COUNT × instanceCount)
-    Buffer commands;    // DrawCommand[DRAW_CLASS_COUNT × templateCount], class c's region starts at c × templateCount
-    Buffer drawCounts;  // uint[DRAW_CLASS_COUNT]
-    Buffer allCommands; // DrawCommand[templateCount] in template order (fallback path)
-    Buffer readback;    // host-visible copy of counts then drawCounts, written at the end of record()
+    Buffer counts;      // per region a uint per (model, LOD), then the plants the late phase found occluded
+    Buffer visible;     // uint entries: LOD lists of every model (LOD_COUNT × instanceCount); a list's late entries
+                        // follow its early ones
+    Buffer commands;    // per region DrawCommand[DRAW_CLASS_COUNT × templateCount], class c's at c × templateCount
+    Buffer drawCounts;  // per region uint[DRAW_CLASS_COUNT]
+    Buffer allCommands; // per region DrawCommand[templateCount] in template order (fallback path)
+    Buffer readback;    // host-visible copy of counts then drawCounts, written at the end of every recordCullPass
 
     uint32_t instanceCount = 0;
     uint32_t modelCount = 0;
@@ -81,32 +86,43 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs);
 float pixelsPerMetre(float fovYRadians, uint32_t viewportHeight);
 
 // Per frame, before record: frustum, camera, forced LOD, delta time.
-// `firstFrame` resets every instance's LOD state to settled at its target LOD.
-// counts.x and counts.y (instances, templates) are left 0: setCullUniforms
-// fills them from the pass.
+// `firstFrame` resets every instance's LOD state to settled at its target LOD
+// (and has the early phase draw nothing). counts.x and counts.y (instances,
+// templates) are left 0: setCullUniforms fills them from the pass.
 gpu::CullUniforms makeCullUniforms(const glm::mat4& viewProj, const glm::vec3& cameraPosition, float fovYRadians,
                                    uint32_t viewportHeight, float deltaSeconds, bool firstFrame,
                                    uint32_t forcedLod = 0xFFFFFFFFu);
+// What the late phase's occlusion test needs (CullUniforms::view, projection,
+// viewport): the camera's view and projection (perspectiveRH_ZO), the
+// viewport, its near plane and the levels of its depth pyramid.
+void setOcclusionUniforms(gpu::CullUniforms& uniforms, const glm::mat4& view, const glm::mat4& projection,
+                          glm::uvec2 viewport, float nearPlane, uint32_t pyramidLevels);
 void setCullUniforms(const CullPass& pass, const gpu::CullUniforms& uniforms);
 // The same for a CullKind::ShadowCasters pass (engine/field/shadow_casters.h makes them).
 void setCullUniforms(const CullPass& pass, const gpu::ShadowCullUniforms& uniforms);
 
-// Records: clear counters, cull (or pick shadow casters), build draws, copy counters to readback, and
-// the barriers that make the visible list readable by vertex shaders and the
-// commands by indirect draws.
-void recordCullPass(VkCommandBuffer cmd, const CullPass& pass);
+// Records one phase (CULL_PHASE_*; shadow casters: CULL_PHASE_ALL): clear
+// counters (ALL and EARLY clear both regions), cull (or pick shadow casters),
+// build draws, copy counters to readback, and the barriers that make the
+// visible list readable by vertex shaders and the commands by indirect draws.
+// CULL_PHASE_LATE reads `pyramid`, a depth pyramid's readSet built after the
+// early phase's draws (and after EARLY in the same command buffer).
+void recordCullPass(VkCommandBuffer cmd, const CullPass& pass, uint32_t phase = CULL_PHASE_ALL,
+                    VkDescriptorSet pyramid = VK_NULL_HANDLE);
 
-// Draws every command of one class: vkCmdDrawIndexedIndirectCount when the
-// device has it, otherwise vkCmdDrawIndexedIndirect over the class's
+// Draws every command of one class that a phase made: vkCmdDrawIndexedIndirectCount
+// when the device has it, otherwise vkCmdDrawIndexedIndirect over the class's
 // templates (empty ones draw nothing). The caller binds pipeline, index buffer
 // and descriptor sets.
-void drawClassIndirect(VkCommandBuffer cmd, const GpuContext& ctx, const CullPass& pass, uint32_t drawClass);
+void drawClassIndirect(VkCommandBuffer cmd, const GpuContext& ctx, const CullPass& pass, uint32_t drawClass,
+                       uint32_t phase = CULL_PHASE_ALL);
 
-// Counters of the last recorded frame (read after its fence).
+// Counters of the last recorded frame (read after its fence), both phases summed.
 struct CullCounts {
     std::vector<uint32_t> perModelLod;                      // [model · LOD_COUNT + lod] entries in that list
     std::array<uint32_t, DRAW_CLASS_COUNT> drawsPerClass{}; // commands written
     std::array<uint32_t, LOD_COUNT> perLod{};               // summed over models (fading plants count in both)
+    uint32_t occluded = 0; // in view and large enough to draw, hidden by the depth pyramid (the late phase)
 };
 CullCounts readCullCounts(const CullPass& pass);
 
@@ -117,5 +133,12 @@ struct CpuCullResult {
 };
 CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span<const gpu::PlantModel> models,
                         const gpu::CullUniforms& uniforms, std::vector<uint32_t>& state);
+
+// The late phase's occlusion test on the CPU (shaders/occlusion_test.h):
+// true when the world-space sphere (xyz centre, w radius) lies behind every
+// pixel of its screen rectangle in `pyramid` (depthPyramidOnCpu's levels),
+// with the uniforms' view, projection and viewport.
+bool sphereOccludedOnCpu(const glm::vec4& sphere, const gpu::CullUniforms& uniforms,
+                         const std::vector<std::vector<float>>& pyramid);
 
 } // namespace pf

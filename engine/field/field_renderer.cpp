@@ -1,5 +1,6 @@
 #include "engine/field/field_renderer.h"
 
+#include "engine/vk/depth_pyramid.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/gpu_timer.h"
 #include "engine/vk/pipeline.h"
@@ -278,13 +279,54 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     block.field.windDetail = glm::vec4(wind.windDetail.x, wind.windDetail.y, wind.wind.w, settings_.impostorSway);
     std::memcpy(uniforms_.mapped, &block, sizeof(block));
 
-    setCullUniforms(cull_, makeCullUniforms(block.frame.viewProj, view.camera.position,
-                                            glm::radians(view.camera.fovYDegrees), extent.height, view.deltaTime,
-                                            view.firstFrame, view.forcedLod.value_or(0xFFFFFFFFu)));
+    gpu::CullUniforms cull =
+        makeCullUniforms(block.frame.viewProj, view.camera.position, glm::radians(view.camera.fovYDegrees),
+                         extent.height, view.deltaTime, view.firstFrame, view.forcedLod.value_or(0xFFFFFFFFu));
+    const glm::uvec2 viewport(extent.width, extent.height);
+    setOcclusionUniforms(cull, viewMatrix(view.camera), projectionMatrix(view.camera, viewport), viewport,
+                         view.camera.nearPlane, uint32_t(depthPyramidExtents(extent).size()));
+    setCullUniforms(cull_, cull);
 }
 
 void FieldRenderer::pushFieldPass(VkCommandBuffer cmd, uint32_t pass) const {
     vkCmdPushConstants(cmd, pipelineLayout_, kDrawStages, 0, sizeof(pass), &pass);
+}
+
+// The plants a cull phase listed: bark, foliage, then impostors.
+void FieldRenderer::drawPlantLists(VkCommandBuffer cmd, uint32_t phase, GpuTimer* timer) const {
+    const bool late = phase == CULL_PHASE_LATE;
+    {
+        Timed scope(cmd, late ? nullptr : timer, "plants");
+        vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.bark);
+        drawClassIndirect(cmd, ctx_, cull_, DRAW_BARK, phase);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.foliage);
+        drawClassIndirect(cmd, ctx_, cull_, DRAW_FOLIAGE, phase);
+    }
+    {
+        Timed scope(cmd, late ? nullptr : timer, "impostors");
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.impostor);
+        drawClassIndirect(cmd, ctx_, cull_, DRAW_IMPOSTOR, phase);
+    }
+}
+
+// Between the colour pass's two parts: the depth pyramid of what the early
+// phase drew (the terrain the main occluder), the late cull against it, and
+// the plants it found visible drawn into the loaded colour and depth.
+void FieldRenderer::recordLatePhase(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const {
+    vkCmdEndRendering(cmd);
+    {
+        Timed scope(cmd, timer, "depth_pyramid");
+        recordDepthPyramid(cmd, target.pyramid);
+    }
+    {
+        Timed scope(cmd, timer, "occlusion");
+        recordCullPass(cmd, cull_, CULL_PHASE_LATE, target.pyramid.readSet);
+    }
+    Timed scope(cmd, timer, "late_draws");
+    beginTargetPass(cmd, target, TargetPassPart::last);
+    pushFieldPass(cmd, FIELD_PASS_COLOUR);
+    drawPlantLists(cmd, CULL_PHASE_LATE, timer);
 }
 
 void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& target, bool naive,
@@ -294,40 +336,42 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
     // inside it measure only their share of vertex work and binning there.
     // The FXAA pass (kAntialiasScope) is a rendering of its own after it.
     Timed pass(cmd, timer, "colour");
+    const bool twoParts = !naive && occlusion();
     const VkDescriptorSet set = naive ? naiveSet_ : drawSet_;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &set, 0, nullptr);
-    beginTargetPass(cmd, target);
+    beginTargetPass(cmd, target, twoParts ? TargetPassPart::first : TargetPassPart::whole);
     pushFieldPass(cmd, FIELD_PASS_COLOUR);
-    {
-        Timed scope(cmd, timer, "plants");
-        vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.bark);
-        if (naive)
+    if (naive) {
+        {
+            Timed scope(cmd, timer, "plants");
+            vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.bark);
             drawPlantsNaive(cmd, true, false);
-        else
-            drawClassIndirect(cmd, ctx_, cull_, DRAW_BARK);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.foliage);
-        if (naive)
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.foliage);
             drawPlantsNaive(cmd, false, true);
-        else
-            drawClassIndirect(cmd, ctx_, cull_, DRAW_FOLIAGE);
-    }
-    {
-        Timed scope(cmd, timer, "impostors");
-        if (!naive) {
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.impostor);
-            drawClassIndirect(cmd, ctx_, cull_, DRAW_IMPOSTOR);
         }
+        Timed scope(cmd, timer, "impostors"); // the naive baseline draws no impostors
+    } else {
+        drawPlantLists(cmd, twoParts ? CULL_PHASE_EARLY : CULL_PHASE_ALL, timer);
     }
     {
         Timed scope(cmd, timer, "terrain_sky");
         // Last, behind everything: only pixels no plant covers are shaded
         // (the depth test runs before these shaders, which never discard).
+        // With occlusion culling the terrain is the early phase's main
+        // occluder; the sky, drawn with it, writes no depth and is covered
+        // by what the late phase draws.
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.terrain);
         vkCmdBindIndexBuffer(cmd, terrainIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
         vkCmdDrawIndexed(cmd, terrainIndexCount_, 1, 0, 0, 0);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sky);
         vkCmdDraw(cmd, 3, 1, 0, 0);
+    }
+    if (twoParts) {
+        recordLatePhase(cmd, target, timer);
+    } else {
+        // Every frame has the same scopes.
+        for (const char* name : {"depth_pyramid", "occlusion", "late_draws"}) Timed scope(cmd, timer, name);
     }
     endTargetPass(cmd, target, timer);
 }
@@ -337,7 +381,7 @@ void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuT
     recordFieldMotion(cmd, motion_, timer);
     {
         Timed scope(cmd, timer, "cull");
-        recordCullPass(cmd, cull_);
+        recordCullPass(cmd, cull_, occlusion() ? CULL_PHASE_EARLY : CULL_PHASE_ALL);
     }
     {
         Timed scope(cmd, timer, "shadow");
@@ -394,6 +438,7 @@ FieldFrameStats FieldRenderer::readStats() const {
     stats.instances = uint32_t(content_.plants.size());
     stats.plantsPerLod = counts.perLod;
     stats.draws = counts.drawsPerClass;
+    stats.occluded = counts.occluded;
     if (settings_.shadows) {
         stats.shadowCastersPerLod = readCullCounts(shadowFrameCasters_).perLod;
         stats.shadowCacheCasters = readCullCounts(shadowCacheCasters_).perLod[LOD_IMPOSTOR];

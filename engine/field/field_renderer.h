@@ -33,6 +33,9 @@ struct FieldRenderSettings {
     ShadowCacheSettings shadowCache;
     float impostorSway = 0.04f; // metres an impostor's top leans per m/s of gust (times the plant's scale)
     ImpostorSettings impostors;
+    // Two-phase occlusion culling against the depth pyramid (docs/CULLING.md):
+    // plants hidden behind the terrain and nearer plants are not drawn.
+    bool occlusionCulling = true;
 };
 
 struct FieldView {
@@ -54,6 +57,8 @@ struct FieldFrameStats {
     std::array<uint32_t, LOD_COUNT> plantsPerLod{}; // fading plants count at both LODs
     std::array<uint32_t, DRAW_CLASS_COUNT> draws{}; // indirect commands per class
     uint64_t triangles = 0;                         // colour pass, plants only
+    uint32_t occluded =
+        0; // in view and large enough to draw, hidden by the depth pyramid (0 without occlusion culling)
     // The sun's shadow map (zero with shadows off): plants drawn into this
     // frame's map on top of the cache, per LOD; impostors the cache holds
     // (as last drawn); times this renderer has drawn the cache.
@@ -63,7 +68,7 @@ struct FieldFrameStats {
 
     // Entries of every visible list: a fading plant counts twice.
     uint32_t visibleEntries() const;
-    // Plants in no list: neither in view nor large enough to draw.
+    // Plants in no list: not in view, too small to draw, or occluded.
     uint32_t culled() const;
 };
 
@@ -71,10 +76,14 @@ struct FieldFrameStats {
 std::string plantsPerLodText(const FieldFrameStats& stats);
 
 // GPU timer scope names, in recording order. "colour" is the whole colour
-// pass, its anti-aliasing included, and the four after it are nested inside
-// it: three groups of draws, then the anti-aliasing (target_pass.h).
-inline constexpr const char* kFieldPasses[] = {"physics", "pose",      "cull",        "shadow",       "colour",
-                                               "plants",  "impostors", "terrain_sky", kAntialiasScope};
+// pass, its anti-aliasing included, and the scopes after it are nested
+// inside it: three groups of draws of the early phase (or of the one phase
+// without occlusion culling), the depth pyramid, the late cull with its
+// occlusion test, the late phase's draws, then the anti-aliasing
+// (target_pass.h). Without occlusion culling the three late scopes are empty.
+inline constexpr const char* kFieldPasses[] = {"physics",       "pose",      "cull",       "shadow",
+                                               "colour",        "plants",    "impostors",  "terrain_sky",
+                                               "depth_pyramid", "occlusion", "late_draws", kAntialiasScope};
 
 // True for the draw scopes recorded inside "colour" (those after it in
 // kFieldPasses): a frame's total adds only the others.
@@ -159,6 +168,9 @@ private:
     void pushFieldPass(VkCommandBuffer cmd, uint32_t pass) const;
     void drawShadowCasters(VkCommandBuffer cmd, const CullPass& casters, VkDescriptorSet set, uint32_t pass) const;
     void recordColourPass(VkCommandBuffer cmd, const RenderTarget& target, bool naive, GpuTimer* timer) const;
+    void drawPlantLists(VkCommandBuffer cmd, uint32_t phase, GpuTimer* timer) const;
+    void recordLatePhase(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const;
+    bool occlusion() const { return settings_.occlusionCulling; }
     void drawPlantsNaive(VkCommandBuffer cmd, bool bark, bool foliage) const;
 };
 

@@ -11,14 +11,16 @@ glm::vec3 sunDirection(const Environment& env) {
                                     -std::cos(azimuth) * std::cos(elevation)));
 }
 
-gpu::FrameUniforms makeFrameUniforms(const Camera& camera, const Environment& env, glm::uvec2 viewport, float time) {
-    const float aspect = float(viewport.x) / float(viewport.y);
-    const glm::mat4 view = glm::lookAtRH(camera.position, camera.target, glm::vec3(0, 1, 0));
-    const glm::mat4 proj =
-        glm::perspectiveRH_ZO(glm::radians(camera.fovYDegrees), aspect, camera.nearPlane, camera.farPlane);
+glm::mat4 viewMatrix(const Camera& camera) { return glm::lookAtRH(camera.position, camera.target, glm::vec3(0, 1, 0)); }
 
+glm::mat4 projectionMatrix(const Camera& camera, glm::uvec2 viewport) {
+    const float aspect = float(viewport.x) / float(viewport.y);
+    return glm::perspectiveRH_ZO(glm::radians(camera.fovYDegrees), aspect, camera.nearPlane, camera.farPlane);
+}
+
+gpu::FrameUniforms makeFrameUniforms(const Camera& camera, const Environment& env, glm::uvec2 viewport, float time) {
     gpu::FrameUniforms u{};
-    u.viewProj = proj * view;
+    u.viewProj = projectionMatrix(camera, viewport) * viewMatrix(camera);
     u.invViewProj = glm::inverse(u.viewProj);
     u.cameraPosition = glm::vec4(camera.position, time);
     u.sunDirection = glm::vec4(sunDirection(env), 0.0f);

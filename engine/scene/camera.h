@@ -29,6 +29,12 @@ struct Environment {
 // Unit vector toward the sun.
 glm::vec3 sunDirection(const Environment& env);
 
+// World → view space (right-handed, looking down −z).
+glm::mat4 viewMatrix(const Camera& camera);
+// Perspective for a viewport of `viewport` pixels (width, height): standard
+// depth, 0 at the near plane and 1 at the far plane (perspectiveRH_ZO).
+glm::mat4 projectionMatrix(const Camera& camera, glm::uvec2 viewport);
+
 // Projection for a viewport of `viewport` pixels (width, height) with negative
 // height (y up in clip space) and depth in [0, 1].
 gpu::FrameUniforms makeFrameUniforms(const Camera& camera, const Environment& env, glm::uvec2 viewport, float time);

@@ -2,11 +2,13 @@
 
 namespace pf {
 
-ComputeSet createComputeSet(GpuResources& owner, DescriptorTable table, uint32_t pushConstantBytes) {
+ComputeSet createComputeSet(GpuResources& owner, DescriptorTable table, uint32_t pushConstantBytes,
+                            std::span<const VkDescriptorSetLayout> laterSets) {
     ComputeSet set;
     set.setLayout = createSetLayout(owner, table);
-    set.pipelineLayout =
-        createPipelineLayout(owner, set.setLayout, {VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes});
+    std::vector<VkDescriptorSetLayout> layouts = {set.setLayout};
+    layouts.insert(layouts.end(), laterSets.begin(), laterSets.end());
+    set.pipelineLayout = createPipelineLayout(owner, layouts, {VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes});
     set.descriptorSet = createSet(owner, set.setLayout, table);
     return set;
 }

@@ -13,8 +13,11 @@ struct ComputeSet {
 };
 
 // Owned by `owner`. `pushConstantBytes` > 0: the compute stage's push
-// constant range from offset 0.
-ComputeSet createComputeSet(GpuResources& owner, DescriptorTable table, uint32_t pushConstantBytes = 0);
+// constant range from offset 0. `laterSets`: the layouts of sets 1, 2, …
+// the pipeline layout also has (sets the pass's user binds, such as a
+// render target's depth pyramid).
+ComputeSet createComputeSet(GpuResources& owner, DescriptorTable table, uint32_t pushConstantBytes = 0,
+                            std::span<const VkDescriptorSetLayout> laterSets = {});
 void bindComputeSet(VkCommandBuffer cmd, const ComputeSet& set);
 
 } // namespace pf

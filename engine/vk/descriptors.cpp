@@ -22,6 +22,12 @@ DescriptorBinding sampledImage(uint32_t binding, VkShaderStageFlags stages, VkSa
             VK_NULL_HANDLE, {sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
 }
 
+DescriptorBinding storageImage(uint32_t binding, VkShaderStageFlags stages, VkImageView view) {
+    return {binding,        VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+            stages,         VK_NULL_HANDLE,
+            VK_NULL_HANDLE, {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL}};
+}
+
 VkDescriptorSetLayout createSetLayout(GpuResources& owner, DescriptorTable table) {
     std::vector<VkDescriptorSetLayoutBinding> bindings;
     for (const DescriptorBinding& b : table) bindings.push_back({b.binding, b.type, 1, b.stages, nullptr});
@@ -65,9 +71,14 @@ VkDescriptorSet createSet(GpuResources& owner, VkDescriptorSetLayout layout, Des
 }
 
 VkPipelineLayout createPipelineLayout(GpuResources& owner, VkDescriptorSetLayout setLayout, VkPushConstantRange push) {
+    return createPipelineLayout(owner, std::span<const VkDescriptorSetLayout>(&setLayout, 1), push);
+}
+
+VkPipelineLayout createPipelineLayout(GpuResources& owner, std::span<const VkDescriptorSetLayout> setLayouts,
+                                      VkPushConstantRange push) {
     VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    info.setLayoutCount = 1;
-    info.pSetLayouts = &setLayout;
+    info.setLayoutCount = uint32_t(setLayouts.size());
+    info.pSetLayouts = setLayouts.data();
     info.pushConstantRangeCount = push.size > 0 ? 1 : 0;
     info.pPushConstantRanges = &push;
     VkPipelineLayout layout = VK_NULL_HANDLE;
@@ -89,7 +100,8 @@ void writeSet(VkDevice device, VkDescriptorSet set, DescriptorTable table) {
         w.descriptorType = b.type;
         switch (b.type) {
         case VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER: w.pTexelBufferView = &b.texelView; break;
-        case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER: w.pImageInfo = &b.image; break;
+        case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER:
+        case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: w.pImageInfo = &b.image; break;
         default:
             buffers[i] = {b.buffer, 0, VK_WHOLE_SIZE};
             w.pBufferInfo = &buffers[i];

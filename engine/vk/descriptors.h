@@ -28,6 +28,9 @@ DescriptorBinding texelBuffer(uint32_t binding, VkShaderStageFlags stages, VkBuf
 // A combined image sampler, read in SHADER_READ_ONLY_OPTIMAL.
 DescriptorBinding sampledImage(uint32_t binding, VkShaderStageFlags stages, VkSampler sampler, VkImageView view);
 
+// A storage image, read and written in GENERAL.
+DescriptorBinding storageImage(uint32_t binding, VkShaderStageFlags stages, VkImageView view);
+
 using DescriptorTable = std::span<const DescriptorBinding>;
 
 // What follows is owned by `owner`.
@@ -43,6 +46,9 @@ std::vector<VkDescriptorSet> createSets(GpuResources& owner, VkDescriptorSetLayo
 VkDescriptorSet createSet(GpuResources& owner, VkDescriptorSetLayout layout, DescriptorTable table);
 // A pipeline layout of one set and, when push.size > 0, one push constant range.
 VkPipelineLayout createPipelineLayout(GpuResources& owner, VkDescriptorSetLayout setLayout,
+                                      VkPushConstantRange push = {});
+// The same over sets 0, 1, … in order.
+VkPipelineLayout createPipelineLayout(GpuResources& owner, std::span<const VkDescriptorSetLayout> setLayouts,
                                       VkPushConstantRange push = {});
 
 // Writes every entry of the table into `set`.

@@ -26,12 +26,13 @@ RenderTarget createRenderTarget(const GpuContext& ctx, VkExtent2D extent, Antial
     target.extent = extent;
     target.antialiasing = supportedAntialiasing(ctx, antialiasing);
     target.samples = VkSampleCountFlagBits(colourPassSamples(target.antialiasing));
+    // Not transient: a colour pass drawn in two parts (occlusion culling)
+    // stores it between them.
     if (target.samples != VK_SAMPLE_COUNT_1_BIT)
-        target.msaaColor = createImage(
-            target.resources, {.extent = extent,
-                               .format = kColorFormat,
-                               .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                               .samples = target.samples});
+        target.msaaColor = createImage(target.resources, {.extent = extent,
+                                                          .format = kColorFormat,
+                                                          .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+                                                          .samples = target.samples});
     // The FXAA pass reads and writes these images' bytes through views of
     // another format (fxaa_pass.h).
     const bool fxaa = target.antialiasing.method == AntialiasMethod::fxaa;
@@ -48,11 +49,13 @@ RenderTarget createRenderTarget(const GpuContext& ctx, VkExtent2D extent, Antial
                                        .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                        .flags = fxaaViews});
     if (fxaa) target.fxaa = createFxaaPass(target.resources, target.fxaaInput, target.color);
-    target.depth = createImage(target.resources, {.extent = extent,
-                                                  .format = kDepthFormat,
-                                                  .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                                                  .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
-                                                  .samples = target.samples});
+    target.depth = createImage(target.resources,
+                               {.extent = extent,
+                                .format = kDepthFormat,
+                                .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
+                                .samples = target.samples});
+    target.pyramid = createDepthPyramid(target.resources, target.depth);
     return target;
 }
 

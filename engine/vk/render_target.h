@@ -7,6 +7,7 @@
 #pragma once
 
 #include "engine/vk/antialiasing.h"
+#include "engine/vk/depth_pyramid.h"
 #include "engine/vk/fxaa_pass.h"
 #include "engine/vk/resources.h"
 
@@ -20,11 +21,12 @@ struct RenderTarget {
     VkExtent2D extent{};
     Antialiasing antialiasing;                             // as made: supportedAntialiasing()
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT; // of the colour pass: its colour and depth
-    Image msaaColor; // msaa only: what the colour pass draws, resolved into `color`
-    Image fxaaInput; // fxaa only: what the colour pass draws, one sample, read by `fxaa`
-    FxaaPass fxaa;   // fxaa only: draws `color` from fxaaInput
-    Image color;     // the finished frame, TRANSFER_SRC_OPTIMAL after a frame
-    Image depth;
+    Image msaaColor;      // msaa only: what the colour pass draws, resolved into `color`
+    Image fxaaInput;      // fxaa only: what the colour pass draws, one sample, read by `fxaa`
+    FxaaPass fxaa;        // fxaa only: draws `color` from fxaaInput
+    Image color;          // the finished frame, TRANSFER_SRC_OPTIMAL after a frame
+    Image depth;          // sampled by the depth pyramid's reduction
+    DepthPyramid pyramid; // of `depth`, for occlusion culling (depth_pyramid.h)
 };
 
 // `wanted` with its MSAA sample count lowered to the most the device

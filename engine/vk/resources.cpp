@@ -128,6 +128,11 @@ VkImageView createImageView(GpuResources& owner, const Image& image, VkFormat fo
     return createView(owner, image.image, VK_IMAGE_VIEW_TYPE_2D, format, {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1});
 }
 
+VkImageView createMipView(GpuResources& owner, const Image& image, uint32_t mip) {
+    return createView(owner, image.image, VK_IMAGE_VIEW_TYPE_2D, image.format,
+                      {VK_IMAGE_ASPECT_COLOR_BIT, mip, 1, 0, 1});
+}
+
 VkSampler createSampler(GpuResources& owner, const VkSamplerCreateInfo& info) {
     VkSampler sampler = VK_NULL_HANDLE;
     VK_CHECK(vkCreateSampler(owner.ctx().device, &info, nullptr, &sampler));

@@ -56,6 +56,9 @@ Image createImage(GpuResources& owner, const ImageDesc& desc);
 // same texel size: the image was made with VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT.
 VkImageView createImageView(GpuResources& owner, const Image& image, VkFormat format);
 
+// A view of one mip level (first layer) of a colour image, in its format.
+VkImageView createMipView(GpuResources& owner, const Image& image, uint32_t mip);
+
 VkSampler createSampler(GpuResources& owner, const VkSamplerCreateInfo& info);
 
 // A primary command buffer from the context's pool.

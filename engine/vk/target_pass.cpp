@@ -14,13 +14,13 @@ VkRenderingAttachmentInfo clearedDepthAttachment(VkImageView view, VkAttachmentS
     return depth;
 }
 
-void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target) {
-    const bool msaa = target.samples != VK_SAMPLE_COUNT_1_BIT;
-    const Image& drawn = drawnColor(target);
+namespace {
 
-    // Previous contents are discarded (UNDEFINED): the colour image waits only
-    // for the last frame's copy or blit out of it, an MSAA or FXAA image for
-    // the last frame's writes and reads, depth for its last writes.
+// Previous contents are discarded (UNDEFINED): the colour image waits only
+// for the last frame's copy or blit out of it, an MSAA or FXAA image for
+// the last frame's writes and reads, depth for its last writes.
+void discardPreviousFrame(VkCommandBuffer cmd, const RenderTarget& target) {
+    const Image& drawn = drawnColor(target);
     imageBarrier(cmd, target.color.image, VK_IMAGE_ASPECT_COLOR_BIT,
                  {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -37,19 +37,41 @@ void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target) {
                  {depthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, depthStages,
                   VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                   VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
+}
+
+} // namespace
+
+void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target, TargetPassPart part) {
+    const bool msaa = target.samples != VK_SAMPLE_COUNT_1_BIT;
+    const bool load = part == TargetPassPart::last;
+    const bool resolve = msaa && part != TargetPassPart::first;
+    const Image& drawn = drawnColor(target);
+    // The last part's colour writes follow the first part's (its depth
+    // waits in recordDepthPyramid, which reads it in between).
+    if (load)
+        imageBarrier(cmd, drawn.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                     {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                      VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+    else
+        discardPreviousFrame(cmd, target);
 
     VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     color.imageView = drawn.view;
     color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    color.storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
+    color.loadOp = load ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
+    color.storeOp = resolve ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
     color.clearValue.color = {{0.0f, 0.0f, 0.0f, 1.0f}};
-    if (msaa) {
+    if (resolve) {
         color.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
         color.resolveImageView = target.color.view;
         color.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     }
-    const VkRenderingAttachmentInfo depth = clearedDepthAttachment(target.depth.view, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+    VkRenderingAttachmentInfo depth =
+        clearedDepthAttachment(target.depth.view, part == TargetPassPart::first ? VK_ATTACHMENT_STORE_OP_STORE
+                                                                                : VK_ATTACHMENT_STORE_OP_DONT_CARE);
+    if (load) depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
 
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
     rendering.renderArea = {{0, 0}, target.extent};

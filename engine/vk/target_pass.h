@@ -15,9 +15,19 @@ struct GpuTimer;
 // FXAA pass; empty with MSAA (resolved as the rendering ends) and none.
 inline constexpr const char* kAntialiasScope = "antialias";
 
+// Which part of the colour pass a rendering is: all of it, or the first or
+// last of two (occlusion culling draws the plants hidden last frame after
+// the depth pyramid of the first part is built, docs/CULLING.md).
+enum class TargetPassPart {
+    whole, // clears colour and depth; anti-aliased as it ends
+    first, // clears them and stores both for the last part
+    last,  // loads them; anti-aliased as it ends
+};
+
 // Begins dynamic rendering and sets a viewport with negative height, so
 // world and clip space stay y-up (pipeline.h: front faces are counter-clockwise).
-void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target);
+// A `first` part ends with vkCmdEndRendering, the others with endTargetPass.
+void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target, TargetPassPart part = TargetPassPart::whole);
 // A depth attachment in DEPTH_ATTACHMENT_OPTIMAL cleared to the far plane (1)
 // at the start of rendering; `store` keeps it (a shadow map) or drops it.
 VkRenderingAttachmentInfo clearedDepthAttachment(VkImageView view, VkAttachmentStoreOp store);

@@ -55,6 +55,7 @@ nlohmann::json frameJson(const PathTimes& t, const FieldFrameStats& stats) {
     j["plants_per_lod"] = nlohmann::json::object();
     for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) j["plants_per_lod"][kLodNames[lod]] = stats.plantsPerLod[lod];
     j["culled"] = stats.culled();
+    j["occluded"] = stats.occluded;
     j["triangles"] = stats.triangles;
     j["draws"] = nlohmann::json::object();
     for (uint32_t c = 0; c < DRAW_CLASS_COUNT; ++c) j["draws"][kDrawClassNames[c]] = stats.draws[c];
@@ -160,8 +161,9 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
         rows.push_back(row);
     }
     out << "plantbench: " << result.scenePath << " on " << result.device << ", " << o.width << "x" << o.height << ", "
-        << antialiasingText(o.antialiasing) << ", shadows " << (o.shadows ? "on" : "off") << ", median of " << o.frames
-        << " frames after " << o.warmup << " warm-up";
+        << antialiasingText(o.antialiasing) << ", shadows " << (o.shadows ? "on" : "off") << ", occlusion culling "
+        << (o.occlusionCulling ? "on" : "off") << ", median of " << o.frames << " frames after " << o.warmup
+        << " warm-up";
     if (o.pathTimes) out << ", the worst of " << *o.pathTimes << " times along the camera path";
     out << (o.densify ? ", counts densified on the scene's terrain" : ", counts at the scene's densities") << "\n";
     printTable(out, headers, rows);
@@ -184,6 +186,7 @@ nlohmann::json sweepJson(const PlantbenchOptions& o, const SweepResult& result) 
     j["antialiasing"] = antialiasMethodName(o.antialiasing.method);
     j["samples"] = colourPassSamples(o.antialiasing);
     j["shadows"] = o.shadows;
+    j["occlusion_culling"] = o.occlusionCulling;
     j["time"] = o.pathTimes ? nlohmann::json(nullptr) : nlohmann::json(o.time);
     j["path"] = o.pathTimes ? nlohmann::json(*o.pathTimes) : nlohmann::json(nullptr);
     j["count_mode"] = o.densify ? "densify" : "natural";

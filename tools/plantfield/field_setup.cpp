@@ -50,6 +50,7 @@ FieldRenderSettings renderSettings(const PlantfieldOptions& o) {
     FieldRenderSettings s;
     s.antialiasing = o.antialiasing;
     s.shadows = o.shadows;
+    s.occlusionCulling = o.occlusionCulling;
     s.shadowCache.reuse = o.shadowCache;
     return s;
 }

@@ -30,6 +30,7 @@ nlohmann::json statsJson(const PlantfieldOptions& o, const GpuContext& ctx, cons
     for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) j["plants_per_lod"][kLodNames[lod]] = stats.plantsPerLod[lod];
     j["visible_entries"] = stats.visibleEntries();
     j["culled"] = stats.culled();
+    j["occluded"] = stats.occluded;
     for (uint32_t c = 0; c < DRAW_CLASS_COUNT; ++c) j["draws"][kDrawClassNames[c]] = stats.draws[c];
     j["triangles"] = stats.triangles;
     nlohmann::json& shadow = j["shadow"];

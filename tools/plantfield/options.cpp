@@ -114,7 +114,8 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_option("--seed", o.seed, "Replace the scene's seed (terrain, plants and placement change)");
     app.add_flag(
         "--stats", o.stats,
-        "Print JSON statistics of the (last) frame: plants per LOD, culled, draws, triangles, GPU ms per pass");
+        "Print JSON statistics of the (last) frame: plants per LOD, culled, occluded, draws, triangles, GPU ms per\n"
+        "pass");
     app.add_flag("--physics-check", o.physicsCheck,
                  "Simulate one skeleton of every plant model for 600 sub-steps on the GPU and the CPU and print\n"
                  "JSON: joints, steps, max_deviation_rad (exit 1 when 1e-3 rad or more), gpu_ms, cpu_ms");
@@ -128,6 +129,9 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_option("--lod", o.forcedLod, "Draw every visible plant at this LOD: 0 full, 1 reduced, 2 impostor")
         ->check(CLI::Range(0, 2));
     app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
+    app.add_flag("!--no-occlusion", o.occlusionCulling,
+                 "Draw every plant in view: no occlusion culling against the depth pyramid of what the previous\n"
+                 "frame's visible plants and the terrain cover (docs/CULLING.md)");
     app.add_flag("!--no-shadow-cache", o.shadowCache,
                  "Draw the shadow map's static casters again every frame instead of keeping them while the camera "
                  "stays near");

@@ -60,7 +60,8 @@ struct PlantfieldOptions {
     std::optional<float> windDirectionDegrees; // and direction, clockwise from north (-z) toward +x
     std::optional<uint32_t> jointBudget;       // replaces the scene's physics.joint_budget
     bool shadows = true;
-    bool shadowCache = true; // false: every frame draws its static shadow casters again
+    bool shadowCache = true;      // false: every frame draws its static shadow casters again
+    bool occlusionCulling = true; // false: every plant in view is drawn (no depth pyramid test)
     std::string deviceName;
     bool listDevices = false;
     bool validation = false;
