@@ -18,7 +18,7 @@ using uvec4 = glm::uvec4;
 #define DEPTH_PYRAMID_BINDING 0
 
 struct DepthReducePush {
-    uvec4 size; // xy source size, zw target size (texels)
+    uvec4 size;    // xy source size, zw target size (texels)
     uvec4 samples; // x samples a pixel of a multisampled source (1 otherwise), yzw 0
 };
 

@@ -68,7 +68,8 @@ DepthPyramid createDepthPyramid(GpuResources& owner, const Image& depth) {
     for (uint32_t l = 0; l < p.levels; ++l) mips.push_back(createMipView(owner, p.image, l));
     std::vector<std::vector<DescriptorBinding>> tables;
     for (uint32_t l = 0; l < p.levels; ++l) {
-        DescriptorBinding source = sampledImage(DEPTH_REDUCE_BINDING_SOURCE, kCompute, sampler, l ? mips[l - 1] : depth.view);
+        DescriptorBinding source =
+            sampledImage(DEPTH_REDUCE_BINDING_SOURCE, kCompute, sampler, l ? mips[l - 1] : depth.view);
         if (l > 0) source.image.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
         tables.push_back({source, storageImage(DEPTH_REDUCE_BINDING_TARGET, kCompute, mips[l])});
     }
@@ -100,8 +101,7 @@ void recordDepthPyramid(VkCommandBuffer cmd, const DepthPyramid& p) {
                             VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}),
         imageMemoryBarrier(p.image.image, pyramidRange,
                            {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                            VK_IMAGE_LAYOUT_GENERAL})};
+                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL})};
     VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
     dependency.imageMemoryBarrierCount = uint32_t(std::size(before));
     dependency.pImageMemoryBarriers = before;

@@ -37,8 +37,8 @@ struct WallScene {
                              camera.nearPlane, uint32_t(depthPyramidExtents(kViewport).size()));
     }
     float depthAt(float distance) const {
-        const glm::vec4 clip = projectionMatrix(camera, {kViewport.width, kViewport.height}) *
-                               glm::vec4(0.0f, 0.0f, -distance, 1.0f);
+        const glm::vec4 clip =
+            projectionMatrix(camera, {kViewport.width, kViewport.height}) * glm::vec4(0.0f, 0.0f, -distance, 1.0f);
         return clip.z / clip.w;
     }
     void wall(float distance, uint32_t fromX = 0, uint32_t toX = kViewport.width) {

@@ -19,12 +19,12 @@ class DepthPyramidTest : public GpuTest {
 protected:
     // Uploads `depth` into a depth buffer, builds its pyramid and reads every level back.
     std::vector<std::vector<float>> reduceOnGpu(const std::vector<float>& depth, VkExtent2D extent) {
-        const Image image = createImage(resources, {.extent = extent,
-                                                    .format = VK_FORMAT_D32_SFLOAT,
-                                                    .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
-                                                             VK_IMAGE_USAGE_SAMPLED_BIT |
-                                                             VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                                                    .aspect = VK_IMAGE_ASPECT_DEPTH_BIT});
+        const Image image =
+            createImage(resources, {.extent = extent,
+                                    .format = VK_FORMAT_D32_SFLOAT,
+                                    .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                             VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                    .aspect = VK_IMAGE_ASPECT_DEPTH_BIT});
         const DepthPyramid pyramid = createDepthPyramid(resources, image);
         const Buffer upload = createHostBuffer(resources, depth.size() * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         std::memcpy(upload.mapped, depth.data(), depth.size() * 4);

@@ -143,7 +143,8 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
     if (o.pathTimes) headers.push_back("at t");
     for (const char* pass : kBenchPasses) headers.push_back(std::string(pass) + " ms");
     for (const char* lod : kLodNames) headers.push_back(lod);
-    for (const char* h : {"triangles", "joints", "memory", "terrain m", "naive ms", "ratio"}) headers.push_back(h);
+    for (const char* h : {"occluded", "triangles", "joints", "memory", "terrain m", "naive ms", "ratio"})
+        headers.push_back(h);
 
     std::vector<std::vector<std::string>> rows;
     for (const CountResult& r : result.counts) {
@@ -152,6 +153,7 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
         if (o.pathTimes) row.push_back(fixed(r.time, 1));
         for (const std::optional<Spread>& pass : r.driven.gpuMs) row.push_back(cell(medianOf(pass), 3));
         for (uint32_t plants : r.stats.plantsPerLod) row.push_back(std::to_string(plants));
+        row.push_back(std::to_string(r.stats.occluded));
         row.push_back(std::to_string(r.stats.triangles));
         row.push_back(std::to_string(r.jointsSimulated));
         row.push_back(formatBytes(r.gpuMemoryBytes));
