@@ -1,5 +1,8 @@
 #include "cull_fixture.h"
 
+#include "engine/vk/depth_pyramid.h"
+#include "engine/vk/target_pass.h"
+
 #include "engine/vk/vk_check.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -11,10 +14,11 @@
 
 namespace pf::test {
 
-glm::mat4 viewProj(const View& v) {
-    const glm::mat4 proj = glm::perspectiveRH_ZO(kFovY, 16.0f / 9.0f, 0.1f, 1000.0f);
-    return proj * glm::lookAtRH(v.position, v.target, glm::vec3(0, 1, 0));
-}
+glm::mat4 viewMatrix(const View& v) { return glm::lookAtRH(v.position, v.target, glm::vec3(0, 1, 0)); }
+
+glm::mat4 projection() { return glm::perspectiveRH_ZO(kFovY, 16.0f / 9.0f, 0.1f, 1000.0f); }
+
+glm::mat4 viewProj(const View& v) { return projection() * viewMatrix(v); }
 
 std::vector<gpu::PlantModel> makeModels() {
     std::vector<gpu::PlantModel> models(kModels);
@@ -124,15 +128,29 @@ bool CullPassTest::hasTimestamps() {
 
 GpuFrame CullPassTest::run(const gpu::CullUniforms& uniforms) {
     setCullUniforms(pass, uniforms);
-    return record();
+    return record([&](VkCommandBuffer cmd) { recordCullPass(cmd, pass); });
 }
 
 GpuFrame CullPassTest::run(const gpu::ShadowCullUniforms& uniforms) {
     setCullUniforms(pass, uniforms);
-    return record();
+    return record([&](VkCommandBuffer cmd) { recordCullPass(cmd, pass); });
 }
 
-GpuFrame CullPassTest::record() {
+GpuFrame CullPassTest::runTwoPhases(const gpu::CullUniforms& uniforms, const View& view, const RenderTarget& target) {
+    gpu::CullUniforms u = uniforms;
+    const glm::uvec2 viewport(target.extent.width, target.extent.height);
+    setOcclusionUniforms(u, viewMatrix(view), projection(), viewport, 0.1f, target.pyramid.levels);
+    setCullUniforms(pass, u);
+    return record([&](VkCommandBuffer cmd) {
+        recordCullPass(cmd, pass, CULL_PHASE_EARLY);
+        beginTargetPass(cmd, target, TargetPassPart::first); // depth cleared to 1 and stored
+        vkCmdEndRendering(cmd);
+        recordDepthPyramid(cmd, target.pyramid);
+        recordCullPass(cmd, pass, CULL_PHASE_LATE, target.pyramid.readSet);
+    });
+}
+
+GpuFrame CullPassTest::record(const std::function<void(VkCommandBuffer)>& recordCull) {
     const bool timed = hasTimestamps();
     const VkBufferCopy visibleRegion{0, 0, pass.visible.size};
     const VkBufferCopy commandsRegion{0, visibleRegion.size, pass.commands.size};
@@ -143,7 +161,7 @@ GpuFrame CullPassTest::record() {
             vkCmdResetQueryPool(cmd, queries, 0, 2);
             vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries, 0);
         }
-        recordCullPass(cmd, pass);
+        recordCull(cmd);
         if (timed) vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries, 1);
         // recordCullPass's last compute barrier already covers copies.
         vkCmdCopyBuffer(cmd, pass.visible.buffer, host.buffer, 1, &visibleRegion);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "engine/field/cull_pass.h"
+#include "engine/vk/render_target.h"
 #include "gpu_test.h"
 
 #include <glm/glm.hpp>
@@ -23,8 +24,11 @@ struct View {
     glm::vec3 target;
 };
 
-// A 16:9 perspective over kFovY, near 0.1 m, far 1000 m.
+// A 16:9 perspective over kFovY, near 0.1 m, far 1000 m, and the view and
+// projection it is made of.
 glm::mat4 viewProj(const View& v);
+glm::mat4 viewMatrix(const View& v);
+glm::mat4 projection();
 
 // Synthetic species: spheres of different sizes and offsets, LOD0 above
 // 200 px, LOD1 above 40 px, 10 % hysteresis, a quarter-second fade.
@@ -75,6 +79,9 @@ protected:
     void TearDown() override;
     GpuFrame run(const gpu::CullUniforms& uniforms);
     GpuFrame run(const gpu::ShadowCullUniforms& uniforms);
+    // The early then the late phase, the late against `target`'s depth
+    // pyramid of a depth buffer cleared to the far plane (nothing hides).
+    GpuFrame runTwoPhases(const gpu::CullUniforms& uniforms, const View& view, const RenderTarget& target);
 
     const Field* field = nullptr;
     Buffer instances, models, host;
@@ -83,7 +90,7 @@ protected:
 
 private:
     bool hasTimestamps();
-    GpuFrame record();
+    GpuFrame record(const std::function<void(VkCommandBuffer)>& recordCull);
 };
 
 } // namespace pf::test

@@ -113,6 +113,40 @@ TEST_F(CullPassTest, GpuListsEqualCpuListsOverFrames) {
     EXPECT_GT(fading, 10u); // the moves changed LODs, so fades were compared too
 }
 
+// With nothing in the depth pyramid the two phases together draw what one
+// phase draws, frame after frame: the early phase the plants drawn the
+// frame before, the late phase the others, each plant's LOD state moved on
+// once (the visible bit aside) and its entries in one phase only.
+TEST_F(CullPassTest, TwoPhasesWithAnEmptyPyramidEqualTheCpuReference) {
+    const Field f = randomField(20000, 2);
+    create(f);
+    RenderTarget target = createRenderTarget(ctx, {192, 108}, {.method = AntialiasMethod::none});
+    std::vector<uint32_t> cpuState;
+    const View views[] = {kStart, kStart, kMoved, kMoved};
+    const gpu::CullUniforms frames[] = {uniformsFor(kStart, 0, true), uniformsFor(kStart, 0.1f, false),
+                                        uniformsFor(kMoved, 0.1f, false), uniformsFor(kMoved, 0.1f, false)};
+    for (size_t i = 0; i < std::size(frames); ++i) {
+        const GpuFrame gpuFrame = runTwoPhases(frames[i], views[i], target);
+        const CpuCullResult cpu = cullOnCpu(f.instances, f.models, frames[i], cpuState);
+        for (size_t l = 0; l < cpu.lists.size(); ++l)
+            EXPECT_EQ(gpuFrame.lists[l], cpu.lists[l])
+                << "frame " << i << " model " << l / LOD_COUNT << " LOD " << l % LOD_COUNT;
+        std::vector<uint32_t> lodState = gpuFrame.state;
+        size_t visible = 0;
+        for (uint32_t& s : lodState) {
+            visible += (s & LOD_STATE_VISIBLE_BIT) != 0;
+            s &= ~LOD_STATE_VISIBLE_BIT;
+        }
+        EXPECT_EQ(lodState, cpuState) << "frame " << i;
+        std::set<uint32_t> drawn; // a fading plant has two entries and one bit
+        for (const std::vector<uint32_t>& list : cpu.lists)
+            for (uint32_t entry : list) drawn.insert(entry & VISIBLE_INDEX_MASK);
+        EXPECT_EQ(visible, drawn.size()) << "frame " << i;
+        EXPECT_EQ(gpuFrame.counts.occluded, 0u);
+    }
+    destroyRenderTarget(target);
+}
+
 TEST_F(CullPassTest, PlantsBehindTheCameraNeverAppear) {
     const Field f = randomField(20000, 2);
     create(f);
