@@ -21,7 +21,10 @@ uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_
     const bool drawnApart = samples > 1 || antialiasing.method == AntialiasMethod::fxaa;
     const uint64_t target = pixels * 4 + pixels * samples * 4 * (drawnApart ? 2 : 1);
     const uint64_t capture = pixels * 4;
-    uint64_t bytes = count * kPerPlant + target + capture + kShadowMap;
+    // The depth pyramid: level 0 (a power of two a side, no larger than the
+    // target) and its mips, 4 bytes a texel, at most 4/3 of a pixel each.
+    const uint64_t pyramid = pixels * 4 * 4 / 3;
+    uint64_t bytes = count * kPerPlant + target + capture + pyramid + kShadowMap;
     if (pool) bytes += pool->vertices.size() * sizeof(gpu::FieldVertex) + pool->indices.size() * 4;
     return bytes;
 }
