@@ -159,6 +159,14 @@ vec3 applyVertexFog(vec3 color, vec4 fog) {
     return mix(color, fog.rgb, fog.a);
 }
 
+// The terrain's broadest octave of grass patches (12.5 m cells), per vertex:
+// the drawn terrain has at most a few metres between samples, over which the
+// octave is close to linear, so interpolating it loses nothing visible and
+// saves a noise evaluation per pixel (terrain.frag adds the finer octaves).
+float terrainBroadPatches(vec2 groundXz) {
+    return 0.55 * valueNoise(groundXz * 0.08);
+}
+
 // Sun visibility at a world position: 2×2 PCF of the shadow map, fully lit
 // outside it or when shadows are off.
 float sunVisibility(vec3 worldPos, vec3 normal) {

@@ -60,11 +60,19 @@ void main() {
 
     // "Local Contrast Check": the cross of four neighbours (y grows down the
     // image: north is the row above).
+    // lavapipe runs every branch of a shader for all pixels of a block
+    // unless all of them skip a loop, so every fetch costs everywhere: the
+    // cross's colours are kept for the final blend, which mixes with one
+    // of them.
+    const vec4 north = texelAt(pixel + ivec2(0, -1), size);
+    const vec4 south = texelAt(pixel + ivec2(0, 1), size);
+    const vec4 west = texelAt(pixel + ivec2(-1, 0), size);
+    const vec4 east = texelAt(pixel + ivec2(1, 0), size);
     const float lumaM = lumaOf(centre.rgb);
-    const float lumaN = lumaAt(pixel + ivec2(0, -1), size);
-    const float lumaS = lumaAt(pixel + ivec2(0, 1), size);
-    const float lumaW = lumaAt(pixel + ivec2(-1, 0), size);
-    const float lumaE = lumaAt(pixel + ivec2(1, 0), size);
+    const float lumaN = lumaOf(north.rgb);
+    const float lumaS = lumaOf(south.rgb);
+    const float lumaW = lumaOf(west.rgb);
+    const float lumaE = lumaOf(east.rgb);
     const float lumaMax = max(lumaM, max(max(lumaN, lumaS), max(lumaW, lumaE)));
     const float lumaMin = min(lumaM, min(min(lumaN, lumaS), min(lumaW, lumaE)));
     const float range = lumaMax - lumaMin;
@@ -139,5 +147,6 @@ void main() {
 
     // The pixel moved towards the edge's other side by the larger of the two
     // coverages: a mix with the neighbour across it.
-    outColor = mix(centre, texelAt(pixel + across, size), max(edgeOffset, subpixelOffset));
+    const vec4 acrossColour = horizontal ? (after ? south : north) : (after ? east : west);
+    outColor = mix(centre, acrossColour, max(edgeOffset, subpixelOffset));
 }

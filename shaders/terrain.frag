@@ -7,12 +7,13 @@
 layout(location = 0) in vec3 inWorldPos;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec4 inFog;
+layout(location = 3) in float inBroadPatches; // terrain.vert: terrainBroadPatches
 layout(location = 0) out vec4 outColor;
 
 void main() {
     vec3 n = normalize(inNormal);
     vec2 p = inWorldPos.xz;
-    float patches = 0.55 * valueNoise(p * 0.08) + 0.3 * valueNoise(p * 0.6) + 0.15 * valueNoise(p * 4.0);
+    float patches = inBroadPatches + 0.3 * valueNoise(p * 0.6) + 0.15 * valueNoise(p * 4.0);
     vec3 grass = frame.groundAlbedo.rgb * mix(0.65, 1.3, patches);
     vec3 earth = vec3(0.16, 0.12, 0.08) * mix(0.8, 1.1, valueNoise(p * 1.7));
     float slope = 1.0 - n.y;

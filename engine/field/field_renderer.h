@@ -13,6 +13,7 @@
 #include "engine/physics/field_motion.h"
 #include "engine/scene/camera.h"
 #include "engine/scene/field_content.h"
+#include "engine/scene/terrain_chunks.h"
 #include "engine/vk/render_target.h"
 #include "engine/vk/target_pass.h"
 
@@ -123,9 +124,10 @@ private:
     Buffer vertices_, indices_;
     Buffer models_, instances_;
     Buffer terrainVertices_, terrainIndices_;
-    Buffer outlines_;     // atlas_.outlines: the rectangle each atlas layer's billboards are drawn as
-    Buffer naiveVisible_; // entry i = plant i at full coverage
-    uint32_t terrainIndexCount_ = 0;
+    Buffer outlines_;                       // atlas_.outlines: the rectangle each atlas layer's billboards are drawn as
+    Buffer naiveVisible_;                   // entry i = plant i at full coverage
+    TerrainChunks terrainChunks_;           // the drawn terrain's chunks, in terrainIndices_
+    std::vector<IndexRange> terrainRanges_; // what this frame draws of them (setView)
     std::array<MeshRange, 3> billboards_{}; // 1, 2, 3 quads
     ImpostorAtlas atlas_;
     ShadowMap shadow_;
