@@ -107,8 +107,7 @@ TEST(TerrainChunks, AViewAlongTheGroundLeavesOutWhatIsBehindAndDrawsNearestFirst
     const std::vector<pf::IndexRange> back =
         pf::visibleTerrainRanges(chunks, viewProjFrom({90, 30, 0}, {300, 0, 0}), {90, 30, 0});
     const bool drawnWhenBehind = std::any_of(back.begin(), back.end(), [&](const pf::IndexRange& r) {
-        return r.firstIndex <= chunks.chunks[0].firstIndex &&
-               chunks.chunks[0].firstIndex < r.firstIndex + r.indexCount;
+        return r.firstIndex <= chunks.chunks[0].firstIndex && chunks.chunks[0].firstIndex < r.firstIndex + r.indexCount;
     });
     EXPECT_FALSE(drawnWhenBehind);
 }
