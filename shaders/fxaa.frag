@@ -114,10 +114,14 @@ void main() {
 
     // "End-of-edge Search": both ways along the edge, the average luma of the
     // pair of pixels either side of it, until that average leaves the edge's.
-    int distanceBack = 0, distanceAhead = 0; // pixels from this one
-    float endBack = 0.0, endAhead = 0.0;     // pair luma minus the edge's average there
-    bool doneBack = false, doneAhead = false;
-    for (int i = 0; i < kSearchSteps && !(doneBack && doneAhead); ++i) {
+    // The first step's pairs, one pixel each way, are in the 3x3 already.
+    const float pairBack = horizontal ? lumaW + (after ? lumaSW : lumaNW) : lumaN + (after ? lumaNE : lumaNW);
+    const float pairAhead = horizontal ? lumaE + (after ? lumaSE : lumaNE) : lumaS + (after ? lumaSE : lumaSW);
+    int distanceBack = kSearchStep[0], distanceAhead = kSearchStep[0]; // pixels from this one
+    float endBack = 0.5 * pairBack - edgeAverage;   // pair luma minus the edge's average there
+    float endAhead = 0.5 * pairAhead - edgeAverage;
+    bool doneBack = abs(endBack) >= endThreshold, doneAhead = abs(endAhead) >= endThreshold;
+    for (int i = 1; i < kSearchSteps && !(doneBack && doneAhead); ++i) {
         if (!doneBack) {
             distanceBack += kSearchStep[i];
             const ivec2 p = pixel - distanceBack * along;
