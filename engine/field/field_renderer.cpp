@@ -14,6 +14,7 @@
 #include "shaders/sky_frag.spv.h"
 #include "shaders/sky_vert.spv.h"
 #include "shaders/terrain_frag.spv.h"
+#include "shaders/terrain_sunlit_frag.spv.h"
 #include "shaders/terrain_vert.spv.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -228,6 +229,7 @@ void FieldRenderer::createPipelines() {
     const Stages sky{createShaderModule(modules, spirv_sky_vert), createShaderModule(modules, spirv_sky_frag)};
     const Stages terrain{createShaderModule(modules, spirv_terrain_vert),
                          createShaderModule(modules, spirv_terrain_frag)};
+    const Stages sunlitTerrain{terrain.vertex, createShaderModule(modules, spirv_terrain_sunlit_frag)};
     const Stages plant{createShaderModule(modules, spirv_plant_vert), createShaderModule(modules, spirv_plant_frag)};
     const Stages impostor{createShaderModule(modules, spirv_impostor_vert),
                           createShaderModule(modules, spirv_impostor_frag)};
@@ -251,6 +253,7 @@ void FieldRenderer::createPipelines() {
     pipelines_.sky = make(sky, VK_CULL_MODE_NONE);
     desc.depthWrite = true;
     pipelines_.terrain = make(terrain, VK_CULL_MODE_BACK_BIT);
+    pipelines_.sunlitTerrain = make(sunlitTerrain, VK_CULL_MODE_BACK_BIT);
     pipelines_.bark = make(plant, VK_CULL_MODE_BACK_BIT);
     pipelines_.foliage = make(plant, VK_CULL_MODE_NONE); // leaves are seen from both sides
     pipelines_.impostor = make(impostor, VK_CULL_MODE_NONE);
@@ -281,7 +284,11 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     block.field.wind = glm::vec4(wind.wind.x, wind.wind.y, wind.wind.z, view.time);
     block.field.windDetail = glm::vec4(wind.windDetail.x, wind.windDetail.y, wind.wind.w, settings_.impostorSway);
     std::memcpy(uniforms_.mapped, &block, sizeof(block));
-    terrainRanges_ = visibleTerrainRanges(terrainChunks_, block.frame.viewProj, view.camera.position);
+    // The shaders look the shadow up 1.5 texels along the normal (sunVisibility).
+    const float shadowTexel = 2.0f * settings_.shadowRadius / float(shadow_.size);
+    terrainRanges_ = visibleTerrainRanges(terrainChunks_, block.frame.viewProj, view.camera.position,
+                                          settings_.shadows ? std::optional(block.field.sunViewProj) : std::nullopt,
+                                          2.0f * shadowTexel);
 
     setCullUniforms(cull_, makeCullUniforms(block.frame.viewProj, view.camera.position,
                                             glm::radians(view.camera.fovYDegrees), extent.height, view.deltaTime,
@@ -328,9 +335,12 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
         Timed scope(cmd, timer, "terrain_sky");
         // Last, behind everything: only pixels no plant covers are shaded
         // (the depth test runs before these shaders, which never discard).
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.terrain);
         vkCmdBindIndexBuffer(cmd, terrainIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
-        for (const IndexRange& range : terrainRanges_)
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.terrain);
+        for (const IndexRange& range : terrainRanges_.shadowed)
+            vkCmdDrawIndexed(cmd, range.indexCount, 1, range.firstIndex, 0, 0);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sunlitTerrain);
+        for (const IndexRange& range : terrainRanges_.sunlit)
             vkCmdDrawIndexed(cmd, range.indexCount, 1, range.firstIndex, 0, 0);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sky);
         vkCmdDraw(cmd, 3, 1, 0, 0);

@@ -111,8 +111,9 @@ public:
 
 private:
     struct Pipelines {
-        VkPipeline sky = VK_NULL_HANDLE, terrain = VK_NULL_HANDLE, bark = VK_NULL_HANDLE, foliage = VK_NULL_HANDLE,
-                   impostor = VK_NULL_HANDLE, plantShadow = VK_NULL_HANDLE, impostorShadow = VK_NULL_HANDLE;
+        VkPipeline sky = VK_NULL_HANDLE, terrain = VK_NULL_HANDLE, sunlitTerrain = VK_NULL_HANDLE,
+                   bark = VK_NULL_HANDLE, foliage = VK_NULL_HANDLE, impostor = VK_NULL_HANDLE,
+                   plantShadow = VK_NULL_HANDLE, impostorShadow = VK_NULL_HANDLE;
     };
 
     const GpuContext& ctx_;
@@ -127,7 +128,7 @@ private:
     Buffer outlines_;                       // atlas_.outlines: the rectangle each atlas layer's billboards are drawn as
     Buffer naiveVisible_;                   // entry i = plant i at full coverage
     TerrainChunks terrainChunks_;           // the drawn terrain's chunks, in terrainIndices_
-    std::vector<IndexRange> terrainRanges_; // what this frame draws of them (setView)
+    TerrainRanges terrainRanges_;           // what this frame draws of them, with and without shadows (setView)
     std::array<MeshRange, 3> billboards_{}; // 1, 2, 3 quads
     ImpostorAtlas atlas_;
     ShadowMap shadow_;

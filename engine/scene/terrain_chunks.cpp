@@ -46,45 +46,52 @@ TerrainChunks makeTerrainChunks(const TerrainMesh& mesh, uint32_t resolution, ui
 
 namespace {
 
-// False only when every corner of the box is beyond one of the clip planes.
-bool mayBeSeen(const TerrainChunk& chunk, const glm::mat4& viewProj) {
+// Whether every corner of the box (grown by `margin`) is beyond one of the
+// clip planes x = ±w, y = ±w, z = w, or z = 0 when `nearPlane`.
+bool beyondAPlane(const glm::vec3& boxMin, const glm::vec3& boxMax, const glm::mat4& viewProj, bool nearPlane) {
     glm::vec4 corners[8];
     for (int i = 0; i < 8; ++i) {
-        const glm::vec3 p((i & 1) ? chunk.boxMax.x : chunk.boxMin.x, (i & 2) ? chunk.boxMax.y : chunk.boxMin.y,
-                          (i & 4) ? chunk.boxMax.z : chunk.boxMin.z);
+        const glm::vec3 p((i & 1) ? boxMax.x : boxMin.x, (i & 2) ? boxMax.y : boxMin.y, (i & 4) ? boxMax.z : boxMin.z);
         corners[i] = viewProj * glm::vec4(p, 1.0f);
     }
     auto allBeyond = [&](auto beyond) { return std::all_of(corners, corners + 8, beyond); };
-    return !(allBeyond([](const glm::vec4& c) { return c.x < -c.w; }) ||
-             allBeyond([](const glm::vec4& c) { return c.x > c.w; }) ||
-             allBeyond([](const glm::vec4& c) { return c.y < -c.w; }) ||
-             allBeyond([](const glm::vec4& c) { return c.y > c.w; }) ||
-             allBeyond([](const glm::vec4& c) { return c.z < 0.0f; }) ||
-             allBeyond([](const glm::vec4& c) { return c.z > c.w; }));
+    return allBeyond([](const glm::vec4& c) { return c.x < -c.w; }) ||
+           allBeyond([](const glm::vec4& c) { return c.x > c.w; }) ||
+           allBeyond([](const glm::vec4& c) { return c.y < -c.w; }) ||
+           allBeyond([](const glm::vec4& c) { return c.y > c.w; }) ||
+           allBeyond([](const glm::vec4& c) { return c.z > c.w; }) ||
+           (nearPlane && allBeyond([](const glm::vec4& c) { return c.z < 0.0f; }));
 }
 
 float distanceToBox(const TerrainChunk& chunk, const glm::vec3& eye) {
     return glm::length(glm::clamp(eye, chunk.boxMin, chunk.boxMax) - eye);
 }
 
+void append(std::vector<IndexRange>& ranges, const TerrainChunk& chunk) {
+    if (!ranges.empty() && ranges.back().firstIndex + ranges.back().indexCount == chunk.firstIndex)
+        ranges.back().indexCount += chunk.indexCount;
+    else
+        ranges.push_back({chunk.firstIndex, chunk.indexCount});
+}
+
 } // namespace
 
-std::vector<IndexRange> visibleTerrainRanges(const TerrainChunks& chunks, const glm::mat4& viewProj,
-                                             const glm::vec3& eye) {
+TerrainRanges visibleTerrainRanges(const TerrainChunks& chunks, const glm::mat4& viewProj, const glm::vec3& eye,
+                                   const std::optional<glm::mat4>& sunViewProj, float sunMargin) {
     std::vector<const TerrainChunk*> seen;
     for (const TerrainChunk& chunk : chunks.chunks)
-        if (chunk.indexCount > 0 && mayBeSeen(chunk, viewProj)) seen.push_back(&chunk);
+        if (chunk.indexCount > 0 && !beyondAPlane(chunk.boxMin, chunk.boxMax, viewProj, true)) seen.push_back(&chunk);
     // Ties (the eye above several boxes) in index order, so the ranges are
     // the same on every run.
     std::stable_sort(seen.begin(), seen.end(), [&](const TerrainChunk* a, const TerrainChunk* b) {
         return distanceToBox(*a, eye) < distanceToBox(*b, eye);
     });
-    std::vector<IndexRange> ranges;
+    TerrainRanges ranges;
+    const glm::vec3 margin(sunMargin);
     for (const TerrainChunk* chunk : seen) {
-        if (!ranges.empty() && ranges.back().firstIndex + ranges.back().indexCount == chunk->firstIndex)
-            ranges.back().indexCount += chunk->indexCount;
-        else
-            ranges.push_back({chunk->firstIndex, chunk->indexCount});
+        const bool sunlit =
+            !sunViewProj || beyondAPlane(chunk->boxMin - margin, chunk->boxMax + margin, *sunViewProj, false);
+        append(sunlit ? ranges.sunlit : ranges.shadowed, *chunk);
     }
     return ranges;
 }

@@ -9,6 +9,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace pf {
@@ -39,12 +40,22 @@ struct IndexRange {
     bool operator==(const IndexRange&) const = default;
 };
 
+// What a view draws of the chunks, as ranges of TerrainChunks::indices:
+// those the sun's shadow map may reach, drawn with its lookup, and the rest.
+struct TerrainRanges {
+    std::vector<IndexRange> shadowed;
+    std::vector<IndexRange> sunlit;
+};
+
 // The chunks whose boxes may be seen through `viewProj` (clip space with
 // Vulkan's depth 0…1; a box is left out only when all its corners are beyond
 // one clip plane), nearest to `eye` first so the depth test keeps nearer
-// hills from shading what they hide; neighbours in that order that are
-// neighbours in the indices are merged into one range.
-std::vector<IndexRange> visibleTerrainRanges(const TerrainChunks& chunks, const glm::mat4& viewProj,
-                                             const glm::vec3& eye);
+// hills from shading what they hide. A chunk is sunlit when there is no
+// `sunViewProj` (shadows off) or its box, grown by `sunMargin` metres (the
+// shaders' offset along the normal), is beyond one side of the map's clip
+// square or its far plane. Neighbours in that order that are neighbours in
+// the indices are merged into one range.
+TerrainRanges visibleTerrainRanges(const TerrainChunks& chunks, const glm::mat4& viewProj, const glm::vec3& eye,
+                                   const std::optional<glm::mat4>& sunViewProj, float sunMargin);
 
 } // namespace pf

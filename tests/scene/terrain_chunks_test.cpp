@@ -67,7 +67,7 @@ TEST(TerrainChunks, AViewFromAboveDrawsEveryChunkOnce) {
     const pf::Heightfield ground = rollingGround(65);
     const pf::TerrainChunks chunks = pf::makeTerrainChunks(pf::makeTerrainMesh(ground), ground.resolution, 16);
     std::vector<pf::IndexRange> ranges =
-        pf::visibleTerrainRanges(chunks, viewProjFrom({0, 800, 1}, {0, 0, 0}), {0, 800, 1});
+        pf::visibleTerrainRanges(chunks, viewProjFrom({0, 800, 1}, {0, 0, 0}), {0, 800, 1}, std::nullopt, 0.0f).sunlit;
     std::sort(ranges.begin(), ranges.end(),
               [](const pf::IndexRange& a, const pf::IndexRange& b) { return a.firstIndex < b.firstIndex; });
     uint32_t next = 0;
@@ -85,7 +85,8 @@ TEST(TerrainChunks, AViewAlongTheGroundLeavesOutWhatIsBehindAndDrawsNearestFirst
     // eye (x < -100) is empty, and the chunks of +x must be drawn, the ones
     // under the eye first.
     const glm::vec3 eye(-60, 30, 0);
-    const std::vector<pf::IndexRange> ranges = pf::visibleTerrainRanges(chunks, viewProjFrom(eye, {100, 0, 0}), eye);
+    const std::vector<pf::IndexRange> ranges =
+        pf::visibleTerrainRanges(chunks, viewProjFrom(eye, {100, 0, 0}), eye, std::nullopt, 0.0f).sunlit;
     ASSERT_FALSE(ranges.empty());
     EXPECT_LT(drawnIndices(ranges), chunks.indices.size());
     float previous = -1.0f;
@@ -105,11 +106,40 @@ TEST(TerrainChunks, AViewAlongTheGroundLeavesOutWhatIsBehindAndDrawsNearestFirst
     EXPECT_TRUE(drawn);
     // Looking the other way leaves out those same chunks.
     const std::vector<pf::IndexRange> back =
-        pf::visibleTerrainRanges(chunks, viewProjFrom({90, 30, 0}, {300, 0, 0}), {90, 30, 0});
+        pf::visibleTerrainRanges(chunks, viewProjFrom({90, 30, 0}, {300, 0, 0}), {90, 30, 0}, std::nullopt, 0.0f)
+            .sunlit;
     const bool drawnWhenBehind = std::any_of(back.begin(), back.end(), [&](const pf::IndexRange& r) {
         return r.firstIndex <= chunks.chunks[0].firstIndex && chunks.chunks[0].firstIndex < r.firstIndex + r.indexCount;
     });
     EXPECT_FALSE(drawnWhenBehind);
+}
+
+bool holds(const std::vector<pf::IndexRange>& ranges, const pf::TerrainChunk& chunk) {
+    return std::any_of(ranges.begin(), ranges.end(), [&](const pf::IndexRange& r) {
+        return r.firstIndex <= chunk.firstIndex && chunk.firstIndex < r.firstIndex + r.indexCount;
+    });
+}
+
+TEST(TerrainChunks, OnlyChunksTheSunsMapReachesAreShadowed) {
+    const pf::Heightfield ground = rollingGround(65);
+    const pf::TerrainChunks chunks = pf::makeTerrainChunks(pf::makeTerrainMesh(ground), ground.resolution, 16);
+    // The sun straight above a 40 m square around (30, 0, 30), depth 0…1
+    // over 200 m below a point 100 m up: the chunk under it is shadowed,
+    // the far corner's sunlit; every chunk is drawn once either way.
+    const glm::mat4 sun = glm::orthoRH_ZO(-20.0f, 20.0f, -20.0f, 20.0f, 0.0f, 200.0f) *
+                          glm::lookAtRH(glm::vec3(30, 100, 30), glm::vec3(30, 0, 30), glm::vec3(0, 0, -1));
+    const glm::vec3 eye(0, 800, 1);
+    const pf::TerrainRanges ranges = pf::visibleTerrainRanges(chunks, viewProjFrom(eye, {0, 0, 0}), eye, sun, 0.5f);
+    const pf::TerrainChunk& under = chunks.chunks[2 * 4 + 2]; // x, z in [0, 50]
+    const pf::TerrainChunk& far = chunks.chunks[0];           // x, z in [-100, -50]
+    EXPECT_TRUE(holds(ranges.shadowed, under));
+    EXPECT_FALSE(holds(ranges.sunlit, under));
+    EXPECT_TRUE(holds(ranges.sunlit, far));
+    EXPECT_FALSE(holds(ranges.shadowed, far));
+    EXPECT_EQ(drawnIndices(ranges.shadowed) + drawnIndices(ranges.sunlit), chunks.indices.size());
+    // With shadows off every chunk is sunlit.
+    EXPECT_TRUE(
+        pf::visibleTerrainRanges(chunks, viewProjFrom(eye, {0, 0, 0}), eye, std::nullopt, 0.5f).shadowed.empty());
 }
 
 } // namespace
