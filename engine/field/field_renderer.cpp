@@ -14,6 +14,7 @@
 #include "shaders/sky_frag.spv.h"
 #include "shaders/sky_vert.spv.h"
 #include "shaders/terrain_frag.spv.h"
+#include "shaders/terrain_sunlit_frag.spv.h"
 #include "shaders/terrain_vert.spv.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -59,6 +60,9 @@ Buffer uploadVector(GpuResources& owner, const std::vector<T>& data, VkBufferUsa
 // The drawn terrain keeps at most this many samples a side: far cells of a
 // finer grid are a pixel or two wide, and a CPU rasteriser pays per triangle.
 constexpr uint32_t kTerrainDrawSamples = 129;
+// Cells a side of the chunks a frame draws or leaves out (terrain_chunks.h):
+// 64 chunks of 512 triangles for the most drawn samples.
+constexpr uint32_t kTerrainChunkCells = 16;
 
 // Every k-th sample (k the smallest step that fits), edges kept; a grid the
 // step does not divide (a terrain grown to a plant count) is resampled
@@ -116,13 +120,14 @@ void FieldRenderer::uploadGeometry() {
     atlas_ = bakeImpostorAtlas(resources_, pool, vertices_, indices_, settings_.impostors);
     outlines_ = uploadVector(resources_, atlas_.outlines, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
 
-    const TerrainMesh mesh = makeTerrainMesh(decimated(content_.terrain, kTerrainDrawSamples));
+    const Heightfield drawn = decimated(content_.terrain, kTerrainDrawSamples);
+    const TerrainMesh mesh = makeTerrainMesh(drawn);
     std::vector<gpu::TerrainVertex> terrain(mesh.positions.size());
     for (size_t i = 0; i < terrain.size(); ++i)
         terrain[i] = {glm::vec4(mesh.positions[i], 0.0f), glm::vec4(mesh.normals[i], 0.0f)};
     terrainVertices_ = uploadVector(resources_, terrain, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-    terrainIndices_ = uploadVector(resources_, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-    terrainIndexCount_ = uint32_t(mesh.indices.size());
+    terrainChunks_ = makeTerrainChunks(mesh, drawn.resolution, kTerrainChunkCells);
+    terrainIndices_ = uploadVector(resources_, terrainChunks_.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 }
 
 // Instances, the models with their visible-list regions (assignVisibleLists),
@@ -224,6 +229,7 @@ void FieldRenderer::createPipelines() {
     const Stages sky{createShaderModule(modules, spirv_sky_vert), createShaderModule(modules, spirv_sky_frag)};
     const Stages terrain{createShaderModule(modules, spirv_terrain_vert),
                          createShaderModule(modules, spirv_terrain_frag)};
+    const Stages sunlitTerrain{terrain.vertex, createShaderModule(modules, spirv_terrain_sunlit_frag)};
     const Stages plant{createShaderModule(modules, spirv_plant_vert), createShaderModule(modules, spirv_plant_frag)};
     const Stages impostor{createShaderModule(modules, spirv_impostor_vert),
                           createShaderModule(modules, spirv_impostor_frag)};
@@ -247,6 +253,7 @@ void FieldRenderer::createPipelines() {
     pipelines_.sky = make(sky, VK_CULL_MODE_NONE);
     desc.depthWrite = true;
     pipelines_.terrain = make(terrain, VK_CULL_MODE_BACK_BIT);
+    pipelines_.sunlitTerrain = make(sunlitTerrain, VK_CULL_MODE_BACK_BIT);
     pipelines_.bark = make(plant, VK_CULL_MODE_BACK_BIT);
     pipelines_.foliage = make(plant, VK_CULL_MODE_NONE); // leaves are seen from both sides
     pipelines_.impostor = make(impostor, VK_CULL_MODE_NONE);
@@ -277,6 +284,11 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     block.field.wind = glm::vec4(wind.wind.x, wind.wind.y, wind.wind.z, view.time);
     block.field.windDetail = glm::vec4(wind.windDetail.x, wind.windDetail.y, wind.wind.w, settings_.impostorSway);
     std::memcpy(uniforms_.mapped, &block, sizeof(block));
+    // The shaders look the shadow up 1.5 texels along the normal (sunVisibility).
+    const float shadowTexel = 2.0f * settings_.shadowRadius / float(shadow_.size);
+    terrainRanges_ = visibleTerrainRanges(terrainChunks_, block.frame.viewProj, view.camera.position,
+                                          settings_.shadows ? std::optional(block.field.sunViewProj) : std::nullopt,
+                                          2.0f * shadowTexel);
 
     setCullUniforms(cull_, makeCullUniforms(block.frame.viewProj, view.camera.position,
                                             glm::radians(view.camera.fovYDegrees), extent.height, view.deltaTime,
@@ -323,9 +335,13 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
         Timed scope(cmd, timer, "terrain_sky");
         // Last, behind everything: only pixels no plant covers are shaded
         // (the depth test runs before these shaders, which never discard).
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.terrain);
         vkCmdBindIndexBuffer(cmd, terrainIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexed(cmd, terrainIndexCount_, 1, 0, 0, 0);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.terrain);
+        for (const IndexRange& range : terrainRanges_.shadowed)
+            vkCmdDrawIndexed(cmd, range.indexCount, 1, range.firstIndex, 0, 0);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sunlitTerrain);
+        for (const IndexRange& range : terrainRanges_.sunlit)
+            vkCmdDrawIndexed(cmd, range.indexCount, 1, range.firstIndex, 0, 0);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sky);
         vkCmdDraw(cmd, 3, 1, 0, 0);
     }

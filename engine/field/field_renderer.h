@@ -13,6 +13,7 @@
 #include "engine/physics/field_motion.h"
 #include "engine/scene/camera.h"
 #include "engine/scene/field_content.h"
+#include "engine/scene/terrain_chunks.h"
 #include "engine/vk/render_target.h"
 #include "engine/vk/target_pass.h"
 
@@ -110,8 +111,9 @@ public:
 
 private:
     struct Pipelines {
-        VkPipeline sky = VK_NULL_HANDLE, terrain = VK_NULL_HANDLE, bark = VK_NULL_HANDLE, foliage = VK_NULL_HANDLE,
-                   impostor = VK_NULL_HANDLE, plantShadow = VK_NULL_HANDLE, impostorShadow = VK_NULL_HANDLE;
+        VkPipeline sky = VK_NULL_HANDLE, terrain = VK_NULL_HANDLE, sunlitTerrain = VK_NULL_HANDLE,
+                   bark = VK_NULL_HANDLE, foliage = VK_NULL_HANDLE, impostor = VK_NULL_HANDLE,
+                   plantShadow = VK_NULL_HANDLE, impostorShadow = VK_NULL_HANDLE;
     };
 
     const GpuContext& ctx_;
@@ -123,9 +125,10 @@ private:
     Buffer vertices_, indices_;
     Buffer models_, instances_;
     Buffer terrainVertices_, terrainIndices_;
-    Buffer outlines_;     // atlas_.outlines: the rectangle each atlas layer's billboards are drawn as
-    Buffer naiveVisible_; // entry i = plant i at full coverage
-    uint32_t terrainIndexCount_ = 0;
+    Buffer outlines_;                       // atlas_.outlines: the rectangle each atlas layer's billboards are drawn as
+    Buffer naiveVisible_;                   // entry i = plant i at full coverage
+    TerrainChunks terrainChunks_;           // the drawn terrain's chunks, in terrainIndices_
+    TerrainRanges terrainRanges_;           // what this frame draws of them, with and without shadows (setView)
     std::array<MeshRange, 3> billboards_{}; // 1, 2, 3 quads
     ImpostorAtlas atlas_;
     ShadowMap shadow_;
