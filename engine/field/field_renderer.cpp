@@ -5,6 +5,7 @@
 #include "engine/vk/gpu_timer.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/target_pass.h"
+#include "shaders/lod_select.h"
 
 #include "shaders/canopy_frag.spv.h"
 #include "shaders/canopy_vert.spv.h"
@@ -325,10 +326,21 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
         makeCullUniforms(block.frame.viewProj, view.camera.position, glm::radians(view.camera.fovYDegrees),
                          extent.height, view.deltaTime, view.firstFrame, view.forcedLod.value_or(0xFFFFFFFFu));
     setCullUniforms(cull_, cull);
-    if (settings_.clusters.enabled)
-        setClusterUniforms(clusters_, makeClusterUniforms(frustumPlanes(block.frame.viewProj), cull.camera,
-                                                          view.forcedCut.value_or(CLUSTER_CUT_AUTO),
-                                                          settings_.clusters.thresholdPixels, view.firstFrame));
+    if (!settings_.clusters.enabled) return;
+    const uint32_t cut = view.forcedCut.value_or(CLUSTER_CUT_AUTO);
+    setClusterUniforms(clusters_, makeClusterUniforms(frustumPlanes(block.frame.viewProj), cull.camera, cut,
+                                                      settings_.clusters.thresholdPixels, view.firstFrame));
+    // The canopy draw is recorded only when some leaf can be far (its cell
+    // below the threshold at the field's farthest point): most views of a
+    // small field have no far node.
+    const gpu::ClusterNode& root = clusterTree_.nodes.back();
+    const glm::vec3 camera = view.camera.position;
+    const glm::vec3 farthest =
+        glm::max(glm::abs(camera - glm::vec3(root.boxMin)), glm::abs(camera - glm::vec3(root.boxMax)));
+    const float leafPixels =
+        gpu::pixelsAtDistance(0.5f * clusterTree_.nodes[0].square.w, cull.camera.w, glm::length(farthest));
+    drawCanopy_ =
+        cut == CLUSTER_CUT_ALL_FAR || (cut == CLUSTER_CUT_AUTO && leafPixels < settings_.clusters.thresholdPixels);
 }
 
 void FieldRenderer::pushFieldPass(VkCommandBuffer cmd, uint32_t pass) const {
@@ -369,7 +381,7 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
     }
     {
         Timed scope(cmd, timer, "canopy");
-        if (!naive && settings_.clusters.enabled) {
+        if (!naive && settings_.clusters.enabled && drawCanopy_) {
             // One instance per far node; the cluster pass wrote the count.
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.canopy);
             vkCmdBindIndexBuffer(cmd, canopyIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);

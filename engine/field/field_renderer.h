@@ -157,6 +157,7 @@ private:
     ClusterTree clusterTree_;
     Buffer clusterNodes_;
     Buffer canopy_, canopyIndices_; // every node's canopy (canopy.h), the mesh of one far node
+    bool drawCanopy_ = false;       // setView: some leaf may be far this frame
     ClusterPass clusters_, shadowCacheClusters_, shadowFrameClusters_;
     FieldMotion motion_;
 
