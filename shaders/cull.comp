@@ -1,8 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "cluster_layouts.h"
 #include "lod_select.h"
 
-// Cull + LOD (docs/CULLING.md): one invocation per field instance. Frustum
+// Cull + LOD (docs/CULLING.md): one invocation per near plant. Frustum
 // test of the instance's bounding sphere, LOD from its projected height with
 // hysteresis, and one append per LOD list it is drawn in this frame (two
 // while it cross-fades between LODs).
@@ -32,10 +33,12 @@ void append(uint modelIndex, PlantModel model, uint lod, uint entry) {
     visible[model.lists[lod] + slot] = entry;
 }
 
+#include "near_chunks.glsl"
+
 void main() {
-    // Two-dimensional dispatch past maxComputeWorkGroupCount[0] groups.
-    uint index = gl_WorkGroupID.y * gl_NumWorkGroups.x * CULL_GROUP_SIZE + gl_GlobalInvocationID.x;
-    if (index >= cull.counts.x) return;
+    uint index;
+    bool restart;
+    if (!nearPlant(index, restart)) return;
 
     FieldInstance inst = instances[index];
     uint modelIndex = inst.ids.x;
@@ -45,7 +48,7 @@ void main() {
                                   cull.frustum[4], cull.frustum[5]);
     float pixels = projectedPixels(sphere, cull.camera);
     inside = inside && largeEnoughToDraw(pixels, model, cull.counts.z);
-    uint next = nextLodState(state[index], inside, pixels, model.lod, cull.counts.z, cull.counts.w == 1u,
+    uint next = nextLodState(state[index], inside, pixels, model.lod, cull.counts.z, cull.counts.w == 1u || restart,
                              cull.timing.x);
     state[index] = next;
     if (!inside) return;

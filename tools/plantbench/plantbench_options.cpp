@@ -106,6 +106,8 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     AntialiasFlags antialias;
     addAntialiasOptions(app, antialias);
     app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
+    app.add_flag("!--no-clusters", o.clusters,
+                 "Send every plant through the per-plant cull every frame, no far canopy (docs/CLUSTERS.md)");
     app.add_option("--time", o.time, "Scene time of the camera on the scene's camera path, seconds")
         ->check(CLI::NonNegativeNumber)
         ->default_val(o.time);

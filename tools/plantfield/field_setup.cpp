@@ -51,6 +51,7 @@ FieldRenderSettings renderSettings(const PlantfieldOptions& o) {
     s.antialiasing = o.antialiasing;
     s.shadows = o.shadows;
     s.shadowCache.reuse = o.shadowCache;
+    s.clusters.enabled = o.clusters;
     return s;
 }
 

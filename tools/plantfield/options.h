@@ -61,6 +61,7 @@ struct PlantfieldOptions {
     std::optional<uint32_t> jointBudget;       // replaces the scene's physics.joint_budget
     bool shadows = true;
     bool shadowCache = true; // false: every frame draws its static shadow casters again
+    bool clusters = true;    // false: every plant through the per-plant cull, no far canopy (--no-clusters)
     std::string deviceName;
     bool listDevices = false;
     bool validation = false;
