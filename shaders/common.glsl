@@ -12,13 +12,18 @@ layout(set = 0, binding = BINDING_FRAME_UNIFORMS, std140) uniform FrameBlock {
 #endif
 };
 
+// The powers are written as a square root and repeated squaring: a CPU
+// rasteriser (lavapipe) evaluates pow as exp2(y·log2 x) with polynomials, and
+// the sky is shaded at every pixel nothing covers.
 vec3 skyRadiance(vec3 dir) {
     float up = clamp(dir.y, 0.0, 1.0);
-    vec3 sky = mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, pow(up, 0.5));
+    vec3 sky = mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, sqrt(up));
     // Below the horizon the dome fades to a darker ground bounce.
     sky = dir.y < 0.0 ? mix(frame.skyHorizon.rgb, frame.groundAlbedo.rgb * 0.5, clamp(-dir.y * 4.0, 0.0, 1.0)) : sky;
     float sunDot = max(dot(dir, frame.sunDirection.xyz), 0.0);
-    sky += frame.sunRadiance.rgb * (0.02 * pow(sunDot, 8.0) + 0.25 * pow(sunDot, 64.0));
+    float sun2 = sunDot * sunDot, sun4 = sun2 * sun2, sun8 = sun4 * sun4;
+    float sun16 = sun8 * sun8, sun32 = sun16 * sun16, sun64 = sun32 * sun32;
+    sky += frame.sunRadiance.rgb * (0.02 * sun8 + 0.25 * sun64);
     sky += frame.sunRadiance.rgb * smoothstep(0.9995, 0.9998, sunDot) * 8.0;
     return sky;
 }

@@ -1,10 +1,11 @@
-// Cull + LOD (docs/CULLING.md): one invocation per field instance. Frustum
+// Cull + LOD (docs/CULLING.md): one invocation per near plant. Frustum
 // test of the instance's bounding sphere, LOD from its projected height with
 // hysteresis, and one append per LOD list it is drawn in this frame (two
 // while it cross-fades between LODs). Included by cull.comp (the phases
 // CULL_PHASE_ALL and CULL_PHASE_EARLY) and, with CULL_LATE, by
 // cull_late.comp (CULL_PHASE_LATE: the occlusion test against the depth
 // pyramid, and every plant's visible bit).
+#include "cluster_layouts.h"
 #include "lod_select.h"
 #ifdef CULL_LATE
 #include "depth_pyramid_layouts.h"
@@ -66,10 +67,12 @@ void append(uint modelIndex, PlantModel model, uint lod, uint entry) {
     visible[first + slot] = entry;
 }
 
+#include "near_chunks.glsl"
+
 void main() {
-    // Two-dimensional dispatch past maxComputeWorkGroupCount[0] groups.
-    uint index = gl_WorkGroupID.y * gl_NumWorkGroups.x * CULL_GROUP_SIZE + gl_GlobalInvocationID.x;
-    if (index >= cull.counts.x) return;
+    uint index;
+    bool restart;
+    if (!nearPlant(index, restart)) return;
 
     FieldInstance inst = instances[index];
     uint modelIndex = inst.ids.x;
@@ -79,7 +82,9 @@ void main() {
                                   cull.frustum[4], cull.frustum[5]);
     float pixels = projectedPixels(sphere, cull.camera);
     inside = inside && largeEnoughToDraw(pixels, model, cull.counts.z);
-    bool firstFrame = cull.counts.w == 1u;
+    // A plant whose leaf just turned near starts as on a first frame: its
+    // state and visible bit are from when it was last near.
+    bool firstFrame = cull.counts.w == 1u || restart;
     uint previous = state[index];
     // The early phase draws the plants drawn last frame that are still in
     // view (none on a first frame), and only it moves their LOD state on.

@@ -159,6 +159,14 @@ vec3 applyVertexFog(vec3 color, vec4 fog) {
     return mix(color, fog.rgb, fog.a);
 }
 
+// The terrain's broadest octave of grass patches (12.5 m cells), per vertex:
+// the drawn terrain has at most a few metres between samples, over which the
+// octave is close to linear, so interpolating it loses nothing visible and
+// saves a noise evaluation per pixel (terrain.frag adds the finer octaves).
+float terrainBroadPatches(vec2 groundXz) {
+    return 0.55 * valueNoise(groundXz * 0.08);
+}
+
 // Sun visibility at a world position: 2×2 PCF of the shadow map, fully lit
 // outside it or when shadows are off.
 float sunVisibility(vec3 worldPos, vec3 normal) {
@@ -175,15 +183,21 @@ float sunVisibility(vec3 worldPos, vec3 normal) {
     return mix(1.0, lit, edge);
 }
 
-// Sun (with shadow and, for thin foliage, light through the back), sky light.
-vec3 shadeField(vec3 albedo, vec3 normal, vec3 worldPos, float occlusion, float transmission) {
-    vec3 l = frame.sunDirection.xyz;
-    float facing = dot(normal, l);
+// Sun (`visibility` of it reaching the point; for thin foliage, light
+// through the back too), sky light.
+vec3 shadeFieldSeen(vec3 albedo, vec3 normal, float visibility, float occlusion, float transmission) {
+    float facing = dot(normal, frame.sunDirection.xyz);
     float sun = max(facing, 0.0) + transmission * max(-facing, 0.0);
-    float visibility = sunVisibility(worldPos, normal * sign(facing + 1e-4));
     float skyWeight = 0.5 + 0.5 * normal.y;
     vec3 ambient = mix(frame.groundAlbedo.rgb * frame.skyHorizon.rgb, frame.skyZenith.rgb, skyWeight);
     return albedo * (frame.sunRadiance.rgb * sun * visibility + ambient * occlusion);
+}
+
+// The same with the sun's visibility from the shadow map.
+vec3 shadeField(vec3 albedo, vec3 normal, vec3 worldPos, float occlusion, float transmission) {
+    float facing = dot(normal, frame.sunDirection.xyz);
+    float visibility = sunVisibility(worldPos, normal * sign(facing + 1e-4));
+    return shadeFieldSeen(albedo, normal, visibility, occlusion, transmission);
 }
 
 #endif

@@ -84,6 +84,9 @@ using uint = uint32_t;
 #define FIELD_BINDING_POSES 10                     // JointPose[] of every simulated joint
 #define FIELD_BINDING_INSTANCE_SKELETON 11         // uint per instance: the Skeleton its vertices follow
 #define FIELD_BINDING_IMPOSTOR_OUTLINES 12         // per atlas layer, OUTLINE_CORNERS uv corners, two a texel
+#define FIELD_BINDING_CLUSTER_NODES 13             // ClusterNode[] (cluster_layouts.h)
+#define FIELD_BINDING_CANOPY 14                    // CanopyCell[] per node, CANOPY_CELLS each
+#define FIELD_BINDING_CANOPY_FAR 15                // uint: the camera's far nodes (the canopy's instances)
 
 // Descriptor binding of the impostor bake (its own set 0).
 #define IMPOSTOR_BAKE_BINDING_VERTICES 0 // FieldVertex[]
@@ -98,6 +101,7 @@ using uint = uint32_t;
 #define FIELD_VERTEX_TEXELS 4
 #define TERRAIN_VERTEX_TEXELS 2
 #define IMPOSTOR_OUTLINE_TEXELS (OUTLINE_CORNERS / 2) // per atlas layer: two uv corners a texel
+#define CLUSTER_NODE_TEXELS 5
 
 // Descriptor bindings of the cull pass (its own set 0).
 #define CULL_BINDING_UNIFORMS 0     // CullUniforms
@@ -110,6 +114,7 @@ using uint = uint32_t;
 #define CULL_BINDING_COMMANDS 7     // DrawCommand[] compacted, DRAW_CLASS_COUNT regions
 #define CULL_BINDING_DRAW_COUNTS 8  // uint[DRAW_CLASS_COUNT]
 #define CULL_BINDING_ALL_COMMANDS 9 // DrawCommand[] one per template, for the no-count fallback
+#define CULL_BINDING_NEAR 10        // the chunks of plants to cull (cluster_layouts.h, near_chunks.glsl)
 // The late phase reads the depth pyramid through a set of its own (set 1,
 // engine/vk/depth_pyramid.h), made with every render target.
 #define CULL_SET_PYRAMID 1

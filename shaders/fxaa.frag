@@ -60,11 +60,19 @@ void main() {
 
     // "Local Contrast Check": the cross of four neighbours (y grows down the
     // image: north is the row above).
+    // lavapipe runs every branch of a shader for all pixels of a block
+    // unless all of them skip a loop, so every fetch costs everywhere: the
+    // cross's colours are kept for the final blend, which mixes with one
+    // of them.
+    const vec4 north = texelAt(pixel + ivec2(0, -1), size);
+    const vec4 south = texelAt(pixel + ivec2(0, 1), size);
+    const vec4 west = texelAt(pixel + ivec2(-1, 0), size);
+    const vec4 east = texelAt(pixel + ivec2(1, 0), size);
     const float lumaM = lumaOf(centre.rgb);
-    const float lumaN = lumaAt(pixel + ivec2(0, -1), size);
-    const float lumaS = lumaAt(pixel + ivec2(0, 1), size);
-    const float lumaW = lumaAt(pixel + ivec2(-1, 0), size);
-    const float lumaE = lumaAt(pixel + ivec2(1, 0), size);
+    const float lumaN = lumaOf(north.rgb);
+    const float lumaS = lumaOf(south.rgb);
+    const float lumaW = lumaOf(west.rgb);
+    const float lumaE = lumaOf(east.rgb);
     const float lumaMax = max(lumaM, max(max(lumaN, lumaS), max(lumaW, lumaE)));
     const float lumaMin = min(lumaM, min(min(lumaN, lumaS), min(lumaW, lumaE)));
     const float range = lumaMax - lumaMin;
@@ -106,10 +114,14 @@ void main() {
 
     // "End-of-edge Search": both ways along the edge, the average luma of the
     // pair of pixels either side of it, until that average leaves the edge's.
-    int distanceBack = 0, distanceAhead = 0; // pixels from this one
-    float endBack = 0.0, endAhead = 0.0;     // pair luma minus the edge's average there
-    bool doneBack = false, doneAhead = false;
-    for (int i = 0; i < kSearchSteps && !(doneBack && doneAhead); ++i) {
+    // The first step's pairs, one pixel each way, are in the 3x3 already.
+    const float pairBack = horizontal ? lumaW + (after ? lumaSW : lumaNW) : lumaN + (after ? lumaNE : lumaNW);
+    const float pairAhead = horizontal ? lumaE + (after ? lumaSE : lumaNE) : lumaS + (after ? lumaSE : lumaSW);
+    int distanceBack = kSearchStep[0], distanceAhead = kSearchStep[0]; // pixels from this one
+    float endBack = 0.5 * pairBack - edgeAverage;   // pair luma minus the edge's average there
+    float endAhead = 0.5 * pairAhead - edgeAverage;
+    bool doneBack = abs(endBack) >= endThreshold, doneAhead = abs(endAhead) >= endThreshold;
+    for (int i = 1; i < kSearchSteps && !(doneBack && doneAhead); ++i) {
         if (!doneBack) {
             distanceBack += kSearchStep[i];
             const ivec2 p = pixel - distanceBack * along;
@@ -139,5 +151,6 @@ void main() {
 
     // The pixel moved towards the edge's other side by the larger of the two
     // coverages: a mix with the neighbour across it.
-    outColor = mix(centre, texelAt(pixel + across, size), max(edgeOffset, subpixelOffset));
+    const vec4 acrossColour = horizontal ? (after ? south : north) : (after ? east : west);
+    outColor = mix(centre, acrossColour, max(edgeOffset, subpixelOffset));
 }

@@ -1,10 +1,12 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "cluster_layouts.h"
 #include "shadow_select.h"
 
-// The sun's shadow casters (shadow_select.h): one invocation per field
-// instance appends it, at full coverage, to the visible list of the LOD it
-// casts from in this pass, the cache's or the frame's (counts.w). The
+// The sun's shadow casters (shadow_select.h): one invocation per plant of
+// the leaves meeting the sun's box (near_chunks.glsl) appends it, at full
+// coverage, to the visible list of the LOD it casts from in this pass, the
+// cache's or the frame's (counts.w). The
 // layout is the cull pass's (CULL_BINDING_*), without the LOD state, so
 // build_draws.comp turns the lists into indirect draws as it does for the
 // camera's.
@@ -26,10 +28,12 @@ layout(set = 0, binding = CULL_BINDING_VISIBLE, std430) writeonly buffer Visible
     uint visible[];
 };
 
+#include "near_chunks.glsl"
+
 void main() {
-    // Two-dimensional dispatch past maxComputeWorkGroupCount[0] groups.
-    uint index = gl_WorkGroupID.y * gl_NumWorkGroups.x * CULL_GROUP_SIZE + gl_GlobalInvocationID.x;
-    if (index >= cull.counts.x) return;
+    uint index;
+    bool restart; // the casters keep no LOD state
+    if (!nearPlant(index, restart)) return;
 
     FieldInstance inst = instances[index];
     uint modelIndex = inst.ids.x;

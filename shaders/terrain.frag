@@ -1,22 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "field_common.glsl"
+#include "terrain_ground.glsl"
 
-// Grass-covered ground: patches of lighter and darker grass, bare earth on
-// steep slopes, lit by the sun (with the plants' shadows) and the sky.
-layout(location = 0) in vec3 inWorldPos;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec4 inFog;
-layout(location = 0) out vec4 outColor;
-
+// The ground within reach of the sun's shadow map: the plants' shadows on it.
 void main() {
-    vec3 n = normalize(inNormal);
-    vec2 p = inWorldPos.xz;
-    float patches = 0.55 * valueNoise(p * 0.08) + 0.3 * valueNoise(p * 0.6) + 0.15 * valueNoise(p * 4.0);
-    vec3 grass = frame.groundAlbedo.rgb * mix(0.65, 1.3, patches);
-    vec3 earth = vec3(0.16, 0.12, 0.08) * mix(0.8, 1.1, valueNoise(p * 1.7));
-    float slope = 1.0 - n.y;
-    vec3 albedo = mix(grass, earth, smoothstep(0.18, 0.35, slope + 0.1 * (patches - 0.5)));
-    vec3 color = shadeField(albedo, n, inWorldPos, 1.0, 0.0);
-    outColor = vec4(toneMap(applyVertexFog(color, inFog)), 1.0);
+    outColor = groundColour(true);
 }

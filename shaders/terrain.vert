@@ -6,11 +6,13 @@
 layout(location = 0) out vec3 outWorldPos;
 layout(location = 1) out vec3 outNormal;
 layout(location = 2) out vec4 outFog;
+layout(location = 3) out float outBroadPatches; // terrain.frag's broadest noise octave
 
 void main() {
     TerrainVertex v = terrainVertexAt(gl_VertexIndex);
     outWorldPos = v.position.xyz;
     outNormal = v.normal.xyz;
     outFog = vertexFog(outWorldPos);
+    outBroadPatches = terrainBroadPatches(outWorldPos.xz);
     gl_Position = passViewProj() * vec4(outWorldPos, 1.0);
 }

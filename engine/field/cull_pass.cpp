@@ -2,6 +2,7 @@
 
 #include "engine/vk/depth_pyramid.h"
 #include "engine/vk/pipeline.h"
+#include "shaders/cluster_layouts.h"
 #include "shaders/lod_select.h"
 #include "shaders/occlusion_test.h"
 
@@ -87,13 +88,16 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
         if (pass.templatesPerClass[drawClass]++ == 0) pass.firstTemplateOfClass[drawClass] = t;
     }
 
-    // Past maxComputeWorkGroupCount[0] groups the cull dispatch wraps into rows.
-    const uint32_t groups = (pass.instanceCount + CULL_GROUP_SIZE - 1) / CULL_GROUP_SIZE;
-    pass.cullGroups.x = std::min(groups, ctx.properties.limits.maxComputeWorkGroupCount[0]);
-    pass.cullGroups.y = pass.cullGroups.x ? (groups + pass.cullGroups.x - 1) / pass.cullGroups.x : 0;
-
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags indirect = storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+    if (inputs.near) {
+        pass.near = inputs.near->buffer;
+    } else {
+        const std::vector<uint32_t> chunks =
+            allPlantChunks(pass.instanceCount, ctx.properties.limits.maxComputeWorkGroupCount[0]);
+        pass.allPlants = createDeviceBufferWithData(owner, chunks.data(), chunks.size() * 4, indirect);
+        pass.near = pass.allPlants.buffer;
+    }
     const bool camera = inputs.kind == CullKind::Camera;
     pass.uniforms = createHostBuffer(owner, camera ? sizeof(gpu::CullUniforms) : sizeof(gpu::ShadowCullUniforms),
                                      VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
@@ -128,16 +132,18 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
         });
 
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-    const DescriptorBinding bindings[] = {uniformBuffer(CULL_BINDING_UNIFORMS, compute, pass.uniforms),
-                                          storageBuffer(CULL_BINDING_INSTANCES, compute, *inputs.instances),
-                                          storageBuffer(CULL_BINDING_MODELS, compute, *inputs.models),
-                                          storageBuffer(CULL_BINDING_STATE, compute, pass.state),
-                                          storageBuffer(CULL_BINDING_COUNTS, compute, pass.counts),
-                                          storageBuffer(CULL_BINDING_VISIBLE, compute, pass.visible),
-                                          storageBuffer(CULL_BINDING_TEMPLATES, compute, pass.templates),
-                                          storageBuffer(CULL_BINDING_COMMANDS, compute, pass.commands),
-                                          storageBuffer(CULL_BINDING_DRAW_COUNTS, compute, pass.drawCounts),
-                                          storageBuffer(CULL_BINDING_ALL_COMMANDS, compute, pass.allCommands)};
+    const DescriptorBinding bindings[] = {
+        uniformBuffer(CULL_BINDING_UNIFORMS, compute, pass.uniforms),
+        storageBuffer(CULL_BINDING_INSTANCES, compute, *inputs.instances),
+        storageBuffer(CULL_BINDING_MODELS, compute, *inputs.models),
+        storageBuffer(CULL_BINDING_STATE, compute, pass.state),
+        storageBuffer(CULL_BINDING_COUNTS, compute, pass.counts),
+        storageBuffer(CULL_BINDING_VISIBLE, compute, pass.visible),
+        storageBuffer(CULL_BINDING_TEMPLATES, compute, pass.templates),
+        storageBuffer(CULL_BINDING_COMMANDS, compute, pass.commands),
+        storageBuffer(CULL_BINDING_DRAW_COUNTS, compute, pass.drawCounts),
+        storageBuffer(CULL_BINDING_ALL_COMMANDS, compute, pass.allCommands),
+        storageBuffer(CULL_BINDING_NEAR, compute, inputs.near ? *inputs.near : pass.allPlants)};
     const VkDescriptorSetLayout pyramid = createDepthPyramidReadLayout(owner);
     static_assert(CULL_SET_PYRAMID == 1, "the pyramid's set follows the pass's own");
     pass.set = createComputeSet(owner, bindings, sizeof(gpu::CullPush),
@@ -211,7 +217,7 @@ void recordCullPass(VkCommandBuffer cmd, const CullPass& pass, uint32_t phase, V
     if (phase == CULL_PHASE_LATE)
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.set.pipelineLayout, CULL_SET_PYRAMID, 1,
                                 &pyramid, 0, nullptr);
-    vkCmdDispatch(cmd, pass.cullGroups.x, pass.cullGroups.y, 1);
+    vkCmdDispatchIndirect(cmd, pass.near, NEAR_CHUNK_DISPATCH_OFFSET);
     // build_draws reads the final per-list counts.
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
@@ -257,6 +263,17 @@ void drawClassIndirect(VkCommandBuffer cmd, const GpuContext& ctx, const CullPas
         vkCmdDrawIndexedIndirect(cmd, pass.allCommands.buffer, first + VkDeviceSize(i) * stride, 1, stride);
 }
 
+std::vector<uint32_t> allPlantChunks(uint32_t instanceCount, uint32_t maxGroupsPerRow) {
+    const uint32_t chunks = (instanceCount + CULL_GROUP_SIZE - 1) / CULL_GROUP_SIZE;
+    const uint32_t row = std::min(chunks, maxGroupsPerRow);
+    std::vector<uint32_t> words = {chunks, row, row ? (chunks + row - 1) / row : 0, 1};
+    for (uint32_t c = 0; c < chunks; ++c) {
+        words.push_back(c * CULL_GROUP_SIZE);
+        words.push_back(std::min<uint32_t>(instanceCount - c * CULL_GROUP_SIZE, CULL_GROUP_SIZE));
+    }
+    return words;
+}
+
 CullCounts readCullCounts(const CullPass& pass) {
     const auto* words = static_cast<const uint32_t*>(pass.readback.mapped);
     const size_t perRegion = countersPerRegion(pass);
@@ -273,32 +290,40 @@ CullCounts readCullCounts(const CullPass& pass) {
 
 CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span<const gpu::PlantModel> models,
                         const gpu::CullUniforms& uniforms, std::vector<uint32_t>& state) {
+    const CpuNearRange all{0, uint32_t(instances.size()), false};
+    return cullOnCpu(instances, models, uniforms, state, std::span(&all, 1));
+}
+
+CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span<const gpu::PlantModel> models,
+                        const gpu::CullUniforms& uniforms, std::vector<uint32_t>& state,
+                        std::span<const CpuNearRange> near) {
     state.resize(instances.size(), LOD_STATE_SETTLED << 8);
     CpuCullResult out;
     out.lists.resize(models.size() * LOD_COUNT);
     const glm::vec4* f = uniforms.frustum;
-    for (uint32_t i = 0; i < instances.size(); ++i) {
-        const gpu::FieldInstance& inst = instances[i];
-        const uint32_t m = inst.ids.x;
-        const gpu::PlantModel& model = models[m];
-        const glm::vec4 sphere = gpu::instanceSphere(inst, model);
-        const float pixels = gpu::projectedPixels(sphere, uniforms.camera);
-        const bool inside = gpu::sphereInFrustum(sphere, f[0], f[1], f[2], f[3], f[4], f[5]) &&
-                            gpu::largeEnoughToDraw(pixels, model, uniforms.counts.z);
-        const uint32_t next = gpu::nextLodState(state[i], inside, pixels, model.lod, uniforms.counts.z,
-                                                uniforms.counts.w == 1u, uniforms.timing.x);
-        state[i] = next;
-        if (!inside) continue;
-        const uint32_t progress = gpu::lodStateProgress(next);
-        std::vector<uint32_t>* lists = &out.lists[size_t(m) * LOD_COUNT];
-        if (progress == LOD_STATE_SETTLED) {
-            lists[gpu::lodStateCurrent(next)].push_back(gpu::visibleEntry(i, 0, VISIBLE_COVERAGE_MAX));
-            continue;
+    for (const CpuNearRange& range : near)
+        for (uint32_t i = range.first; i < range.first + range.count; ++i) {
+            const gpu::FieldInstance& inst = instances[i];
+            const uint32_t m = inst.ids.x;
+            const gpu::PlantModel& model = models[m];
+            const glm::vec4 sphere = gpu::instanceSphere(inst, model);
+            const float pixels = gpu::projectedPixels(sphere, uniforms.camera);
+            const bool inside = gpu::sphereInFrustum(sphere, f[0], f[1], f[2], f[3], f[4], f[5]) &&
+                                gpu::largeEnoughToDraw(pixels, model, uniforms.counts.z);
+            const uint32_t next = gpu::nextLodState(state[i], inside, pixels, model.lod, uniforms.counts.z,
+                                                    uniforms.counts.w == 1u || range.restart, uniforms.timing.x);
+            state[i] = next;
+            if (!inside) continue;
+            const uint32_t progress = gpu::lodStateProgress(next);
+            std::vector<uint32_t>* lists = &out.lists[size_t(m) * LOD_COUNT];
+            if (progress == LOD_STATE_SETTLED) {
+                lists[gpu::lodStateCurrent(next)].push_back(gpu::visibleEntry(i, 0, VISIBLE_COVERAGE_MAX));
+                continue;
+            }
+            const uint32_t coverageIn = gpu::fadeInCoverage(progress);
+            lists[gpu::lodStateCurrent(next)].push_back(gpu::visibleEntry(i, VISIBLE_FADE_IN_BIT, coverageIn));
+            lists[gpu::lodStateFrom(next)].push_back(gpu::visibleEntry(i, 0, VISIBLE_COVERAGE_MAX - coverageIn));
         }
-        const uint32_t coverageIn = gpu::fadeInCoverage(progress);
-        lists[gpu::lodStateCurrent(next)].push_back(gpu::visibleEntry(i, VISIBLE_FADE_IN_BIT, coverageIn));
-        lists[gpu::lodStateFrom(next)].push_back(gpu::visibleEntry(i, 0, VISIBLE_COVERAGE_MAX - coverageIn));
-    }
     for (std::vector<uint32_t>& list : out.lists) std::sort(list.begin(), list.end());
     return out;
 }

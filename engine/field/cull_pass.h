@@ -6,7 +6,9 @@
 // every non-empty list into a VkDrawIndexedIndirectCommand of its draw class
 // and counts them, for vkCmdDrawIndexedIndirectCount (or, without that
 // feature, instanceCount is written into one command per template and all are
-// drawn). No per-plant CPU work per frame.
+// drawn). No per-plant CPU work per frame. The per-plant work runs over the
+// near chunks of a cluster pass (engine/field/cluster_pass.h), or over every
+// plant.
 #pragma once
 
 #include "engine/vk/compute_set.h"
@@ -47,6 +49,9 @@ struct CullPassInputs {
     uint32_t instanceCount = 0;
     uint32_t modelCount = 0;
     std::span<const gpu::DrawTemplate> templates; // copied to the GPU at creation
+    // The chunks of plants to cull each frame (ClusterPass::near, written
+    // before recordCullPass); null: every plant, in chunks written once.
+    const Buffer* near = nullptr;
 };
 
 // Each phase's buffers below are regions of CULL_PHASE_REGIONS: region 0
@@ -68,13 +73,14 @@ struct CullPass {
     Buffer drawCounts;  // per region uint[DRAW_CLASS_COUNT]
     Buffer allCommands; // per region DrawCommand[templateCount] in template order (fallback path)
     Buffer readback;    // host-visible copy of counts then drawCounts, written at the end of every recordCullPass
+    Buffer allPlants;   // without CullPassInputs::near: every plant in chunks (near_chunks.glsl)
+    VkBuffer near = VK_NULL_HANDLE; // the chunks culled: CullPassInputs::near or allPlants
 
     uint32_t instanceCount = 0;
     uint32_t modelCount = 0;
     uint32_t templateCount = 0;
     std::array<uint32_t, DRAW_CLASS_COUNT> templatesPerClass{};    // fallback: how many templates each class has
     std::array<uint32_t, DRAW_CLASS_COUNT> firstTemplateOfClass{}; // templates are sorted by class
-    glm::uvec2 cullGroups{}; // cull dispatch: rows of at most maxComputeWorkGroupCount[0] groups
 };
 
 // Templates must be sorted by draw class. Throws when there are more
@@ -117,6 +123,10 @@ void recordCullPass(VkCommandBuffer cmd, const CullPass& pass, uint32_t phase = 
 void drawClassIndirect(VkCommandBuffer cmd, const GpuContext& ctx, const CullPass& pass, uint32_t drawClass,
                        uint32_t phase = CULL_PHASE_ALL);
 
+// Every plant of a field in chunks of CULL_GROUP_SIZE, with the near list's
+// header (cluster_layouts.h): what a cull pass without clusters runs over.
+std::vector<uint32_t> allPlantChunks(uint32_t instanceCount, uint32_t maxGroupsPerRow);
+
 // Counters of the last recorded frame (read after its fence), both phases summed.
 struct CullCounts {
     std::vector<uint32_t> perModelLod;                      // [model · LOD_COUNT + lod] entries in that list
@@ -131,8 +141,17 @@ CullCounts readCullCounts(const CullPass& pass);
 struct CpuCullResult {
     std::vector<std::vector<uint32_t>> lists; // [model · LOD_COUNT + lod] visible entries, sorted
 };
+// A run of plants the cull goes over (one near leaf); `restart`: as on a first frame.
+struct CpuNearRange {
+    uint32_t first = 0, count = 0;
+    bool restart = false;
+};
 CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span<const gpu::PlantModel> models,
                         const gpu::CullUniforms& uniforms, std::vector<uint32_t>& state);
+// Over these plants only (the others keep their state).
+CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span<const gpu::PlantModel> models,
+                        const gpu::CullUniforms& uniforms, std::vector<uint32_t>& state,
+                        std::span<const CpuNearRange> near);
 
 // The late phase's occlusion test on the CPU (shaders/occlusion_test.h):
 // true when the world-space sphere (xyz centre, w radius) lies behind every

@@ -1,11 +1,15 @@
 #include "engine/field/field_renderer.h"
 
+#include "engine/field/canopy.h"
 #include "engine/vk/depth_pyramid.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/gpu_timer.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/target_pass.h"
+#include "shaders/lod_select.h"
 
+#include "shaders/canopy_frag.spv.h"
+#include "shaders/canopy_vert.spv.h"
 #include "shaders/impostor_frag.spv.h"
 #include "shaders/impostor_shadow_frag.spv.h"
 #include "shaders/impostor_vert.spv.h"
@@ -15,6 +19,7 @@
 #include "shaders/sky_frag.spv.h"
 #include "shaders/sky_vert.spv.h"
 #include "shaders/terrain_frag.spv.h"
+#include "shaders/terrain_sunlit_frag.spv.h"
 #include "shaders/terrain_vert.spv.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -60,6 +65,9 @@ Buffer uploadVector(GpuResources& owner, const std::vector<T>& data, VkBufferUsa
 // The drawn terrain keeps at most this many samples a side: far cells of a
 // finer grid are a pixel or two wide, and a CPU rasteriser pays per triangle.
 constexpr uint32_t kTerrainDrawSamples = 129;
+// Cells a side of the chunks a frame draws or leaves out (terrain_chunks.h):
+// 64 chunks of 512 triangles for the most drawn samples.
+constexpr uint32_t kTerrainChunkCells = 16;
 
 // Every k-th sample (k the smallest step that fits), edges kept; a grid the
 // step does not divide (a terrain grown to a plant count) is resampled
@@ -117,13 +125,14 @@ void FieldRenderer::uploadGeometry() {
     atlas_ = bakeImpostorAtlas(resources_, pool, vertices_, indices_, settings_.impostors);
     outlines_ = uploadVector(resources_, atlas_.outlines, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
 
-    const TerrainMesh mesh = makeTerrainMesh(decimated(content_.terrain, kTerrainDrawSamples));
+    drawnTerrain_ = decimated(content_.terrain, kTerrainDrawSamples);
+    const TerrainMesh mesh = makeTerrainMesh(drawnTerrain_);
     std::vector<gpu::TerrainVertex> terrain(mesh.positions.size());
     for (size_t i = 0; i < terrain.size(); ++i)
         terrain[i] = {glm::vec4(mesh.positions[i], 0.0f), glm::vec4(mesh.normals[i], 0.0f)};
     terrainVertices_ = uploadVector(resources_, terrain, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-    terrainIndices_ = uploadVector(resources_, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-    terrainIndexCount_ = uint32_t(mesh.indices.size());
+    terrainChunks_ = makeTerrainChunks(mesh, drawnTerrain_.resolution, kTerrainChunkCells);
+    terrainIndices_ = uploadVector(resources_, terrainChunks_.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 }
 
 // Instances, the models with their visible-list regions (assignVisibleLists),
@@ -143,6 +152,7 @@ void FieldRenderer::uploadInstances() {
     for (size_t m = 0; m < pool.models.size(); ++m) pool.models[m].gpu.lists = models[m].lists;
     models_ = uploadVector(resources_, models, kStorageAndTexels);
     instances_ = uploadVector(resources_, instances, kStorageAndTexels);
+    if (settings_.clusters.enabled) createClusters(instances, models);
 
     std::vector<uint32_t> naive(plantCount);
     for (uint32_t i = 0; i < plantCount; ++i) naive[i] = i | (VISIBLE_COVERAGE_MAX << VISIBLE_COVERAGE_SHIFT);
@@ -163,16 +173,44 @@ void FieldRenderer::uploadInstances() {
     for (uint32_t m = 0; m < pool.models.size(); ++m)
         add(billboards_[pool.models[m].gpu.impostor.z - 1], DRAW_IMPOSTOR, m, LOD_IMPOSTOR);
 
+    const bool clustered = settings_.clusters.enabled;
     CullPassInputs inputs;
     inputs.instances = &instances_;
     inputs.models = &models_;
     inputs.instanceCount = plantCount;
     inputs.modelCount = uint32_t(pool.models.size());
     inputs.templates = templates;
+    inputs.near = clustered ? &clusters_.near : nullptr;
     cull_ = createCullPass(resources_, inputs);
     inputs.kind = CullKind::ShadowCasters;
+    inputs.near = clustered ? &shadowCacheClusters_.near : nullptr;
     shadowCacheCasters_ = createCullPass(resources_, inputs);
+    inputs.near = clustered ? &shadowFrameClusters_.near : nullptr;
     shadowFrameCasters_ = createCullPass(resources_, inputs);
+}
+
+// The quadtree over the plants (in cluster order since buildFieldContent)
+// and its three cuts: the camera's, and the leaves meeting the sun's boxes.
+void FieldRenderer::createClusters(const std::vector<gpu::FieldInstance>& instances,
+                                   const std::vector<gpu::PlantModel>& models) {
+    clusterTree_ = buildClusterTree(instances, models, clusterRoot(content_.terrain), settings_.clusters.leafSide);
+    clusterNodes_ = uploadVector(resources_, clusterTree_.nodes, kStorageAndTexels);
+    CanopyBakeInputs bake;
+    bake.tree = &clusterTree_;
+    bake.nodes = &clusterNodes_;
+    bake.instances = &instances_;
+    bake.models = &models_;
+    bake.atlas = &atlas_;
+    bake.ground = &drawnTerrain_;
+    bake.thresholdPixels = settings_.clusters.thresholdPixels;
+    canopy_ = bakeCanopy(resources_, bake);
+    const std::vector<uint32_t> mesh = canopyMeshIndices();
+    canopyIndices_ = uploadVector(resources_, mesh, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    gpu::DrawCommand farMesh{};
+    farMesh.indexCount = uint32_t(mesh.size());
+    clusters_ = createClusterPass(resources_, clusterTree_, clusterNodes_, farMesh);
+    shadowCacheClusters_ = createClusterPass(resources_, clusterTree_, clusterNodes_, farMesh);
+    shadowFrameClusters_ = createClusterPass(resources_, clusterTree_, clusterNodes_, farMesh);
 }
 
 // The draw sets differ only in the visible list: the cull pass's lists,
@@ -183,6 +221,11 @@ void FieldRenderer::createDescriptors() {
     auto texels = [&](uint32_t binding, const Buffer& buffer, VkFormat format) {
         return texelBuffer(binding, kDrawStages, createTexelView(resources_, buffer, format));
     };
+    // Without clusters the canopy is never drawn; its bindings get one texel.
+    const bool clustered = settings_.clusters.enabled;
+    const Buffer placeholder = clustered ? Buffer{}
+                                         : createBuffer(resources_, 16, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                                                        VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     const std::vector<DescriptorBinding> drawTable = {
         uniformBuffer(FIELD_BINDING_FRAME, kDrawStages, uniforms_),
         texels(FIELD_BINDING_INSTANCES, instances_, uint4),
@@ -196,7 +239,10 @@ void FieldRenderer::createDescriptors() {
         texels(FIELD_BINDING_SKELETONS, motion_.pass.skeletons, uint4),
         texels(FIELD_BINDING_POSES, motion_.pass.poses, uint4),
         texels(FIELD_BINDING_INSTANCE_SKELETON, motion_.instanceSkeleton, uint1),
-        texels(FIELD_BINDING_IMPOSTOR_OUTLINES, outlines_, uint4)};
+        texels(FIELD_BINDING_IMPOSTOR_OUTLINES, outlines_, uint4),
+        texels(FIELD_BINDING_CLUSTER_NODES, clustered ? clusterNodes_ : placeholder, uint4),
+        texels(FIELD_BINDING_CANOPY, clustered ? canopy_ : placeholder, uint4),
+        texels(FIELD_BINDING_CANOPY_FAR, clustered ? clusters_.far : placeholder, uint1)};
     auto withVisible = [&](const Buffer& visible) {
         std::vector<DescriptorBinding> table = drawTable;
         for (DescriptorBinding& b : table)
@@ -225,9 +271,11 @@ void FieldRenderer::createPipelines() {
     const Stages sky{createShaderModule(modules, spirv_sky_vert), createShaderModule(modules, spirv_sky_frag)};
     const Stages terrain{createShaderModule(modules, spirv_terrain_vert),
                          createShaderModule(modules, spirv_terrain_frag)};
+    const Stages sunlitTerrain{terrain.vertex, createShaderModule(modules, spirv_terrain_sunlit_frag)};
     const Stages plant{createShaderModule(modules, spirv_plant_vert), createShaderModule(modules, spirv_plant_frag)};
     const Stages impostor{createShaderModule(modules, spirv_impostor_vert),
                           createShaderModule(modules, spirv_impostor_frag)};
+    const Stages canopy{createShaderModule(modules, spirv_canopy_vert), createShaderModule(modules, spirv_canopy_frag)};
     const VkShaderModule plantShadow = createShaderModule(modules, spirv_plant_shadow_frag);
     const VkShaderModule impostorShadow = createShaderModule(modules, spirv_impostor_shadow_frag);
 
@@ -248,9 +296,11 @@ void FieldRenderer::createPipelines() {
     pipelines_.sky = make(sky, VK_CULL_MODE_NONE);
     desc.depthWrite = true;
     pipelines_.terrain = make(terrain, VK_CULL_MODE_BACK_BIT);
+    pipelines_.sunlitTerrain = make(sunlitTerrain, VK_CULL_MODE_BACK_BIT);
     pipelines_.bark = make(plant, VK_CULL_MODE_BACK_BIT);
     pipelines_.foliage = make(plant, VK_CULL_MODE_NONE); // leaves are seen from both sides
     pipelines_.impostor = make(impostor, VK_CULL_MODE_NONE);
+    pipelines_.canopy = make(canopy, VK_CULL_MODE_NONE); // canopyMeshIndices: skirts last
 
     // Depth only, seen from the sun: both sides of everything cast shadows.
     desc.colorFormat = VK_FORMAT_UNDEFINED;
@@ -278,6 +328,11 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     block.field.wind = glm::vec4(wind.wind.x, wind.wind.y, wind.wind.z, view.time);
     block.field.windDetail = glm::vec4(wind.windDetail.x, wind.windDetail.y, wind.wind.w, settings_.impostorSway);
     std::memcpy(uniforms_.mapped, &block, sizeof(block));
+    // The shaders look the shadow up 1.5 texels along the normal (sunVisibility).
+    const float shadowTexel = 2.0f * settings_.shadowRadius / float(shadow_.size);
+    terrainRanges_ = visibleTerrainRanges(terrainChunks_, block.frame.viewProj, view.camera.position,
+                                          settings_.shadows ? std::optional(block.field.sunViewProj) : std::nullopt,
+                                          2.0f * shadowTexel);
 
     gpu::CullUniforms cull =
         makeCullUniforms(block.frame.viewProj, view.camera.position, glm::radians(view.camera.fovYDegrees),
@@ -286,6 +341,21 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     setOcclusionUniforms(cull, viewMatrix(view.camera), projectionMatrix(view.camera, viewport), viewport,
                          view.camera.nearPlane, uint32_t(depthPyramidExtents(extent).size()));
     setCullUniforms(cull_, cull);
+    if (!settings_.clusters.enabled) return;
+    const uint32_t cut = view.forcedCut.value_or(CLUSTER_CUT_AUTO);
+    setClusterUniforms(clusters_, makeClusterUniforms(frustumPlanes(block.frame.viewProj), cull.camera, cut,
+                                                      settings_.clusters.thresholdPixels, view.firstFrame));
+    // The canopy draw is recorded only when some leaf can be far (its cell
+    // below the threshold at the field's farthest point): most views of a
+    // small field have no far node.
+    const gpu::ClusterNode& root = clusterTree_.nodes.back();
+    const glm::vec3 camera = view.camera.position;
+    const glm::vec3 farthest =
+        glm::max(glm::abs(camera - glm::vec3(root.boxMin)), glm::abs(camera - glm::vec3(root.boxMax)));
+    const float leafPixels =
+        gpu::pixelsAtDistance(0.5f * clusterTree_.nodes[0].square.w, cull.camera.w, glm::length(farthest));
+    drawCanopy_ =
+        cut == CLUSTER_CUT_ALL_FAR || (cut == CLUSTER_CUT_AUTO && leafPixels < settings_.clusters.thresholdPixels);
 }
 
 void FieldRenderer::pushFieldPass(VkCommandBuffer cmd, uint32_t pass) const {
@@ -355,15 +425,28 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
         drawPlantLists(cmd, twoParts ? CULL_PHASE_EARLY : CULL_PHASE_ALL, timer);
     }
     {
+        Timed scope(cmd, timer, "canopy");
+        if (!naive && settings_.clusters.enabled && drawCanopy_) {
+            // One instance per far node; the cluster pass wrote the count.
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.canopy);
+            vkCmdBindIndexBuffer(cmd, canopyIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
+            drawCanopyIndirect(cmd, ctx_, clusters_);
+        }
+    }
+    {
         Timed scope(cmd, timer, "terrain_sky");
         // Last, behind everything: only pixels no plant covers are shaded
         // (the depth test runs before these shaders, which never discard).
         // With occlusion culling the terrain is the early phase's main
         // occluder; the sky, drawn with it, writes no depth and is covered
         // by what the late phase draws.
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.terrain);
         vkCmdBindIndexBuffer(cmd, terrainIndices_.buffer, 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexed(cmd, terrainIndexCount_, 1, 0, 0, 0);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.terrain);
+        for (const IndexRange& range : terrainRanges_.shadowed)
+            vkCmdDrawIndexed(cmd, range.indexCount, 1, range.firstIndex, 0, 0);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sunlitTerrain);
+        for (const IndexRange& range : terrainRanges_.sunlit)
+            vkCmdDrawIndexed(cmd, range.indexCount, 1, range.firstIndex, 0, 0);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sky);
         vkCmdDraw(cmd, 3, 1, 0, 0);
     }
@@ -380,6 +463,10 @@ void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuT
     if (timer) resetGpuTimer(cmd, *timer);
     recordFieldMotion(cmd, motion_, timer);
     {
+        Timed scope(cmd, timer, "clusters");
+        if (settings_.clusters.enabled) recordClusterPass(cmd, clusters_);
+    }
+    {
         Timed scope(cmd, timer, "cull");
         recordCullPass(cmd, cull_, occlusion() ? CULL_PHASE_EARLY : CULL_PHASE_ALL);
     }
@@ -393,6 +480,7 @@ void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuT
 void FieldRenderer::recordNaive(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const {
     if (timer) resetGpuTimer(cmd, *timer);
     recordFieldMotion(cmd, motion_, timer);
+    { Timed scope(cmd, timer, "clusters"); }
     { Timed scope(cmd, timer, "cull"); }
     {
         Timed scope(cmd, timer, "shadow");
@@ -423,7 +511,10 @@ uint32_t FieldFrameStats::visibleEntries() const {
     return entries;
 }
 
-uint32_t FieldFrameStats::culled() const { return instances > visibleEntries() ? instances - visibleEntries() : 0; }
+uint32_t FieldFrameStats::culled() const {
+    const uint32_t shown = visibleEntries() + clusterFarPlants;
+    return instances > shown ? instances - shown : 0;
+}
 
 std::string plantsPerLodText(const FieldFrameStats& stats) {
     std::string text;
@@ -443,6 +534,14 @@ FieldFrameStats FieldRenderer::readStats() const {
         stats.shadowCastersPerLod = readCullCounts(shadowFrameCasters_).perLod;
         stats.shadowCacheCasters = readCullCounts(shadowCacheCasters_).perLod[LOD_IMPOSTOR];
         stats.shadowCacheRenders = shadowCacheRenders_;
+    }
+    if (settings_.clusters.enabled) {
+        const std::array<uint32_t, CLUSTER_STAT_COUNT> cut = readClusterStats(clusters_);
+        stats.clustersFar = cut[CLUSTER_STAT_FAR];
+        stats.clusterFarPlants = cut[CLUSTER_STAT_FAR_PLANTS];
+        stats.nearLeaves = cut[CLUSTER_STAT_NEAR_LEAVES];
+        stats.nearPlants = cut[CLUSTER_STAT_NEAR_PLANTS];
+        stats.triangles += uint64_t(stats.clustersFar) * (clusters_.farMesh.indexCount / 3);
     }
     const PlantModelPool& pool = content_.models;
     for (size_t m = 0; m < pool.models.size(); ++m) {

@@ -6,6 +6,7 @@
 // each) as the baseline plantbench compares against.
 #pragma once
 
+#include "engine/field/cluster_pass.h"
 #include "engine/field/cull_pass.h"
 #include "engine/field/impostor_atlas.h"
 #include "engine/field/shadow_cache.h"
@@ -13,6 +14,7 @@
 #include "engine/physics/field_motion.h"
 #include "engine/scene/camera.h"
 #include "engine/scene/field_content.h"
+#include "engine/scene/terrain_chunks.h"
 #include "engine/vk/render_target.h"
 #include "engine/vk/target_pass.h"
 
@@ -25,6 +27,14 @@ namespace pf {
 
 struct GpuTimer;
 
+// The field's hierarchy of clusters (docs/CLUSTERS.md).
+struct ClusterSettings {
+    bool enabled = true;    // false: every plant through the per-plant cull every frame (--no-clusters)
+    float leafSide = 32.0f; // metres: leaves are the largest quadtree tiles of the terrain no wider than this
+    // A node is drawn as its canopy where one canopy cell covers fewer pixels than this and its parent's does not.
+    float thresholdPixels = 1.0f;
+};
+
 struct FieldRenderSettings {
     Antialiasing antialiasing; // FXAA unless set (antialiasing.h)
     bool shadows = true;
@@ -36,6 +46,7 @@ struct FieldRenderSettings {
     // Two-phase occlusion culling against the depth pyramid (docs/CULLING.md):
     // plants hidden behind the terrain and nearer plants are not drawn.
     bool occlusionCulling = true;
+    ClusterSettings clusters;
 };
 
 struct FieldView {
@@ -44,6 +55,7 @@ struct FieldView {
     float deltaTime = 0.0f;            // seconds since the previous frame (LOD fades advance by it)
     bool firstFrame = true;            // LOD state starts settled at each plant's target LOD
     std::optional<uint32_t> forcedLod; // every visible plant at this LOD (tests, debugging)
+    std::optional<uint32_t> forcedCut; // CLUSTER_CUT_ALL_NEAR or _ALL_FAR in place of the threshold (tests)
     bool realTime = false;             // a window: physics skips what it cannot catch up (field_motion.h)
 };
 
@@ -56,19 +68,23 @@ struct FieldFrameStats {
     uint32_t instances = 0;
     std::array<uint32_t, LOD_COUNT> plantsPerLod{}; // fading plants count at both LODs
     std::array<uint32_t, DRAW_CLASS_COUNT> draws{}; // indirect commands per class
-    uint64_t triangles = 0;                         // colour pass, plants only
-    uint32_t occluded =
-        0; // in view and large enough to draw, hidden by the depth pyramid (0 without occlusion culling)
+    uint64_t triangles = 0;                         // colour pass, plants and canopy
+    uint32_t occluded = 0; // in view and large enough to draw, hidden by the depth pyramid (0 without occlusion culling)
     // The sun's shadow map (zero with shadows off): plants drawn into this
     // frame's map on top of the cache, per LOD; impostors the cache holds
     // (as last drawn); times this renderer has drawn the cache.
     std::array<uint32_t, LOD_COUNT> shadowCastersPerLod{};
     uint32_t shadowCacheCasters = 0;
     uint64_t shadowCacheRenders = 0;
+    // The cut through the clusters (zero without clusters): nodes drawn as
+    // canopy and their plants, leaves whose plants the per-plant cull ran
+    // over and their plants; plants in neither were culled with their leaf.
+    uint32_t clustersFar = 0, clusterFarPlants = 0;
+    uint32_t nearLeaves = 0, nearPlants = 0;
 
     // Entries of every visible list: a fading plant counts twice.
     uint32_t visibleEntries() const;
-    // Plants in no list: not in view, too small to draw, or occluded.
+    // Plants in no list and in no far node: not in view, too small to draw, or occluded.
     uint32_t culled() const;
 };
 
@@ -77,13 +93,14 @@ std::string plantsPerLodText(const FieldFrameStats& stats);
 
 // GPU timer scope names, in recording order. "colour" is the whole colour
 // pass, its anti-aliasing included, and the scopes after it are nested
-// inside it: three groups of draws of the early phase (or of the one phase
+// inside it: four groups of draws of the early phase (or of the one phase
 // without occlusion culling), the depth pyramid, the late cull with its
 // occlusion test, the late phase's draws, then the anti-aliasing
 // (target_pass.h). Without occlusion culling the three late scopes are empty.
-inline constexpr const char* kFieldPasses[] = {"physics",       "pose",      "cull",       "shadow",
-                                               "colour",        "plants",    "impostors",  "terrain_sky",
-                                               "depth_pyramid", "occlusion", "late_draws", kAntialiasScope};
+inline constexpr const char* kFieldPasses[] = {"physics",     "pose",          "clusters",  "cull",
+                                               "shadow",      "colour",        "plants",    "impostors",
+                                               "canopy",      "terrain_sky",   "depth_pyramid", "occlusion",
+                                               "late_draws",  kAntialiasScope};
 
 // True for the draw scopes recorded inside "colour" (those after it in
 // kFieldPasses): a frame's total adds only the others.
@@ -110,6 +127,8 @@ public:
     FieldFrameStats readStats() const;
 
     const FieldContent& content() const { return content_; }
+    const ClusterTree& clusterTree() const { return clusterTree_; } // empty without clusters
+    const FieldRenderSettings& settings() const { return settings_; }
     // The settings' anti-aliasing as the device supports it
     // (supportedAntialiasing): make render targets with it.
     const Antialiasing& antialiasing() const { return settings_.antialiasing; }
@@ -119,8 +138,9 @@ public:
 
 private:
     struct Pipelines {
-        VkPipeline sky = VK_NULL_HANDLE, terrain = VK_NULL_HANDLE, bark = VK_NULL_HANDLE, foliage = VK_NULL_HANDLE,
-                   impostor = VK_NULL_HANDLE, plantShadow = VK_NULL_HANDLE, impostorShadow = VK_NULL_HANDLE;
+        VkPipeline sky = VK_NULL_HANDLE, terrain = VK_NULL_HANDLE, sunlitTerrain = VK_NULL_HANDLE,
+                   bark = VK_NULL_HANDLE, foliage = VK_NULL_HANDLE, impostor = VK_NULL_HANDLE, canopy = VK_NULL_HANDLE,
+                   plantShadow = VK_NULL_HANDLE, impostorShadow = VK_NULL_HANDLE;
     };
 
     const GpuContext& ctx_;
@@ -132,14 +152,23 @@ private:
     Buffer vertices_, indices_;
     Buffer models_, instances_;
     Buffer terrainVertices_, terrainIndices_;
-    Buffer outlines_;     // atlas_.outlines: the rectangle each atlas layer's billboards are drawn as
-    Buffer naiveVisible_; // entry i = plant i at full coverage
-    uint32_t terrainIndexCount_ = 0;
+    Buffer outlines_;                       // atlas_.outlines: the rectangle each atlas layer's billboards are drawn as
+    Buffer naiveVisible_;                   // entry i = plant i at full coverage
+    TerrainChunks terrainChunks_;           // the drawn terrain's chunks, in terrainIndices_
+    TerrainRanges terrainRanges_;           // what this frame draws of them, with and without shadows (setView)
+    Heightfield drawnTerrain_;              // the terrain as its mesh draws it
     std::array<MeshRange, 3> billboards_{}; // 1, 2, 3 quads
     ImpostorAtlas atlas_;
     ShadowMap shadow_;
     CullPass cull_;
     CullPass shadowCacheCasters_, shadowFrameCasters_; // CullKind::ShadowCasters: SHADOW_CULL_CACHE, _FRAME
+    // With clusters: the quadtree, the camera's cut and the leaves meeting
+    // the sun's boxes, whose plants the passes above run over.
+    ClusterTree clusterTree_;
+    Buffer clusterNodes_;
+    Buffer canopy_, canopyIndices_; // every node's canopy (canopy.h), the mesh of one far node
+    bool drawCanopy_ = false;       // setView: some leaf may be far this frame
+    ClusterPass clusters_, shadowCacheClusters_, shadowFrameClusters_;
     FieldMotion motion_;
 
     // The shadow cache (setView): what it holds, whether this frame draws it
@@ -158,10 +187,13 @@ private:
 
     void uploadGeometry();
     void uploadInstances();
+    void createClusters(const std::vector<gpu::FieldInstance>& instances, const std::vector<gpu::PlantModel>& models);
     void createDescriptors();
     void createPipelines();
     void planShadows(const FieldView& view, const glm::vec3& sun, VkExtent2D extent, const glm::mat4& cameraViewProj,
                      gpu::FieldFrame& field);
+    void setCasterUniforms(const CullPass& casters, const ClusterPass& clusters,
+                           const gpu::ShadowCullUniforms& uniforms) const;
     void recordShadowCache(VkCommandBuffer cmd) const;
     void recordShadowPass(VkCommandBuffer cmd) const;
     void recordNaiveShadowPass(VkCommandBuffer cmd) const;

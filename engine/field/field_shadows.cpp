@@ -7,6 +7,8 @@
 #include "engine/field/shadow_casters.h"
 #include "shaders/lod_select.h"
 
+#include <algorithm>
+
 namespace pf {
 namespace {
 
@@ -46,16 +48,28 @@ void FieldRenderer::planShadows(const FieldView& view, const glm::vec3& sun, VkE
     }
     field.sunCacheViewProj = sunViewProjection(shadowCache_.square, kShadowDepthRadius);
     if (drawShadowCache_)
-        setCullUniforms(shadowCacheCasters_, makeShadowCullUniforms(field.sunCacheViewProj, cameraViewProj, frame,
-                                                                    shadowCache_, cache, SHADOW_CULL_CACHE));
+        setCasterUniforms(shadowCacheCasters_, shadowCacheClusters_,
+                          makeShadowCullUniforms(field.sunCacheViewProj, cameraViewProj, frame, shadowCache_, cache,
+                                                 SHADOW_CULL_CACHE));
     // The frame's square in the cache's depth range, so the cache's window
     // copies into it texel for texel.
     SunSquare square = frame.square;
     square.depth = shadowCache_.square.depth;
     shadowWindow_ = square.origin - shadowCache_.square.origin;
     field.sunViewProj = sunViewProjection(square, kShadowDepthRadius);
-    setCullUniforms(shadowFrameCasters_, makeShadowCullUniforms(field.sunViewProj, cameraViewProj, frame, shadowCache_,
-                                                                cache, SHADOW_CULL_FRAME));
+    setCasterUniforms(
+        shadowFrameCasters_, shadowFrameClusters_,
+        makeShadowCullUniforms(field.sunViewProj, cameraViewProj, frame, shadowCache_, cache, SHADOW_CULL_FRAME));
+}
+
+// A caster pass's uniforms, and with clusters the leaves meeting its box.
+void FieldRenderer::setCasterUniforms(const CullPass& casters, const ClusterPass& clusters,
+                                      const gpu::ShadowCullUniforms& uniforms) const {
+    setCullUniforms(casters, uniforms);
+    if (!settings_.clusters.enabled) return;
+    std::array<glm::vec4, 6> box;
+    std::copy(std::begin(uniforms.box), std::end(uniforms.box), box.begin());
+    setClusterUniforms(clusters, makeClusterUniforms(box, uniforms.camera, CLUSTER_CUT_BOX_ONLY, 0.0f, false));
 }
 
 // Bark and foliage, then impostors, of the casters' lists: depth from the
@@ -74,6 +88,7 @@ void FieldRenderer::drawShadowCasters(VkCommandBuffer cmd, const CullPass& caste
 
 // The static casters, into the cache (when planShadows says so).
 void FieldRenderer::recordShadowCache(VkCommandBuffer cmd) const {
+    if (settings_.clusters.enabled) recordClusterPass(cmd, shadowCacheClusters_);
     recordCullPass(cmd, shadowCacheCasters_);
     beginShadowCachePass(cmd, shadow_);
     drawShadowCasters(cmd, shadowCacheCasters_, shadowCacheSet_, FIELD_PASS_SHADOW_CACHE);
@@ -83,6 +98,7 @@ void FieldRenderer::recordShadowCache(VkCommandBuffer cmd) const {
 // The frame's map: the cache's window, the frame's casters on top.
 void FieldRenderer::recordShadowPass(VkCommandBuffer cmd) const {
     if (drawShadowCache_) recordShadowCache(cmd);
+    if (settings_.clusters.enabled) recordClusterPass(cmd, shadowFrameClusters_);
     recordCullPass(cmd, shadowFrameCasters_);
     beginShadowPassFromCache(cmd, shadow_, shadowWindow_);
     drawShadowCasters(cmd, shadowFrameCasters_, shadowFrameSet_, FIELD_PASS_SHADOW);

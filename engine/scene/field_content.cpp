@@ -1,5 +1,6 @@
 #include "engine/scene/field_content.h"
 
+#include "engine/scene/clusters.h"
 #include "engine/scene/natural_density.h"
 
 #include <glm/glm.hpp>
@@ -120,6 +121,7 @@ FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> cou
     content.scene.terrain = field.terrain;
     content.terrain = std::move(field.heightfield);
     content.plants = std::move(field.plants);
+    sortPlantsByCluster(content.plants, clusterRoot(content.terrain));
     content.note = std::move(field.note);
     content.models = buildPlantModels(scene, progress);
     return content;

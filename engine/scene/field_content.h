@@ -50,6 +50,8 @@ struct FieldContent {
     Scene scene; // its terrain the one the plants stand on (grown, for a natural-density count)
     Heightfield terrain;
     PlantModelPool models;
+    // In cluster order (sortPlantsByCluster over clusterRoot(terrain), engine/scene/clusters.h), so
+    // every tile of the field's quadtree holds a contiguous range; every user of a plant index sees this order.
     std::vector<PlantInstance> plants;
     std::string note; // PlacedField::note
 };

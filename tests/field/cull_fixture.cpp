@@ -91,7 +91,7 @@ Field layOut(std::vector<gpu::FieldInstance> instances, std::vector<gpu::PlantMo
     return f;
 }
 
-void CullPassTest::create(const Field& f, CullKind kind) {
+void CullPassTest::create(const Field& f, CullKind kind, const Buffer* near) {
     field = &f;
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     instances = createDeviceBufferWithData(resources, f.instances.data(),
@@ -104,6 +104,7 @@ void CullPassTest::create(const Field& f, CullKind kind) {
     inputs.instanceCount = uint32_t(f.instances.size());
     inputs.modelCount = uint32_t(f.models.size());
     inputs.templates = f.templates;
+    inputs.near = near;
     pass = createCullPass(resources, inputs);
     host = createHostBuffer(resources, pass.visible.size + pass.commands.size + pass.allCommands.size + pass.state.size,
                             VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -161,6 +162,7 @@ GpuFrame CullPassTest::record(const std::function<void(VkCommandBuffer)>& record
             vkCmdResetQueryPool(cmd, queries, 0, 2);
             vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries, 0);
         }
+        if (clusters) recordClusterPass(cmd, *clusters);
         recordCull(cmd);
         if (timed) vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries, 1);
         // recordCullPass's last compute barrier already covers copies.

@@ -3,6 +3,7 @@
 // reads back its lists, commands and state.
 #pragma once
 
+#include "engine/field/cluster_pass.h"
 #include "engine/field/cull_pass.h"
 #include "engine/vk/render_target.h"
 #include "gpu_test.h"
@@ -75,7 +76,9 @@ struct GpuFrame {
 
 class CullPassTest : public GpuTest {
 protected:
-    void create(const Field& f, CullKind kind = CullKind::Camera);
+    // `near`: the chunks of a cluster pass (CullPassInputs::near), recorded
+    // before the cull when `clusters` is set.
+    void create(const Field& f, CullKind kind = CullKind::Camera, const Buffer* near = nullptr);
     void TearDown() override;
     GpuFrame run(const gpu::CullUniforms& uniforms);
     GpuFrame run(const gpu::ShadowCullUniforms& uniforms);
@@ -86,6 +89,7 @@ protected:
     const Field* field = nullptr;
     Buffer instances, models, host;
     CullPass pass;
+    const ClusterPass* clusters = nullptr;
     VkQueryPool queries = VK_NULL_HANDLE;
 
 private:

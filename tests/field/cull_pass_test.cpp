@@ -334,7 +334,9 @@ TEST_F(CullPassTest, IndirectDrawsOfEveryPathAreValid) {
     Buffer frame = createHostBuffer(resources, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(frame.mapped, 0, sizeof(gpu::FrameUniforms));
 
-    const DescriptorBinding table[] = {uniformBuffer(BINDING_FRAME_UNIFORMS, VK_SHADER_STAGE_FRAGMENT_BIT, frame)};
+    // The sky's shaders read the frame in both stages (the view ray per corner).
+    const DescriptorBinding table[] = {
+        uniformBuffer(BINDING_FRAME_UNIFORMS, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, frame)};
     const VkDescriptorSetLayout setLayout = createSetLayout(resources, table);
     const VkDescriptorSet set = createSet(resources, setLayout, table);
     const VkPipelineLayout layout = createPipelineLayout(resources, setLayout);

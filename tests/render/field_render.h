@@ -44,6 +44,7 @@ public:
 
     FieldShotResult frame(const FieldView& view);
     const Scene& scene() const { return scene_; }
+    const FieldRenderer& renderer() const { return *renderer_; }
 
 private:
     const GpuContext& ctx_;

@@ -31,6 +31,7 @@ struct PlantbenchOptions {
     Antialiasing antialiasing;
     bool shadows = true;
     bool occlusionCulling = true;      // false: --no-occlusion
+    bool clusters = true;              // false: --no-clusters
     double time = 0.0;                 // scene time of the camera on its path
     std::optional<uint32_t> pathTimes; // --path: measure at this many times along the camera path instead
     bool densify = false;              // counts on the scene's terrain, distances scaled (not natural densities)

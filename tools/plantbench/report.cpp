@@ -56,6 +56,7 @@ nlohmann::json frameJson(const PathTimes& t, const FieldFrameStats& stats) {
     for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) j["plants_per_lod"][kLodNames[lod]] = stats.plantsPerLod[lod];
     j["culled"] = stats.culled();
     j["occluded"] = stats.occluded;
+    j["canopy_plants"] = stats.clusterFarPlants;
     j["triangles"] = stats.triangles;
     j["draws"] = nlohmann::json::object();
     for (uint32_t c = 0; c < DRAW_CLASS_COUNT; ++c) j["draws"][kDrawClassNames[c]] = stats.draws[c];

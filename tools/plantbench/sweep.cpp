@@ -172,6 +172,7 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
     settings.antialiasing = o.antialiasing;
     settings.shadows = o.shadows;
     settings.occlusionCulling = o.occlusionCulling;
+    settings.clusters.enabled = o.clusters;
     showProgress(progress, 0.0, "uploading the field and baking impostors");
     FieldRenderer renderer(ctx, std::move(content), settings);
     FrameResources frame(ctx, {o.width, o.height}, renderer.antialiasing());

@@ -52,6 +52,7 @@ FieldRenderSettings renderSettings(const PlantfieldOptions& o) {
     s.shadows = o.shadows;
     s.occlusionCulling = o.occlusionCulling;
     s.shadowCache.reuse = o.shadowCache;
+    s.clusters.enabled = o.clusters;
     return s;
 }
 

@@ -38,6 +38,11 @@ nlohmann::json statsJson(const PlantfieldOptions& o, const GpuContext& ctx, cons
         shadow["casters_per_lod"][kLodNames[lod]] = stats.shadowCastersPerLod[lod];
     shadow["cache_casters"] = stats.shadowCacheCasters;
     shadow["cache_renders"] = stats.shadowCacheRenders;
+    nlohmann::json& clusters = j["clusters"];
+    clusters["far_nodes"] = stats.clustersFar;
+    clusters["far_plants"] = stats.clusterFarPlants;
+    clusters["near_leaves"] = stats.nearLeaves;
+    clusters["near_plants"] = stats.nearPlants;
     j["joints_simulated"] = renderer.simulatedJoints();
     j["indirect_count"] = ctx.drawIndirectCount;
     nlohmann::json ms = nlohmann::json::object();

@@ -135,6 +135,9 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_flag("!--no-shadow-cache", o.shadowCache,
                  "Draw the shadow map's static casters again every frame instead of keeping them while the camera "
                  "stays near");
+    app.add_flag("!--no-clusters", o.clusters,
+                 "Send every plant through the per-plant cull every frame: no quadtree of clusters, no far canopy\n"
+                 "(docs/CLUSTERS.md)");
     app.add_option("--device", o.deviceName, "Use the Vulkan device whose name contains this text");
     app.add_flag("--list-devices", o.listDevices, "List the Vulkan devices and exit");
     app.add_flag("--validation,!--no-validation", o.validation,

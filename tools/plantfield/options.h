@@ -62,6 +62,7 @@ struct PlantfieldOptions {
     bool shadows = true;
     bool shadowCache = true;      // false: every frame draws its static shadow casters again
     bool occlusionCulling = true; // false: every plant in view is drawn (no depth pyramid test)
+    bool clusters = true;         // false: every plant through the per-plant cull, no far canopy (--no-clusters)
     std::string deviceName;
     bool listDevices = false;
     bool validation = false;
