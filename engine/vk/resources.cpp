@@ -2,6 +2,7 @@
 
 #include "engine/vk/vk_check.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -48,13 +49,18 @@ Buffer createHostBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFla
 }
 
 Buffer createDeviceBufferWithData(GpuResources& owner, const void* data, VkDeviceSize size, VkBufferUsageFlags usage) {
+    // Vulkan has no empty buffers: an empty array (a species that draws
+    // nothing has no joints) gets one zeroed texel, so its descriptors and
+    // texel views stay valid.
+    const VkDeviceSize bufferSize = std::max<VkDeviceSize>(size, kSmallestBufferBytes);
     GpuResources scratch(owner.ctx());
-    Buffer staging = createHostBuffer(scratch, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-    std::memcpy(staging.mapped, data, size);
+    Buffer staging = createHostBuffer(scratch, bufferSize, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    std::memset(staging.mapped, 0, bufferSize);
+    if (size > 0) std::memcpy(staging.mapped, data, size);
     Buffer out =
-        createBuffer(owner, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        createBuffer(owner, bufferSize, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     submitAndWait(owner.ctx(), [&](VkCommandBuffer cmd) {
-        VkBufferCopy region{0, 0, size};
+        VkBufferCopy region{0, 0, bufferSize};
         vkCmdCopyBuffer(cmd, staging.buffer, out.buffer, 1, &region);
     });
     return out;
