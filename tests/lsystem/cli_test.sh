@@ -92,6 +92,9 @@ expect_run export-read-only 2 'locked.glb.* is read-only' -- "$LSYS" export "$DA
 mkfifo "$WORK/pipe.glb"
 expect_run export-fifo 2 'is a fifo' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/pipe.glb"
 [ -p "$WORK/pipe.glb" ] || fail "export-fifo: the fifo was replaced"
+printf 'Axiom: F(1) F(0/0)\n' > "$WORK/nan.lsys"
+expect_run export-not-a-number 2 "the turtle's F got NaN" -- "$LSYS" export "$WORK/nan.lsys" -o "$WORK/nan.glb"
+[ -e "$WORK/nan.glb" ] && fail "export-not-a-number: a file was written"
 expect_run derive-negative-steps 2 'steps' -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" -n -1
 expect_run help 0 'derive' -- "$LSYS" --help
 expect_run derive-help 0 '--max-modules' -- "$LSYS" derive --help
