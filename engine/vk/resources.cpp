@@ -20,6 +20,24 @@ VkDeviceSize texelBytesOf(VkFormat format) {
     }
 }
 
+// Memory for a new buffer or image, which is owned after it so destroyed
+// before it is freed; when the allocation fails the object is destroyed
+// before the error goes on.
+template <class Handle>
+VkDeviceMemory allocateAndOwn(GpuResources& owner, Handle handle, const VkMemoryRequirements& requirements,
+                              VkMemoryPropertyFlags flags,
+                              void (*destroy)(VkDevice, Handle, const VkAllocationCallbacks*)) {
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    try {
+        memory = owner.allocate(requirements, flags);
+    } catch (...) {
+        destroy(owner.ctx().device, handle, nullptr);
+        throw;
+    }
+    owner.own(handle);
+    return memory;
+}
+
 } // namespace
 
 Buffer createBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFlags usage,
@@ -35,9 +53,7 @@ Buffer createBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFlags u
 
     VkMemoryRequirements req;
     vkGetBufferMemoryRequirements(device, out.buffer, &req);
-    const VkDeviceMemory memory = owner.allocate(req, memoryFlags);
-    // Owned after its memory, so destroyed before it is freed.
-    owner.own(out.buffer);
+    const VkDeviceMemory memory = allocateAndOwn(owner, out.buffer, req, memoryFlags, vkDestroyBuffer);
     VK_CHECK(vkBindBufferMemory(device, out.buffer, memory, 0));
     if (memoryFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
         VK_CHECK(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &out.mapped));
@@ -120,9 +136,8 @@ Image createImage(GpuResources& owner, const ImageDesc& desc) {
 
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(device, out.image, &req);
-    const VkDeviceMemory memory = owner.allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    // Owned after its memory, so destroyed before it is freed.
-    owner.own(out.image);
+    const VkDeviceMemory memory =
+        allocateAndOwn(owner, out.image, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, vkDestroyImage);
     VK_CHECK(vkBindImageMemory(device, out.image, memory, 0));
 
     out.view =
