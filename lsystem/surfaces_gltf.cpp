@@ -116,7 +116,7 @@ constexpr int kMaxJsonDepth = 64;
 std::string documentJson(const std::filesystem::path& file, bool binary, const MeshFileReader& reader) {
     std::error_code ec;
     const uintmax_t size = std::filesystem::file_size(file, ec);
-    if (ec || !std::filesystem::is_regular_file(file)) reader.fail("is not a readable file");
+    if (ec || !std::filesystem::is_regular_file(file, ec)) reader.fail("is not a readable file");
     if (size > kMaxMeshFileBytes) reader.fail("is larger than " + std::to_string(kMaxMeshFileBytes >> 20) + " MiB");
     std::ifstream in(file, std::ios::binary);
     std::string bytes(static_cast<size_t>(size), '\0');
@@ -155,7 +155,8 @@ void checkExternalUris(const nlohmann::json& document, const char* array, const 
         const std::string uri = entry["uri"].get<std::string>();
         if (uri.rfind("data:", 0) == 0) continue;
         const std::filesystem::path target = folder / percentDecoded(uri);
-        if (!std::filesystem::is_regular_file(target))
+        std::error_code ec; // a name too long for the file system is no file either
+        if (!std::filesystem::is_regular_file(target, ec))
             reader.fail(std::string(array) + "[" + std::to_string(i) + "] names '" + uri + "', which is not a file");
     }
 }
