@@ -29,9 +29,10 @@ bool ModuleInterner::Equal::operator()(uint32_t a, uint32_t b) const {
     const TerminalModule& x = draft->modules[a];
     const TerminalModule& y = draft->modules[b];
     // Bits, not values: -0 and 0 print differently, and NaN must equal itself.
+    // No parameters: params may still be empty, and memcmp of its null data is undefined.
     return x.symbol == y.symbol && x.paramCount == y.paramCount &&
-           std::memcmp(draft->params.data() + x.paramStart, draft->params.data() + y.paramStart,
-                       x.paramCount * sizeof(float)) == 0;
+           (x.paramCount == 0 || std::memcmp(draft->params.data() + x.paramStart, draft->params.data() + y.paramStart,
+                                             x.paramCount * sizeof(float)) == 0);
 }
 
 uint32_t ModuleInterner::intern(SymbolId symbol, std::span<const float> parameters) {

@@ -6,43 +6,81 @@ namespace lsys {
 
 namespace {
 
-std::string_view lineOf(std::string_view source, int line) {
-    size_t begin = 0;
-    for (int current = 1; current < line; ++current) {
-        size_t newline = source.find('\n', begin);
-        if (newline == std::string_view::npos) return {};
-        begin = newline + 1;
+// Where each line of the source begins: found once, so reporting many
+// diagnostics costs one pass over the source, not one pass each.
+class LineIndex {
+public:
+    explicit LineIndex(std::string_view source) : source_(source) {
+        starts_.push_back(0);
+        for (size_t i = 0; i < source.size(); ++i)
+            if (source[i] == '\n') starts_.push_back(i + 1);
     }
-    size_t end = source.find('\n', begin);
-    if (end == std::string_view::npos) end = source.size();
-    std::string_view text = source.substr(begin, end - begin);
-    if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
-    return text;
+
+    // Line `line` (1-based) without its end of line; empty past the end.
+    std::string_view line(int line) const {
+        if (line < 1 || size_t(line) > starts_.size()) return {};
+        const size_t begin = starts_[size_t(line) - 1];
+        size_t end = size_t(line) < starts_.size() ? starts_[size_t(line)] - 1 : source_.size();
+        std::string_view text = source_.substr(begin, end - begin);
+        if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+        return text;
+    }
+
+private:
+    std::string_view source_;
+    std::vector<size_t> starts_;
+};
+
+// The part of a long line shown around the column: a 10 MB line is not
+// printed whole. `column` becomes the caret's column in what is shown.
+std::string_view windowAround(std::string_view text, int& column, bool& cutBefore, bool& cutAfter) {
+    const size_t at = size_t(std::max(column, 1)) - 1;
+    const size_t begin = at > kDiagnosticContext ? at - kDiagnosticContext : 0;
+    const size_t end = std::min(text.size(), at + kDiagnosticContext);
+    cutBefore = begin > 0;
+    cutAfter = end < text.size();
+    column = int(at - begin) + 1;
+    return begin < end ? text.substr(begin, end - begin) : std::string_view();
 }
 
-} // namespace
-
-std::string formatDiagnostic(const Diagnostic& diagnostic, std::string_view source) {
+std::string formatWithLine(const Diagnostic& diagnostic, std::string_view text) {
     std::string out = diagnostic.file + ":" + std::to_string(diagnostic.line) + ":" +
                       std::to_string(diagnostic.column) + ": error: " + diagnostic.message;
     if (!diagnostic.expected.empty()) out += " (expected " + diagnostic.expected + ")";
     out += '\n';
-    std::string_view text = lineOf(source, diagnostic.line);
     if (diagnostic.line > 0 && (!text.empty() || diagnostic.column > 0)) {
+        int column = diagnostic.column;
+        bool cutBefore = false, cutAfter = false;
+        const std::string_view shown = windowAround(text, column, cutBefore, cutAfter);
+        const std::string_view ellipsis = "...";
         out += "  ";
-        out += text;
+        if (cutBefore) out += ellipsis;
+        out += shown;
+        if (cutAfter) out += ellipsis;
         out += "\n  ";
+        if (cutBefore) out.append(ellipsis.size(), ' ');
         // Keep tabs so the caret lines up under the offending character.
-        for (int i = 1; i < diagnostic.column; ++i)
-            out += (static_cast<size_t>(i - 1) < text.size() && text[i - 1] == '\t') ? '\t' : ' ';
+        for (int i = 1; i < column; ++i)
+            out += (size_t(i - 1) < shown.size() && shown[size_t(i) - 1] == '\t') ? '\t' : ' ';
         out += "^\n";
     }
     return out;
 }
 
+} // namespace
+
+std::string formatDiagnostic(const Diagnostic& diagnostic, std::string_view source) {
+    return formatWithLine(diagnostic, LineIndex(source).line(diagnostic.line));
+}
+
 std::string formatDiagnostics(const std::vector<Diagnostic>& diagnostics, std::string_view source) {
+    const LineIndex lines(source);
     std::string out;
-    for (const Diagnostic& diagnostic : diagnostics) out += formatDiagnostic(diagnostic, source);
+    const size_t shown = std::min(diagnostics.size(), kMaxReportedDiagnostics);
+    for (size_t i = 0; i < shown; ++i) out += formatWithLine(diagnostics[i], lines.line(diagnostics[i].line));
+    if (diagnostics.size() > shown)
+        out += diagnostics.front().file + ": " + std::to_string(diagnostics.size() - shown) +
+               " more errors not shown (" + std::to_string(diagnostics.size()) + " in all)\n";
     return out;
 }
 

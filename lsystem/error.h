@@ -17,9 +17,17 @@ struct Diagnostic {
     std::string expected; // what would have been accepted here (may be empty)
 };
 
+// Characters of the offending line shown either side of the column; a
+// longer line is cut with "..." marks.
+inline constexpr size_t kDiagnosticContext = 80;
+// formatDiagnostics reports this many and counts the rest, as compilers do.
+inline constexpr size_t kMaxReportedDiagnostics = 100;
+
 // "file:line:col: error: message (expected ...)" followed by the offending
-// source line and a caret under the column.
+// source line (or kDiagnosticContext characters either side of the column)
+// and a caret under the column.
 std::string formatDiagnostic(const Diagnostic& diagnostic, std::string_view source);
+// The first kMaxReportedDiagnostics, then a line counting the others.
 std::string formatDiagnostics(const std::vector<Diagnostic>& diagnostics, std::string_view source);
 
 // Orders diagnostics by line, then column, keeping the order of equal positions.
@@ -28,6 +36,13 @@ void sortBySourcePosition(std::vector<Diagnostic>& diagnostics);
 // Raised by derivation and interpretation: budget exceeded, bad runtime value.
 struct DerivationError : std::runtime_error {
     using std::runtime_error::runtime_error;
+};
+
+// The derivation would outgrow DeriveOptions::maxModules (or memory first).
+// Its own type so each tool can name its own way to raise the budget or
+// derive less.
+struct ModuleBudgetError : DerivationError {
+    using DerivationError::DerivationError;
 };
 
 } // namespace lsys

@@ -11,25 +11,6 @@
 
 namespace lsys::export_detail {
 
-// A file written under PATH.partial and moved to PATH by commit(); destroyed
-// uncommitted (an exception on the way), it removes the partial file.
-class PartialFile {
-public:
-    explicit PartialFile(std::filesystem::path target);
-    PartialFile(const PartialFile&) = delete;
-    PartialFile& operator=(const PartialFile&) = delete;
-    ~PartialFile();
-
-    std::ostream& stream() { return out_; }
-    void commit();
-
-private:
-    std::filesystem::path target_;
-    std::filesystem::path partial_;
-    std::ofstream out_;
-    bool committed_ = false;
-};
-
 // The material's name, or "material_<index>" where it has none.
 std::string materialName(const std::vector<Material>& materials, uint32_t index);
 

@@ -53,6 +53,9 @@ struct ProductionSet {
     bool empty() const { return productions.empty(); }
 };
 
+// The most derivation steps a file's 'derivation length:' or a tool's -n asks for.
+inline constexpr int kMaxDerivationLength = 1'000'000;
+
 struct Grammar {
     std::string file;
     SymbolTable symbols;

@@ -8,6 +8,7 @@
 
 #include "lsystem/export_detail.h"
 #include "lsystem/gltf_builder.h"
+#include "lsystem/output_file.h"
 #include "lsystem/turtle_builder.h"
 
 namespace lsys {
@@ -134,7 +135,7 @@ GraphExportSummary exportInstanceGraph(const InstanceGraph& graph, const Surface
                                      " glTF nodes (one per instance path), more than the budget of " +
                                      std::to_string(options.maxNodes) +
                                      "; export the flat form (--flat) or derive fewer steps");
-        PartialFile file(path);
+        OutputFile file(path);
         writeGraphGltf(graph, surfaces, file.stream(), options, extension == ".glb", summary);
         file.commit();
     } catch (const std::exception& error) {

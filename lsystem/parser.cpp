@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -171,7 +172,7 @@ struct Parser {
         Cursor start = cursor;
         std::optional<double> value = constantExpression(cursor);
         if (!value || !expectLineEnd(cursor)) return;
-        if (!(*value >= 0) || *value != std::floor(*value) || *value > 1e6)
+        if (!(*value >= 0) || *value != std::floor(*value) || *value > kMaxDerivationLength)
             return error(start, "invalid derivation length", "a non-negative integer");
         grammar.derivationLength = static_cast<int>(*value);
     }
@@ -474,12 +475,30 @@ ParseResult parseLsystem(std::string_view source, const ParseOptions& options) {
     return result;
 }
 
-std::string readTextFile(const std::string& path, bool& ok) {
+std::string readTextFile(const std::string& path, std::string& problem) {
+    problem.clear();
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        problem = "is a folder, not a plant file";
+        return {};
+    }
     std::ifstream in(path, std::ios::binary);
-    ok = static_cast<bool>(in);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    if (!in) {
+        problem = "cannot be opened";
+        return {};
+    }
+    // In pieces, so a device or fifo without end stops at the limit.
+    std::string text;
+    char piece[1 << 16];
+    while (in.read(piece, sizeof piece) || in.gcount() > 0) {
+        text.append(piece, size_t(in.gcount()));
+        if (text.size() > kMaxSourceBytes) {
+            problem = "is larger than " + std::to_string(kMaxSourceBytes >> 20) + " MiB";
+            return {};
+        }
+    }
+    if (in.bad()) problem = "cannot be read";
+    return problem.empty() ? text : std::string();
 }
 
 } // namespace lsys

@@ -28,6 +28,12 @@ struct ParseResult {
 // translate other notations and call this.
 ParseResult parseLsystem(std::string_view source, const ParseOptions& options = {});
 
-std::string readTextFile(const std::string& path, bool& ok);
+// Plant files are text of at most this many bytes: a 64 MiB L-system is
+// already far past any in the literature, and a device such as /dev/zero
+// would otherwise be read without end.
+inline constexpr size_t kMaxSourceBytes = size_t(64) << 20;
+// The file's bytes; on failure empty, with `problem` saying why ("is a
+// folder", "cannot be opened", "is larger than 64 MiB").
+std::string readTextFile(const std::string& path, std::string& problem);
 
 } // namespace lsys

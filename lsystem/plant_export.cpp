@@ -1,38 +1,15 @@
 #include "lsystem/plant_export.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "lsystem/export_detail.h"
+#include "lsystem/output_file.h"
 
 namespace lsys {
 namespace export_detail {
-
-PartialFile::PartialFile(std::filesystem::path target)
-    : target_(std::move(target)), partial_(target_.string() + ".partial"),
-      out_(partial_, std::ios::binary | std::ios::trunc) {
-    if (!out_) throw std::runtime_error("cannot create " + partial_.string() + ": " + std::strerror(errno));
-}
-
-PartialFile::~PartialFile() {
-    if (committed_) return;
-    out_.close();
-    std::error_code ignored;
-    std::filesystem::remove(partial_, ignored);
-}
-
-void PartialFile::commit() {
-    out_.close();
-    if (!out_) throw std::runtime_error("cannot write " + target_.string() + ": " + std::strerror(errno));
-    std::error_code error;
-    std::filesystem::rename(partial_, target_, error);
-    if (error) throw std::runtime_error("cannot rename " + partial_.string() + " into place: " + error.message());
-    committed_ = true;
-}
 
 std::string materialName(const std::vector<Material>& materials, uint32_t index) {
     const std::string& name = materials[index].name;
@@ -98,12 +75,12 @@ void exportPlant(const PlantAsset& asset, const std::filesystem::path& path, con
         if (extension == ".obj") {
             std::filesystem::path mtlPath = path;
             mtlPath.replace_extension(".mtl");
-            PartialFile mtl(mtlPath), obj(path);
+            OutputFile mtl(mtlPath), obj(path);
             writeObj(asset, obj.stream(), mtl.stream(), mtlPath.filename().string(), options);
             mtl.commit();
             obj.commit();
         } else {
-            PartialFile file(path);
+            OutputFile file(path);
             writeGltf(asset, file.stream(), options, extension == ".glb");
             file.commit();
         }

@@ -190,8 +190,8 @@ Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const 
 [[noreturn]] void budgetExceeded(size_t budget, uint64_t pass) {
     std::string when = pass >= kInterpretationPass ? "while applying interpretation rules"
                                                    : "at derivation step " + std::to_string(pass / kPassesPerStep);
-    throw DerivationError("module budget exceeded " + when + ": the string would have more than " +
-                          std::to_string(budget) + " modules (raise it with --max-modules)");
+    throw ModuleBudgetError("module budget exceeded " + when + ": the string would have more than " +
+                            std::to_string(budget) + " modules");
 }
 
 // Runs one function per range, the first on the calling thread.
@@ -418,7 +418,7 @@ ModuleString withinMemory(Work work) {
     try {
         return work();
     } catch (const std::bad_alloc&) {
-        throw DerivationError("out of memory while deriving (lower --max-modules or the number of steps)");
+        throw ModuleBudgetError("out of memory while deriving, below the module budget");
     }
 }
 

@@ -3,7 +3,11 @@
 
 #include <tiny_gltf.h>
 
+#include <nlohmann/json.hpp>
+
+#include <cctype>
 #include <cstring>
+#include <fstream>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -76,6 +80,8 @@ private:
         return accessor;
     }
 
+    // Offsets, lengths, strides and counts come from the file and may be near
+    // 2^64: every bound is checked by subtraction, never by a sum that wraps.
     template <typename Visit>
     void forEachElement(const tinygltf::Accessor& accessor, size_t elementSize, Visit visit) const {
         if (accessor.bufferView < 0 || static_cast<size_t>(accessor.bufferView) >= model.bufferViews.size())
@@ -84,14 +90,89 @@ private:
         if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size())
             fail("a buffer view has no buffer");
         const std::vector<unsigned char>& data = model.buffers[static_cast<size_t>(view.buffer)].data;
+        if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
+            fail("a buffer view reaches past its buffer");
+        if (view.byteStride != 0 && view.byteStride < elementSize)
+            fail("a buffer view's stride is shorter than the elements of its accessor");
         const size_t stride = view.byteStride != 0 ? view.byteStride : elementSize;
-        const size_t start = view.byteOffset + accessor.byteOffset;
-        if (accessor.count > 0 && (start + stride * (accessor.count - 1) + elementSize > data.size() ||
-                                   accessor.byteOffset + stride * (accessor.count - 1) + elementSize > view.byteLength))
-            fail("an accessor reaches past its buffer");
-        for (size_t i = 0; i < accessor.count; ++i) visit(data.data() + start + i * stride);
+        if (accessor.count == 0) return;
+        if (accessor.byteOffset > view.byteLength || view.byteLength - accessor.byteOffset < elementSize ||
+            accessor.count - 1 > (view.byteLength - accessor.byteOffset - elementSize) / stride)
+            fail("an accessor reaches past its buffer view");
+        const unsigned char* first = data.data() + view.byteOffset + accessor.byteOffset;
+        for (size_t i = 0; i < accessor.count; ++i) visit(first + i * stride);
     }
 };
+
+// tinygltf recurses once per nesting level of the JSON (100 000 nested
+// arrays overflow the stack) and reads whatever a uri names (a folder ends in
+// bad_alloc), so the document is looked at first: a size limit, the JSON's
+// depth (glTF's own structure is six levels deep; extras get the rest) and
+// every external uri a regular file.
+constexpr size_t kMaxMeshFileBytes = size_t(1) << 30;
+constexpr int kMaxJsonDepth = 64;
+
+// The JSON of a .gltf, or the JSON chunk of a .glb (glTF 2.0 §4.4.3).
+std::string documentJson(const std::filesystem::path& file, bool binary, const MeshFileReader& reader) {
+    std::error_code ec;
+    const uintmax_t size = std::filesystem::file_size(file, ec);
+    if (ec || !std::filesystem::is_regular_file(file, ec)) reader.fail("is not a readable file");
+    if (size > kMaxMeshFileBytes) reader.fail("is larger than " + std::to_string(kMaxMeshFileBytes >> 20) + " MiB");
+    std::ifstream in(file, std::ios::binary);
+    std::string bytes(static_cast<size_t>(size), '\0');
+    if (!in.read(bytes.data(), static_cast<std::streamsize>(size))) reader.fail("cannot be read");
+    if (!binary) return bytes;
+    constexpr size_t kHeader = 12, kChunkHeader = 8;
+    if (bytes.size() < kHeader + kChunkHeader) reader.fail("is too short for a .glb header");
+    uint32_t jsonLength = 0;
+    std::memcpy(&jsonLength, bytes.data() + kHeader, sizeof jsonLength);
+    if (jsonLength > bytes.size() - kHeader - kChunkHeader) reader.fail("has a JSON chunk longer than the file");
+    return bytes.substr(kHeader + kChunkHeader, jsonLength);
+}
+
+// A uri's %XX escapes as bytes (RFC 3986 §2.1), as tinygltf reads it.
+std::string percentDecoded(const std::string& uri) {
+    std::string out;
+    for (size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+            out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        } else {
+            out += uri[i];
+        }
+    }
+    return out;
+}
+
+void checkExternalUris(const nlohmann::json& document, const char* array, const std::filesystem::path& folder,
+                       const MeshFileReader& reader) {
+    const auto found = document.find(array);
+    if (found == document.end() || !found->is_array()) return;
+    for (size_t i = 0; i < found->size(); ++i) {
+        const nlohmann::json& entry = (*found)[i];
+        if (!entry.is_object() || !entry.contains("uri") || !entry["uri"].is_string()) continue;
+        const std::string uri = entry["uri"].get<std::string>();
+        if (uri.rfind("data:", 0) == 0) continue;
+        const std::filesystem::path target = folder / percentDecoded(uri);
+        std::error_code ec; // a name too long for the file system is no file either
+        if (!std::filesystem::is_regular_file(target, ec))
+            reader.fail(std::string(array) + "[" + std::to_string(i) + "] names '" + uri + "', which is not a file");
+    }
+}
+
+void checkBeforeReading(const std::filesystem::path& file, bool binary, const MeshFileReader& reader) {
+    const std::string json = documentJson(file, binary, reader);
+    const auto limitDepth = [&](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
+        if (depth > kMaxJsonDepth)
+            reader.fail("nests its JSON deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+        return true;
+    };
+    const nlohmann::json document = nlohmann::json::parse(json, limitDepth, false);
+    if (document.is_discarded() || !document.is_object()) return; // tinygltf reports the syntax error
+    checkExternalUris(document, "buffers", file.parent_path(), reader);
+    checkExternalUris(document, "images", file.parent_path(), reader);
+}
 
 int attribute(const tinygltf::Primitive& primitive, const char* name) {
     const auto found = primitive.attributes.find(name);
@@ -106,9 +187,15 @@ SurfaceMesh loadSurfaceFile(const std::filesystem::path& file, const std::string
     std::string error;
     std::string warning;
     const bool binary = file.extension() == ".glb";
-    const bool loaded = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, file.string())
-                               : loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
     const MeshFileReader reader{model, file};
+    checkBeforeReading(file, binary, reader);
+    bool loaded = false;
+    try {
+        loaded = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, file.string())
+                        : loader.LoadASCIIFromFile(&model, &error, &warning, file.string());
+    } catch (const std::bad_alloc&) {
+        reader.fail("asks for more memory than there is (a length in it is too large)");
+    }
     if (!loaded) reader.fail(error.empty() ? "cannot be read" : error);
     if (model.meshes.empty()) reader.fail("has no mesh");
 

@@ -1,5 +1,7 @@
 #include "lsystem/turtle.h"
 
+#include <cmath>
+
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 
@@ -46,7 +48,16 @@ Frame frameOf(const TurtleState& s) {
 
 void applyModule(const TurtleCommand& command, std::span<const float> parameters, const TurtleSettings& settings,
                  TurtleState& state, TurtleStack& stack, PlantAssetBuilder& out) {
-    actingDefinition(command.action, stack.polygons.size()).apply({command, parameters, settings, state, stack, out});
+    const TurtleCommandDefinition& definition = actingDefinition(command.action, stack.polygons.size());
+    // NaN or infinity would spread through every frame after it into the
+    // meshes and exports (glTF forbids them): stop at the module that brings it.
+    if (command.action != TurtleAction::None)
+        for (float value : parameters)
+            if (!std::isfinite(value))
+                throw DerivationError("the turtle's " + std::string(definition.symbol) + " got " +
+                                      (std::isnan(value) ? "NaN" : "an infinite value") +
+                                      " as a parameter (an expression divides by zero or leaves its domain)");
+    definition.apply({command, parameters, settings, state, stack, out});
 }
 
 void interpretModules(const ModuleString& string, std::span<const TurtleCommand> commands,

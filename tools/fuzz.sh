@@ -1,26 +1,38 @@
 #!/usr/bin/env bash
-# Fuzzes the .lsys parser, rewriter and turtle with libFuzzer (clang, with
-# address and undefined-behaviour sanitizers) for SECONDS (default 120).
-# It works on a scratch corpus in build-fuzz/ seeded from tests/fuzz/corpus/
-# and data/plants/, then merges what adds coverage back into
-# tests/fuzz/corpus/, which the regular test suite replays. A crash leaves
-# build-fuzz/crash-*: fix it, then add the input to tests/fuzz/crashers/.
-# Usage: tools/fuzz.sh [SECONDS]
+# Fuzzes one loader with libFuzzer (clang, with address and undefined-behaviour
+# sanitizers) for SECONDS (default 120):
+#   lsys   the dialect-aware .lsys parser, the rewriter and the turtle
+#   scene  the scene loader (JSON, validation, paths, placement rules)
+#   gltf   the glTF surface loader (tinygltf behind our own checks)
+# It works on a scratch corpus in build-fuzz/run-TARGET seeded from
+# tests/fuzz/corpus/TARGET and the shipped files of that kind, then merges
+# what adds coverage back into tests/fuzz/corpus/TARGET, which the regular
+# test suite replays. A crash leaves build-fuzz/crash-*: fix it, then add the
+# input to tests/fuzz/crashers/TARGET.
+# Usage: tools/fuzz.sh [lsys|scene|gltf] [SECONDS]
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-seconds=${1:-120}
+target=${1:-lsys}
+seconds=${2:-120}
+case "$target" in
+  lsys) seeds=("$root/data/plants") options=(-dict="$root/tests/fuzz/lsys.dict" -max_len=4096) ;;
+  scene) seeds=("$root/data/scenes") options=(-dict="$root/tests/fuzz/scene.dict" -max_len=8192) ;;
+  gltf) seeds=("$root/data/meshes") options=(-dict="$root/tests/fuzz/gltf.dict" -max_len=16384) ;;
+  *) echo "fuzz.sh: unknown target '$target' (known: lsys, scene, gltf)" >&2; exit 2 ;;
+esac
 build=$root/build-fuzz
 "$root/tools/deps.sh" fuzz
 if [ ! -f "$build/build.ninja" ]; then
   cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DPLANTFIELD_FUZZ=ON >/dev/null
 fi
-cmake --build "$build" --target lsys_fuzzer
-fuzzer=$build/tests/fuzz/lsys_fuzzer
-mkdir -p "$build/run-corpus"
+cmake --build "$build" --target "${target}_fuzzer"
+fuzzer=$build/tests/fuzz/${target}_fuzzer
+corpus=$root/tests/fuzz/corpus/$target
+mkdir -p "$build/run-$target" "$corpus"
 cd "$build"
-"$fuzzer" -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=4096 \
-  -dict="$root/tests/fuzz/lsys.dict" "$build/run-corpus" "$root/tests/fuzz/corpus" "$root/data/plants"
+"$fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 "${options[@]}" \
+  "$build/run-$target" "$corpus" "${seeds[@]}"
 # Keep only inputs that add coverage to what the repository already holds.
-"$fuzzer" -merge=1 "$root/tests/fuzz/corpus" "$build/run-corpus" 2>/dev/null
-echo "fuzz.sh: corpus now has $(ls "$root/tests/fuzz/corpus" | wc -l) inputs"
+"$fuzzer" -merge=1 "$corpus" "$build/run-$target" 2>/dev/null
+echo "fuzz.sh: the $target corpus now has $(ls "$corpus" | wc -l) inputs"

@@ -69,7 +69,8 @@ struct FieldFrameStats {
     std::array<uint32_t, LOD_COUNT> plantsPerLod{}; // fading plants count at both LODs
     std::array<uint32_t, DRAW_CLASS_COUNT> draws{}; // indirect commands per class
     uint64_t triangles = 0;                         // colour pass, plants and canopy
-    uint32_t occluded = 0; // in view and large enough to draw, hidden by the depth pyramid (0 without occlusion culling)
+    uint32_t occluded =
+        0; // in view and large enough to draw, hidden by the depth pyramid (0 without occlusion culling)
     // The sun's shadow map (zero with shadows off): plants drawn into this
     // frame's map on top of the cache, per LOD; impostors the cache holds
     // (as last drawn); times this renderer has drawn the cache.
@@ -97,10 +98,9 @@ std::string plantsPerLodText(const FieldFrameStats& stats);
 // without occlusion culling), the depth pyramid, the late cull with its
 // occlusion test, the late phase's draws, then the anti-aliasing
 // (target_pass.h). Without occlusion culling the three late scopes are empty.
-inline constexpr const char* kFieldPasses[] = {"physics",     "pose",          "clusters",  "cull",
-                                               "shadow",      "colour",        "plants",    "impostors",
-                                               "canopy",      "terrain_sky",   "depth_pyramid", "occlusion",
-                                               "late_draws",  kAntialiasScope};
+inline constexpr const char* kFieldPasses[] = {
+    "physics",   "pose",   "clusters",    "cull",          "shadow",    "colour",     "plants",
+    "impostors", "canopy", "terrain_sky", "depth_pyramid", "occlusion", "late_draws", kAntialiasScope};
 
 // True for the draw scopes recorded inside "colour" (those after it in
 // kFieldPasses): a frame's total adds only the others.

@@ -63,8 +63,11 @@ uint32_t atlasLayers(const GpuContext& ctx, const PlantModelPool& pool, const Im
     const uint64_t layerCount = uint64_t(pool.models.size()) * settings.frames;
     if (layerCount == 0) throw std::runtime_error("impostor atlas: the pool has no models");
     if (layerCount > ctx.properties.limits.maxImageArrayLayers)
-        throw std::runtime_error("impostor atlas: " + std::to_string(layerCount) + " layers exceed the device's " +
-                                 std::to_string(ctx.properties.limits.maxImageArrayLayers));
+        throw std::runtime_error(
+            "the impostor atlas would need " + std::to_string(layerCount) + " layers (" +
+            std::to_string(pool.models.size()) + " plant models, the scene's variants of every species, times " +
+            std::to_string(settings.frames) + " views), more than this device's " +
+            std::to_string(ctx.properties.limits.maxImageArrayLayers) + ": give the species fewer \"variants\"");
     if (settings.frameSize > ctx.properties.limits.maxImageDimension2D)
         throw std::runtime_error("impostor atlas: frameSize " + std::to_string(settings.frameSize) +
                                  " exceeds the device's image limit");

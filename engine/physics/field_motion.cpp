@@ -37,7 +37,7 @@ std::vector<uint32_t> skeletonPerPlant(const FieldContent& content) {
 
 template <class T>
 Buffer deviceCopyOf(GpuResources& owner, const std::vector<T>& data, VkBufferUsageFlags usage) {
-    return createDeviceBufferWithData(owner, data.data(), std::max<size_t>(1, data.size()) * sizeof(T), usage);
+    return createDeviceBufferWithData(owner, data.data(), data.size() * sizeof(T), usage);
 }
 
 void copyWhole(VkCommandBuffer cmd, const Buffer& from, const Buffer& to) {

@@ -72,12 +72,21 @@ void appendExplicit(const Scene& scene, const Heightfield& terrain, size_t speci
     }
 }
 
+// A density of zero or a count of zero asks for no plant: it has no rule (a
+// rule's zero density means "use the distance", which would fill the terrain).
+bool placesNothing(const Placement& p) {
+    return (p.mode == PlacementMode::Density && p.densityPerHectare == 0.0f) ||
+           (p.mode == PlacementMode::Count && p.count == 0);
+}
+
 } // namespace
 
 std::vector<PlacementRule> placementRules(const Scene& scene) {
     std::vector<PlacementRule> rules;
-    for (size_t i = 0; i < scene.species.size(); ++i)
-        if (scene.species[i].placement.mode != PlacementMode::Explicit) rules.push_back(ruleOf(scene, i));
+    for (size_t i = 0; i < scene.species.size(); ++i) {
+        const Placement& placement = scene.species[i].placement;
+        if (placement.mode != PlacementMode::Explicit && !placesNothing(placement)) rules.push_back(ruleOf(scene, i));
+    }
     return rules;
 }
 

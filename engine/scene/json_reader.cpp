@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace pf {
@@ -165,6 +166,42 @@ size_t editDistance(std::string_view a, std::string_view b) {
     return row[b.size()];
 }
 
+// The offset of the first key an object repeats, or npos. nlohmann::json
+// keeps the last value while positions are looked up at the first, so a
+// repeated key would be reported at the wrong place with the wrong value.
+size_t repeatedKeyOffset(std::string_view text, std::string& key) {
+    struct Level {
+        bool object = false;
+        bool expectKey = false;
+        std::set<std::string_view> keys;
+    };
+    std::vector<Level> levels;
+    for (size_t pos = 0; pos < text.size();) {
+        const char c = text[pos];
+        if (c == '"') {
+            const size_t end = skipString(text, pos);
+            if (!levels.empty() && levels.back().expectKey) {
+                const std::string_view raw = text.substr(pos, end - pos);
+                if (!levels.back().keys.insert(raw).second) {
+                    key = decodeKey(raw);
+                    return pos;
+                }
+                levels.back().expectKey = false;
+            }
+            pos = end;
+            continue;
+        }
+        if (c == '{' || c == '[')
+            levels.push_back({c == '{', c == '{', {}});
+        else if ((c == '}' || c == ']') && !levels.empty())
+            levels.pop_back();
+        else if (c == ',' && !levels.empty() && levels.back().object)
+            levels.back().expectKey = true;
+        ++pos;
+    }
+    return std::string_view::npos;
+}
+
 JsonNode childNode(const JsonNode& parent, const nlohmann::json& value, std::string token) {
     JsonNode child{parent.source, &value, parent.path};
     child.path.push_back(std::move(token));
@@ -175,7 +212,13 @@ JsonNode childNode(const JsonNode& parent, const nlohmann::json& value, std::str
 
 JsonSource readJsonFile(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
-    if (!in || std::filesystem::is_directory(file)) throw SceneError(file.string() + ": cannot read the scene file");
+    std::error_code ec;
+    if (!in || !std::filesystem::is_regular_file(file, ec))
+        throw SceneError(file.string() + ": cannot read the scene file (not a regular file)");
+    // A million explicitly placed plants take about 60 MB of JSON.
+    constexpr uintmax_t kMaxSceneBytes = uintmax_t(256) << 20;
+    if (std::filesystem::file_size(file, ec) > kMaxSceneBytes)
+        throw SceneError(file.string() + ": the scene file is larger than 256 MiB");
     JsonSource source{file, std::string(std::istreambuf_iterator<char>(in), {}), {}};
     try {
         source.root = nlohmann::json::parse(source.text);
@@ -198,6 +241,10 @@ JsonSource readJsonFile(const std::filesystem::path& file) {
         const size_t offset = e.byte > 0 ? e.byte - 1 : 0;
         throw SceneError(file.string() + ":" + lineAndColumn(source.text, offset) + ": " + what);
     }
+    std::string key;
+    if (const size_t repeated = repeatedKeyOffset(source.text, key); repeated != std::string_view::npos)
+        throw SceneError(file.string() + ":" + lineAndColumn(source.text, repeated) + ": \"" + key +
+                         "\" is given twice in one object");
     return source;
 }
 

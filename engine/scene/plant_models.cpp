@@ -326,9 +326,9 @@ float scaleToHeight(std::array<ClassMeshes, kMeshLodCount>& lods, float height) 
 
 lsys::Grammar parseSpecies(const Species& species) {
     const std::string path = species.lsystem.string();
-    bool readable = false;
-    const std::string source = lsys::readTextFile(path, readable);
-    if (!readable) throw std::runtime_error("species '" + species.name + "': cannot read " + path);
+    std::string problem;
+    const std::string source = lsys::readTextFile(path, problem);
+    if (!problem.empty()) throw std::runtime_error("species '" + species.name + "': " + path + " " + problem);
     lsys::ParseOptions options;
     options.file = path;
     options.defines.insert(species.defines.begin(), species.defines.end());
@@ -349,8 +349,10 @@ lsys::PlantAsset derivePlant(const Species& species, const lsys::Grammar& gramma
         const lsys::ModuleString derived = lsys::derive(grammar, options);
         return lsys::plantFromGrammar(grammar, derived, surfaces);
     } catch (const std::runtime_error& error) { // DerivationError (budget), SurfaceError
+        const bool budget = dynamic_cast<const lsys::ModuleBudgetError*>(&error) != nullptr;
         throw std::runtime_error("species '" + species.name + "' (" + species.lsystem.string() + ", seed " +
-                                 std::to_string(seed) + "): " + error.what());
+                                 std::to_string(seed) + "): " + error.what() +
+                                 (budget ? "; give the species fewer \"steps\"" : ""));
     }
 }
 

@@ -57,6 +57,8 @@ Camera defaultOrbit(double t) {
 } // namespace
 
 Camera cameraAt(const CameraPath& path, double t) {
+    // NaN fails every comparison below, so it would pick no span: it is the start.
+    if (std::isnan(t)) t = path.keyframes.empty() ? 0.0 : path.keyframes.front().time;
     const std::vector<CameraKeyframe>& keys = path.keyframes;
     Camera camera = keys.empty() ? defaultOrbit(t) : Camera{};
     camera.fovYDegrees = path.fovYDegrees;

@@ -204,7 +204,7 @@ Scene loadScene(const std::filesystem::path& file);
 
 // The camera on the path at time t (seconds): a Catmull-Rom spline through the
 // keyframes with tangents from the neighbouring keys' times, held at the first
-// and last keyframe outside them. An empty path orbits the origin.
+// and last keyframe outside them (NaN is the first). An empty path orbits the origin.
 Camera cameraAt(const CameraPath& path, double t);
 
 // `count` scene times spread evenly over the path: from its first keyframe to

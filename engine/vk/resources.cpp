@@ -2,6 +2,7 @@
 
 #include "engine/vk/vk_check.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,24 @@ VkDeviceSize texelBytesOf(VkFormat format) {
     }
 }
 
+// Memory for a new buffer or image, which is owned after it so destroyed
+// before it is freed; when the allocation fails the object is destroyed
+// before the error goes on.
+template <class Handle>
+VkDeviceMemory allocateAndOwn(GpuResources& owner, Handle handle, const VkMemoryRequirements& requirements,
+                              VkMemoryPropertyFlags flags,
+                              void (*destroy)(VkDevice, Handle, const VkAllocationCallbacks*)) {
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    try {
+        memory = owner.allocate(requirements, flags);
+    } catch (...) {
+        destroy(owner.ctx().device, handle, nullptr);
+        throw;
+    }
+    owner.own(handle);
+    return memory;
+}
+
 } // namespace
 
 Buffer createBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFlags usage,
@@ -34,9 +53,7 @@ Buffer createBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFlags u
 
     VkMemoryRequirements req;
     vkGetBufferMemoryRequirements(device, out.buffer, &req);
-    const VkDeviceMemory memory = owner.allocate(req, memoryFlags);
-    // Owned after its memory, so destroyed before it is freed.
-    owner.own(out.buffer);
+    const VkDeviceMemory memory = allocateAndOwn(owner, out.buffer, req, memoryFlags, vkDestroyBuffer);
     VK_CHECK(vkBindBufferMemory(device, out.buffer, memory, 0));
     if (memoryFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
         VK_CHECK(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &out.mapped));
@@ -48,13 +65,18 @@ Buffer createHostBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFla
 }
 
 Buffer createDeviceBufferWithData(GpuResources& owner, const void* data, VkDeviceSize size, VkBufferUsageFlags usage) {
+    // Vulkan has no empty buffers: an empty array (a species that draws
+    // nothing has no joints) gets one zeroed texel, so its descriptors and
+    // texel views stay valid.
+    const VkDeviceSize bufferSize = std::max<VkDeviceSize>(size, kSmallestBufferBytes);
     GpuResources scratch(owner.ctx());
-    Buffer staging = createHostBuffer(scratch, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-    std::memcpy(staging.mapped, data, size);
+    Buffer staging = createHostBuffer(scratch, bufferSize, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    std::memset(staging.mapped, 0, bufferSize);
+    if (size > 0) std::memcpy(staging.mapped, data, size);
     Buffer out =
-        createBuffer(owner, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        createBuffer(owner, bufferSize, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     submitAndWait(owner.ctx(), [&](VkCommandBuffer cmd) {
-        VkBufferCopy region{0, 0, size};
+        VkBufferCopy region{0, 0, bufferSize};
         vkCmdCopyBuffer(cmd, staging.buffer, out.buffer, 1, &region);
     });
     return out;
@@ -114,9 +136,8 @@ Image createImage(GpuResources& owner, const ImageDesc& desc) {
 
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(device, out.image, &req);
-    const VkDeviceMemory memory = owner.allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    // Owned after its memory, so destroyed before it is freed.
-    owner.own(out.image);
+    const VkDeviceMemory memory =
+        allocateAndOwn(owner, out.image, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, vkDestroyImage);
     VK_CHECK(vkBindImageMemory(device, out.image, memory, 0));
 
     out.view =

@@ -27,7 +27,9 @@ Buffer createBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFlags u
                     VkMemoryPropertyFlags memoryFlags);
 // A host-visible, coherent, mapped buffer for data the CPU writes or reads.
 Buffer createHostBuffer(GpuResources& owner, VkDeviceSize size, VkBufferUsageFlags usage);
-// A device-local buffer filled through a staging copy.
+// A device-local buffer filled through a staging copy; `size` 0 (data may
+// then be null) gives kSmallestBufferBytes of zeros.
+inline constexpr VkDeviceSize kSmallestBufferBytes = 16;
 Buffer createDeviceBufferWithData(GpuResources& owner, const void* data, VkDeviceSize size, VkBufferUsageFlags usage);
 
 // A view of a whole buffer as texels of `format`, R32G32B32A32_UINT (16

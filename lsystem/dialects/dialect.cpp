@@ -68,24 +68,26 @@ Translation translateToNative(Dialect dialect, std::string_view source, const st
     return out;
 }
 
-Diagnostic sourcePosition(const Translation& translation, std::string_view source, Diagnostic diagnostic) {
-    if (diagnostic.line < 1 || translation.origin.empty()) return diagnostic;
-    std::vector<size_t> nativeLines = lineStarts(translation.nativeSource);
-    if (static_cast<size_t>(diagnostic.line) > nativeLines.size()) return diagnostic;
-    size_t offset = nativeLines[diagnostic.line - 1] + static_cast<size_t>(std::max(diagnostic.column, 1)) - 1;
-    size_t from = translation.origin[std::min(offset, translation.origin.size() - 1)];
-    std::vector<size_t> sourceLines = lineStarts(source);
-    size_t line = std::upper_bound(sourceLines.begin(), sourceLines.end(), from) - sourceLines.begin();
-    diagnostic.line = static_cast<int>(line);
-    diagnostic.column = static_cast<int>(from - sourceLines[line - 1]) + 1;
-    return diagnostic;
+void mapToSource(const Translation& translation, std::string_view source, std::vector<Diagnostic>& diagnostics) {
+    if (translation.origin.empty() || diagnostics.empty()) return;
+    // Both texts' line starts once for all diagnostics (a file of many
+    // errors is not scanned once per error).
+    const std::vector<size_t> nativeLines = lineStarts(translation.nativeSource);
+    const std::vector<size_t> sourceLines = lineStarts(source);
+    for (Diagnostic& diagnostic : diagnostics) {
+        if (diagnostic.line < 1 || static_cast<size_t>(diagnostic.line) > nativeLines.size()) continue;
+        size_t offset = nativeLines[diagnostic.line - 1] + static_cast<size_t>(std::max(diagnostic.column, 1)) - 1;
+        size_t from = translation.origin[std::min(offset, translation.origin.size() - 1)];
+        size_t line = std::upper_bound(sourceLines.begin(), sourceLines.end(), from) - sourceLines.begin();
+        diagnostic.line = static_cast<int>(line);
+        diagnostic.column = static_cast<int>(from - sourceLines[line - 1]) + 1;
+    }
 }
 
 ParseResult parseDialect(std::optional<Dialect> dialect, std::string_view source, const ParseOptions& options) {
     Translation translation = translateToNative(dialect.value_or(detectDialect(source)), source, options.file);
     ParseResult result = parseLsystem(translation.nativeSource, options);
-    for (Diagnostic& diagnostic : result.diagnostics)
-        diagnostic = sourcePosition(translation, source, std::move(diagnostic));
+    mapToSource(translation, source, result.diagnostics);
     // A statement the translation rejected may be the axiom: "no axiom" would only repeat that error.
     if (!translation.diagnostics.empty())
         std::erase_if(result.diagnostics,
@@ -96,12 +98,12 @@ ParseResult parseDialect(std::optional<Dialect> dialect, std::string_view source
 }
 
 ParseResult loadDialectFile(const std::string& path, std::optional<Dialect> dialect, ParseOptions options) {
-    bool ok = false;
-    std::string source = readTextFile(path, ok);
+    std::string problem;
+    std::string source = readTextFile(path, problem);
     if (options.file == "<input>") options.file = path;
-    if (!ok) {
+    if (!problem.empty()) {
         ParseResult result;
-        result.diagnostics.push_back({path, 0, 0, "cannot read file"});
+        result.diagnostics.push_back({path, 0, 0, "cannot read file: it " + problem});
         return result;
     }
     return parseDialect(dialect, source, options);

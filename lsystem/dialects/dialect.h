@@ -34,15 +34,15 @@ struct Translation {
     std::vector<Diagnostic> diagnostics; // dialect-level problems, at positions of the original source
     // Per byte of nativeSource, the byte of the original source it came from.
     // Native line N holds what dialect line N said wherever the dialect puts one
-    // statement per line; sourcePosition() maps the rest.
+    // statement per line; mapToSource() maps the rest.
     std::vector<uint32_t> origin;
 };
 
 Translation translateToNative(Dialect dialect, std::string_view source, const std::string& file);
 
-// Moves a diagnostic about translation.nativeSource to the line and column of
-// the original source the offending text came from.
-Diagnostic sourcePosition(const Translation& translation, std::string_view source, Diagnostic diagnostic);
+// Moves diagnostics about translation.nativeSource to the lines and columns
+// of the original source the offending text came from.
+void mapToSource(const Translation& translation, std::string_view source, std::vector<Diagnostic>& diagnostics);
 
 // The entry point for plant text in any notation: the given dialect, else the
 // one the header line names, else native. Translates, parses the native text

@@ -19,8 +19,8 @@ inline std::string dataPath(const std::string& relative) { return std::string(PL
 // Loads a file of any dialect (named by its header line); fails the test on any diagnostic.
 inline Grammar loadOk(const std::string& relative) {
     ParseResult result = loadDialectFile(dataPath(relative), std::nullopt);
-    bool readable = false;
-    std::string source = readTextFile(dataPath(relative), readable);
+    std::string problem;
+    std::string source = readTextFile(dataPath(relative), problem);
     EXPECT_TRUE(result.ok()) << relative << ":\n" << formatDiagnostics(result.diagnostics, source);
     return std::move(result.grammar);
 }

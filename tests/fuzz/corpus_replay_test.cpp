@@ -1,7 +1,10 @@
-// Replays every fuzz corpus input (crashers the fuzzer found included, once
-// fixed) and every shipped plant through the parser, rewriter and turtle.
-// Under the regular build this proves none of them crash or hang any more.
-#include "lsys_fuzz_target.h"
+// Replays every fuzz corpus input (crashers the fuzzers found included, once
+// fixed) and every shipped file of each kind through its fuzz target: plant
+// files through parser, rewriter and turtle, scene files through the scene
+// loader, glTF files through the surface loader. Under the regular build this
+// proves none of them crash or hang any more; under the sanitizer build
+// (tools/sanitize.sh) that none reads or writes out of bounds.
+#include "fuzz_targets.h"
 
 #include <gtest/gtest.h>
 
@@ -14,6 +17,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using Target = void (*)(const uint8_t*, size_t);
 
 std::vector<fs::path> inputsUnder(const fs::path& dir) {
     std::vector<fs::path> files;
@@ -23,21 +27,34 @@ std::vector<fs::path> inputsUnder(const fs::path& dir) {
     return files;
 }
 
-void replay(const fs::path& dir, size_t atLeast) {
+void replay(Target target, const fs::path& dir, size_t atLeast) {
     const std::vector<fs::path> files = inputsUnder(dir);
     ASSERT_GE(files.size(), atLeast) << dir;
     for (const fs::path& file : files) {
         SCOPED_TRACE(file.string());
         std::ifstream in(file, std::ios::binary);
         const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        pf::fuzz::runLsysInput(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+        target(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
     }
 }
 
-TEST(FuzzCorpus, EveryCorpusInputRunsToCompletion) { replay(PLANTFIELD_FUZZ_DIR "/corpus", 20); }
+const fs::path kFuzz = PLANTFIELD_FUZZ_DIR;
+const fs::path kData = PLANTFIELD_DATA_DIR;
 
-TEST(FuzzCorpus, EveryPastCrasherRunsToCompletion) { replay(PLANTFIELD_FUZZ_DIR "/crashers", 1); }
+TEST(FuzzCorpus, EveryPlantCorpusInputRunsToCompletion) { replay(pf::fuzz::runLsysInput, kFuzz / "corpus/lsys", 20); }
 
-TEST(FuzzCorpus, EveryShippedPlantRunsToCompletion) { replay(PLANTFIELD_DATA_DIR "/plants", 10); }
+TEST(FuzzCorpus, EveryPastPlantCrasherRunsToCompletion) { replay(pf::fuzz::runLsysInput, kFuzz / "crashers/lsys", 1); }
+
+TEST(FuzzCorpus, EveryShippedPlantRunsToCompletion) { replay(pf::fuzz::runLsysInput, kData / "plants", 10); }
+
+TEST(FuzzCorpus, EverySceneCorpusInputRunsToCompletion) { replay(pf::fuzz::runSceneInput, kFuzz / "corpus/scene", 20); }
+
+TEST(FuzzCorpus, EveryShippedSceneRunsToCompletion) { replay(pf::fuzz::runSceneInput, kData / "scenes", 5); }
+
+TEST(FuzzCorpus, EveryGltfCorpusInputRunsToCompletion) { replay(pf::fuzz::runGltfInput, kFuzz / "corpus/gltf", 20); }
+
+TEST(FuzzCorpus, EveryPastGltfCrasherRunsToCompletion) { replay(pf::fuzz::runGltfInput, kFuzz / "crashers/gltf", 1); }
+
+TEST(FuzzCorpus, EveryShippedMeshRunsToCompletion) { replay(pf::fuzz::runGltfInput, kData / "meshes", 2); }
 
 } // namespace

@@ -1,4 +1,4 @@
-#include "lsys_fuzz_target.h"
+#include "fuzz_targets.h"
 
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/error.h"

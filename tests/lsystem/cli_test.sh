@@ -54,7 +54,7 @@ expect_run check-count 2 '^2 errors$' -- "$LSYS" check "$WORK/bad.lsys"
 expect_run derive-bad 2 'bad.lsys:2:12' -- "$LSYS" derive "$WORK/bad.lsys"
 expect_run check-good 0 'ok' -- "$LSYS" check "$DATA/plants/monopodial_tree.lsys"
 expect_run missing 2 'cannot read file' -- "$LSYS" derive "$WORK/does-not-exist.lsys"
-expect_run budget 2 'module budget exceeded at derivation step 6' -- "$LSYS" derive "$DATA/plants/fractal_bush.lsys" -n 7 --max-modules 100000
+expect_run budget 2 'module budget exceeded at derivation step 6.*--max-modules sets the budget' -- "$LSYS" derive "$DATA/plants/fractal_bush.lsys" -n 7 --max-modules 100000
 expect_run instance 0 '"primitives":134217728,"joints":134217728,"nodes":9,"objects":9,"instances":72,' -- "$LSYS" instance "$DATA/plants/fractal_bush.lsys" -n 9 --json
 expect_run instance-bytes 0 '"bytes_flat":[1-9][0-9]*,"method":"memoised","seconds":' -- "$LSYS" instance "$DATA/plants/fractal_bush.lsys" --json
 expect_run instance-plain 0 '^32768 primitives (32768 joints) in 40 instances of 5 objects from 5 nodes' -- "$LSYS" instance "$DATA/plants/fractal_bush.lsys"
@@ -68,6 +68,8 @@ expect_run instance-budget 2 'b-grammar budget exceeded: more than 3 nodes' -- "
 expect_run instance-word-budget 2 'module budget exceeded' -- "$LSYS" instance "$DATA/plants/context_benchmark.lsys" --max-modules 1000
 expect_run instance-bad 2 'bad.lsys:2:12' -- "$LSYS" instance "$WORK/bad.lsys"
 expect_run instance-missing 2 'cannot read file' -- "$LSYS" instance "$WORK/does-not-exist.lsys"
+expect_run check-folder 2 'is a folder, not a plant file' -- "$LSYS" check "$WORK"
+expect_run check-endless-device 2 'is larger than 64 MiB' -- "$LSYS" check /dev/zero
 expect_run instance-bad-randomness 2 'randomness' -- "$LSYS" instance "$DATA/plants/stochastic.lsys" --randomness -1
 expect_run instance-help 0 'instances = references to objects' -- "$LSYS" instance --help
 expect_run export 0 '625 primitives, 625 joints' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/koch.glb"
@@ -82,6 +84,18 @@ echo keep > "$WORK/keep.glb"
 expect_run export-bad-input 2 'bad.lsys:2:12' -- "$LSYS" export "$WORK/bad.lsys" -o "$WORK/keep.glb"
 [ "$(cat "$WORK/keep.glb")" = keep ] || fail "export-bad-input: an existing file was overwritten"
 expect_run export-no-output 2 'output' -- "$LSYS" export "$DATA/plants/koch_curve.lsys"
+# Only regular files are replaced: a read-only file, a fifo and a folder stay as they are.
+echo locked > "$WORK/locked.glb"
+chmod 444 "$WORK/locked.glb"
+expect_run export-read-only 2 'locked.glb.* is read-only' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/locked.glb"
+[ "$(cat "$WORK/locked.glb")" = locked ] || fail "export-read-only: a read-only file was replaced"
+mkfifo "$WORK/pipe.glb"
+expect_run export-fifo 2 'is a fifo' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/pipe.glb"
+[ -p "$WORK/pipe.glb" ] || fail "export-fifo: the fifo was replaced"
+printf 'Axiom: F(1) F(0/0)\n' > "$WORK/nan.lsys"
+expect_run export-not-a-number 2 "the turtle's F got NaN" -- "$LSYS" export "$WORK/nan.lsys" -o "$WORK/nan.glb"
+[ -e "$WORK/nan.glb" ] && fail "export-not-a-number: a file was written"
+expect_run derive-negative-steps 2 'steps' -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" -n -1
 expect_run help 0 'derive' -- "$LSYS" --help
 expect_run derive-help 0 '--max-modules' -- "$LSYS" derive --help
 expect_run help-lists-turtle 0 '--help-turtle' -- "$LSYS" --help

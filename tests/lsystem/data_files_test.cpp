@@ -26,8 +26,8 @@ TEST(LsysDataFiles, EveryPlantLoadsAndDerives) {
     for (const std::string& file : plantFiles()) {
         SCOPED_TRACE(file);
         ParseResult result = loadDialectFile(dataPath("plants/" + file));
-        bool readable = false;
-        std::string source = readTextFile(dataPath("plants/" + file), readable);
+        std::string problem;
+        std::string source = readTextFile(dataPath("plants/" + file), problem);
         ASSERT_TRUE(result.ok()) << formatDiagnostics(result.diagnostics, source);
         EXPECT_TRUE(source.find("//") != std::string::npos || source.find("/*") != std::string::npos)
             << "each plant file documents where it comes from";

@@ -99,6 +99,29 @@ TEST(LsysParser, DiagnosticFormat) {
         "                ^\n");
 }
 
+TEST(LsysParser, ALongLineIsShownAroundTheColumnOnly) {
+    const std::string source = "Axiom: A " + std::string(100000, 'F') + " (\n";
+    ParseResult result = parseLsystem(source, {"long.lsys"});
+    ASSERT_EQ(result.diagnostics.size(), 1u);
+    const std::string text = formatDiagnostic(result.diagnostics[0], source);
+    EXPECT_LT(text.size(), 400u) << text.substr(0, 400);
+    // The line as shown: "...", the 80 characters before the '(' and it.
+    const std::string shown = "  ..." + std::string(79, 'F') + " (\n";
+    EXPECT_NE(text.find(shown), std::string::npos) << text.substr(0, 400);
+    EXPECT_NE(text.find("\n" + std::string(2 + 3 + 80, ' ') + "^\n"), std::string::npos) << text.substr(0, 400);
+}
+
+TEST(LsysParser, ManyErrorsAreCountedPastTheFirstHundred) {
+    std::string source = "Axiom: A\n";
+    for (int i = 0; i < 250; ++i) source += "A --> B(\n";
+    ParseResult result = parseLsystem(source, {"many.lsys"});
+    ASSERT_EQ(result.diagnostics.size(), 250u);
+    const std::string text = formatDiagnostics(result.diagnostics, source);
+    EXPECT_NE(text.find("many.lsys:101:"), std::string::npos);
+    EXPECT_EQ(text.find("many.lsys:102:"), std::string::npos);
+    EXPECT_NE(text.find("many.lsys: 150 more errors not shown (250 in all)"), std::string::npos);
+}
+
 struct Malformed {
     const char* source;
     int line;

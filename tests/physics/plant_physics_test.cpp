@@ -94,9 +94,9 @@ double energyOf(const gpu::JointParams& p, const gpu::JointState& s, const pf::P
 // Derives and interprets a plant file as plant_models does; nothing when it
 // does not parse or derive within the module budget.
 std::optional<lsys::PlantAsset> plantOf(const std::filesystem::path& file) {
-    bool readable = false;
-    const std::string source = lsys::readTextFile(file.string(), readable);
-    if (!readable) return std::nullopt;
+    std::string problem;
+    const std::string source = lsys::readTextFile(file.string(), problem);
+    if (!problem.empty()) return std::nullopt;
     lsys::ParseOptions options;
     options.file = file.string();
     lsys::ParseResult parsed = lsys::parseDialect(std::nullopt, source, options);

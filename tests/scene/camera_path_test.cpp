@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace pf {
 namespace {
 
@@ -39,6 +41,14 @@ TEST(CameraPath, HoldsTheEndKeyframesOutsideThePath) {
     expectNear(cameraAt(path, -3.0).position, path.keyframes.front().position);
     expectNear(cameraAt(path, 100.0).position, path.keyframes.back().position);
     expectNear(cameraAt(path, 100.0).target, path.keyframes.back().target);
+}
+
+TEST(CameraPath, NotANumberIsTheStartOfThePath) {
+    const CameraPath path = curvedPath();
+    const Camera camera = cameraAt(path, std::nan(""));
+    expectNear(camera.position, path.keyframes.front().position);
+    expectNear(camera.target, path.keyframes.front().target);
+    expectNear(cameraAt(CameraPath{}, std::nan("")).position, cameraAt(CameraPath{}, 0.0).position);
 }
 
 TEST(CameraPath, UnevenlyTimedKeysOnALineGiveConstantVelocity) {

@@ -338,6 +338,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"NegativePathTimes", "--counts 10 --path -3 --json OUT.json", "--path"},
                       BadInvocation{"MalformedPathTimes", "--counts 10 --path 3x --csv OUT.csv", "--path"},
                       BadInvocation{"TooManyPathTimes", "--counts 10 --path 1001 --json OUT.json", "1 to 1000"},
+                      BadInvocation{"TimeNotANumber", "--counts 10 --time nan --json OUT.json", "not a finite number"},
+                      BadInvocation{"InfiniteTime", "--counts 10 --time inf --json OUT.json", "not a finite number"},
                       BadInvocation{"PathAndTime", "--counts 10 --path 4 --time 2 --json OUT.json", "alternatives"}),
     invocationName);
 

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <sys/stat.h>
 
 namespace pf::test {
 namespace {
@@ -97,6 +98,11 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"WindDirectionNotANumber", "--capture OUT --wind 10,east", "--wind"},
                       BadInvocation{"JointBudgetTooLarge", "--capture OUT --joint-budget 10000001", "--joint-budget"},
                       BadInvocation{"JointBudgetNotANumber", "--capture OUT --joint-budget many", "--joint-budget"},
+                      BadInvocation{"TimeNotANumber", "--capture OUT --time nan", "not a finite number"},
+                      BadInvocation{"InfiniteTime", "--capture OUT --time inf", "not a finite number"},
+                      BadInvocation{"TimeTooLate", "--capture OUT --time 1e9", "--time"},
+                      BadInvocation{"NegativeTime", "--capture OUT --time -1", "--time"},
+                      BadInvocation{"FpsNotANumber", "--frames 2 --out-dir OUT --fps nan", "not a finite number"},
                       BadInvocation{"UnknownScene", "/nonexistent/scene.json --capture OUT", "does not exist"}),
     invocationName);
 
@@ -129,6 +135,47 @@ TEST(PlantfieldCli, UnwritableOutputLeavesExistingFileUntouched) {
     } else {
         EXPECT_EQ(readPng(out.string()).width, 64u);
     }
+}
+
+TEST(PlantfieldCli, CaptureReplacesOnlyRegularFiles) {
+    const fs::path dir = scratchDir("not-regular");
+    const fs::path fifo = dir / "pipe.png", locked = dir / "locked.png";
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
+    { std::ofstream(locked) << "precious"; }
+    fs::permissions(locked, fs::perms::owner_read);
+    for (const auto& [target, reason] : {std::pair{fifo, "is a fifo"}, std::pair{locked, "is read-only"}}) {
+        const CommandResult r = runCommand(kPlantfield + " --capture " + target.string() + " --size 64x64");
+        EXPECT_EQ(r.exitCode, 2) << r.output;
+        EXPECT_NE(r.output.find(reason), std::string::npos) << r.output;
+    }
+    EXPECT_TRUE(fs::is_fifo(fifo));
+    std::ifstream in(locked);
+    std::string content;
+    in >> content;
+    EXPECT_EQ(content, "precious");
+}
+
+// Species whose L-systems draw nothing (no segment, no joint: empty
+// buffers on the GPU) render as the bare terrain.
+TEST(PlantfieldCli, SpeciesThatDrawNothingRenderTheTerrain) {
+    const fs::path dir = scratchDir("draws-nothing");
+    { std::ofstream(dir / "nothing.lsys") << "Axiom: A\n"; }
+    { std::ofstream(dir / "unclosed.lsys") << "Axiom: {.f.f.\n"; }
+    {
+        std::ofstream(dir / "scene.json") << R"({
+  "terrain": { "size": 20, "resolution": 17 },
+  "species": [
+    { "name": "nothing", "lsystem": "nothing.lsys", "placement": { "count": 5 } },
+    { "name": "unclosed", "lsystem": "unclosed.lsys", "placement": { "count": 5 } }
+  ]
+})";
+    }
+    const fs::path out = dir / "out.png";
+    const CommandResult r = runCommand(kPlantfield + " " + (dir / "scene.json").string() +
+                                       " --validation --size 64x36 --capture " + out.string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+    EXPECT_EQ(readPng(out.string()).width, 64u);
 }
 
 TEST(PlantfieldCli, HelpListsEveryOption) {

@@ -168,5 +168,68 @@ TEST(LsysSurfaces, IndicesPastTheVerticesAreRejected) {
     EXPECT_NE(message.find("index"), std::string::npos) << message;
 }
 
+// A triangle of three float positions and three short indices, with the
+// given replacements spliced into its JSON.
+std::string triangleGltf(const std::string& viewExtra, const std::string& accessorExtra) {
+    return R"({
+      "asset": {"version": "2.0"},
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+      "buffers": [{"byteLength": 42, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIA"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36)" +
+           viewExtra + R"(}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "min": [0,0,0], "max": [1,1,0])" +
+           accessorExtra + R"(},
+                    {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]
+    })";
+}
+
+std::string meshErrorOf(const fs::path& file, const std::string& text) {
+    std::ofstream(file, std::ios::binary) << text;
+    return surfaceErrorOf([&] { (void)loadSurfaceFile(file, "hostile"); });
+}
+
+TEST(LsysSurfaces, TheTriangleOfTheHostileCasesIsValid) {
+    TemporaryDirectory directory;
+    std::ofstream(directory.path / "ok.gltf") << triangleGltf("", R"(, "count": 3)");
+    EXPECT_EQ(loadSurfaceFile(directory.path / "ok.gltf", "ok").indices.size(), 3u);
+}
+
+TEST(LsysSurfaces, HugeCountsAndOffsetsAreRejectedWithoutOverflow) {
+    TemporaryDirectory directory;
+    // 2^60 elements of stride 16: stride · count wraps around 2^64.
+    EXPECT_NE(meshErrorOf(directory.path / "count.gltf",
+                          triangleGltf(R"(, "byteStride": 16)", R"(, "count": 1152921504606846976)"))
+                  .find("reaches past"),
+              std::string::npos);
+    // An offset just below 2^64 wraps the start back before the buffer.
+    EXPECT_NE(meshErrorOf(directory.path / "offset.gltf",
+                          triangleGltf("", R"(, "count": 3, "byteOffset": 18446744073709551600)"))
+                  .find("reaches past"),
+              std::string::npos);
+    EXPECT_NE(meshErrorOf(directory.path / "view.gltf",
+                          triangleGltf(R"(, "byteOffset": 18446744073709551600)", R"(, "count": 3)"))
+                  .find("reaches past"),
+              std::string::npos);
+    EXPECT_NE(meshErrorOf(directory.path / "stride.gltf", triangleGltf(R"(, "byteStride": 4)", R"(, "count": 3)"))
+                  .find("stride"),
+              std::string::npos);
+}
+
+TEST(LsysSurfaces, DeeplyNestedJsonIsRejectedBeforeTinygltfRecurses) {
+    TemporaryDirectory directory;
+    const std::string deep =
+        R"({"asset": {"version": "2.0"}, "extras": )" + std::string(100000, '[') + std::string(100000, ']') + "}";
+    EXPECT_NE(meshErrorOf(directory.path / "deep.gltf", deep).find("deeper than"), std::string::npos);
+}
+
+TEST(LsysSurfaces, ABufferUriThatIsNotAFileIsRejected) {
+    TemporaryDirectory directory;
+    fs::create_directory(directory.path / "folder.bin");
+    std::string text = triangleGltf("", R"(, "count": 3)");
+    const size_t uri = text.find("data:");
+    text.replace(uri, text.find('"', uri) - uri, "folder.bin");
+    EXPECT_NE(meshErrorOf(directory.path / "folder.gltf", text).find("not a file"), std::string::npos);
+}
+
 } // namespace
 } // namespace lsys::test

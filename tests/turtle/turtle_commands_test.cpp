@@ -48,5 +48,22 @@ TEST(LsysTurtleCommands, FInsideAPolygonActsAsSmallF) {
     EXPECT_EQ(parameterCount(turtleCommandDefinition(TurtleAction::TurnAround)), 0u);
 }
 
+TEST(LsysTurtleCommands, ANonFiniteParameterStopsTheTurtleNamingTheCommand) {
+    for (const char* source : {"Axiom: F(1) F(0/0)\n", "Axiom: F(1) +(1/0) F(1)\n", "Axiom: !(0/0) F(1)\n"}) {
+        SCOPED_TRACE(source);
+        try {
+            (void)plantOf(source);
+            ADD_FAILURE() << "a plant was built";
+        } catch (const DerivationError& error) {
+            const std::string message = error.what();
+            EXPECT_NE(message.find("the turtle's"), std::string::npos) << message;
+            EXPECT_TRUE(message.find("NaN") != std::string::npos || message.find("infinite") != std::string::npos)
+                << message;
+        }
+    }
+    // A module that is no command may carry anything.
+    EXPECT_EQ(plantOf("Axiom: A(0/0) F(1)\n").primitives.size(), 1u);
+}
+
 } // namespace
 } // namespace lsys::test

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace pf::test {
@@ -33,6 +36,22 @@ TEST_F(GpuResourcesTest, BytesAreTheMemoryOfWhatItOwnsUntilDestroyed) {
     EXPECT_EQ(moved.bytes(), bufferMemory.size + imageMemory.size);
     moved.destroy();
     EXPECT_EQ(moved.bytes(), 0u);
+}
+
+TEST_F(GpuResourcesTest, AnAllocationBeyondTheHeapIsAnErrorNotACrash) {
+    VkDeviceSize largestHeap = 0;
+    for (uint32_t i = 0; i < ctx.memoryProperties.memoryHeapCount; ++i)
+        largestHeap = std::max(largestHeap, ctx.memoryProperties.memoryHeaps[i].size);
+    GpuResources owner(ctx);
+    try {
+        createBuffer(owner, largestHeap + (VkDeviceSize(1) << 20), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                     VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        ADD_FAILURE() << "a buffer larger than every heap was created";
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what()).find("more than its memory heap"), std::string::npos) << error.what();
+    }
+    // Nothing half-made is left: the validation layer reports a leaked buffer at teardown.
+    EXPECT_EQ(owner.bytes(), 0u);
 }
 
 TEST_F(GpuResourcesTest, MoveAssignmentDestroysWhatWasOwnedBefore) {

@@ -71,10 +71,10 @@ std::optional<lsys::Grammar> load(const Arguments& arguments) {
     lsys::ParseOptions options;
     options.file = arguments.file;
     if (!parseDefines(arguments.defines, options.defines)) return std::nullopt;
-    bool readable = false;
-    std::string source = lsys::readTextFile(arguments.file, readable);
-    if (!readable) {
-        std::cerr << arguments.file << ": error: cannot read file\n";
+    std::string problem;
+    std::string source = lsys::readTextFile(arguments.file, problem);
+    if (!problem.empty()) {
+        std::cerr << arguments.file << ": error: cannot read file: it " << problem << "\n";
         return std::nullopt;
     }
     lsys::ParseResult result = lsys::parseDialect(arguments.dialect, source, options);
@@ -84,6 +84,15 @@ std::optional<lsys::Grammar> load(const Arguments& arguments) {
         return std::nullopt;
     }
     return std::move(result.grammar);
+}
+
+// Prints what went wrong with the file, and the way out of a budget.
+int failed(const Arguments& arguments, const std::exception& error) {
+    std::cerr << arguments.file << ": error: " << error.what();
+    if (dynamic_cast<const lsys::ModuleBudgetError*>(&error))
+        std::cerr << " (--max-modules sets the budget; -n derives fewer steps)";
+    std::cerr << '\n';
+    return kBadInput;
 }
 
 lsys::DeriveOptions deriveOptions(const Arguments& arguments) {
@@ -104,8 +113,7 @@ int derive(const Arguments& arguments) {
     try {
         string = lsys::derive(*grammar, options);
     } catch (const lsys::DerivationError& error) {
-        std::cerr << arguments.file << ": error: " << error.what() << '\n';
-        return kBadInput;
+        return failed(arguments, error);
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     int steps = options.steps.value_or(grammar->derivationLength);
@@ -164,8 +172,7 @@ int instance(const Arguments& arguments) {
             lsys::buildInstanceGraph(bgrammar, *grammar, arguments.graphOptions,
                                      lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file))));
     } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
-        std::cerr << arguments.file << ": error: " << error.what() << '\n';
-        return kBadInput;
+        return failed(arguments, error);
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (arguments.json) {
@@ -198,8 +205,7 @@ int exportGraph(const Arguments& arguments, const lsys::Grammar& grammar) {
         graph = lsys::buildInstanceGraph(lsys::buildBGrammar(grammar, bgrammarOptions(arguments)), grammar,
                                          arguments.graphOptions, surfaces);
     } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
-        std::cerr << arguments.file << ": error: " << error.what() << '\n';
-        return kBadInput;
+        return failed(arguments, error);
     }
     lsys::GraphExportSummary summary;
     try {
@@ -227,8 +233,7 @@ int exportCommand(const Arguments& arguments) {
         plant =
             lsys::plantFromGrammar(*grammar, string, lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file)));
     } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
-        std::cerr << arguments.file << ": error: " << error.what() << '\n';
-        return kBadInput;
+        return failed(arguments, error);
     }
     try {
         lsys::exportPlant(plant, arguments.output, arguments.exportOptions);
@@ -258,7 +263,8 @@ void addDialectOption(CLI::App& command, Arguments& arguments) {
 // FILE, -n, --seed, -D and --dialect: what every command that derives takes.
 void addDerivationOptions(CLI::App& command, Arguments& arguments) {
     command.add_option("FILE", arguments.file, ".lsys file")->required();
-    command.add_option("-n,--steps", arguments.steps, "Derivation steps (default: the file's 'derivation length:')");
+    command.add_option("-n,--steps", arguments.steps, "Derivation steps (default: the file's 'derivation length:')")
+        ->check(CLI::Range(0, lsys::kMaxDerivationLength));
     command.add_option("--seed", arguments.seed, "Random seed (default: the file's 'seed:')");
     command.add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
     addDialectOption(command, arguments);

@@ -2,8 +2,8 @@
 
 #include "tools/plantfield/options.h"
 
-#include "engine/image/image.h"
 #include "engine/vk/device.h"
+#include "lsystem/output_file.h"
 #include "shaders/field_layouts.h"
 
 #include <CLI/CLI.hpp>
@@ -110,9 +110,9 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
                  "Draw every plant in view: no occlusion culling against the depth pyramid (docs/CULLING.md)");
     app.add_flag("!--no-clusters", o.clusters,
                  "Send every plant through the per-plant cull every frame, no far canopy (docs/CLUSTERS.md)");
-    app.add_option("--time", o.time, "Scene time of the camera on the scene's camera path, seconds")
-        ->check(CLI::NonNegativeNumber)
-        ->default_val(o.time);
+    checkFiniteIn(*app.add_option("--time", o.time, "Scene time of the camera on the scene's camera path, seconds")
+                       ->default_val(o.time),
+                  0.0, kMaxSceneTime);
     std::string pathText;
     app.add_option("--path", pathText,
                    "Measure at K times spread evenly over the camera path (default " +
@@ -180,7 +180,7 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
         return fail("scene file '" + o.scenePath + "' does not exist or is not a file");
     for (auto [flag, path] : {std::pair{"--json", &o.jsonPath}, {"--csv", &o.csvPath}, {"--plot", &o.plotPath}}) {
         if (path->empty()) continue;
-        const std::string pathProblem = outputPathProblem(*path);
+        const std::string pathProblem = lsys::outputPathProblem(*path);
         if (!pathProblem.empty()) return fail(std::string("cannot write ") + flag + " file: " + pathProblem);
     }
     if (!o.plotPath.empty() && !onPath("gnuplot"))

@@ -1,6 +1,6 @@
 #include "plot.h"
 
-#include "engine/image/image.h"
+#include "lsystem/output_file.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -172,18 +172,16 @@ void drawPlot(const PlantbenchOptions& o, const SweepResult& result) {
         throw std::runtime_error(std::string("cannot create a temporary folder: ") + std::strerror(errno));
     const fs::path dir = dirTemplate;
     const fs::path data = dir / "sweep.dat", scriptPath = dir / "sweep.gp", errors = dir / "gnuplot.err";
-    const std::string partial = partialPathOf(o.plotPath);
+    lsys::OutputFile plot(o.plotPath);
     std::ofstream(data) << dataFile(result);
-    std::ofstream(scriptPath) << script(o, result, data.string(), pngTerminal(dir), partial);
+    std::ofstream(scriptPath) << script(o, result, data.string(), pngTerminal(dir), plot.temporaryPath().string());
     const int status = runGnuplot(scriptPath, errors);
     const std::string message = readAll(errors);
     std::error_code ec;
     fs::remove_all(dir, ec);
-    if (status != 0 || !fs::exists(partial)) {
-        fs::remove(partial, ec);
+    if (status != 0 || fs::file_size(plot.temporaryPath(), ec) == 0)
         throw std::runtime_error("gnuplot could not draw '" + o.plotPath + "': " + message);
-    }
-    finishPartialFile(o.plotPath);
+    plot.commit();
 }
 
 } // namespace pf

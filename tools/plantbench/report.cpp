@@ -1,6 +1,6 @@
 #include "report.h"
 
-#include "engine/image/image.h"
+#include "lsystem/output_file.h"
 
 #include "gpu_memory.h"
 
@@ -234,17 +234,9 @@ std::string sweepCsv(const PlantbenchOptions& o, const SweepResult& result) {
 }
 
 void writeTextFile(const std::string& path, const std::string& text) {
-    const std::string temporary = partialPathOf(path);
-    {
-        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        file << text;
-        file.flush();
-        if (!file) {
-            std::remove(temporary.c_str());
-            throw std::runtime_error("cannot write '" + path + "'");
-        }
-    }
-    finishPartialFile(path);
+    lsys::OutputFile file(path);
+    file.stream() << text;
+    file.commit();
 }
 
 } // namespace pf

@@ -1,7 +1,7 @@
 #include "options.h"
 
-#include "engine/image/image.h"
 #include "engine/vk/device.h"
+#include "lsystem/output_file.h"
 #include "shaders/field_layouts.h"
 
 #include <CLI/CLI.hpp>
@@ -45,6 +45,21 @@ std::optional<Wind> parseWind(const std::string& text) {
     if (!number(all.substr(0, comma), wind.speed) || wind.speed < 0.0f || wind.speed > 100.0f) return std::nullopt;
     if (comma != std::string::npos && !number(all.substr(comma + 1), wind.directionDegrees)) return std::nullopt;
     return wind;
+}
+
+void checkFiniteIn(CLI::Option& option, double min, double max) {
+    option.check(
+        [min, max](const std::string& text) -> std::string {
+            double value = 0;
+            const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+            if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+                return "'" + text + "' is not a finite number";
+            if (value < min || value > max)
+                return "'" + text + "' is outside " + CLI::detail::to_string(min) + " to " +
+                       CLI::detail::to_string(max);
+            return {};
+        },
+        "FINITE");
 }
 
 void addAntialiasOptions(CLI::App& app, AntialiasFlags& flags) {
@@ -102,9 +117,9 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_flag("--window", o.window, "Open a window: camera-path playback and free flight");
     app.add_option("--frames", o.frames,
                    "Headless: render this many frames into --out-dir; with --window: close after this many");
-    app.add_option("--fps", o.fps, "Frames per scene second of a --frames sequence")->check(CLI::Range(0.1, 1000.0));
+    checkFiniteIn(*app.add_option("--fps", o.fps, "Frames per scene second of a --frames sequence"), 0.1, 1000.0);
     app.add_option("--out-dir", o.outDir, "Folder of a --frames sequence (frame_0000.png, ...), created if missing");
-    app.add_option("--time", o.time, "Scene time of the (first) frame in seconds")->check(CLI::NonNegativeNumber);
+    checkFiniteIn(*app.add_option("--time", o.time, "Scene time of the (first) frame in seconds"), 0.0, kMaxSceneTime);
     app.add_option("--instances", o.instances,
                    "Exactly this many generated plants at the scene's densities: they fill a square around the\n"
                    "origin that grows with N, the noise terrain growing with it (hand-placed plants come on top)")
@@ -192,7 +207,7 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     if (!std::filesystem::is_regular_file(o.scenePath))
         return fail("scene file '" + o.scenePath + "' does not exist or is not a file");
     if (!o.capturePath.empty()) {
-        const std::string problem = outputPathProblem(o.capturePath);
+        const std::string problem = lsys::outputPathProblem(o.capturePath);
         if (!problem.empty()) return fail("cannot write --capture file: " + problem);
     }
     return o;

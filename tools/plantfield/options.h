@@ -10,7 +10,8 @@
 
 namespace CLI {
 class App;
-}
+class Option;
+} // namespace CLI
 
 namespace pf {
 
@@ -25,6 +26,15 @@ std::optional<ImageSize> parseImageSize(const std::string& text);
 // "SPEED[,DIRECTION]" of --wind; nullopt when malformed or the speed is
 // outside 0–100 m/s (the direction is left at its default when absent).
 std::optional<Wind> parseWind(const std::string& text);
+
+// Accepts only finite numbers from min to max (both included). CLI11's
+// Range and NonNegativeNumber compare with < and >, which NaN passes, and
+// infinity passes an open upper end.
+void checkFiniteIn(CLI::Option& option, double min, double max);
+
+// The latest scene time --time takes: the shaders' float time still steps by
+// under 10 ms there (2^-7 s at 10^5 s), so the wind's motion stays smooth.
+inline constexpr double kMaxSceneTime = 100000.0;
 
 // --aa METHOD and --samples S, the same on plantfield and plantbench: FXAA
 // by default; the MSAA sample count only with --aa msaa.
