@@ -12,7 +12,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string inQuotes(const fs::path& path) { return "'" + path.string() + "'"; }
+std::string inQuotes(const fs::path& path) {
+    std::string quoted = "'"; // appended, not a + b + c: GCC 12 warns falsely (-Wrestrict) on that
+    quoted += path.string();
+    quoted += '\'';
+    return quoted;
+}
 
 // The file a write to `path` replaces: links followed, or `path` itself when
 // nothing is there. Empty with `problem` set for a link that leads nowhere.

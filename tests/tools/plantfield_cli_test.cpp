@@ -181,9 +181,9 @@ TEST(PlantfieldCli, SpeciesThatDrawNothingRenderTheTerrain) {
 TEST(PlantfieldCli, HelpListsEveryOption) {
     const CommandResult r = runCommand(kPlantfield + " --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* flag :
-         {"--capture", "--size", "--window", "--frames", "--time", "--device", "--validation", "--wind",
-          "--joint-budget", "--physics-check", "--instances", "--densify", "--aa", "--samples", "--no-shadow-cache"})
+    for (const char* flag : {"--capture", "--size", "--window", "--frames", "--time", "--device", "--validation",
+                             "--wind", "--joint-budget", "--physics-check", "--instances", "--densify", "--aa",
+                             "--samples", "--no-shadow-cache", "--no-clusters", "--no-occlusion"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 
