@@ -44,8 +44,11 @@ struct FieldRenderSettings {
     float impostorSway = 0.04f; // metres an impostor's top leans per m/s of gust (times the plant's scale)
     ImpostorSettings impostors;
     // Two-phase occlusion culling against the depth pyramid (docs/CULLING.md):
-    // plants hidden behind the terrain and nearer plants are not drawn.
-    bool occlusionCulling = true;
+    // plants hidden behind the terrain and nearer plants are not drawn. Off
+    // unless asked for: on lavapipe the pyramid, the second cull and the
+    // second rendering cost more than the plants they hide (docs/BENCHMARKS.md,
+    // 2026-12-02).
+    bool occlusionCulling = false;
     ClusterSettings clusters;
 };
 

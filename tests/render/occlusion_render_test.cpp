@@ -32,7 +32,7 @@ SequenceResult expectSameFrames(const GpuContext& ctx, const std::vector<FieldVi
                                 const Antialiasing& antialiasing, const std::string& name) {
     FieldRenderSettings on, off;
     on.antialiasing = off.antialiasing = antialiasing;
-    off.occlusionCulling = false;
+    on.occlusionCulling = true;
     FieldSequence culled(ctx, "default.json", kSize, on);
     FieldSequence all(ctx, "default.json", kSize, off);
     SequenceResult result;

@@ -183,7 +183,7 @@ TEST(PlantfieldCli, HelpListsEveryOption) {
     EXPECT_EQ(r.exitCode, 0);
     for (const char* flag : {"--capture", "--size", "--window", "--frames", "--time", "--device", "--validation",
                              "--wind", "--joint-budget", "--physics-check", "--instances", "--densify", "--aa",
-                             "--samples", "--no-shadow-cache", "--no-clusters", "--no-occlusion"})
+                             "--samples", "--no-shadow-cache", "--no-clusters", "--occlusion"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 

@@ -106,8 +106,8 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     AntialiasFlags antialias;
     addAntialiasOptions(app, antialias);
     app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
-    app.add_flag("!--no-occlusion", o.occlusionCulling,
-                 "Draw every plant in view: no occlusion culling against the depth pyramid (docs/CULLING.md)");
+    app.add_flag("--occlusion", o.occlusionCulling,
+                 "Occlusion culling against the depth pyramid (docs/CULLING.md; off by default)");
     app.add_flag("!--no-clusters", o.clusters,
                  "Send every plant through the per-plant cull every frame, no far canopy (docs/CLUSTERS.md)");
     checkFiniteIn(*app.add_option("--time", o.time, "Scene time of the camera on the scene's camera path, seconds")

@@ -30,7 +30,7 @@ struct PlantbenchOptions {
     uint32_t width = 1280, height = 720;
     Antialiasing antialiasing;
     bool shadows = true;
-    bool occlusionCulling = true;      // false: --no-occlusion
+    bool occlusionCulling = false;     // true: --occlusion
     bool clusters = true;              // false: --no-clusters
     double time = 0.0;                 // scene time of the camera on its path
     std::optional<uint32_t> pathTimes; // --path: measure at this many times along the camera path instead

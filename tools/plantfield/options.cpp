@@ -144,9 +144,10 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_option("--lod", o.forcedLod, "Draw every visible plant at this LOD: 0 full, 1 reduced, 2 impostor")
         ->check(CLI::Range(0, 2));
     app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
-    app.add_flag("!--no-occlusion", o.occlusionCulling,
-                 "Draw every plant in view: no occlusion culling against the depth pyramid of what the previous\n"
-                 "frame's visible plants and the terrain cover (docs/CULLING.md)");
+    app.add_flag("--occlusion", o.occlusionCulling,
+                 "Occlusion culling: do not draw the plants behind the depth pyramid of what the previous\n"
+                 "frame's visible plants and the terrain cover (docs/CULLING.md; off by default: on a CPU\n"
+                 "rasteriser it costs more than it saves)");
     app.add_flag("!--no-shadow-cache", o.shadowCache,
                  "Draw the shadow map's static casters again every frame instead of keeping them while the camera "
                  "stays near");

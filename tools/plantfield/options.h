@@ -70,9 +70,9 @@ struct PlantfieldOptions {
     std::optional<float> windDirectionDegrees; // and direction, clockwise from north (-z) toward +x
     std::optional<uint32_t> jointBudget;       // replaces the scene's physics.joint_budget
     bool shadows = true;
-    bool shadowCache = true;      // false: every frame draws its static shadow casters again
-    bool occlusionCulling = true; // false: every plant in view is drawn (no depth pyramid test)
-    bool clusters = true;         // false: every plant through the per-plant cull, no far canopy (--no-clusters)
+    bool shadowCache = true;       // false: every frame draws its static shadow casters again
+    bool occlusionCulling = false; // --occlusion: plants behind the depth pyramid are not drawn
+    bool clusters = true;          // false: every plant through the per-plant cull, no far canopy (--no-clusters)
     std::string deviceName;
     bool listDevices = false;
     bool validation = false;
