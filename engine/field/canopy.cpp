@@ -77,9 +77,7 @@ Buffer bakeCanopy(GpuResources& owner, const CanopyBakeInputs& in) {
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
         vkCmdFillBuffer(cmd, cells.buffer, 0, VK_WHOLE_SIZE, 0);
         // The splat adds into the zeroed cells with atomics.
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        transferToComputeBarrier(cmd);
         bindComputeSet(cmd, set);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, splat);
         pushBake(cmd, set, {glm::uvec4(0, tree.leafCount(), frames, 0), params});

@@ -48,9 +48,7 @@ ClusterPass createClusterPass(GpuResources& owner, const ClusterTree& tree, cons
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {
         vkCmdFillBuffer(cmd, pass.leafState.buffer, 0, VK_WHOLE_SIZE, 0);
         // Waiting for the queue is no memory dependency: the first cluster pass reads it.
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        transferToComputeBarrier(cmd);
     });
 
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -88,19 +86,12 @@ void recordClusterPass(VkCommandBuffer cmd, const ClusterPass& pass) {
     // The previous frame may still cull from the chunks, draw from the far
     // list and copy the counters (write-after-read: execution only); its
     // cluster pass wrote the leaf state this one reads.
-    memoryBarrier(cmd,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT |
-                      VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    previousFrameReadsBarrier(cmd);
     vkCmdFillBuffer(cmd, pass.near.buffer, 0, 4, 0);
     vkCmdFillBuffer(cmd, pass.stats.buffer, 0, VK_WHOLE_SIZE, 0);
     vkCmdUpdateBuffer(cmd, pass.farDraw.buffer, 0, sizeof(pass.farMesh), &pass.farMesh);
     // The shader appends with atomics on the zeroed counters.
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    transferToComputeBarrier(cmd);
 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.clusterPipeline);
     bindComputeSet(cmd, pass.set);

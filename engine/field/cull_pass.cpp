@@ -126,9 +126,7 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
             vkCmdFillBuffer(cmd, pass.state.buffer, 0, VK_WHOLE_SIZE, LOD_STATE_SETTLED << 8);
             // Waiting for the queue is no memory dependency: the first cull reads it.
-            memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+            transferToComputeBarrier(cmd);
         });
 
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -190,12 +188,7 @@ void recordCullPass(VkCommandBuffer cmd, const CullPass& pass, uint32_t phase, V
     // commands and visible and copy counts (write-after-read: execution
     // only), and the previous cull wrote the state and counts this cull
     // reads (read-after-write: make them visible).
-    memoryBarrier(cmd,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT |
-                      VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    previousFrameReadsBarrier(cmd);
 
     // The late phase counts on from the early phase's counters and appends
     // after its entries: only the first phase of a frame clears them.
@@ -204,9 +197,7 @@ void recordCullPass(VkCommandBuffer cmd, const CullPass& pass, uint32_t phase, V
         vkCmdFillBuffer(cmd, pass.drawCounts.buffer, 0, VK_WHOLE_SIZE, 0);
         // Both shaders increment the zeroed counters with atomics. (Fills are
         // transfer-stage work; layers disagree on CLEAR vs COPY, TRANSFER is both.)
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        transferToComputeBarrier(cmd);
     }
 
     const gpu::CullPush push{glm::uvec4(phase, uint32_t(countersPerRegion(pass)), 0u, 0u)};

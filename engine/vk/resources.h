@@ -83,5 +83,13 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
 // A global memory dependency (synchronization2).
 void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
                    VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
+// Transfer writes (fills, updates) made visible to compute shaders that read
+// them or add to them with atomics: the counters every GPU-driven pass zeroes.
+void transferToComputeBarrier(VkCommandBuffer cmd);
+// A per-frame compute pass about to rewrite its buffers: the previous frame
+// (or an earlier phase) may still dispatch or draw indirectly from them,
+// read them in vertex or compute shaders or copy them (write-after-read),
+// and its compute writes must be visible to this pass's fills and shaders.
+void previousFrameReadsBarrier(VkCommandBuffer cmd);
 
 } // namespace pf
