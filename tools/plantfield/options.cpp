@@ -23,6 +23,16 @@ bool parseSide(const char* first, const char* last, uint32_t& out) {
     return ec == std::errc() && end == last && out > 0 && out <= kMaxImageSide;
 }
 
+// The whole of `text` as a finite number, or nullopt (from_chars takes "nan"
+// and "inf", and parses a prefix).
+template <class T>
+std::optional<T> finiteNumber(std::string_view text) {
+    T value{};
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
 } // namespace
 
 std::optional<ImageSize> parseImageSize(const std::string& text) {
@@ -37,23 +47,24 @@ std::optional<ImageSize> parseImageSize(const std::string& text) {
 std::optional<Wind> parseWind(const std::string& text) {
     const size_t comma = text.find(',');
     Wind wind;
-    auto number = [](std::string_view s, float& out) {
-        auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-        return ec == std::errc() && end == s.data() + s.size() && std::isfinite(out);
-    };
     const std::string_view all(text);
-    if (!number(all.substr(0, comma), wind.speed) || wind.speed < 0.0f || wind.speed > 100.0f) return std::nullopt;
-    if (comma != std::string::npos && !number(all.substr(comma + 1), wind.directionDegrees)) return std::nullopt;
+    const std::optional<float> speed = finiteNumber<float>(all.substr(0, comma));
+    if (!speed || *speed < 0.0f || *speed > 100.0f) return std::nullopt;
+    wind.speed = *speed;
+    if (comma != std::string::npos) {
+        const std::optional<float> direction = finiteNumber<float>(all.substr(comma + 1));
+        if (!direction) return std::nullopt;
+        wind.directionDegrees = *direction;
+    }
     return wind;
 }
 
 void checkFiniteIn(CLI::Option& option, double min, double max) {
     option.check(
         [min, max](const std::string& text) -> std::string {
-            double value = 0;
-            const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-            if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
-                return "'" + text + "' is not a finite number";
+            const std::optional<double> number = finiteNumber<double>(text);
+            if (!number) return "'" + text + "' is not a finite number";
+            const double value = *number;
             if (value < min || value > max)
                 return "'" + text + "' is outside " + CLI::detail::to_string(min) + " to " +
                        CLI::detail::to_string(max);
