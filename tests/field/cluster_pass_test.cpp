@@ -153,10 +153,16 @@ TEST_F(ClusterPassTest, CutEqualsCpuAndCoversEveryLeafInViewOnce) {
             EXPECT_EQ(r.stats[CLUSTER_STAT_FAR], cpu.far.size());
             EXPECT_EQ(r.stats[CLUSTER_STAT_NEAR_LEAVES], cpu.near.size());
             EXPECT_GE(uint64_t(r.dispatch[0]) * r.dispatch[1], r.chunks.size()) << "a workgroup for every chunk";
-            if (c.mode == CLUSTER_CUT_ALL_FAR) EXPECT_TRUE(cpu.near.empty());
-            if (c.mode == CLUSTER_CUT_ALL_NEAR) EXPECT_TRUE(cpu.far.empty());
+            if (c.mode == CLUSTER_CUT_ALL_FAR) {
+                EXPECT_TRUE(cpu.near.empty());
+            }
+            if (c.mode == CLUSTER_CUT_ALL_NEAR) {
+                EXPECT_TRUE(cpu.far.empty());
+            }
             const bool mixed = c.mode == CLUSTER_CUT_AUTO && !cpu.far.empty() && !cpu.near.empty();
-            if (&v == &kViews[0] && c.threshold == 2.0f) EXPECT_TRUE(mixed) << "the first view has both kinds";
+            if (&v == &kViews[0] && c.threshold == 2.0f) {
+                EXPECT_TRUE(mixed) << "the first view has both kinds";
+            }
 
             for (uint32_t leaf = 0; leaf < tree.leafCount(); ++leaf) {
                 uint32_t covered = cpu.decisions[leaf] == CLUSTER_NEAR ? 1u : 0u;
@@ -195,7 +201,9 @@ TEST_F(ClusterPassTest, CullOverNearLeavesEqualsCpuAndRestartsLeavesTurningNear)
             near.push_back({tree.nodes[leaf].range.x, tree.nodes[leaf].range.y, restarts});
         }
         for (uint32_t leaf = 0; leaf < tree.leafCount(); ++leaf) wasNear[leaf] = cpu.decisions[leaf] == CLUSTER_NEAR;
-        if (frame == 3) EXPECT_TRUE(anyRestart) << "some leaf turned near";
+        if (frame == 3) {
+            EXPECT_TRUE(anyRestart) << "some leaf turned near";
+        }
         const CpuCullResult expected = cullOnCpu(f.instances, f.models, cull, cpuState, near);
         ASSERT_EQ(gpuFrame.lists.size(), expected.lists.size());
         for (size_t l = 0; l < expected.lists.size(); ++l) EXPECT_EQ(gpuFrame.lists[l], expected.lists[l]) << l;
