@@ -242,6 +242,38 @@ TEST(PlantbenchCli, PathSweepReportsEveryTimeAndTheWorst) {
     EXPECT_NE(sweep.result.output.find("along the camera path"), std::string::npos) << sweep.result.output;
 }
 
+// test_small's camera travels 7 m a second; the shadow cache serves cameras
+// within 8 m of where it was drawn. A still camera draws it on its first
+// (warm-up) frame only; one flying at a frame a second draws it again.
+TEST(PlantbenchCli, FlyingCameraRedrawsTheShadowCacheAsItTravels) {
+    for (const bool fly : {false, true}) {
+        const SmallSweep sweep = runSmallSweep(fly ? "fly" : "still", std::string("--counts 20 --frames 4 --warmup 1 "
+                                                                                  "--size 64x64 --aa none") +
+                                                                          (fly ? " --fly 1" : ""));
+        ASSERT_EQ(sweep.result.exitCode, 0) << sweep.result.output;
+        const nlohmann::json& j = sweep.json;
+        expectWellFormedSweep(j, kSmallScene, {20}, false);
+        const uint64_t renders = j["results"][0]["shadow_cache_renders"].get<uint64_t>();
+        if (fly) {
+            EXPECT_EQ(j["fly_fps"], 1.0);
+            EXPECT_GE(renders, 1u);
+            EXPECT_NE(sweep.result.output.find("flying at 1.0 frames a second"), std::string::npos)
+                << sweep.result.output;
+        } else {
+            EXPECT_TRUE(j["fly_fps"].is_null());
+            EXPECT_EQ(renders, 0u);
+        }
+    }
+}
+
+TEST(PlantbenchCli, RejectsAFlyRateOutOfRange) {
+    for (const char* rate : {"0", "nan", "2000"}) {
+        const CommandResult r = runCommand(kPlantbench + " --counts 10 --fly " + rate);
+        EXPECT_EQ(r.exitCode, 2) << rate << ": " << r.output;
+        EXPECT_NE(r.output.find("--fly"), std::string::npos) << r.output;
+    }
+}
+
 TEST(PlantbenchCli, CountsKeepTheScenesDensitiesUnlessDensified) {
     const fs::path dir = scratchDir("densities");
     // test_small places 20 bushes on its 40 m: 200 need about 126 m, unless densified.

@@ -121,6 +121,13 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
                        "report every time's frame and the worst")
         ->expected(0, 1)
         ->type_name("[K]");
+    checkFiniteIn(
+        *app.add_option("--fly", o.flyFps,
+                        "The camera flies along its path from each time through the warm-up and measured\n"
+                        "frames, FPS frames a scene second, as in a window: the shadow cache is redrawn as it\n"
+                        "travels, LODs fade, near skeletons change (default: it stays at its time)")
+             ->type_name("FPS"),
+        1.0, 1000.0);
     app.add_flag("--densify", o.densify,
                  "Fit each count on the scene's terrain by scaling every plant distance (default: the scene's\n"
                  "densities, the planted area and the noise terrain growing with the count)");

@@ -34,7 +34,10 @@ struct PlantbenchOptions {
     bool clusters = true;              // false: --no-clusters
     double time = 0.0;                 // scene time of the camera on its path
     std::optional<uint32_t> pathTimes; // --path: measure at this many times along the camera path instead
-    bool densify = false;              // counts on the scene's terrain, distances scaled (not natural densities)
+    // --fly: the camera follows its path through the measured frames, this
+    // many frames a scene second, as in a window; otherwise it stays.
+    std::optional<double> flyFps;
+    bool densify = false; // counts on the scene's terrain, distances scaled (not natural densities)
     bool compareNaive = false;
     uint64_t naiveMax = 100000; // counts above this skip the naive path
     std::string jsonPath, csvPath, plotPath;

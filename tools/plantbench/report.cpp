@@ -52,6 +52,7 @@ nlohmann::json frameJson(const PathTimes& t, const FieldFrameStats& stats) {
     j["frame_ms"] = spreadJson(t.frameMs);
     j["cpu_ms"] = spreadJson(t.cpuMs);
     j["gpu_ms"] = gpuJson(t);
+    j["shadow_cache_renders"] = t.shadowCacheRenders;
     j["plants_per_lod"] = nlohmann::json::object();
     for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) j["plants_per_lod"][kLodNames[lod]] = stats.plantsPerLod[lod];
     j["culled"] = stats.culled();
@@ -168,6 +169,7 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
         << (o.occlusionCulling ? "on" : "off") << ", median of " << o.frames << " frames after " << o.warmup
         << " warm-up";
     if (o.pathTimes) out << ", the worst of " << *o.pathTimes << " times along the camera path";
+    if (o.flyFps) out << ", the camera flying at " << fixed(*o.flyFps, 1) << " frames a second";
     out << (o.densify ? ", counts densified on the scene's terrain" : ", counts at the scene's densities") << "\n";
     printTable(out, headers, rows);
     out << "frame ms, p95: wall time per frame (median, 95th percentile); cpu ms: host time to record it; "
@@ -192,6 +194,7 @@ nlohmann::json sweepJson(const PlantbenchOptions& o, const SweepResult& result) 
     j["occlusion_culling"] = o.occlusionCulling;
     j["time"] = o.pathTimes ? nlohmann::json(nullptr) : nlohmann::json(o.time);
     j["path"] = o.pathTimes ? nlohmann::json(*o.pathTimes) : nlohmann::json(nullptr);
+    j["fly_fps"] = o.flyFps ? nlohmann::json(*o.flyFps) : nlohmann::json(nullptr);
     j["count_mode"] = o.densify ? "densify" : "natural";
     j["frames"] = o.frames;
     j["warmup"] = o.warmup;

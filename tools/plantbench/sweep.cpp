@@ -87,29 +87,42 @@ void recordCapture(VkCommandBuffer cmd, FrameResources& frame) {
 
 enum class Path { Driven, Naive };
 
-// Scene time between two frames: the wind physics takes this frame's
-// sub-steps (subStep 1/240 s: 4), as it would at 60 frames a second.
-constexpr double kFrameSeconds = 1.0 / 60.0;
+// Scene time between two frames of a still camera: the wind physics takes
+// this frame's sub-steps (subStep 1/240 s: 4), as it would at 60 frames a
+// second.
+constexpr double kStillFrameSeconds = 1.0 / 60.0;
 
-// Warm-up then measured frames of one path, every frame from the same camera
-// while the scene time runs on from `view.time`, so the physics has steps to take.
-PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRenderer& renderer, FrameResources& frame,
-                      const FieldView& view, Path path, const SweepProgress& progress, double progressStart,
-                      double progressSpan) {
+// The view of frame i of a measurement starting at `start`: the scene time
+// runs on from there, and with --fly the camera follows its path with it.
+FieldView frameView(const PlantbenchOptions& o, const Scene& scene, const FieldView& start, uint32_t i) {
+    const double seconds = o.flyFps ? 1.0 / *o.flyFps : kStillFrameSeconds;
+    FieldView v = start;
+    v.firstFrame = i == 0;
+    const double t = double(start.time) + i * seconds;
+    v.time = float(t);
+    v.deltaTime = i == 0 ? 0.0f : float(seconds);
+    if (o.flyFps) v.camera = cameraAt(scene.camera, t);
+    return v;
+}
+
+// Warm-up then measured frames of one path from `view`: the scene time runs
+// on, so the physics has steps to take; the camera stays or flies (--fly).
+PathTimes measurePath(const PlantbenchOptions& o, const Scene& scene, const GpuContext& ctx, FieldRenderer& renderer,
+                      FrameResources& frame, const FieldView& view, Path path, const SweepProgress& progress,
+                      double progressStart, double progressSpan) {
     std::vector<double> frameMs, cpuMs;
     std::array<std::vector<double>, kPassCount> gpuMs;
     const uint32_t all = o.warmup + o.frames;
     std::string name = path == Path::Driven ? "GPU-driven" : "naive";
     if (o.pathTimes) name += " at t = " + secondsText(view.time) + " s";
+    uint64_t cacheRendersBefore = 0;
     for (uint32_t i = 0; i < all; ++i) {
         const bool warm = i < o.warmup;
+        if (i == o.warmup) cacheRendersBefore = renderer.readStats().shadowCacheRenders;
         showProgress(progress, progressStart + progressSpan * double(i) / all,
                      name + (warm ? " warm-up " : " frame ") + std::to_string(warm ? i + 1 : i - o.warmup + 1) + "/" +
                          std::to_string(warm ? o.warmup : o.frames));
-        FieldView v = view;
-        v.firstFrame = i == 0;
-        v.time = float(double(view.time) + i * kFrameSeconds);
-        v.deltaTime = i == 0 ? 0.0f : float(kFrameSeconds);
+        const FieldView v = frameView(o, scene, view, i);
         const Clock::time_point start = Clock::now();
         renderer.setView(v, frame.target.extent);
         double recordMs = 0.0;
@@ -133,6 +146,7 @@ PathTimes measurePath(const PlantbenchOptions& o, const GpuContext& ctx, FieldRe
     times.frameMs = *spreadOf(frameMs);
     times.cpuMs = *spreadOf(cpuMs);
     for (size_t p = 0; p < kPassCount; ++p) times.gpuMs[p] = spreadOf(gpuMs[p]);
+    times.shadowCacheRenders = renderer.readStats().shadowCacheRenders - cacheRendersBefore;
     return times;
 }
 
@@ -182,8 +196,8 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
     const double drivenSpan = (naive ? 0.5 : 1.0) / double(times.size());
     std::vector<CameraTimeResult> measured;
     for (size_t t = 0; t < times.size(); ++t) {
-        const PathTimes driven = measurePath(o, ctx, renderer, frame, viewAt(scene, times[t]), Path::Driven, progress,
-                                             drivenSpan * double(t), drivenSpan);
+        const PathTimes driven = measurePath(o, scene, ctx, renderer, frame, viewAt(scene, times[t]), Path::Driven,
+                                             progress, drivenSpan * double(t), drivenSpan);
         measured.push_back({times[t], driven, renderer.readStats()});
     }
     const CameraTimeResult& slowest = measured[slowestTime(measured)];
@@ -195,7 +209,7 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
     r.jointsSimulated = renderer.simulatedJoints();
     r.gpuMemoryBytes = budget ? deviceLocalUsage(ctx) : r.rendererBytes;
     if (naive) {
-        r.naive = measurePath(o, ctx, renderer, frame, viewAt(scene, r.time), Path::Naive, progress, 0.5, 0.5);
+        r.naive = measurePath(o, scene, ctx, renderer, frame, viewAt(scene, r.time), Path::Naive, progress, 0.5, 0.5);
         r.naiveTriangles = renderer.naiveTriangles();
     } else if (o.compareNaive) {
         r.note =

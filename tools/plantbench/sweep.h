@@ -1,6 +1,7 @@
 // The measurement: for each count, the scene's field with that many plants,
 // warm-up frames, then measured frames of the GPU-driven path from one camera
-// time or, with --path, from each of several along the camera path (and, with
+// time or, with --path, from each of several along the camera path, the
+// camera staying there or, with --fly, flying on along the path (and, with
 // --compare naive, of the naive path at the slowest of them), each copying its
 // image to a host buffer as a capture does, submitted and waited for.
 #pragma once
@@ -48,6 +49,7 @@ struct PathTimes {
     Spread frameMs;                                      // wall time of a frame: set the view, record, submit, wait
     Spread cpuMs;                                        // host time to set the view and record the command buffer
     std::array<std::optional<Spread>, kPassCount> gpuMs; // per kBenchPasses entry
+    uint64_t shadowCacheRenders = 0;                     // measured frames that drew the shadow cache
 };
 
 // The GPU-driven frame from one camera time.
