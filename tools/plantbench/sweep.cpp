@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <new>
 #include <stdexcept>
 #include <string_view>
@@ -51,6 +52,13 @@ std::string secondsText(double seconds) {
 
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// CPU time of every thread of this process so far, milliseconds.
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
 // The render target, the host buffer its captures go to and the timer of
@@ -110,7 +118,7 @@ FieldView frameView(const PlantbenchOptions& o, const Scene& scene, const FieldV
 PathTimes measurePath(const PlantbenchOptions& o, const Scene& scene, const GpuContext& ctx, FieldRenderer& renderer,
                       FrameResources& frame, const FieldView& view, Path path, const SweepProgress& progress,
                       double progressStart, double progressSpan) {
-    std::vector<double> frameMs, cpuMs;
+    std::vector<double> frameMs, cpuMs, processMs;
     std::array<std::vector<double>, kPassCount> gpuMs;
     const uint32_t all = o.warmup + o.frames;
     std::string name = path == Path::Driven ? "GPU-driven" : "naive";
@@ -124,6 +132,7 @@ PathTimes measurePath(const PlantbenchOptions& o, const Scene& scene, const GpuC
                          std::to_string(warm ? o.warmup : o.frames));
         const FieldView v = frameView(o, scene, view, i);
         const Clock::time_point start = Clock::now();
+        const double processStart = processCpuMs();
         renderer.setView(v, frame.target.extent);
         double recordMs = 0.0;
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
@@ -135,9 +144,11 @@ PathTimes measurePath(const PlantbenchOptions& o, const Scene& scene, const GpuC
             recordMs = msSince(start);
         });
         const double wallMs = msSince(start);
+        const double frameProcessMs = processCpuMs() - processStart;
         if (warm) continue;
         frameMs.push_back(wallMs);
         cpuMs.push_back(recordMs);
+        processMs.push_back(frameProcessMs);
         for (const ScopeTime& scope : readGpuTimer(ctx, frame.timer))
             for (size_t p = 0; p < kPassCount; ++p)
                 if (scope.name == kBenchPasses[p]) gpuMs[p].push_back(scope.milliseconds);
@@ -145,6 +156,7 @@ PathTimes measurePath(const PlantbenchOptions& o, const Scene& scene, const GpuC
     PathTimes times;
     times.frameMs = *spreadOf(frameMs);
     times.cpuMs = *spreadOf(cpuMs);
+    times.processCpuMs = *spreadOf(processMs);
     for (size_t p = 0; p < kPassCount; ++p) times.gpuMs[p] = spreadOf(gpuMs[p]);
     times.shadowCacheRenders = renderer.readStats().shadowCacheRenders - cacheRendersBefore;
     return times;

@@ -46,8 +46,13 @@ std::optional<Spread> spreadOf(std::vector<double> samples);
 
 // What one path (GPU-driven or naive) measured over its frames.
 struct PathTimes {
-    Spread frameMs;                                      // wall time of a frame: set the view, record, submit, wait
-    Spread cpuMs;                                        // host time to set the view and record the command buffer
+    Spread frameMs; // wall time of a frame: set the view, record, submit, wait
+    Spread cpuMs;   // host time to set the view and record the command buffer
+    // CPU time of all the process's threads over the frame: on a CPU device
+    // (lavapipe) its rasteriser and compute threads are the process's, so
+    // this is the frame's work, which other programs on the machine slow
+    // down far less than its wall time.
+    Spread processCpuMs;
     std::array<std::optional<Spread>, kPassCount> gpuMs; // per kBenchPasses entry
     uint64_t shadowCacheRenders = 0;                     // measured frames that drew the shadow cache
 };
