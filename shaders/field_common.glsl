@@ -82,10 +82,11 @@ vec3 fieldWindAt(vec3 worldPos) {
 }
 
 // The same vertex shaders draw the camera view and the sun's shadow maps:
-// the pipeline layout's push constant says which (FIELD_PASS_*).
-layout(push_constant) uniform FieldPush {
-    uint shadowPass; // not FIELD_PASS_COLOUR: depth from the sun
-} fieldPush;
+// the pipeline layout's push constants say which (FIELD_PASS_*), and which
+// impostors a colour draw keeps (IMPOSTOR_PART_*).
+layout(push_constant) uniform FieldPushBlock {
+    FieldPush fieldPush;
+};
 
 mat4 passViewProj() {
     if (fieldPush.shadowPass == FIELD_PASS_COLOUR) return frame.viewProj;

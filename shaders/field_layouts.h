@@ -207,11 +207,23 @@ struct ImpostorBakePush {
     vec4 height; // x bottom, y 1 / (top - bottom)
 };
 
-// The field's draw push constant (field_common.glsl fieldPush.shadowPass):
+// The field's draw push constants (field_common.glsl fieldPush). shadowPass:
 // which view the vertex shaders project into.
 #define FIELD_PASS_COLOUR 0u       // the camera's
 #define FIELD_PASS_SHADOW 1u       // the sun's, into the frame's shadow map (FieldFrame::sunViewProj)
 #define FIELD_PASS_SHADOW_CACHE 2u // the sun's, into the cache of static casters (FieldFrame::sunCacheViewProj)
+// impostorPart: which of the listed impostors a draw keeps (the others
+// collapse to a point in impostor.vert): all, only those the frame's shadow
+// map may reach, or only those it cannot reach, drawn by a pipeline with no
+// shadow lookup (sunlit_select.h).
+#define IMPOSTOR_PART_ALL 0u
+#define IMPOSTOR_PART_SHADOWED 1u
+#define IMPOSTOR_PART_SUNLIT 2u
+
+struct FieldPush {
+    uint shadowPass;   // FIELD_PASS_*
+    uint impostorPart; // IMPOSTOR_PART_*
+};
 
 // Field additions to the frame uniforms (after FrameUniforms in the same block).
 struct FieldFrame {
@@ -235,6 +247,7 @@ static_assert(sizeof(gpu::DrawTemplate) == 32);
 static_assert(sizeof(gpu::DrawCommand) == 20);
 static_assert(sizeof(gpu::CullUniforms) == 15 * 16);
 static_assert(sizeof(gpu::CullPush) == 16);
+static_assert(sizeof(gpu::FieldPush) == 8);
 static_assert(sizeof(gpu::ShadowCullUniforms) == 17 * 16);
 static_assert(offsetof(gpu::ShadowCullUniforms, counts) == offsetof(gpu::CullUniforms, counts));
 static_assert(sizeof(gpu::FieldFrame) == 2 * 64 + 3 * 16);

@@ -1,33 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "field_common.glsl"
+#include "impostor_colour.glsl"
 
-// LOD2 billboards: atlas albedo and plant-space normal (both premultiplied by
-// coverage), alpha-tested, cross-faded, shaded like LOD0 (plant.frag).
-layout(location = 0) in vec3 inWorldPos;
-layout(location = 1) in vec2 inUv;
-layout(location = 2) flat in uint inLayer;
-layout(location = 4) flat in uint inFade;
-layout(location = 5) flat in float inYaw;
-layout(location = 6) in vec4 inFog;
-layout(location = 0) out vec4 outColor;
-
-// Smaller mips average thin leaves below the 0.5 test; raising alpha with
-// the mip level keeps their coverage (impostor_shadow.frag uses the same).
-const float kMipAlphaBoost = 0.35;
-
+// LOD2 billboards the frame's shadow map may reach (IMPOSTOR_PART_SHADOWED,
+// or every impostor with IMPOSTOR_PART_ALL).
 void main() {
-    float lod = max(textureQueryLod(atlasColor, inUv).y, 0.0);
-    float layer = float(inLayer);
-    vec4 color = texture(atlasColor, vec3(inUv, layer));
-    if (color.a * (1.0 + kMipAlphaBoost * lod) < 0.5) discard;
-    if (fadeDiscards(gl_FragCoord.xy, inFade)) discard;
-    vec4 normalDepth = texture(atlasNormal, vec3(inUv, layer));
-
-    vec3 albedo = color.rgb / color.a;
-    vec3 n = normalize(normalDepth.rgb / color.a * 2.0 - 1.0);
-    n = yawMatrix(inYaw) * n;
-    // Impostors are mostly crown: foliage's occlusion and transmission.
-    vec3 shaded = shadeField(albedo, n, inWorldPos, 0.75, kFoliageTransmission);
-    outColor = vec4(toneMap(applyVertexFog(shaded, inFog)), 1.0);
+    shadeImpostor(true);
 }

@@ -1,6 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "field_common.glsl"
+#include "lod_select.h"
+#include "sunlit_select.h"
 
 // LOD2 billboards (docs/IMPOSTORS.md): the quads of appendBillboardMesh
 // expanded around each visible plant, each drawn as the outline of the frame
@@ -76,4 +78,11 @@ void main() {
     outYaw = inst.orientation.x;
     outFog = fieldPush.shadowPass != FIELD_PASS_COLOUR ? vec4(0.0) : vertexFog(outWorldPos);
     gl_Position = passViewProj() * vec4(outWorldPos, 1.0);
+    // A colour draw of one part keeps only that part's impostors: the others
+    // collapse onto a point beyond the far plane, and the rasteriser drops
+    // their triangles before any fragment.
+    uint part = fieldPush.impostorPart;
+    if (part != IMPOSTOR_PART_ALL &&
+        impostorPartOf(instanceSphere(inst, m), field.sunViewProj, field.viewport.z, field.viewport.w > 0.5) != part)
+        gl_Position = vec4(0.0, 0.0, 2.0, 1.0);
 }

@@ -12,6 +12,7 @@
 #include "shaders/canopy_vert.spv.h"
 #include "shaders/impostor_frag.spv.h"
 #include "shaders/impostor_shadow_frag.spv.h"
+#include "shaders/impostor_sunlit_frag.spv.h"
 #include "shaders/impostor_vert.spv.h"
 #include "shaders/plant_frag.spv.h"
 #include "shaders/plant_shadow_frag.spv.h"
@@ -260,7 +261,7 @@ void FieldRenderer::createDescriptors() {
     naiveSet_ = sets[1];
     shadowCacheSet_ = sets[2];
     shadowFrameSet_ = sets[3];
-    pipelineLayout_ = createPipelineLayout(resources_, setLayout, {kDrawStages, 0, sizeof(uint32_t)});
+    pipelineLayout_ = createPipelineLayout(resources_, setLayout, {kDrawStages, 0, sizeof(gpu::FieldPush)});
 }
 
 void FieldRenderer::createPipelines() {
@@ -275,6 +276,7 @@ void FieldRenderer::createPipelines() {
     const Stages plant{createShaderModule(modules, spirv_plant_vert), createShaderModule(modules, spirv_plant_frag)};
     const Stages impostor{createShaderModule(modules, spirv_impostor_vert),
                           createShaderModule(modules, spirv_impostor_frag)};
+    const Stages sunlitImpostor{impostor.vertex, createShaderModule(modules, spirv_impostor_sunlit_frag)};
     const Stages canopy{createShaderModule(modules, spirv_canopy_vert), createShaderModule(modules, spirv_canopy_frag)};
     const VkShaderModule plantShadow = createShaderModule(modules, spirv_plant_shadow_frag);
     const VkShaderModule impostorShadow = createShaderModule(modules, spirv_impostor_shadow_frag);
@@ -300,6 +302,7 @@ void FieldRenderer::createPipelines() {
     pipelines_.bark = make(plant, VK_CULL_MODE_BACK_BIT);
     pipelines_.foliage = make(plant, VK_CULL_MODE_NONE); // leaves are seen from both sides
     pipelines_.impostor = make(impostor, VK_CULL_MODE_NONE);
+    pipelines_.sunlitImpostor = make(sunlitImpostor, VK_CULL_MODE_NONE);
     pipelines_.canopy = make(canopy, VK_CULL_MODE_NONE); // canopyMeshIndices: skirts last
 
     // Depth only, seen from the sun: both sides of everything cast shadows.
@@ -358,8 +361,9 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
         cut == CLUSTER_CUT_ALL_FAR || (cut == CLUSTER_CUT_AUTO && leafPixels < settings_.clusters.thresholdPixels);
 }
 
-void FieldRenderer::pushFieldPass(VkCommandBuffer cmd, uint32_t pass) const {
-    vkCmdPushConstants(cmd, pipelineLayout_, kDrawStages, 0, sizeof(pass), &pass);
+void FieldRenderer::pushFieldPass(VkCommandBuffer cmd, uint32_t pass, uint32_t impostorPart) const {
+    const gpu::FieldPush push{pass, impostorPart};
+    vkCmdPushConstants(cmd, pipelineLayout_, kDrawStages, 0, sizeof(push), &push);
 }
 
 // The plants a cull phase listed: bark, foliage, then impostors.
@@ -374,8 +378,15 @@ void FieldRenderer::drawPlantLists(VkCommandBuffer cmd, uint32_t phase, GpuTimer
         drawClassIndirect(cmd, ctx_, cull_, DRAW_FOLIAGE, phase);
     }
     {
+        // The list twice: those the shadow map may reach, then the rest with
+        // no shadow lookup (shaders/sunlit_select.h); each draw drops the
+        // other's impostors in its vertex shader.
         Timed scope(cmd, late ? nullptr : timer, "impostors");
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.impostor);
+        pushFieldPass(cmd, FIELD_PASS_COLOUR, IMPOSTOR_PART_SHADOWED);
+        drawClassIndirect(cmd, ctx_, cull_, DRAW_IMPOSTOR, phase);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.sunlitImpostor);
+        pushFieldPass(cmd, FIELD_PASS_COLOUR, IMPOSTOR_PART_SUNLIT);
         drawClassIndirect(cmd, ctx_, cull_, DRAW_IMPOSTOR, phase);
     }
 }

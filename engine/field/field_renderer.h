@@ -142,8 +142,9 @@ public:
 private:
     struct Pipelines {
         VkPipeline sky = VK_NULL_HANDLE, terrain = VK_NULL_HANDLE, sunlitTerrain = VK_NULL_HANDLE,
-                   bark = VK_NULL_HANDLE, foliage = VK_NULL_HANDLE, impostor = VK_NULL_HANDLE, canopy = VK_NULL_HANDLE,
-                   plantShadow = VK_NULL_HANDLE, impostorShadow = VK_NULL_HANDLE;
+                   bark = VK_NULL_HANDLE, foliage = VK_NULL_HANDLE, impostor = VK_NULL_HANDLE,
+                   sunlitImpostor = VK_NULL_HANDLE, canopy = VK_NULL_HANDLE, plantShadow = VK_NULL_HANDLE,
+                   impostorShadow = VK_NULL_HANDLE;
     };
 
     const GpuContext& ctx_;
@@ -200,7 +201,7 @@ private:
     void recordShadowCache(VkCommandBuffer cmd) const;
     void recordShadowPass(VkCommandBuffer cmd) const;
     void recordNaiveShadowPass(VkCommandBuffer cmd) const;
-    void pushFieldPass(VkCommandBuffer cmd, uint32_t pass) const;
+    void pushFieldPass(VkCommandBuffer cmd, uint32_t pass, uint32_t impostorPart = IMPOSTOR_PART_ALL) const;
     void drawShadowCasters(VkCommandBuffer cmd, const CullPass& casters, VkDescriptorSet set, uint32_t pass) const;
     void recordColourPass(VkCommandBuffer cmd, const RenderTarget& target, bool naive, GpuTimer* timer) const;
     void drawPlantLists(VkCommandBuffer cmd, uint32_t phase, GpuTimer* timer) const;
