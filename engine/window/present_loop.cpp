@@ -19,8 +19,10 @@ void recordBlitToSwapchain(VkCommandBuffer cmd, const RenderTarget& target, VkIm
     region.srcOffsets[1] = {int32_t(target.extent.width), int32_t(target.extent.height), 1};
     region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.dstOffsets[1] = {int32_t(swapExtent.width), int32_t(swapExtent.height), 1};
+    // Bilinear where the render scale makes the target smaller than the window.
+    const bool scaled = target.extent.width != swapExtent.width || target.extent.height != swapExtent.height;
     vkCmdBlitImage(cmd, target.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, swapImage,
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, scaled ? VK_FILTER_LINEAR : VK_FILTER_NEAREST);
     // Presentation needs no access mask: the semaphore signal makes the write available.
     imageBarrier(cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT,
                  {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -34,7 +36,8 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
                             const PresentLoopOptions& options) {
     Swapchain swapchain;
     swapchain = createSwapchain(ctx, surface, window.framebufferExtent(), swapchain);
-    RenderTarget target = createRenderTarget(ctx, swapchain.extent, options.antialiasing);
+    RenderScaleState scale = startRenderScale(options.renderScale);
+    RenderTarget target = createRenderTarget(ctx, scaledExtent(swapchain.extent, scale.scale), options.antialiasing);
 
     VkCommandBuffer cmd = allocateCommandBuffer(ctx);
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
@@ -45,11 +48,16 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
     VkFence frameDone;
     VK_CHECK(vkCreateFence(ctx.device, &fenceInfo, nullptr, &frameDone));
 
+    // The target at `share` of the swapchain's size, once no frame uses the old one.
+    auto retarget = [&](float share) {
+        vkDeviceWaitIdle(ctx.device);
+        destroyRenderTarget(target);
+        target = createRenderTarget(ctx, scaledExtent(swapchain.extent, share), options.antialiasing);
+    };
     auto rebuild = [&] {
         vkDeviceWaitIdle(ctx.device);
         swapchain = createSwapchain(ctx, surface, window.framebufferExtent(), swapchain);
-        destroyRenderTarget(target);
-        target = createRenderTarget(ctx, swapchain.extent, options.antialiasing);
+        retarget(scale.scale);
     };
 
     using Clock = std::chrono::steady_clock;
@@ -121,20 +129,23 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
         VkResult presented = vkQueuePresentKHR(ctx.queue, &present);
         ++stats.frames;
         ++titleFrames;
+        const Clock::time_point now = Clock::now();
+        lastFrameMs = 1000.0 * std::chrono::duration<double>(frameStart - lastFrameStart).count();
+        lastFrameStart = frameStart;
+        // The first frame's time is only its own start: no frame before it.
         if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||
             size.width != swapchain.extent.width || size.height != swapchain.extent.height)
             rebuild();
         else
             VK_CHECK(presented);
+        if (stats.frames > 1 && updateRenderScale(scale, options.renderScale, lastFrameMs)) retarget(scale.scale);
 
-        const Clock::time_point now = Clock::now();
-        lastFrameMs = 1000.0 * std::chrono::duration<double>(frameStart - lastFrameStart).count();
-        lastFrameStart = frameStart;
         const double sinceTitle = std::chrono::duration<double>(now - titleTime).count();
         if (sinceTitle >= 0.5) {
             char title[128];
-            std::snprintf(title, sizeof(title), "plantfield - %.2f ms (%.1f fps)", 1000.0 * sinceTitle / titleFrames,
-                          titleFrames / sinceTitle);
+            std::snprintf(title, sizeof(title), "plantfield - %.2f ms (%.1f fps), rendered at %ux%u",
+                          1000.0 * sinceTitle / titleFrames, titleFrames / sinceTitle, target.extent.width,
+                          target.extent.height);
             window.setTitle(std::string(title) + (options.titleSuffix ? options.titleSuffix() : std::string()));
             titleTime = now;
             titleFrames = 0;
@@ -142,9 +153,14 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
     }
     VK_CHECK(vkDeviceWaitIdle(ctx.device));
     stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    stats.renderExtent = target.extent;
 
-    if (!options.screenshotPath.empty() && stats.frames > 0)
+    // The screenshot at the window's size, whatever the last render scale.
+    if (!options.screenshotPath.empty() && stats.frames > 0) {
+        if (target.extent.width != swapchain.extent.width || target.extent.height != swapchain.extent.height)
+            retarget(1.0f);
         writePng(options.screenshotPath, captureFrame(ctx, target, options.record));
+    }
 
     vkDestroyFence(ctx.device, frameDone, nullptr);
     vkDestroySemaphore(ctx.device, imageAcquired, nullptr);

@@ -75,9 +75,9 @@ TEST(SunlitImpostors, SpheresInsideOrAcrossTheMapAreShadowed) {
 
 TEST(SunlitImpostors, EveryImpostorIsSunlitWithoutShadows) {
     const SunSquare square = sunSquareAround(kSun, glm::vec3(0.0f), kRadius, kTexels);
-    EXPECT_EQ(gpu::impostorPartOf(glm::vec4(0.0f, 0.0f, 0.0f, 5.0f), sunViewProjection(square, kDepthRadius), 0.0f,
-                                  false),
-              IMPOSTOR_PART_SUNLIT);
+    EXPECT_EQ(
+        gpu::impostorPartOf(glm::vec4(0.0f, 0.0f, 0.0f, 5.0f), sunViewProjection(square, kDepthRadius), 0.0f, false),
+        IMPOSTOR_PART_SUNLIT);
 }
 
 } // namespace

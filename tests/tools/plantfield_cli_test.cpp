@@ -103,6 +103,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"TimeTooLate", "--capture OUT --time 1e9", "--time"},
                       BadInvocation{"NegativeTime", "--capture OUT --time -1", "--time"},
                       BadInvocation{"FpsNotANumber", "--frames 2 --out-dir OUT --fps nan", "not a finite number"},
+                      BadInvocation{"RenderScaleWithoutWindow", "--capture OUT --render-scale 0.5", "--window"},
+                      BadInvocation{"RenderScaleTooSmall", "--window --render-scale 0.1", "--render-scale"},
+                      BadInvocation{"RenderScaleNotANumber", "--window --render-scale half", "--render-scale"},
                       BadInvocation{"UnknownScene", "/nonexistent/scene.json --capture OUT", "does not exist"}),
     invocationName);
 
@@ -183,7 +186,7 @@ TEST(PlantfieldCli, HelpListsEveryOption) {
     EXPECT_EQ(r.exitCode, 0);
     for (const char* flag : {"--capture", "--size", "--window", "--frames", "--time", "--device", "--validation",
                              "--wind", "--joint-budget", "--physics-check", "--instances", "--densify", "--aa",
-                             "--samples", "--no-shadow-cache", "--no-clusters", "--occlusion"})
+                             "--samples", "--no-shadow-cache", "--no-clusters", "--occlusion", "--render-scale"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 
@@ -222,6 +225,20 @@ TEST(PlantfieldCli, WindowUnderXvfbRendersFrames) {
     for (size_t p = 0; p < image.pixels.size(); p += 4)
         colours.insert(image.pixels[p] | image.pixels[p + 1] << 8 | image.pixels[p + 2] << 16);
     EXPECT_GT(colours.size(), 100u);
+}
+
+// A fixed render scale renders the window's frames at that share of its
+// size; the screenshot is still the window's size.
+TEST(PlantfieldCli, WindowRendersAtAFixedRenderScale) {
+    ASSERT_EQ(runCommand("command -v xvfb-run").exitCode, 0) << "xvfb-run is missing: run tools/deps.sh";
+    const fs::path out = scratchDir("window-scale") / "window.png";
+    const CommandResult r =
+        runCommand("xvfb-run -a -s '-screen 0 640x480x24' " + kPlantfield +
+                   " --validation --window --frames 10 --size 320x240 --render-scale 0.5 --capture " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("the last rendered at 160x120"), std::string::npos) << r.output;
+    EXPECT_EQ(readPng(out.string()).width, 320u);
 }
 
 // --joint-budget replaces the scene's: with none, only the shared copies of

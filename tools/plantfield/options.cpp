@@ -126,6 +126,12 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_option("--size", sizeText, "Image or window size as WIDTHxHEIGHT (1 to 16384 per side)")
         ->default_str("1280x720");
     app.add_flag("--window", o.window, "Open a window: camera-path playback and free flight");
+    std::string renderScaleText;
+    app.add_option("--render-scale", renderScaleText,
+                   "With --window: render at this share of the window's size, 0.25 to 1, or auto (default): the\n"
+                   "share drops in steps of 1/8 to 1/2 while frames take over 1/15 s and rises again when they\n"
+                   "have time to spare; the frame is blitted up to the window (docs/WINDOW.md)")
+        ->type_name("S|auto");
     app.add_option("--frames", o.frames,
                    "Headless: render this many frames into --out-dir; with --window: close after this many");
     checkFiniteIn(*app.add_option("--fps", o.fps, "Frames per scene second of a --frames sequence"), 0.1, 1000.0);
@@ -206,6 +212,12 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
         o.windSpeed = wind->speed;
         if (windText.find(',') != std::string::npos) o.windDirectionDegrees = wind->directionDegrees;
     }
+    if (!renderScaleText.empty() && renderScaleText != "auto") {
+        const std::optional<float> share = finiteNumber<float>(renderScaleText);
+        if (!share || *share < 0.25f || *share > 1.0f)
+            return fail("invalid --render-scale '" + renderScaleText + "': expected auto or a share 0.25 to 1");
+        o.renderScale = *share;
+    }
     if (o.listDevices) return o;
     const bool sequence = !o.window && o.frames > 0;
     if (o.physicsCheck && (!o.capturePath.empty() || o.window || o.frames > 0 || o.stats))
@@ -216,6 +228,8 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     if (o.densify && !o.instances) return fail("--densify needs --instances N");
     if (sequence && o.outDir.empty()) return fail("--frames without --window needs --out-dir DIR for the images");
     if (!o.outDir.empty() && !sequence) return fail("--out-dir needs --frames N (and no --window)");
+    if (!renderScaleText.empty() && !o.window)
+        return fail("--render-scale is for --window: captures and sequences render at --size");
     if (!std::filesystem::is_regular_file(o.scenePath))
         return fail("scene file '" + o.scenePath + "' does not exist or is not a file");
     if (!o.capturePath.empty()) {

@@ -77,6 +77,9 @@ struct PlantfieldOptions {
     bool listDevices = false;
     bool validation = false;
     Antialiasing antialiasing;
+    // --render-scale: the window renders at this share of its size; nullopt
+    // (auto) lets engine/window/render_scale.h choose it from frame times.
+    std::optional<float> renderScale;
 };
 
 // Parses argv. On --help prints usage and returns exit code 0 through

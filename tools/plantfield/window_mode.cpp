@@ -55,6 +55,7 @@ int runWindow(const PlantfieldOptions& o) {
         loop.maxFrames = o.frames;
         loop.screenshotPath = o.capturePath;
         loop.antialiasing = renderer.antialiasing();
+        if (o.renderScale) loop.renderScale = {.dynamic = false, .scale = *o.renderScale};
         loop.prepare = [&](double t, double dt, VkExtent2D extent, double frameMs) {
             if (frameMs > 0) { // the previous frame has finished: its counters are ready
                 stats = renderer.readStats();
@@ -81,8 +82,10 @@ int runWindow(const PlantfieldOptions& o) {
         presented = runPresentLoop(ctx, window, surface, loop);
         destroyGpuTimer(ctx, timer);
     }
-    std::fprintf(stderr, "plantfield: %u frames in %.2f s (%.1f fps) on %s\n", presented.frames, presented.seconds,
-                 presented.seconds > 0 ? presented.frames / presented.seconds : 0.0, ctx.properties.deviceName);
+    std::fprintf(stderr, "plantfield: %u frames in %.2f s (%.1f fps) on %s, the last rendered at %ux%u\n",
+                 presented.frames, presented.seconds,
+                 presented.seconds > 0 ? presented.frames / presented.seconds : 0.0, ctx.properties.deviceName,
+                 presented.renderExtent.width, presented.renderExtent.height);
     vkDestroySurfaceKHR(ctx.instance, surface, nullptr);
     destroyContext(ctx);
     return 0;

@@ -1,0 +1,40 @@
+#include "engine/window/render_scale.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pf {
+
+RenderScaleState startRenderScale(const RenderScaleSettings& settings) {
+    RenderScaleState state;
+    state.scale = std::clamp(settings.scale, settings.minScale, 1.0f);
+    return state;
+}
+
+bool updateRenderScale(RenderScaleState& state, const RenderScaleSettings& settings, double frameMs) {
+    if (!settings.dynamic || !(frameMs > 0.0)) return false;
+    const float up = std::min(state.scale + settings.step, 1.0f);
+    const double growth = double(up / state.scale) * double(up / state.scale);
+    const bool slow = frameMs > settings.targetFrameMs * 1.1 && state.scale > settings.minScale;
+    const bool fast = up > state.scale && frameMs * growth < settings.targetFrameMs * 0.9;
+    state.slowFrames = slow ? state.slowFrames + 1 : 0;
+    state.fastFrames = fast ? state.fastFrames + 1 : 0;
+    if (state.slowFrames >= settings.settleFrames) {
+        state.scale = std::max(state.scale - settings.step, settings.minScale);
+    } else if (state.fastFrames >= settings.settleFrames) {
+        state.scale = up;
+    } else {
+        return false;
+    }
+    state.slowFrames = state.fastFrames = 0;
+    return true;
+}
+
+VkExtent2D scaledExtent(VkExtent2D window, float scale) {
+    auto side = [scale](uint32_t pixels) {
+        return std::max(uint32_t(std::lround(double(pixels) * double(scale))), 1u);
+    };
+    return {side(window.width), side(window.height)};
+}
+
+} // namespace pf
