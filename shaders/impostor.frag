@@ -10,6 +10,7 @@ layout(location = 2) flat in uint inLayer;
 layout(location = 4) flat in uint inFade;
 layout(location = 5) flat in float inYaw;
 layout(location = 6) in vec4 inFog;
+layout(location = 7) flat in vec3 inDepthAxis;
 layout(location = 0) out vec4 outColor;
 
 // Smaller mips average thin leaves below the 0.5 test; raising alpha with
@@ -28,6 +29,11 @@ void main() {
     vec3 n = normalize(normalDepth.rgb / color.a * 2.0 - 1.0);
     n = yawMatrix(inYaw) * n;
     // Impostors are mostly crown: foliage's occlusion and transmission.
-    vec3 shaded = shadeField(albedo, n, inWorldPos, 0.75, kFoliageTransmission);
+    // Lit where the surface the frame shows is, not where the quad is: the
+    // baked depth (0 front … 1 back) moves the point along the frame's view,
+    // so the crown meets its own shadow (impostor_shadow.frag) where its
+    // mesh would.
+    vec3 surface = inWorldPos + inDepthAxis * (1.0 - 2.0 * normalDepth.a / color.a);
+    vec3 shaded = shadeField(albedo, n, surface, 0.75, kFoliageTransmission);
     outColor = vec4(toneMap(applyVertexFog(shaded, inFog)), 1.0);
 }

@@ -19,6 +19,7 @@ layout(location = 2) flat out uint outLayer; // the atlas frame shown
 layout(location = 4) flat out uint outFade;
 layout(location = 5) flat out float outYaw;
 layout(location = 6) out vec4 outFog;
+layout(location = 7) flat out vec3 outDepthAxis; // world: from the quad to the shown frame's front (toward its view)
 
 const float kTau = 6.28318531;
 
@@ -72,6 +73,11 @@ void main() {
     outUv = uv;
     outFade = packFade(p);
     outYaw = inst.orientation.x;
+    // The shown frame was baked looking along -d (impostor_atlas.h), its
+    // depth running half its box's depth either side of the quad along d.
+    float frameAzimuth = float(outLayer - m.impostor.x) / float(frames) * kTau;
+    outDepthAxis = yawMatrix(inst.orientation.x) * vec3(sin(frameAzimuth), 0.0, cos(frameAzimuth)) *
+                   (m.impostorQuad.w * inst.positionScale.w);
     outFog = vertexFog(outWorldPos);
     gl_Position = frame.viewProj * vec4(outWorldPos, 1.0);
 }

@@ -8,15 +8,16 @@
 // sun's view (Tankard 2001's single billboard turned to the light), showing
 // the shadow frame baked nearest the sun's azimuth in plant space (the
 // instance's yaw undone, as impostor.vert does for the view). The quad's
-// plane passes through the plant's centre, so its depth in the map is the
-// centre's: the crown's half away from the sun lies behind it, in its own
-// shadow, and everything behind the plant in the sun's view is shadowed.
+// plane passes through the plant's centre; impostor_shadow.frag moves each
+// texel's depth from it to the depth baked in the frame, the mesh's surface
+// nearest the sun.
 // The shadows stand at rest: most are drawn once into the cache of static
 // casters and copied for many frames (a lean of a tenth of a metre is about
 // one texel of the map).
 layout(location = 1) out vec2 outUv;
 layout(location = 2) flat out uint outLayer; // the shadow frame shown
 layout(location = 4) flat out uint outFade;
+layout(location = 5) flat out float outDepthSpan; // map depth from the quad to the frame's front
 
 const float kTau = 6.28318531;
 
@@ -32,6 +33,7 @@ void main() {
     if (v.position.z > 0.5) {
         outUv = vec2(0.0);
         outLayer = 0u;
+        outDepthSpan = 0.0;
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
         return;
     }
@@ -54,5 +56,9 @@ void main() {
                     shadowFrameRight(azimuth) * ((2.0 * uv.x - 1.0) * halfExtent.x) +
                     shadowFrameUp(azimuth, sinE, cosE) * ((1.0 - 2.0 * uv.y) * halfExtent.y);
     outUv = uv;
-    gl_Position = passViewProj() * vec4(plantToWorld(inst, plantPos), 1.0);
+    mat4 sunViewProj = passViewProj();
+    // The frame's half depth along the sun, in map depth (orthographic: a
+    // direction moves depth the same everywhere).
+    outDepthSpan = (sunViewProj * vec4(frame.sunDirection.xyz, 0.0)).z * halfExtent.z * inst.positionScale.w;
+    gl_Position = sunViewProj * vec4(plantToWorld(inst, plantPos), 1.0);
 }

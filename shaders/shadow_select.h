@@ -7,11 +7,10 @@
 // shadow frame, the plant seen from the sun (docs/IMPOSTORS.md, "Shadow
 // frames"), whatever LOD the camera draws it at. A reduced tree's shadow is
 // its silhouette toward the sun blurred over a few texels of the map
-// (Reeves, Salesin & Cook 1987, section 3: the percentage-closer filter
-// averages the map's depth tests over its kernel, so detail finer than the
-// kernel does not show), which the shadow frame baked from its full mesh
-// holds; its leaf cards, each shaded under the cut-out test, cost a
-// software rasteriser many times its one textured quad.
+// (Reeves, Salesin & Cook 1987: percentage-closer filtering averages the
+// map's depth tests over its kernel, so detail finer than the kernel does
+// not show), which the shadow frame baked from its full mesh holds; its leaf cards, each shaded under the cut-out test,
+// cost a software rasteriser many times its one textured quad.
 //
 // The frame's map is the cache's window with the other casters drawn on top,
 // so each caster must be drawn exactly once, in the form the frame's own

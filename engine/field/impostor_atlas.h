@@ -20,7 +20,7 @@ struct ImpostorSettings {
     // Pixels per side of one shadow frame: a 10 m tree spans about 85 texels
     // of the 1024² shadow map over 120 m, so 128 keeps every map texel
     // sampled from at least one frame texel, at a sixteenth of a colour
-    // frame's memory (one byte a texel).
+    // frame's memory (coverage and depth, two bytes a texel).
     uint32_t shadowFrameSize = 128;
 };
 
@@ -56,7 +56,8 @@ struct ImpostorAtlas {
     Image color;       // R8G8B8A8_SRGB array, one layer per (model, frame): albedo, alpha = coverage
     Image normalDepth; // R8G8B8A8_UNORM array: plant-space normal·0.5+0.5, alpha = depth across the box (0 front … 1
                        // back)
-    Image shadow;      // R8_UNORM array, shadowFrameSize²: coverage seen from the sun's elevation (shadow frames)
+    Image shadow; // R8G8_UNORM array, shadowFrameSize²: coverage seen from the sun's elevation (shadow frames), depth
+                  // along the sun premultiplied by coverage (0 front, toward the sun … 1 back)
     uint32_t mipLevels = 0;
     uint32_t shadowMipLevels = 0;
     VkSampler sampler = VK_NULL_HANDLE; // linear, clamp, mipmapped

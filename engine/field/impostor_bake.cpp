@@ -26,7 +26,7 @@ namespace {
 
 constexpr VkFormat kAtlasColorFormat = VK_FORMAT_R8G8B8A8_SRGB;
 constexpr VkFormat kAtlasNormalFormat = VK_FORMAT_R8G8B8A8_UNORM;
-constexpr VkFormat kShadowFrameFormat = VK_FORMAT_R8_UNORM;
+constexpr VkFormat kShadowFrameFormat = VK_FORMAT_R8G8_UNORM;
 constexpr VkFormat kBakeDepthFormat = VK_FORMAT_D32_SFLOAT;
 constexpr VkSampleCountFlagBits kBakeSamples = VK_SAMPLE_COUNT_4_BIT;
 
@@ -134,7 +134,8 @@ struct BakeTargets {
     Image color;
     Image normalDepth;
     Image depth;
-    Image shadow; // shadowFrameSize², coverage only: no depth test, every covered sample writes 1
+    Image shadow; // shadowFrameSize²: coverage and depth from the sun
+    Image shadowDepth;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     uint32_t size = 0;
     uint32_t shadowSize = 0;
@@ -153,12 +154,13 @@ BakeTargets createBakeTargets(GpuResources& owner, uint32_t size, uint32_t shado
     targets.shadow = createImage(
         owner,
         {.extent = {shadowSize, shadowSize}, .format = kShadowFrameFormat, .usage = usage, .samples = targets.samples});
-    targets.depth = createImage(
-        owner, {.extent = {size, size},
-                .format = kBakeDepthFormat,
-                .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
-                .samples = targets.samples});
+    for (auto [depth, side] : {std::pair{&targets.depth, size}, std::pair{&targets.shadowDepth, shadowSize}})
+        *depth = createImage(
+            owner, {.extent = {side, side},
+                    .format = kBakeDepthFormat,
+                    .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                    .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
+                    .samples = targets.samples});
     return targets;
 }
 
@@ -166,8 +168,9 @@ BakeTargets createBakeTargets(GpuResources& owner, uint32_t size, uint32_t shado
 // view as push constants, and the cull mode dynamic. The colour frames'
 // pipeline (impostor_bake.frag): two colour attachments (albedo, normal +
 // depth), depth test, MSAA, back faces culled for bark, none for two-sided
-// foliage. The shadow frames' (impostor_shadow_bake.frag): one coverage
-// attachment, no depth, both sides of everything, as the shadow passes cast.
+// foliage. The shadow frames' (impostor_shadow_bake.frag): one attachment
+// of coverage and the nearest depth from the sun, depth test, MSAA, both
+// sides of everything, as the shadow passes cast.
 struct BakePipeline {
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkDescriptorSet set = VK_NULL_HANDLE;
@@ -204,14 +207,14 @@ BakePipeline createBakePipeline(GpuResources& owner, const Buffer& vertices, VkS
     desc.fragment = createShaderModule(modules, spirv_impostor_shadow_bake_frag);
     desc.colorFormat = kShadowFrameFormat;
     desc.secondColorFormat = VK_FORMAT_UNDEFINED;
-    desc.depthFormat = VK_FORMAT_UNDEFINED;
-    desc.depthTest = false;
-    desc.depthWrite = false;
     bake.shadowPipeline = createGraphicsPipeline(owner, desc);
     return bake;
 }
 
-void beginBakeFrame(VkCommandBuffer cmd, const BakeTargets& targets) {
+// Clears the frame's targets (MSAA colour attachments and depth, `size`²)
+// and begins rendering into them.
+void beginBakeFrame(VkCommandBuffer cmd, std::initializer_list<const Image*> colours, const Image& depthTarget,
+                    uint32_t size) {
     // Each frame clears the targets again: the previous frame's resolve
     // reads must be done before (write after read: execution only), and
     // its depth writes before the depth clear (write after write).
@@ -222,36 +225,36 @@ void beginBakeFrame(VkCommandBuffer cmd, const BakeTargets& targets) {
                                        VK_IMAGE_LAYOUT_UNDEFINED,
                                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkImageMemoryBarrier2 depthToAttachment =
-        atlasBarrier(targets.depth, 0, 1, 1,
+        atlasBarrier(depthTarget, 0, 1, 1,
                      {VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                       VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
     depthToAttachment.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
-    pipelineBarrier(cmd, {atlasBarrier(targets.color, 0, 1, 1, toAttachment),
-                          atlasBarrier(targets.normalDepth, 0, 1, 1, toAttachment), depthToAttachment});
-
-    VkRenderingAttachmentInfo colors[2]{};
-    const VkImageView views[2] = {targets.color.view, targets.normalDepth.view};
-    for (int i = 0; i < 2; ++i) {
-        colors[i] = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-        colors[i].imageView = views[i];
-        colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-        colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-        colors[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}}; // background: coverage 0
+    std::vector<VkImageMemoryBarrier2> barriers{depthToAttachment};
+    std::vector<VkRenderingAttachmentInfo> attachments;
+    for (const Image* colour : colours) {
+        barriers.push_back(atlasBarrier(*colour, 0, 1, 1, toAttachment));
+        VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        a.imageView = colour->view;
+        a.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        a.clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}}; // background: coverage 0
+        attachments.push_back(a);
     }
-    const VkRenderingAttachmentInfo depth =
-        clearedDepthAttachment(targets.depth.view, VK_ATTACHMENT_STORE_OP_DONT_CARE);
-    const VkRect2D area{{0, 0}, {targets.size, targets.size}};
+    pipelineBarrier(cmd, barriers);
+
+    const VkRenderingAttachmentInfo depth = clearedDepthAttachment(depthTarget.view, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+    const VkRect2D area{{0, 0}, {size, size}};
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
     rendering.renderArea = area;
     rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 2;
-    rendering.pColorAttachments = colors;
+    rendering.colorAttachmentCount = uint32_t(attachments.size());
+    rendering.pColorAttachments = attachments.data();
     rendering.pDepthAttachment = &depth;
     vkCmdBeginRendering(cmd, &rendering);
-    const VkViewport viewport{0.0f, 0.0f, float(targets.size), float(targets.size), 0.0f, 1.0f};
+    const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &area);
 }
@@ -328,21 +331,6 @@ void resolveBakeFrame(VkCommandBuffer cmd, std::initializer_list<BakeResolve> re
     }
 }
 
-// A shadow frame clears its coverage target again: the previous frame's
-// resolve reads must be done before (write after read: execution only).
-void beginShadowBakeFrame(VkCommandBuffer cmd, const BakeTargets& targets) {
-    const ImageTransition toAttachment{VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                                       VK_ACCESS_2_NONE,
-                                       VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                                       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                                       VK_IMAGE_LAYOUT_UNDEFINED,
-                                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    pipelineBarrier(cmd, {atlasBarrier(targets.shadow, 0, 1, 1, toAttachment)});
-    // Background: coverage 0.
-    beginColorOnlyRendering(cmd, targets.shadow.view, VK_ATTACHMENT_LOAD_OP_CLEAR,
-                            {targets.shadowSize, targets.shadowSize});
-}
-
 // Every model from every direction into mip 0 of its layers: the colour
 // frames, then the shadow frames.
 void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const BakeTargets& targets,
@@ -365,7 +353,7 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.pipeline);
     for (const PlantModelInfo& model : pool.models) {
         for (uint32_t f = 0; f < frames; ++f) {
-            beginBakeFrame(cmd, targets);
+            beginBakeFrame(cmd, {&targets.color, &targets.normalDepth}, targets.depth, targets.size);
             drawBakeFrame(cmd, bake, model, colourFrameView(model.gpu.impostorQuad, f, frames),
                           {VK_CULL_MODE_BACK_BIT, VK_CULL_MODE_NONE});
             resolveBakeFrame(cmd, {{&targets.color, &atlas.color}, {&targets.normalDepth, &atlas.normalDepth}},
@@ -375,7 +363,7 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.shadowPipeline);
     for (const PlantModelInfo& model : pool.models) {
         for (uint32_t f = 0; f < frames; ++f) {
-            beginShadowBakeFrame(cmd, targets);
+            beginBakeFrame(cmd, {&targets.shadow}, targets.shadowDepth, targets.shadowSize);
             drawBakeFrame(cmd, bake, model, shadowFrameView(model.gpu.impostorQuad, f, frames, sunElevation),
                           {VK_CULL_MODE_NONE, VK_CULL_MODE_NONE});
             resolveBakeFrame(cmd, {{&targets.shadow, &atlas.shadow}}, targets.samples, targets.shadowSize,
