@@ -2,8 +2,6 @@
 // is impostor_bake.cpp.
 #include "engine/field/impostor_atlas.h"
 
-#include "shaders/impostor_shadow_frame.h"
-
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
@@ -20,11 +18,6 @@ glm::vec3 impostorViewDirection(uint32_t frame, uint32_t frames) {
 glm::vec3 impostorRightAxis(uint32_t frame, uint32_t frames) {
     float a = glm::two_pi<float>() * float(frame) / float(frames);
     return {std::cos(a), 0.0f, -std::sin(a)};
-}
-
-glm::vec3 impostorShadowViewDirection(uint32_t frame, uint32_t frames, float sunElevation) {
-    float a = glm::two_pi<float>() * float(frame) / float(frames);
-    return gpu::shadowFrameToSun(a, std::sin(sunElevation), std::cos(sunElevation));
 }
 
 glm::vec4 impostorQuadOf(const gpu::PlantModel& model) {

@@ -41,12 +41,12 @@ glm::vec3 impostorRightAxis(uint32_t frame, uint32_t frames);
 glm::vec4 impostorQuadOf(const gpu::PlantModel& model);
 
 // Shadow frame f of n views the plant from the sun's elevation e at azimuth
-// a = 2π·f/n (shaders/impostor_shadow_frame.h): the orthographic camera
-// looks along -(sin a·cos e, sin e, cos a·cos e), its right axis is the
-// colour frame's, its up axis the vertical tilted away from the sun, and
-// the frame is fitted about the box's centre on the plant's axis to the
-// projection of the cylinder that holds the box from every azimuth.
-glm::vec3 impostorShadowViewDirection(uint32_t frame, uint32_t frames, float sunElevation);
+// a = 2π·f/n (shaders/impostor_shadow_frame.h has the axes and extents):
+// the orthographic camera looks along -(sin a·cos e, sin e, cos a·cos e),
+// its right axis is the colour frame's, its up axis the vertical tilted
+// away from the sun, and the frame is fitted about the box's centre on the
+// plant's axis to the projection of the cylinder that holds the box from
+// every azimuth.
 
 // Both colour images are premultiplied by coverage (the MSAA resolve of a
 // clear-0 background): divide rgb and normalDepth by color.a before use.
