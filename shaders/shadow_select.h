@@ -9,8 +9,9 @@
 // its silhouette toward the sun blurred over a few texels of the map
 // (Reeves, Salesin & Cook 1987: percentage-closer filtering averages the
 // map's depth tests over its kernel, so detail finer than the kernel does
-// not show), which the shadow frame baked from its full mesh holds; its leaf cards, each shaded under the cut-out test,
-// cost a software rasteriser many times its one textured quad.
+// not show), which the shadow frame baked from its full mesh holds; its
+// leaf cards, each shaded under the cut-out test, cost a software
+// rasteriser many times its one textured quad.
 //
 // The frame's map is the cache's window with the other casters drawn on top,
 // so each caster must be drawn exactly once, in the form the frame's own
@@ -79,9 +80,9 @@ SHADOW_SELECT_FN bool shadowMayFallInView(vec4 sphere, ShadowCullUniforms u) {
 // the cache holds them in view of the camera or not, since it serves
 // cameras turned other ways, while the frame draws those whose shadow may
 // fall in its view, at shadowLodForPixels of the camera's target LOD (no
-// hysteresis and no fade, which depend on earlier frames). A plant the cache holds and whose
-// shadow misses the view is in the frame's map or not depending on where the
-// cache was drawn, but never in what the camera sees.
+// hysteresis and no fade, which depend on earlier frames). A plant the
+// cache holds and whose shadow misses the view is in the frame's map or not
+// depending on where the cache was drawn, but never in what the camera sees.
 SHADOW_SELECT_FN uint shadowCasterLod(FieldInstance inst, PlantModel model, ShadowCullUniforms u) {
     vec4 sphere = instanceSphere(inst, model);
     if (!sphereInFrustum(sphere, u.box[0], u.box[1], u.box[2], u.box[3], u.box[4], u.box[5])) return SHADOW_NOT_CAST;
