@@ -17,6 +17,7 @@ layout(set = 0, binding = FIELD_BINDING_VERTICES) uniform usamplerBuffer vertexT
 layout(set = 0, binding = FIELD_BINDING_MODELS) uniform usamplerBuffer modelTexels;      // PlantModel[]
 layout(set = 0, binding = FIELD_BINDING_ATLAS_COLOR) uniform sampler2DArray atlasColor;
 layout(set = 0, binding = FIELD_BINDING_ATLAS_NORMAL) uniform sampler2DArray atlasNormal;
+layout(set = 0, binding = FIELD_BINDING_IMPOSTOR_SHADOW) uniform sampler2DArray impostorShadow;
 layout(set = 0, binding = FIELD_BINDING_SHADOW) uniform sampler2DShadow shadowMap;
 layout(set = 0, binding = FIELD_BINDING_TERRAIN) uniform usamplerBuffer terrainTexels;   // TerrainVertex[]
 layout(set = 0, binding = FIELD_BINDING_SKELETONS) uniform usamplerBuffer skeletonTexels; // Skeleton[]

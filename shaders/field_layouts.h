@@ -87,6 +87,7 @@ using uint = uint32_t;
 #define FIELD_BINDING_CLUSTER_NODES 13             // ClusterNode[] (cluster_layouts.h)
 #define FIELD_BINDING_CANOPY 14                    // CanopyCell[] per node, CANOPY_CELLS each
 #define FIELD_BINDING_CANOPY_FAR 15                // uint: the camera's far nodes (the canopy's instances)
+#define FIELD_BINDING_IMPOSTOR_SHADOW 16           // sampler2DArray: impostor shadow frames, coverage (r)
 
 // Descriptor binding of the impostor bake (its own set 0).
 #define IMPOSTOR_BAKE_BINDING_VERTICES 0 // FieldVertex[]
@@ -200,11 +201,13 @@ struct ShadowCullUniforms {
 };
 
 // The push constants of one impostor bake frame (engine/field/impostor_atlas.h):
-// the orthographic view from azimuth a, fitted to the model's box.
+// an orthographic view fitted to the model's box. Each axis maps plant
+// space to [-1, 1] about the frame's centre c: xyz = axis / half extent,
+// w = -dot(c, axis) / half extent.
 struct ImpostorBakePush {
-    vec4 right;  // xyz (cos a, 0, -sin a) / half width
-    vec4 toView; // xyz (sin a, 0, cos a) / half depth
-    vec4 height; // x bottom, y 1 / (top - bottom)
+    vec4 right;  // the frame's right axis: image column, u 0 → 1
+    vec4 up;     // its up axis: image row 0 at +1
+    vec4 toView; // toward the viewer: depth 0 at +1 (the front), 1 at -1
 };
 
 // The field's draw push constants (field_common.glsl fieldPush). shadowPass:

@@ -13,14 +13,15 @@
 // the view about the vertical axis and shows the frame nearest the view
 // azimuth; two or three crossed quads stay fixed in plant space, each
 // showing the frame baked along its normal (or its opposite, mirrored, when
-// seen from behind). Also the vertex stage of the shadow pass, where the sun
-// is the view.
+// seen from behind). The shadow passes draw impostors with
+// impostor_shadow.vert and the shadow frames instead.
 layout(location = 0) out vec3 outWorldPos;
 layout(location = 1) out vec2 outUv;
 layout(location = 2) flat out uint outLayer; // the atlas frame shown
 layout(location = 4) flat out uint outFade;
 layout(location = 5) flat out float outYaw;
 layout(location = 6) out vec4 outFog;
+layout(location = 7) flat out vec3 outDepthAxis; // world: from the quad to the shown frame's front (toward its view)
 
 const float kTau = 6.28318531;
 
@@ -33,7 +34,7 @@ void main() {
     uint frames = m.impostor.y;
     uint quads = m.impostor.z;
     // Where the view comes from, in plant space (the instance's yaw undone).
-    vec3 toView = fieldPush.shadowPass != FIELD_PASS_COLOUR ? frame.sunDirection.xyz : frame.cameraPosition.xyz - inst.positionScale.xyz;
+    vec3 toView = frame.cameraPosition.xyz - inst.positionScale.xyz;
     vec3 local = transpose(yawMatrix(inst.orientation.x)) * toView;
     float viewAzimuth = dot(local.xz, local.xz) > 1e-12 ? atan(local.x, local.z) : 0.0;
 
@@ -67,17 +68,20 @@ void main() {
     // Far plants have no skeleton: the quad's top leans with the gusts and
     // turbulence (the wind beyond its mean), growing with height squared.
     // Like the skeletons, which start at rest at time 0, the lean rises over
-    // the first second. Their shadows stand at rest: most are drawn once into
-    // the cache of static casters and copied for many frames (a lean of a
-    // tenth of a metre is about one texel of the shadow map).
+    // the first second.
     vec3 gust = fieldWindAt(inst.positionScale.xyz) - vec3(field.wind.x, 0.0, field.wind.z);
-    float lean = fieldPush.shadowPass != FIELD_PASS_COLOUR ? 0.0 : height * height * min(field.wind.w, 1.0);
+    float lean = height * height * min(field.wind.w, 1.0);
     outWorldPos += vec3(gust.x, 0.0, gust.z) * (field.windDetail.w * lean * inst.positionScale.w);
     outUv = uv;
     outFade = packFade(p);
     outYaw = inst.orientation.x;
-    outFog = fieldPush.shadowPass != FIELD_PASS_COLOUR ? vec4(0.0) : vertexFog(outWorldPos);
-    gl_Position = passViewProj() * vec4(outWorldPos, 1.0);
+    // The shown frame was baked looking along -d (impostor_atlas.h), its
+    // depth running half its box's depth either side of the quad along d.
+    float frameAzimuth = float(outLayer - m.impostor.x) / float(frames) * kTau;
+    outDepthAxis = yawMatrix(inst.orientation.x) * vec3(sin(frameAzimuth), 0.0, cos(frameAzimuth)) *
+                   (m.impostorQuad.w * inst.positionScale.w);
+    outFog = vertexFog(outWorldPos);
+    gl_Position = frame.viewProj * vec4(outWorldPos, 1.0);
     // A colour draw of one part keeps only that part's impostors: the others
     // collapse onto a point beyond the far plane, and the rasteriser drops
     // their triangles before any fragment.

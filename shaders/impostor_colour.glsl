@@ -12,6 +12,7 @@ layout(location = 2) flat in uint inLayer;
 layout(location = 4) flat in uint inFade;
 layout(location = 5) flat in float inYaw;
 layout(location = 6) in vec4 inFog;
+layout(location = 7) flat in vec3 inDepthAxis;
 layout(location = 0) out vec4 outColor;
 
 // Smaller mips average thin leaves below the 0.5 test; raising alpha with
@@ -32,7 +33,12 @@ void shadeImpostor(bool shadowed) {
     n = yawMatrix(inYaw) * n;
     // Impostors are mostly crown: foliage's occlusion and transmission.
     const float occlusion = 0.75;
-    vec3 shaded = shadowed ? shadeField(albedo, n, inWorldPos, occlusion, kFoliageTransmission)
+    // Lit where the surface the frame shows is, not where the quad is: the
+    // baked depth (0 front … 1 back) moves the point along the frame's view,
+    // so the crown meets its own shadow (impostor_shadow.frag) where its
+    // mesh would.
+    vec3 surface = inWorldPos + inDepthAxis * (1.0 - 2.0 * normalDepth.a / color.a);
+    vec3 shaded = shadowed ? shadeField(albedo, n, surface, occlusion, kFoliageTransmission)
                            : shadeFieldSeen(albedo, n, 1.0, occlusion, kFoliageTransmission);
     outColor = vec4(toneMap(applyVertexFog(shaded, inFog)), 1.0);
 }

@@ -2,12 +2,26 @@
 // map of static casters holds (engine/field/shadow_casters.h), shared by
 // shaders/shadow_cull.comp and pf::shadowCastersOnCpu like lod_select.h.
 //
+// What casts (docs/FIELD.md, "The sun's shadows"): a plant the camera sees
+// at LOD0 casts its full mesh; every other plant casts its impostor's
+// shadow frame, the plant seen from the sun (docs/IMPOSTORS.md, "Shadow
+// frames"), whatever LOD the camera draws it at. A reduced tree's shadow is
+// its silhouette toward the sun blurred over a few texels of the map
+// (Reeves, Salesin & Cook 1987: percentage-closer filtering averages the
+// map's depth tests over its kernel, so detail finer than the kernel does
+// not show), which the shadow frame baked from its full mesh holds; its
+// leaf cards, each shaded under the cut-out test, cost a software
+// rasteriser many times its one textured quad.
+//
 // The frame's map is the cache's window with the other casters drawn on top,
 // so each caster must be drawn exactly once, in the form the frame's own
 // camera gives it: the cache holds a plant only when every camera it serves
-// sees that plant as an impostor large enough to draw; every other caster is
-// decided by the frame itself. A frame therefore shows the same casters
-// whether the cache was drawn for it or for a camera some metres away.
+// sees that plant beyond LOD0 and large enough to draw, so it casts as an
+// impostor for all of them; every other caster is decided by the frame
+// itself. A frame therefore shows the same casters whether the cache was
+// drawn for it or for a camera some metres away. The impostor's shadow
+// depends on the sun alone (not on the camera), so the cache's copy is the
+// frame's texel for texel.
 #ifndef PLANTFIELD_SHADERS_SHADOW_SELECT_H
 #define PLANTFIELD_SHADERS_SHADOW_SELECT_H
 
@@ -23,17 +37,25 @@ namespace gpu {
 // shadowCasterLod: the plant casts nothing in this pass.
 #define SHADOW_NOT_CAST 0xFFFFFFFFu
 
-// True when the plant is an impostor large enough to draw for every camera
-// the cache serves: within cacheCamera.w metres of cacheCamera.xyz (so at most
-// that much nearer or farther) with between cachePixels.x and cachePixels.y
-// pixels per metre at one metre.
+// The LOD a plant casts from at `pixels` on the camera's screen: the full
+// mesh where the camera sees it at LOD0, its impostor everywhere else (a
+// forced LOD casts as forced). Casting impostors also lets the cache hold
+// every plant no camera it serves sees at LOD0.
+SHADOW_SELECT_FN uint shadowLodForPixels(float pixels, PlantModel model, uint forcedLod) {
+    if (forcedLod != LOD_NOT_FORCED) return forcedLod;
+    return lodForPixels(pixels, model.lod.x, model.lod.y) == LOD_FULL ? uint(LOD_FULL) : uint(LOD_IMPOSTOR);
+}
+
+// True when the plant casts as an impostor large enough to draw for every
+// camera the cache serves: within cacheCamera.w metres of cacheCamera.xyz (so
+// at most that much nearer or farther) with between cachePixels.x and
+// cachePixels.y pixels per metre at one metre.
 SHADOW_SELECT_FN bool heldByShadowCache(vec4 sphere, PlantModel model, vec4 cacheCamera, vec4 cachePixels,
                                         uint forcedLod) {
-    if (forcedLod != LOD_NOT_FORCED) return forcedLod == LOD_IMPOSTOR;
     float d = distance(vec3(cacheCamera), vec3(sphere));
     float most = pixelsAtDistance(sphere.w, cachePixels.y, d - cacheCamera.w);
     float fewest = pixelsAtDistance(sphere.w, cachePixels.x, d + cacheCamera.w);
-    return lodForPixels(most, model.lod.x, model.lod.y) == LOD_IMPOSTOR && largeEnoughToDraw(fewest, model, forcedLod);
+    return shadowLodForPixels(most, model, forcedLod) == LOD_IMPOSTOR && largeEnoughToDraw(fewest, model, forcedLod);
 }
 
 // True when the sphere's shadow volume, the sphere swept away from the sun
@@ -57,10 +79,10 @@ SHADOW_SELECT_FN bool shadowMayFallInView(vec4 sphere, ShadowCullUniforms u) {
 // SHADOW_NOT_CAST. Casters are the plants whose sphere meets the sun's box;
 // the cache holds them in view of the camera or not, since it serves
 // cameras turned other ways, while the frame draws those whose shadow may
-// fall in its view, at the LOD the camera targets (no hysteresis and no
-// fade, which depend on earlier frames). A plant the cache holds and whose
-// shadow misses the view is in the frame's map or not depending on where the
-// cache was drawn, but never in what the camera sees.
+// fall in its view, at shadowLodForPixels of the camera's target LOD (no
+// hysteresis and no fade, which depend on earlier frames). A plant the
+// cache holds and whose shadow misses the view is in the frame's map or not
+// depending on where the cache was drawn, but never in what the camera sees.
 SHADOW_SELECT_FN uint shadowCasterLod(FieldInstance inst, PlantModel model, ShadowCullUniforms u) {
     vec4 sphere = instanceSphere(inst, model);
     if (!sphereInFrustum(sphere, u.box[0], u.box[1], u.box[2], u.box[3], u.box[4], u.box[5])) return SHADOW_NOT_CAST;
@@ -69,7 +91,7 @@ SHADOW_SELECT_FN uint shadowCasterLod(FieldInstance inst, PlantModel model, Shad
     if (cached || !shadowMayFallInView(sphere, u)) return SHADOW_NOT_CAST;
     float pixels = projectedPixels(sphere, u.camera);
     if (!largeEnoughToDraw(pixels, model, u.counts.z)) return SHADOW_NOT_CAST;
-    return u.counts.z != LOD_NOT_FORCED ? u.counts.z : lodForPixels(pixels, model.lod.x, model.lod.y);
+    return shadowLodForPixels(pixels, model, u.counts.z);
 }
 
 #ifdef __cplusplus

@@ -12,6 +12,7 @@
 #include "shaders/canopy_vert.spv.h"
 #include "shaders/impostor_frag.spv.h"
 #include "shaders/impostor_shadow_frag.spv.h"
+#include "shaders/impostor_shadow_vert.spv.h"
 #include "shaders/impostor_sunlit_frag.spv.h"
 #include "shaders/impostor_vert.spv.h"
 #include "shaders/plant_frag.spv.h"
@@ -26,6 +27,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -123,7 +125,9 @@ void FieldRenderer::uploadGeometry() {
     for (uint32_t quads = 1; quads <= 3; ++quads) billboards_[quads - 1] = appendBillboardMesh(pool, quads);
     vertices_ = uploadVector(resources_, pool.vertices, kStorageAndTexels);
     indices_ = uploadVector(resources_, pool.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-    atlas_ = bakeImpostorAtlas(resources_, pool, vertices_, indices_, settings_.impostors);
+    // The shadow frames are seen from the scene's sun, fixed per scene.
+    const float sunElevation = std::asin(std::clamp(sunDirection(environmentOf(content_.scene)).y, -1.0f, 1.0f));
+    atlas_ = bakeImpostorAtlas(resources_, pool, vertices_, indices_, sunElevation, settings_.impostors);
     outlines_ = uploadVector(resources_, atlas_.outlines, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
 
     drawnTerrain_ = decimated(content_.terrain, kTerrainDrawSamples);
@@ -235,6 +239,7 @@ void FieldRenderer::createDescriptors() {
         texels(FIELD_BINDING_MODELS, models_, uint4),
         sampledImage(FIELD_BINDING_ATLAS_COLOR, kDrawStages, atlas_.sampler, atlas_.color.view),
         sampledImage(FIELD_BINDING_ATLAS_NORMAL, kDrawStages, atlas_.sampler, atlas_.normalDepth.view),
+        sampledImage(FIELD_BINDING_IMPOSTOR_SHADOW, kDrawStages, atlas_.sampler, atlas_.shadow.view),
         sampledImage(FIELD_BINDING_SHADOW, kDrawStages, shadow_.sampler, shadow_.depth.view),
         texels(FIELD_BINDING_TERRAIN, terrainVertices_, uint4),
         texels(FIELD_BINDING_SKELETONS, motion_.pass.skeletons, uint4),
@@ -279,7 +284,8 @@ void FieldRenderer::createPipelines() {
     const Stages sunlitImpostor{impostor.vertex, createShaderModule(modules, spirv_impostor_sunlit_frag)};
     const Stages canopy{createShaderModule(modules, spirv_canopy_vert), createShaderModule(modules, spirv_canopy_frag)};
     const VkShaderModule plantShadow = createShaderModule(modules, spirv_plant_shadow_frag);
-    const VkShaderModule impostorShadow = createShaderModule(modules, spirv_impostor_shadow_frag);
+    const Stages impostorShadow{createShaderModule(modules, spirv_impostor_shadow_vert),
+                                createShaderModule(modules, spirv_impostor_shadow_frag)};
 
     GraphicsPipelineDesc desc;
     desc.layout = pipelineLayout_;
@@ -313,7 +319,7 @@ void FieldRenderer::createPipelines() {
     desc.depthBiasConstant = 1.5f;
     desc.depthBiasSlope = 2.0f;
     pipelines_.plantShadow = make({plant.vertex, plantShadow}, VK_CULL_MODE_NONE);
-    pipelines_.impostorShadow = make({impostor.vertex, impostorShadow}, VK_CULL_MODE_NONE);
+    pipelines_.impostorShadow = make(impostorShadow, VK_CULL_MODE_NONE);
 }
 
 void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {

@@ -17,6 +17,11 @@ namespace pf {
 struct ImpostorSettings {
     uint32_t frameSize = 256; // pixels per side of one frame
     uint32_t frames = 12;     // views around the plant, 360/frames degrees apart (0°: looking along -z of plant space)
+    // Pixels per side of one shadow frame: a 10 m tree spans about 85 texels
+    // of the 1024² shadow map over 120 m, so 128 keeps every map texel
+    // sampled from at least one frame texel, at a sixteenth of a colour
+    // frame's memory (coverage and depth, two bytes a texel).
+    uint32_t shadowFrameSize = 128;
 };
 
 // Frame convention, shared with shaders/impostor.vert. Frame f of n views the
@@ -35,14 +40,26 @@ glm::vec3 impostorRightAxis(uint32_t frame, uint32_t frames);
 // holds the whole plant; bottom and top = the box's y range.
 glm::vec4 impostorQuadOf(const gpu::PlantModel& model);
 
-// Both images are premultiplied by coverage (the MSAA resolve of a clear-0
-// background): divide rgb and normalDepth by color.a before use. Layer of
-// (model m, frame f) = models[m].gpu.impostor.x + f; full mip chains.
+// Shadow frame f of n views the plant from the sun's elevation e at azimuth
+// a = 2π·f/n (shaders/impostor_shadow_frame.h has the axes and extents):
+// the orthographic camera looks along -(sin a·cos e, sin e, cos a·cos e),
+// its right axis is the colour frame's, its up axis the vertical tilted
+// away from the sun, and the frame is fitted about the box's centre on the
+// plant's axis to the projection of the cylinder that holds the box from
+// every azimuth.
+
+// Both colour images are premultiplied by coverage (the MSAA resolve of a
+// clear-0 background): divide rgb and normalDepth by color.a before use.
+// Layer of (model m, frame f) = models[m].gpu.impostor.x + f in all three
+// images (the shadow frames are their own, smaller, image); full mip chains.
 struct ImpostorAtlas {
     Image color;       // R8G8B8A8_SRGB array, one layer per (model, frame): albedo, alpha = coverage
     Image normalDepth; // R8G8B8A8_UNORM array: plant-space normal·0.5+0.5, alpha = depth across the box (0 front … 1
                        // back)
+    Image shadow; // R8G8_UNORM array, shadowFrameSize²: coverage seen from the sun's elevation (shadow frames), depth
+                  // along the sun premultiplied by coverage (0 front, toward the sun … 1 back)
     uint32_t mipLevels = 0;
+    uint32_t shadowMipLevels = 0;
     VkSampler sampler = VK_NULL_HANDLE; // linear, clamp, mipmapped
     uint32_t layers = 0;
     ImpostorSettings settings;
@@ -58,12 +75,14 @@ constexpr uint32_t kOutlineMip = 3;
 constexpr float kOutlineMargin = 2.0f;
 
 // Bakes all models of the pool (already uploaded: vertices as FieldVertex
-// storage buffer, indices as index buffer), writes each model's
-// gpu.impostor (first layer, frames, quads per billboard from its
-// BillboardKind) and gpu.impostorQuad, and leaves both images in
-// SHADER_READ_ONLY_OPTIMAL. The images and the sampler are owned by `owner`.
+// storage buffer, indices as index buffer), the colour frames and the shadow
+// frames seen from `sunElevation` (radians above the horizon: the scene's
+// sun, fixed per scene), writes each model's gpu.impostor (first layer,
+// frames, quads per billboard from its BillboardKind) and gpu.impostorQuad,
+// and leaves the images in SHADER_READ_ONLY_OPTIMAL. The images and the
+// sampler are owned by `owner`.
 ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const Buffer& vertices,
-                                const Buffer& indices, const ImpostorSettings& settings = {});
+                                const Buffer& indices, float sunElevation, const ImpostorSettings& settings = {});
 
 // Billboards for the pool's impostor draws: for quads q ∈ {1, 2, 3} the
 // vertices and indices the impostor vertex shader expands. Each quad is a

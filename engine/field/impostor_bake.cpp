@@ -1,6 +1,7 @@
 // The impostor bake (impostor_atlas.h): every model drawn from every frame
-// direction into MSAA targets, resolved into its atlas layers, the mip
-// chains blitted, and the outlines read back.
+// direction into MSAA targets, resolved into its atlas layers, then from
+// every shadow frame direction into its coverage-only target and the shadow
+// frames' layers, the mip chains blitted, and the outlines read back.
 #include "engine/field/impostor_atlas.h"
 
 #include "engine/vk/descriptors.h"
@@ -8,8 +9,14 @@
 #include "engine/vk/target_pass.h"
 #include "shaders/impostor_bake_frag.spv.h"
 #include "shaders/impostor_bake_vert.spv.h"
+#include "shaders/impostor_shadow_bake_frag.spv.h"
+#include "shaders/impostor_shadow_frame.h"
+
+#include <glm/gtc/constants.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -19,6 +26,7 @@ namespace {
 
 constexpr VkFormat kAtlasColorFormat = VK_FORMAT_R8G8B8A8_SRGB;
 constexpr VkFormat kAtlasNormalFormat = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat kShadowFrameFormat = VK_FORMAT_R8G8_UNORM;
 constexpr VkFormat kBakeDepthFormat = VK_FORMAT_D32_SFLOAT;
 constexpr VkSampleCountFlagBits kBakeSamples = VK_SAMPLE_COUNT_4_BIT;
 
@@ -68,8 +76,10 @@ uint32_t atlasLayers(const GpuContext& ctx, const PlantModelPool& pool, const Im
             std::to_string(pool.models.size()) + " plant models, the scene's variants of every species, times " +
             std::to_string(settings.frames) + " views), more than this device's " +
             std::to_string(ctx.properties.limits.maxImageArrayLayers) + ": give the species fewer \"variants\"");
-    if (settings.frameSize > ctx.properties.limits.maxImageDimension2D)
+    if (settings.shadowFrameSize == 0) throw std::runtime_error("impostor atlas: shadowFrameSize must be positive");
+    if (std::max(settings.frameSize, settings.shadowFrameSize) > ctx.properties.limits.maxImageDimension2D)
         throw std::runtime_error("impostor atlas: frameSize " + std::to_string(settings.frameSize) +
+                                 " or shadowFrameSize " + std::to_string(settings.shadowFrameSize) +
                                  " exceeds the device's image limit");
     return uint32_t(layerCount);
 }
@@ -94,6 +104,8 @@ ImpostorAtlas createAtlas(GpuResources& owner, const ImpostorSettings& settings,
     atlas.mipLevels = mipCount(settings.frameSize);
     atlas.color = createAtlasImage(owner, settings.frameSize, kAtlasColorFormat, layers, atlas.mipLevels);
     atlas.normalDepth = createAtlasImage(owner, settings.frameSize, kAtlasNormalFormat, layers, atlas.mipLevels);
+    atlas.shadowMipLevels = mipCount(settings.shadowFrameSize);
+    atlas.shadow = createAtlasImage(owner, settings.shadowFrameSize, kShadowFrameFormat, layers, atlas.shadowMipLevels);
 
     VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     samplerInfo.magFilter = VK_FILTER_LINEAR;
@@ -122,36 +134,48 @@ struct BakeTargets {
     Image color;
     Image normalDepth;
     Image depth;
+    Image shadow; // shadowFrameSize²: coverage and depth from the sun
+    Image shadowDepth;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     uint32_t size = 0;
+    uint32_t shadowSize = 0;
 };
 
-BakeTargets createBakeTargets(GpuResources& owner, uint32_t size) {
+BakeTargets createBakeTargets(GpuResources& owner, uint32_t size, uint32_t shadowSize) {
     BakeTargets targets;
     targets.samples = bakeSamples(owner.ctx());
     targets.size = size;
+    targets.shadowSize = shadowSize;
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     targets.color = createImage(
         owner, {.extent = {size, size}, .format = kAtlasColorFormat, .usage = usage, .samples = targets.samples});
     targets.normalDepth = createImage(
         owner, {.extent = {size, size}, .format = kAtlasNormalFormat, .usage = usage, .samples = targets.samples});
-    targets.depth = createImage(
-        owner, {.extent = {size, size},
-                .format = kBakeDepthFormat,
-                .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
-                .samples = targets.samples});
+    targets.shadow = createImage(
+        owner,
+        {.extent = {shadowSize, shadowSize}, .format = kShadowFrameFormat, .usage = usage, .samples = targets.samples});
+    for (auto [depth, side] : {std::pair{&targets.depth, size}, std::pair{&targets.shadowDepth, shadowSize}})
+        *depth = createImage(
+            owner, {.extent = {side, side},
+                    .format = kBakeDepthFormat,
+                    .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                    .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
+                    .samples = targets.samples});
     return targets;
 }
 
-// shaders/impostor_bake.vert and .frag reading the vertex pool, with the
-// frame's view as push constants: two colour attachments (albedo, normal +
-// depth), depth test, MSAA; the cull mode is dynamic: back faces for bark,
-// none for two-sided foliage.
+// shaders/impostor_bake.vert reading the vertex pool, with the frame's
+// view as push constants, and the cull mode dynamic. The colour frames'
+// pipeline (impostor_bake.frag): two colour attachments (albedo, normal +
+// depth), depth test, MSAA, back faces culled for bark, none for two-sided
+// foliage. The shadow frames' (impostor_shadow_bake.frag): one attachment
+// of coverage and the nearest depth from the sun, depth test, MSAA, both
+// sides of everything, as the shadow passes cast.
 struct BakePipeline {
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkDescriptorSet set = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;
+    VkPipeline shadowPipeline = VK_NULL_HANDLE;
 };
 
 BakePipeline createBakePipeline(GpuResources& owner, const Buffer& vertices, VkSampleCountFlagBits samples) {
@@ -179,10 +203,18 @@ BakePipeline createBakePipeline(GpuResources& owner, const Buffer& vertices, VkS
     desc.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     desc.depthCompare = VK_COMPARE_OP_LESS;
     bake.pipeline = createGraphicsPipeline(owner, desc);
+
+    desc.fragment = createShaderModule(modules, spirv_impostor_shadow_bake_frag);
+    desc.colorFormat = kShadowFrameFormat;
+    desc.secondColorFormat = VK_FORMAT_UNDEFINED;
+    bake.shadowPipeline = createGraphicsPipeline(owner, desc);
     return bake;
 }
 
-void beginBakeFrame(VkCommandBuffer cmd, const BakeTargets& targets) {
+// Clears the frame's targets (MSAA colour attachments and depth, `size`²)
+// and begins rendering into them.
+void beginBakeFrame(VkCommandBuffer cmd, std::initializer_list<const Image*> colours, const Image& depthTarget,
+                    uint32_t size) {
     // Each frame clears the targets again: the previous frame's resolve
     // reads must be done before (write after read: execution only), and
     // its depth writes before the depth clear (write after write).
@@ -193,50 +225,66 @@ void beginBakeFrame(VkCommandBuffer cmd, const BakeTargets& targets) {
                                        VK_IMAGE_LAYOUT_UNDEFINED,
                                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkImageMemoryBarrier2 depthToAttachment =
-        atlasBarrier(targets.depth, 0, 1, 1,
+        atlasBarrier(depthTarget, 0, 1, 1,
                      {VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                       VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
     depthToAttachment.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
-    pipelineBarrier(cmd, {atlasBarrier(targets.color, 0, 1, 1, toAttachment),
-                          atlasBarrier(targets.normalDepth, 0, 1, 1, toAttachment), depthToAttachment});
-
-    VkRenderingAttachmentInfo colors[2]{};
-    const VkImageView views[2] = {targets.color.view, targets.normalDepth.view};
-    for (int i = 0; i < 2; ++i) {
-        colors[i] = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-        colors[i].imageView = views[i];
-        colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-        colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-        colors[i].clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}}; // background: coverage 0
+    std::vector<VkImageMemoryBarrier2> barriers{depthToAttachment};
+    std::vector<VkRenderingAttachmentInfo> attachments;
+    for (const Image* colour : colours) {
+        barriers.push_back(atlasBarrier(*colour, 0, 1, 1, toAttachment));
+        VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        a.imageView = colour->view;
+        a.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        a.clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}}; // background: coverage 0
+        attachments.push_back(a);
     }
-    const VkRenderingAttachmentInfo depth =
-        clearedDepthAttachment(targets.depth.view, VK_ATTACHMENT_STORE_OP_DONT_CARE);
-    const VkRect2D area{{0, 0}, {targets.size, targets.size}};
+    pipelineBarrier(cmd, barriers);
+
+    const VkRenderingAttachmentInfo depth = clearedDepthAttachment(depthTarget.view, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+    const VkRect2D area{{0, 0}, {size, size}};
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
     rendering.renderArea = area;
     rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 2;
-    rendering.pColorAttachments = colors;
+    rendering.colorAttachmentCount = uint32_t(attachments.size());
+    rendering.pColorAttachments = attachments.data();
     rendering.pDepthAttachment = &depth;
     vkCmdBeginRendering(cmd, &rendering);
-    const VkViewport viewport{0.0f, 0.0f, float(targets.size), float(targets.size), 0.0f, 1.0f};
+    const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &area);
 }
 
-// Frame f of a model: its LOD0 mesh seen from the frame's direction.
-void drawBakeFrame(VkCommandBuffer cmd, const BakePipeline& bake, const PlantModelInfo& model, uint32_t f,
-                   uint32_t frames) {
-    const glm::vec4 quad = model.gpu.impostorQuad;
-    gpu::ImpostorBakePush push;
-    push.right = glm::vec4(impostorRightAxis(f, frames) / quad.x, 0.0f);
-    push.toView = glm::vec4(impostorViewDirection(f, frames) / quad.w, 0.0f);
-    push.height = {quad.y, 1.0f / (quad.z - quad.y), 0.0f, 0.0f};
-    vkCmdPushConstants(cmd, bake.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(push), &push);
-    const VkCullModeFlags cull[kMeshClassCount] = {VK_CULL_MODE_BACK_BIT, VK_CULL_MODE_NONE};
+// The orthographic view with these axes mapping [-half, half] about
+// `centre` to the frame (ImpostorBakePush).
+gpu::ImpostorBakePush bakeView(glm::vec3 centre, glm::vec3 right, glm::vec3 up, glm::vec3 toView, glm::vec3 half) {
+    auto axis = [&](glm::vec3 a, float h) { return glm::vec4(a / h, -glm::dot(centre, a) / h); };
+    return {axis(right, half.x), axis(up, half.y), axis(toView, half.z)};
+}
+
+// Colour frame f: from the side, about the box's centre on the plant's
+// axis, as wide and deep as the box's horizontal radius, as tall as the box.
+gpu::ImpostorBakePush colourFrameView(const glm::vec4& quad, uint32_t f, uint32_t frames) {
+    return bakeView(gpu::shadowFrameCentre(quad), impostorRightAxis(f, frames), {0.0f, 1.0f, 0.0f},
+                    impostorViewDirection(f, frames), {quad.x, 0.5f * (quad.z - quad.y), quad.w});
+}
+
+// Shadow frame f: from the sun's elevation (shaders/impostor_shadow_frame.h).
+gpu::ImpostorBakePush shadowFrameView(const glm::vec4& quad, uint32_t f, uint32_t frames, float sunElevation) {
+    const float a = glm::two_pi<float>() * float(f) / float(frames);
+    const float sinE = std::sin(sunElevation), cosE = std::cos(sunElevation);
+    return bakeView(gpu::shadowFrameCentre(quad), gpu::shadowFrameRight(a), gpu::shadowFrameUp(a, sinE, cosE),
+                    gpu::shadowFrameToSun(a, sinE, cosE), gpu::shadowFrameHalfExtents(quad, sinE, cosE));
+}
+
+// A model's LOD0 mesh seen from `view`, each class culled as `cull` says.
+void drawBakeFrame(VkCommandBuffer cmd, const BakePipeline& bake, const PlantModelInfo& model,
+                   const gpu::ImpostorBakePush& view, const VkCullModeFlags (&cull)[kMeshClassCount]) {
+    vkCmdPushConstants(cmd, bake.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(view), &view);
     for (uint32_t c = 0; c < kMeshClassCount; ++c) {
         const MeshRange& mesh = model.meshes[LOD_FULL][c];
         if (mesh.indexCount == 0) continue;
@@ -245,9 +293,16 @@ void drawBakeFrame(VkCommandBuffer cmd, const BakePipeline& bake, const PlantMod
     }
 }
 
-// Ends the frame and resolves (or copies) both targets into mip 0 of
-// `layer`, which is in TRANSFER_DST_OPTIMAL.
-void resolveBakeFrame(VkCommandBuffer cmd, const BakeTargets& targets, const ImpostorAtlas& atlas, uint32_t layer) {
+// An MSAA target and the atlas image its frames resolve into.
+struct BakeResolve {
+    const Image* target;
+    const Image* image;
+};
+
+// Ends the frame and resolves (or copies) each target into mip 0 of
+// `layer` of its image, which is in TRANSFER_DST_OPTIMAL.
+void resolveBakeFrame(VkCommandBuffer cmd, std::initializer_list<BakeResolve> resolves, VkSampleCountFlagBits samples,
+                      uint32_t size, uint32_t layer) {
     vkCmdEndRendering(cmd);
     // The frame's attachment writes must land before the resolve reads them.
     const ImageTransition toSource{VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
@@ -256,30 +311,30 @@ void resolveBakeFrame(VkCommandBuffer cmd, const BakeTargets& targets, const Imp
                                    VK_ACCESS_2_TRANSFER_READ_BIT,
                                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
-    pipelineBarrier(
-        cmd, {atlasBarrier(targets.color, 0, 1, 1, toSource), atlasBarrier(targets.normalDepth, 0, 1, 1, toSource)});
+    std::vector<VkImageMemoryBarrier2> barriers;
+    for (const BakeResolve& r : resolves) barriers.push_back(atlasBarrier(*r.target, 0, 1, 1, toSource));
+    pipelineBarrier(cmd, barriers);
     // A separate resolve rather than a resolve attachment on a layer view:
     // lavapipe resolves those into layer 0.
-    const uint32_t size = targets.size;
-    for (const auto& [target, image] :
-         {std::pair{&targets.color, &atlas.color}, std::pair{&targets.normalDepth, &atlas.normalDepth}}) {
+    for (const BakeResolve& r : resolves) {
         const VkImageSubresourceLayers src{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         const VkImageSubresourceLayers dst{VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
-        if (targets.samples != VK_SAMPLE_COUNT_1_BIT) {
+        if (samples != VK_SAMPLE_COUNT_1_BIT) {
             VkImageResolve region{src, {}, dst, {}, {size, size, 1}};
-            vkCmdResolveImage(cmd, target->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image->image,
+            vkCmdResolveImage(cmd, r.target->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, r.image->image,
                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
         } else {
             VkImageCopy region{src, {}, dst, {}, {size, size, 1}};
-            vkCmdCopyImage(cmd, target->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image->image,
+            vkCmdCopyImage(cmd, r.target->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, r.image->image,
                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
         }
     }
 }
 
-// Every model from every direction into mip 0 of its layers.
+// Every model from every direction into mip 0 of its layers: the colour
+// frames, then the shadow frames.
 void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const BakeTargets& targets,
-                      const BakePipeline& bake, const PlantModelPool& pool, const Buffer& indices) {
+                      const BakePipeline& bake, const PlantModelPool& pool, const Buffer& indices, float sunElevation) {
     // Level 0 of every layer receives one frame's resolve (or copy); its old
     // contents are discarded.
     const ImageTransition toDestination{VK_PIPELINE_STAGE_2_NONE,
@@ -289,25 +344,39 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
                                         VK_IMAGE_LAYOUT_UNDEFINED,
                                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
     pipelineBarrier(cmd, {atlasBarrier(atlas.color, 0, 1, atlas.layers, toDestination),
-                          atlasBarrier(atlas.normalDepth, 0, 1, atlas.layers, toDestination)});
+                          atlasBarrier(atlas.normalDepth, 0, 1, atlas.layers, toDestination),
+                          atlasBarrier(atlas.shadow, 0, 1, atlas.layers, toDestination)});
 
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.pipeline);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.layout, 0, 1, &bake.set, 0, nullptr);
     vkCmdBindIndexBuffer(cmd, indices.buffer, 0, VK_INDEX_TYPE_UINT32);
     const uint32_t frames = atlas.settings.frames;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.pipeline);
     for (const PlantModelInfo& model : pool.models) {
         for (uint32_t f = 0; f < frames; ++f) {
-            beginBakeFrame(cmd, targets);
-            drawBakeFrame(cmd, bake, model, f, frames);
-            resolveBakeFrame(cmd, targets, atlas, model.gpu.impostor.x + f);
+            beginBakeFrame(cmd, {&targets.color, &targets.normalDepth}, targets.depth, targets.size);
+            drawBakeFrame(cmd, bake, model, colourFrameView(model.gpu.impostorQuad, f, frames),
+                          {VK_CULL_MODE_BACK_BIT, VK_CULL_MODE_NONE});
+            resolveBakeFrame(cmd, {{&targets.color, &atlas.color}, {&targets.normalDepth, &atlas.normalDepth}},
+                             targets.samples, targets.size, model.gpu.impostor.x + f);
+        }
+    }
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.shadowPipeline);
+    for (const PlantModelInfo& model : pool.models) {
+        for (uint32_t f = 0; f < frames; ++f) {
+            beginBakeFrame(cmd, {&targets.shadow}, targets.shadowDepth, targets.shadowSize);
+            drawBakeFrame(cmd, bake, model, shadowFrameView(model.gpu.impostorQuad, f, frames, sunElevation),
+                          {VK_CULL_MODE_NONE, VK_CULL_MODE_NONE});
+            resolveBakeFrame(cmd, {{&targets.shadow, &atlas.shadow}}, targets.samples, targets.shadowSize,
+                             model.gpu.impostor.x + f);
         }
     }
 }
 
-// Mips: level k is blitted from level k-1 (premultiplied values average
+// Mips of `images` (size² at level 0, `mips` levels, `layers` layers): level
+// k is blitted from level k-1 (premultiplied values and coverage average
 // correctly); then every level is left for the billboards' fragment shaders.
-void recordMipChain(VkCommandBuffer cmd, const ImpostorAtlas& atlas) {
-    const uint32_t layers = atlas.layers, mips = atlas.mipLevels, size = atlas.settings.frameSize;
+void recordMipChain(VkCommandBuffer cmd, std::initializer_list<const Image*> images, uint32_t size, uint32_t mips,
+                    uint32_t layers) {
     // The resolves into level 0 must be done before the first blit reads
     // it; the other levels hold nothing yet.
     const ImageTransition resolvedToSource{VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
@@ -320,7 +389,7 @@ void recordMipChain(VkCommandBuffer cmd, const ImpostorAtlas& atlas) {
                                              VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                                              VK_IMAGE_LAYOUT_UNDEFINED,    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
     std::vector<VkImageMemoryBarrier2> toBlit;
-    for (const Image* image : {&atlas.color, &atlas.normalDepth}) {
+    for (const Image* image : images) {
         toBlit.push_back(atlasBarrier(*image, 0, 1, layers, resolvedToSource));
         if (mips > 1) toBlit.push_back(atlasBarrier(*image, 1, mips - 1, layers, emptyToDestination));
     }
@@ -334,15 +403,16 @@ void recordMipChain(VkCommandBuffer cmd, const ImpostorAtlas& atlas) {
         blit.srcOffsets[1] = {from, from, 1};
         blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, layers};
         blit.dstOffsets[1] = {to, to, 1};
-        for (const Image* image : {&atlas.color, &atlas.normalDepth})
+        for (const Image* image : images)
             vkCmdBlitImage(cmd, image->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image->image,
                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
         // This level is the next blit's source: its writes must land first.
         const ImageTransition writtenToSource{
             VK_PIPELINE_STAGE_2_BLIT_BIT,  VK_ACCESS_2_TRANSFER_WRITE_BIT,       VK_PIPELINE_STAGE_2_BLIT_BIT,
             VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
-        pipelineBarrier(cmd, {atlasBarrier(atlas.color, level, 1, layers, writtenToSource),
-                              atlasBarrier(atlas.normalDepth, level, 1, layers, writtenToSource)});
+        std::vector<VkImageMemoryBarrier2> written;
+        for (const Image* image : images) written.push_back(atlasBarrier(*image, level, 1, layers, writtenToSource));
+        pipelineBarrier(cmd, written);
     }
 
     // Every level is now a blit source (the last one also just written):
@@ -353,8 +423,9 @@ void recordMipChain(VkCommandBuffer cmd, const ImpostorAtlas& atlas) {
                                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
                                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    pipelineBarrier(cmd, {atlasBarrier(atlas.color, 0, mips, layers, toSampled),
-                          atlasBarrier(atlas.normalDepth, 0, mips, layers, toSampled)});
+    std::vector<VkImageMemoryBarrier2> sampled;
+    for (const Image* image : images) sampled.push_back(atlasBarrier(*image, 0, mips, layers, toSampled));
+    pipelineBarrier(cmd, sampled);
 }
 
 // Reads the coverage of every layer back at mip kOutlineMip (or the last)
@@ -401,18 +472,19 @@ std::vector<ImpostorOutline> readOutlines(const GpuContext& ctx, const ImpostorA
 } // namespace
 
 ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const Buffer& vertices,
-                                const Buffer& indices, const ImpostorSettings& settings) {
+                                const Buffer& indices, float sunElevation, const ImpostorSettings& settings) {
     const GpuContext& ctx = owner.ctx();
     ImpostorAtlas atlas = createAtlas(owner, settings, atlasLayers(ctx, pool, settings));
     assignImpostorLayers(pool, settings);
     {
         GpuResources scratch(ctx); // the targets and pipeline only the bake uses
-        const BakeTargets targets = createBakeTargets(scratch, settings.frameSize);
+        const BakeTargets targets = createBakeTargets(scratch, settings.frameSize, settings.shadowFrameSize);
         const BakePipeline bake = createBakePipeline(scratch, vertices, targets.samples);
         // All models and frames in one submission.
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-            recordBakeFrames(cmd, atlas, targets, bake, pool, indices);
-            recordMipChain(cmd, atlas);
+            recordBakeFrames(cmd, atlas, targets, bake, pool, indices, sunElevation);
+            recordMipChain(cmd, {&atlas.color, &atlas.normalDepth}, settings.frameSize, atlas.mipLevels, atlas.layers);
+            recordMipChain(cmd, {&atlas.shadow}, settings.shadowFrameSize, atlas.shadowMipLevels, atlas.layers);
         });
     }
     atlas.outlines = readOutlines(ctx, atlas);

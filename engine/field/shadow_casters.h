@@ -3,8 +3,8 @@
 // bounding sphere meets the sun's box, in view of the camera or not, split
 // between the cache of static casters (impostors for every camera the cache
 // serves, drawn at rest) and the frame's casters drawn on top of it every
-// frame (the nearer plants at the LOD the camera targets: meshes that sway
-// with their skeletons).
+// frame (the nearer plants: full meshes, which sway with their skeletons,
+// where the camera targets LOD0, impostors elsewhere).
 #pragma once
 
 #include "engine/field/cull_pass.h"

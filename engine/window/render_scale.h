@@ -12,12 +12,12 @@
 namespace pf {
 
 struct RenderScaleSettings {
-    bool dynamic = true;           // false: always `scale`
-    float scale = 1.0f;            // the starting (or fixed) share of each side, minScale to 1
-    double targetFrameMs = 66.7;   // what the dynamic scale holds: 15 frames a second
-    float minScale = 0.5f;         // a quarter of the pixels at most: below, the image turns to blocks
-    float step = 0.125f;           // each change, in share of a side
-    uint32_t settleFrames = 4;     // frames in a row that must ask for a change before it is made
+    bool dynamic = true;         // false: always `scale`
+    float scale = 1.0f;          // the starting (or fixed) share of each side, minScale to 1
+    double targetFrameMs = 66.7; // what the dynamic scale holds: 15 frames a second
+    float minScale = 0.5f;       // a quarter of the pixels at most: below, the image turns to blocks
+    float step = 0.125f;         // each change, in share of a side
+    uint32_t settleFrames = 4;   // frames in a row that must ask for a change before it is made
 };
 
 struct RenderScaleState {

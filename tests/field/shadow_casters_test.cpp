@@ -19,13 +19,14 @@ constexpr float kDepthRadius = 250.0f;
 // The sun at 38° elevation from the south-east, as in the default scene.
 const glm::vec3 kSun = glm::normalize(glm::vec3(0.505f, 0.616f, 0.602f));
 
-ShadowView shadowViewOf(const View& v, const glm::vec3& sun) {
+ShadowView shadowViewOf(const View& v, const glm::vec3& sun, uint32_t forcedLod) {
     const glm::vec3 forward = glm::normalize(glm::vec3(v.target.x - v.position.x, 0, v.target.z - v.position.z));
     ShadowView s;
     s.square = sunSquareAround(sun, v.position + forward * (0.6f * kRadius), kRadius, kTexels);
     s.sunDirection = sun;
     s.camera = v.position;
     s.pixelsPerMetre = pixelsPerMetre(kFovY, kViewportHeight);
+    s.forcedLod = forcedLod;
     return s;
 }
 
@@ -34,11 +35,12 @@ struct ShadowPasses {
     gpu::ShadowCullUniforms cache, frame;
 };
 
-ShadowPasses shadowPasses(const View& cacheView, const View& frameView, const glm::vec3& sun = kSun) {
+ShadowPasses shadowPasses(const View& cacheView, const View& frameView, const glm::vec3& sun = kSun,
+                          uint32_t forcedLod = LOD_NOT_FORCED) {
     const ShadowCacheSettings settings;
     const ShadowView cache =
-        shadowCacheFor(shadowViewOf(cacheView, sun), shadowCacheMargin(settings, 2 * kRadius / kTexels));
-    const ShadowView frame = shadowViewOf(frameView, sun);
+        shadowCacheFor(shadowViewOf(cacheView, sun, forcedLod), shadowCacheMargin(settings, 2 * kRadius / kTexels));
+    const ShadowView frame = shadowViewOf(frameView, sun, forcedLod);
     EXPECT_TRUE(shadowCacheServes(cache, frame, settings));
     SunSquare square = frame.square;
     square.depth = cache.square.depth;
@@ -103,13 +105,52 @@ TEST_F(CullPassTest, ShadowCastersOnTheGpuEqualTheCpuReference) {
             for (size_t l = 0; l < cpu.lists.size(); ++l)
                 EXPECT_EQ(gpuFrame.lists[l], cpu.lists[l])
                     << "case " << c << " mode " << u.counts.w << " model " << l / LOD_COUNT << " LOD " << l % LOD_COUNT;
-            if (u.counts.w == SHADOW_CULL_CACHE) {
-                EXPECT_GT(entriesOfLod(cpu.lists, LOD_IMPOSTOR), 100u);
-                EXPECT_EQ(entriesOfLod(cpu.lists, LOD_FULL) + entriesOfLod(cpu.lists, LOD_REDUCED), 0u);
-            } else {
-                for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) EXPECT_GT(entriesOfLod(cpu.lists, lod), 10u) << lod;
-            }
+            // Meshes only for LOD0, impostors for everything else: no
+            // reduced caster without a forced LOD.
+            EXPECT_GT(entriesOfLod(cpu.lists, LOD_IMPOSTOR), u.counts.w == SHADOW_CULL_CACHE ? 100u : 10u);
+            EXPECT_EQ(entriesOfLod(cpu.lists, LOD_FULL) > 10u, u.counts.w == SHADOW_CULL_FRAME);
+            EXPECT_EQ(entriesOfLod(cpu.lists, LOD_REDUCED), 0u);
         }
+}
+
+// Every caster the frame draws casts its mesh exactly when the camera sees
+// it at LOD0, and its impostor otherwise, among them more than ten plants
+// the camera draws at LOD1 (so the test fails if reduced trees cast their
+// reduced meshes). Those it draws at LOD2 the cache holds.
+TEST(ShadowCasters, FrameCastersAreMeshesAtLod0AndImpostorsElsewhere) {
+    const ShadowPasses passes = shadowPasses(kStart, kStart);
+    const Field f = shadowField(20000, 13, {passes});
+    const gpu::ShadowCullUniforms& u = passes.frame;
+    std::array<size_t, LOD_COUNT> cameraLods{};
+    const CpuCullResult frame = shadowCastersOnCpu(f.instances, f.models, u);
+    for (size_t l = 0; l < frame.lists.size(); ++l)
+        for (uint32_t entry : frame.lists[l]) {
+            const gpu::FieldInstance& inst = f.instances[entry & VISIBLE_INDEX_MASK];
+            const gpu::PlantModel& model = f.models[inst.ids.x];
+            const float pixels = gpu::projectedPixels(gpu::instanceSphere(inst, model), u.camera);
+            const uint32_t seen = gpu::lodForPixels(pixels, model.lod.x, model.lod.y);
+            ++cameraLods[seen];
+            EXPECT_EQ(l % LOD_COUNT, seen == LOD_FULL ? LOD_FULL : LOD_IMPOSTOR) << "camera LOD " << seen;
+        }
+    EXPECT_GT(cameraLods[LOD_FULL], 10u);
+    EXPECT_GT(cameraLods[LOD_REDUCED], 10u);
+}
+
+// A forced LOD casts as forced: reduced meshes only when LOD1 is forced,
+// and then the cache (which holds impostors) holds nothing.
+TEST(ShadowCasters, AForcedLodCastsAsForced) {
+    for (uint32_t forced : {uint32_t(LOD_FULL), uint32_t(LOD_REDUCED), uint32_t(LOD_IMPOSTOR)}) {
+        const ShadowPasses passes = shadowPasses(kStart, kStart, kSun, forced);
+        const Field f = shadowField(5000, 14, {passes});
+        const CpuCullResult cache = shadowCastersOnCpu(f.instances, f.models, passes.cache);
+        const CpuCullResult frame = shadowCastersOnCpu(f.instances, f.models, passes.frame);
+        for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) {
+            EXPECT_EQ(entriesOfLod(frame.lists, lod) > 0u, lod == forced && forced != LOD_IMPOSTOR)
+                << "forced " << forced << " LOD " << lod;
+            EXPECT_EQ(entriesOfLod(cache.lists, lod) > 0u, lod == forced && forced == LOD_IMPOSTOR)
+                << "forced " << forced << " LOD " << lod;
+        }
+    }
 }
 
 // The casters whose shadow may fall in the frame's view, each with the LOD
