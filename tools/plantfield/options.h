@@ -3,6 +3,7 @@
 
 #include "engine/scene/scene.h"
 #include "engine/vk/antialiasing.h"
+#include "lsystem/memory_budget.h"
 
 #include <cstdint>
 #include <optional>
@@ -77,6 +78,7 @@ struct PlantfieldOptions {
     bool listDevices = false;
     bool validation = false;
     Antialiasing antialiasing;
+    lsys::MemoryBudget memory; // --memory-budget: terrain, placement, uploads
 };
 
 // Parses argv. On --help prints usage and returns exit code 0 through
