@@ -14,8 +14,7 @@ namespace tools {
 inline void addMemoryBudgetOption(CLI::App& app, lsys::MemoryBudget& budget) {
     budget = lsys::machineMemoryBudget();
     app.add_option_function<std::string>(
-           "--memory-budget",
-           [&budget](const std::string& text) { budget.limitBytes = *lsys::parseByteSize(text); },
+           "--memory-budget", [&budget](const std::string& text) { budget.limitBytes = *lsys::parseByteSize(text); },
            "Memory every stage may allocate (derivation, turtle, b-grammar, instance graph, export, terrain,\n"
            "plants, GPU uploads), e.g. 512M, 4G or bytes; past it a stage stops with an error naming it\n"
            "(default: 3/4 of the available memory, now " +
