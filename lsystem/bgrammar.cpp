@@ -18,8 +18,10 @@ BGrammar buildUnguarded(const Grammar& grammar, const BGrammarOptions& options) 
     derivation.steps = options.steps;
     derivation.seed = options.seed;
     derivation.maxModules = options.maxModules;
+    derivation.memory = options.memory;
     ModuleString word = derive(grammar, derivation);
     if (options.interpreted) word = applyInterpretation(grammar, word, derivation);
+    need(options.memory, "b-grammar", bytesPlus(moduleStringBytes(word), compressionBytes(word)));
     BGrammar compressed = compressWord(word, grammar.symbols.size(), options.limits);
     compressed.interpreted = options.interpreted;
     return compressed;

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "lsystem/grammar.h"
+#include "lsystem/memory_budget.h"
 #include "lsystem/module_string.h"
 
 namespace lsys {
@@ -114,6 +115,9 @@ struct BGrammarOptions {
     int randomness = 0;
     BGrammarLimits limits;
     size_t maxModules = 50'000'000; // module budget of the derivation when the word is derived first
+    // The derivation's strings, the keys a memoised build rewrites and the
+    // draft, or SEQUITUR's grammar of a derived word (stage "b-grammar").
+    MemoryBudget memory = machineMemoryBudget();
 };
 
 // The b-grammar of the grammar's derivation, without expanding the word when

@@ -206,6 +206,10 @@ private:
             throw DerivationError(
                 "b-grammar budget exceeded: more than " + std::to_string(options_.limits.maxItems) +
                 " (module, step) keys to rewrite (raise it with --max-items, or lower the number of steps)");
+        // A memo entry: key, result and the hash table's links; the draft twice for its vectors' growth.
+        constexpr uint64_t kKeyBytes = sizeof(Key) + sizeof(std::optional<BodyItem>) + 3 * sizeof(void*);
+        need(options_.memory, "b-grammar",
+             bytesPlus(bytesTimes(frames_.size() + memo_.size() + 1, kKeyBytes), bytesTimes(byteSize(draft_), 2)));
         const uint64_t streamKey = streamKeyOf(key);
         const uint64_t pass = static_cast<uint64_t>(key.remaining) * kPassesPerStep;
         const TerminalModule module = draft_.modules[key.module];

@@ -114,6 +114,21 @@ void writeGraphGltf(const InstanceGraph& graph, const SurfaceLibrary& surfaces, 
     builder.write(out, binary);
 }
 
+// Every object's direct primitives as meshes (drawable or not: a bound).
+MeshSize graphMeshSize(const InstanceGraph& graph, const SurfaceLibrary& surfaces, const MeshDetail& detail) {
+    MeshSize total;
+    for (const GraphPrimitive& p : graph.primitives) {
+        MeshSize shape;
+        if (p.kind == PrimitiveKind::Surface) {
+            const SurfaceMesh& surface = surfaces.surface(graph.surfaceNames[p.shape]);
+            shape = {surface.positions.size(), surface.indices.size()};
+        }
+        if (p.kind == PrimitiveKind::Polygon) shape.vertices = graph.polygons[p.shape].outline.size();
+        total.add(primitiveMeshSize(p.kind, shape, detail));
+    }
+    return total;
+}
+
 } // namespace
 
 uint64_t graphExportNodeCount(const InstanceGraph& graph) {
@@ -135,11 +150,13 @@ GraphExportSummary exportInstanceGraph(const InstanceGraph& graph, const Surface
                                      " glTF nodes (one per instance path), more than the budget of " +
                                      std::to_string(options.maxNodes) +
                                      "; export the flat form (--flat) or derive fewer steps");
+        need(options.memory, "export",
+             gltfBytes(graphMeshSize(graph, surfaces, options.detail), nodes, extension == ".glb"));
         OutputFile file(path);
         writeGraphGltf(graph, surfaces, file.stream(), options, extension == ".glb", summary);
         file.commit();
-    } catch (const std::exception& error) {
-        throw std::runtime_error("export " + path.string() + ": " + error.what());
+    } catch (const std::exception&) {
+        rethrowNaming(path);
     }
     return summary;
 }

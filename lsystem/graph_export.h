@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "lsystem/instance_graph.h"
+#include "lsystem/memory_budget.h"
 #include "lsystem/primitive_mesh.h"
 #include "lsystem/surfaces.h"
 
@@ -24,6 +25,9 @@ struct GraphExportOptions {
     // One node per path of instances from the root: a deep plant has
     // exponentially many, so past this the export is refused.
     uint64_t maxNodes = 1'000'000;
+    // What the writer would hold at once, from the objects' primitives and
+    // the node count, before any mesh is built (stage "export").
+    MemoryBudget memory = machineMemoryBudget();
 };
 
 struct GraphExportSummary {

@@ -29,6 +29,7 @@
 
 #include "lsystem/bgrammar.h"
 #include "lsystem/grammar.h"
+#include "lsystem/memory_budget.h"
 #include "lsystem/plant_asset.h"
 #include "lsystem/surfaces.h"
 
@@ -106,6 +107,9 @@ struct InstanceGraphOptions {
     // pi/G in both spherical angles share an object. 0: only identical ones (exact).
     int orientationGranularity = 0;
     size_t maxObjects = 1'000'000; // DerivationError past it
+    // The graph's arrays and the builder's per-object records, checked before
+    // every object and every run of primitives is added (stage "instance graph").
+    MemoryBudget memory = machineMemoryBudget();
 };
 
 // The hierarchy of the b-grammar's word, which must be the word the turtle

@@ -106,6 +106,18 @@ public:
 
     uint32_t buildObject(uint32_t node, const ObjectEntry& entry);
 
+    // Throws MemoryBudgetError when the graph with `primitives` more
+    // primitives (and their items) would be past the budget: what it holds,
+    // twice for the vectors' growth.
+    void needRoomFor(uint64_t primitives) const {
+        constexpr uint64_t kObjectBytes = sizeof(GraphObject) + sizeof(BuiltObject) + sizeof(KeyedObjects);
+        uint64_t bytes = bytesTimes(graph_.objects.size() + 1, kObjectBytes);
+        bytes = bytesPlus(bytes, bytesTimes(graph_.items.size() + primitives, sizeof(GraphItem)));
+        bytes = bytesPlus(bytes, bytesTimes(graph_.primitives.size() + primitives, sizeof(GraphPrimitive)));
+        bytes = bytesPlus(bytes, bytesTimes(graph_.instances.size(), sizeof(GraphInstance)));
+        need(options_.memory, "instance graph", bytesTimes(bytes, 2));
+    }
+
     const BGrammar& bgrammar_;
     const InstanceGraphOptions& options_;
     const SurfaceLibrary& surfaces_;
@@ -265,6 +277,7 @@ private:
     // Moves what the turtle drew since the last instance into the graph.
     void flushChunk() {
         PlantAsset drawn = chunk_.finish();
+        b_.needRoomFor(drawn.primitives.size());
         InstanceGraph& graph = b_.graph_;
         for (const Primitive& p : drawn.primitives) {
             GraphPrimitive primitive{p.frame, p.kind, p.material, p.shape, p.length, p.startRadius, p.endRadius};
@@ -316,6 +329,7 @@ uint32_t GraphBuilder::buildObject(uint32_t node, const ObjectEntry& entry) {
     if (graph_.objects.size() >= options_.maxObjects)
         throw DerivationError("the instance graph would hold more than " + std::to_string(options_.maxObjects) +
                               " objects");
+    needRoomFor(0);
     ObjectInterpreter interpreter(*this, entry);
     interpreter.interpretBody(node);
     return interpreter.finish(node);

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "lsystem/memory_budget.h"
+
 namespace lsys {
 
 void ModuleString::clear() {
@@ -22,6 +24,11 @@ void ModuleString::push(SymbolId symbol, std::span<const float> parameters) {
         params.insert(params.end(), parameters.begin(), parameters.end());
         paramStart.push_back(static_cast<uint32_t>(params.size()));
     }
+}
+
+uint64_t moduleStringBytes(uint64_t modules, uint64_t parameters, bool offsets) {
+    const uint64_t perModule = sizeof(SymbolId) + (offsets ? sizeof(uint32_t) : 0);
+    return bytesPlus(bytesTimes(modules, perModule), bytesTimes(parameters, sizeof(float)));
 }
 
 std::string toString(const ModuleString& string, const SymbolTable& symbols) {

@@ -34,6 +34,13 @@ struct ModuleString {
     void addOffsets();
 };
 
+// The bytes of a ModuleString of `modules` modules holding `parameters`
+// parameters, with offsets or without (saturating; lsystem/memory_budget.h).
+uint64_t moduleStringBytes(uint64_t modules, uint64_t parameters, bool offsets);
+inline uint64_t moduleStringBytes(const ModuleString& string) {
+    return moduleStringBytes(string.size(), string.params.size(), string.hasParameters());
+}
+
 // Canonical text: modules back to back, parameters printed with %g joined by commas: F(1,0.5)[+A(2)]
 std::string toString(const ModuleString& string, const SymbolTable& symbols);
 

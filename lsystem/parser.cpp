@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <optional>
 #include <sstream>
 
 #include "lsystem/dialects/dialect.h"
+#include "lsystem/file_reader.h"
 #include "lsystem/lexer.h"
 
 namespace lsys {
@@ -476,29 +475,15 @@ ParseResult parseLsystem(std::string_view source, const ParseOptions& options) {
 }
 
 std::string readTextFile(const std::string& path, std::string& problem) {
-    problem.clear();
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        problem = "is a folder, not a plant file";
-        return {};
+    FileBytes file = readFileUpTo(path, kMaxSourceBytes);
+    switch (file.problem) {
+    case FileProblem::None: problem.clear(); break;
+    case FileProblem::Folder: problem = "is a folder, not a plant file"; break;
+    case FileProblem::CannotOpen: problem = "cannot be opened"; break;
+    case FileProblem::TooLarge: problem = "is larger than " + std::to_string(kMaxSourceBytes >> 20) + " MiB"; break;
+    case FileProblem::CannotRead: problem = "cannot be read"; break;
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        problem = "cannot be opened";
-        return {};
-    }
-    // In pieces, so a device or fifo without end stops at the limit.
-    std::string text;
-    char piece[1 << 16];
-    while (in.read(piece, sizeof piece) || in.gcount() > 0) {
-        text.append(piece, size_t(in.gcount()));
-        if (text.size() > kMaxSourceBytes) {
-            problem = "is larger than " + std::to_string(kMaxSourceBytes >> 20) + " MiB";
-            return {};
-        }
-    }
-    if (in.bad()) problem = "cannot be read";
-    return problem.empty() ? text : std::string();
+    return std::move(file.bytes);
 }
 
 } // namespace lsys

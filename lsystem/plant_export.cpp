@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "lsystem/export_detail.h"
+#include "lsystem/memory_budget.h"
 #include "lsystem/output_file.h"
 
 namespace lsys {
@@ -16,12 +17,29 @@ std::string materialName(const std::vector<Material>& materials, uint32_t index)
     return name.empty() ? "material_" + std::to_string(index) : name;
 }
 
+void rethrowNaming(const std::filesystem::path& path) {
+    const std::string prefix = "export " + path.string() + ": ";
+    try {
+        throw;
+    } catch (const MemoryBudgetError& error) {
+        throw MemoryBudgetError(prefix + error.what());
+    } catch (const std::exception& error) {
+        throw std::runtime_error(prefix + error.what());
+    }
+}
+
 std::string lowercaseExtension(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
     return extension;
 }
+
+uint64_t gltfBytes(const MeshSize& meshes, uint64_t nodes, bool binary) {
+    return bytesPlus(bytesTimes(meshes.bytes(), binary ? 3 : 6), bytesTimes(nodes, kGltfNodeBytes));
+}
+
+uint64_t objBytes(const MeshSize& meshes) { return meshes.bytes(); }
 
 } // namespace export_detail
 
@@ -72,6 +90,10 @@ void exportPlant(const PlantAsset& asset, const std::filesystem::path& path, con
         if (extension != ".gltf" && extension != ".glb" && extension != ".obj")
             throw std::runtime_error("unknown extension '" + extension + "' (expected .gltf, .glb or .obj)");
         checkAsset(asset);
+        const MeshSize meshes = bakedMeshSize(asset, options.detail);
+        need(options.memory, "export",
+             extension == ".obj" ? objBytes(meshes)
+                                 : gltfBytes(meshes, options.skeleton ? asset.joints.size() : 0, extension == ".glb"));
         if (extension == ".obj") {
             std::filesystem::path mtlPath = path;
             mtlPath.replace_extension(".mtl");
@@ -84,8 +106,8 @@ void exportPlant(const PlantAsset& asset, const std::filesystem::path& path, con
             writeGltf(asset, file.stream(), options, extension == ".glb");
             file.commit();
         }
-    } catch (const std::exception& error) {
-        throw std::runtime_error("export " + path.string() + ": " + error.what());
+    } catch (const std::exception&) {
+        rethrowNaming(path);
     }
 }
 

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 
+#include "lsystem/memory_budget.h"
 #include "lsystem/plant_asset.h"
 #include "lsystem/primitive_mesh.h"
 
@@ -16,11 +17,15 @@ struct ExportOptions {
     SegmentGeometry segments = SegmentGeometry::Frusta;
     MeshDetail detail;
     bool skeleton = true; // glTF: one node per Joint, nested as Joint::parent says
+    // What the writer would hold at once, estimated from the primitives'
+    // vertex and index counts before any mesh is built (export_detail.h).
+    MemoryBudget memory = machineMemoryBudget();
 };
 
 // Throws std::runtime_error naming `path` when the extension is not .gltf,
 // .glb or .obj, when the asset is inconsistent (a material or shape index out
-// of range, a joint cycle), or when a file cannot be written. Each file is
+// of range, a joint cycle), or when a file cannot be written; throws
+// MemoryBudgetError (stage "export") past options.memory, before writing. Each file is
 // written to PATH.partial and renamed into place, so a failure leaves no
 // file behind and never a half-written one.
 void exportPlant(const PlantAsset& asset, const std::filesystem::path& path, const ExportOptions& options = {});

@@ -9,6 +9,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "lsystem/memory_budget.h"
+
 namespace lsys {
 namespace {
 
@@ -357,6 +359,46 @@ std::vector<TriangleMesh> generalizedCylindersByMaterial(const PlantAsset& asset
         meshes.at(material).append(generalizedCylinderMesh(asset, chain, detail), glm::mat4(1.0f));
     }
     return meshes;
+}
+
+uint64_t MeshSize::bytes() const {
+    constexpr uint64_t kVertexBytes = 2 * sizeof(glm::vec3) + sizeof(glm::vec2);
+    return bytesPlus(bytesTimes(vertices, kVertexBytes), bytesTimes(indices, sizeof(uint32_t)));
+}
+
+void MeshSize::add(const MeshSize& other) {
+    vertices = bytesPlus(vertices, other.vertices);
+    indices = bytesPlus(indices, other.indices);
+}
+
+MeshSize primitiveMeshSize(PrimitiveKind kind, const MeshSize& shape, const MeshDetail& detail) {
+    switch (kind) {
+    case PrimitiveKind::Segment: {
+        const uint64_t sides = std::max(detail.segmentSides, 3u), ends = detail.segmentCaps ? 2 : 1;
+        return {2 * ends * (sides + 1), 6 * ends * sides};
+    }
+    case PrimitiveKind::Sphere: {
+        const uint64_t slices = std::max(detail.sphereSlices, 3u), stacks = std::max(detail.sphereStacks, 2u);
+        return {(slices + 1) * (stacks + 1), 6 * slices * (stacks - 1)};
+    }
+    case PrimitiveKind::Surface: return shape;
+    case PrimitiveKind::Polygon: return {shape.vertices, shape.vertices < 3 ? 0 : 3 * (shape.vertices - 2)};
+    }
+    return {};
+}
+
+MeshSize bakedMeshSize(const PlantAsset& asset, const MeshDetail& detail) {
+    MeshSize total;
+    for (const Primitive& primitive : asset.primitives) {
+        if (!isDrawable(primitive)) continue;
+        MeshSize shape;
+        if (primitive.kind == PrimitiveKind::Surface && primitive.shape < asset.surfaces.size())
+            shape = {asset.surfaces[primitive.shape].positions.size(), asset.surfaces[primitive.shape].indices.size()};
+        if (primitive.kind == PrimitiveKind::Polygon && primitive.shape < asset.polygons.size())
+            shape.vertices = asset.polygons[primitive.shape].outline.size();
+        total.add(primitiveMeshSize(primitive.kind, shape, detail));
+    }
+    return total;
 }
 
 bool isDrawable(const Primitive& primitive) {

@@ -105,6 +105,22 @@ std::vector<TriangleMesh> meshesByMaterial(const PlantAsset& asset, SegmentGeome
 // chain has its segments' material (chains never mix materials).
 std::vector<TriangleMesh> generalizedCylindersByMaterial(const PlantAsset& asset, const MeshDetail& detail);
 
+// The size of meshes counted without building them; bytes() as TriangleMesh
+// holds them (position, normal and uv a vertex, 32-bit indices), saturating.
+struct MeshSize {
+    uint64_t vertices = 0;
+    uint64_t indices = 0;
+    uint64_t bytes() const;
+    void add(const MeshSize& other);
+};
+// Of one primitive's mesh; `shape` is its surface's mesh or polygon's
+// outline length as {vertices, indices} (polygons: the outline's points).
+MeshSize primitiveMeshSize(PrimitiveKind kind, const MeshSize& shape, const MeshDetail& detail);
+// Of meshesByMaterial(asset, segments, detail) together; with generalised
+// cylinders at most that (a tube of k segments has fewer vertices and
+// triangles than k frusta with caps).
+MeshSize bakedMeshSize(const PlantAsset& asset, const MeshDetail& detail);
+
 // Whether a primitive has any area to draw: segments with a length and a
 // radius, spheres with a radius, surfaces with a scale. Polygons always count
 // (a degenerate outline gives an empty mesh). The exporter skips the rest.

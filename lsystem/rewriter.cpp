@@ -254,6 +254,9 @@ struct Rewriter {
             parameterOffset[t + 1] = parameterOffset[t] + std::min(bounds[t].parameters, modules * perModule);
         }
         if (parameterOffset.back() > UINT32_MAX) throw DerivationError("too many parameters in one string (over 4 G)");
+        need(options.memory, "derivation",
+             bytesPlus(moduleStringBytes(in),
+                       moduleStringBytes(moduleOffset.back(), parameterOffset.back(), withParameters)));
         out.symbols.resize(moduleOffset.back());
         out.params.resize(parameterOffset.back());
         out.paramStart.resize(withParameters ? moduleOffset.back() + 1 : 0);
@@ -313,6 +316,8 @@ struct Rewriter {
         });
         for (size_t t = 0; t < ranges.size(); ++t) outputStart[t + 1] += outputStart[t];
         if (outputStart.back() > options.maxModules) budgetExceeded(options.maxModules, passNumber);
+        need(options.memory, "derivation",
+             bytesPlus(moduleStringBytes(in), moduleStringBytes(outputStart.back(), 0, false)));
         out.clear();
         out.symbols.resize(outputStart.back());
         const uint32_t* start = prepared.successorStart.data();

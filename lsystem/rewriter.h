@@ -7,6 +7,7 @@
 #include <span>
 
 #include "lsystem/grammar.h"
+#include "lsystem/memory_budget.h"
 #include "lsystem/module_string.h"
 
 namespace lsys {
@@ -15,6 +16,9 @@ struct DeriveOptions {
     std::optional<int> steps;       // default: the grammar's derivation length
     std::optional<uint64_t> seed;   // default: the grammar's seed
     size_t maxModules = 50'000'000; // a step producing more throws DerivationError
+    // Each pass needs its input and its output string at once: more than
+    // this throws MemoryBudgetError (stage "derivation") before the output is sized.
+    MemoryBudget memory = machineMemoryBudget();
     int threads = 2;
     size_t parallelThreshold = 65'536; // strings shorter than this are rewritten on one thread
 };

@@ -225,6 +225,14 @@ private:
 
 } // namespace
 
+uint64_t compressionBytes(const ModuleString& word) {
+    // Per module at worst (all distinct): its index (4 bytes), symbol (12),
+    // digram entry (about 40 with its bucket), interned module with its hash
+    // entry (about 32) and shape (12), and the rules finishBGrammar rewrites.
+    constexpr uint64_t kBytesPerModule = 128;
+    return bytesPlus(bytesTimes(word.size(), kBytesPerModule), bytesTimes(word.params.size(), sizeof(float)));
+}
+
 BGrammar compressWord(const ModuleString& word, size_t symbolCount, const BGrammarLimits& limits) {
     if (word.size() > limits.maxItems)
         throw DerivationError("b-grammar budget exceeded: the word to compress has " + std::to_string(word.size()) +

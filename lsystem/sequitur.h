@@ -26,6 +26,11 @@
 
 namespace lsys {
 
+// What compressWord holds besides the word: per module a terminal index, a
+// symbol of the grammar and an entry of the digram index, and the draft's
+// modules and parameters.
+uint64_t compressionBytes(const ModuleString& word);
+
 // A b-grammar generating exactly word (method Compressed); symbolCount is the
 // size of the grammar's symbol table. Throws DerivationError past the limits
 // (a word longer than limits.maxItems is refused before compressing).

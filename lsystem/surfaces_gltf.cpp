@@ -7,11 +7,11 @@
 
 #include <cctype>
 #include <cstring>
-#include <fstream>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "lsystem/file_reader.h"
 #include "lsystem/surfaces.h"
 
 namespace lsys {
@@ -115,13 +115,13 @@ constexpr int kMaxJsonDepth = 64;
 // The JSON of a .gltf, or the JSON chunk of a .glb (glTF 2.0 §4.4.3).
 std::string documentJson(const std::filesystem::path& file, bool binary, const MeshFileReader& reader) {
     std::error_code ec;
-    const uintmax_t size = std::filesystem::file_size(file, ec);
-    if (ec || !std::filesystem::is_regular_file(file, ec)) reader.fail("is not a readable file");
-    if (size > kMaxMeshFileBytes) reader.fail("is larger than " + std::to_string(kMaxMeshFileBytes >> 20) + " MiB");
-    std::ifstream in(file, std::ios::binary);
-    std::string bytes(static_cast<size_t>(size), '\0');
-    if (!in.read(bytes.data(), static_cast<std::streamsize>(size))) reader.fail("cannot be read");
-    if (!binary) return bytes;
+    if (!std::filesystem::is_regular_file(file, ec)) reader.fail("is not a readable file");
+    FileBytes read = readFileUpTo(file, kMaxMeshFileBytes);
+    if (read.problem == FileProblem::TooLarge)
+        reader.fail("is larger than " + std::to_string(kMaxMeshFileBytes >> 20) + " MiB");
+    if (read.problem != FileProblem::None) reader.fail("cannot be read");
+    std::string& bytes = read.bytes;
+    if (!binary) return std::move(bytes);
     constexpr size_t kHeader = 12, kChunkHeader = 8;
     if (bytes.size() < kHeader + kChunkHeader) reader.fail("is too short for a .glb header");
     uint32_t jsonLength = 0;

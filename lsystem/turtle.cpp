@@ -71,9 +71,31 @@ void interpretModules(const ModuleString& string, std::span<const TurtleCommand>
     }
 }
 
+uint64_t turtleBytes(const ModuleString& string, std::span<const TurtleCommand> commands) {
+    std::vector<uint64_t> perSymbol(commands.size(), 0);
+    for (size_t symbol = 0; symbol < commands.size(); ++symbol) {
+        switch (commands[symbol].action) {
+        case TurtleAction::Draw: perSymbol[symbol] = sizeof(Primitive) + sizeof(Joint); break;
+        case TurtleAction::Sphere:
+        case TurtleAction::Surface: perSymbol[symbol] = sizeof(Primitive); break;
+        case TurtleAction::PolygonBegin:
+            perSymbol[symbol] = sizeof(Primitive) + sizeof(PolygonShape) + sizeof(OpenPolygon);
+            break;
+        case TurtleAction::PolygonVertex:
+        case TurtleAction::Move: perSymbol[symbol] = sizeof(glm::vec3); break;
+        case TurtleAction::Push: perSymbol[symbol] = sizeof(TurtleState); break;
+        default: break;
+        }
+    }
+    uint64_t bytes = 0;
+    for (SymbolId symbol : string.symbols) bytes += perSymbol[symbol]; // at most 2^32 x a few hundred bytes
+    return bytesTimes(bytes, 2);
+}
+
 PlantAsset interpretPlant(const ModuleString& string, const SymbolTable& symbols, const TurtleSettings& settings,
-                          const SurfaceLibrary& surfaces) {
+                          const SurfaceLibrary& surfaces, const MemoryBudget& memory) {
     const std::vector<TurtleCommand> commands = turtleCommands(symbols);
+    need(memory, "turtle", turtleBytes(string, commands));
     PlantAssetBuilder builder(surfaces);
     TurtleState state = initialTurtleState(settings);
     TurtleStack stack;
@@ -81,10 +103,14 @@ PlantAsset interpretPlant(const ModuleString& string, const SymbolTable& symbols
     return builder.finish();
 }
 
-PlantAsset plantFromGrammar(const Grammar& grammar, const ModuleString& derived, const SurfaceLibrary& surfaces) {
+PlantAsset plantFromGrammar(const Grammar& grammar, const ModuleString& derived, const SurfaceLibrary& surfaces,
+                            const MemoryBudget& memory) {
     const TurtleSettings settings = turtleSettings(grammar);
-    if (grammar.interpretation.empty()) return interpretPlant(derived, grammar.symbols, settings, surfaces);
-    return interpretPlant(applyInterpretation(grammar, derived), grammar.symbols, settings, surfaces);
+    if (grammar.interpretation.empty()) return interpretPlant(derived, grammar.symbols, settings, surfaces, memory);
+    DeriveOptions interpretation;
+    interpretation.memory = memory;
+    return interpretPlant(applyInterpretation(grammar, derived, interpretation), grammar.symbols, settings, surfaces,
+                          memory);
 }
 
 } // namespace lsys

@@ -30,6 +30,7 @@
 #include <glm/vec3.hpp>
 
 #include "lsystem/grammar.h"
+#include "lsystem/memory_budget.h"
 #include "lsystem/module_string.h"
 #include "lsystem/plant_asset.h"
 #include "lsystem/surfaces.h"
@@ -94,13 +95,21 @@ void applyModule(const TurtleCommand& command, std::span<const float> parameters
 void interpretModules(const ModuleString& string, std::span<const TurtleCommand> commands,
                       const TurtleSettings& settings, TurtleState& state, TurtleStack& stack, PlantAssetBuilder& out);
 
+// At most what interpreting the string appends to a PlantAsset and to the
+// turtle's stacks, from the commands its modules are (a segment's primitive
+// and joint, a vertex, a pushed state), twice for the vectors' growth.
+uint64_t turtleBytes(const ModuleString& string, std::span<const TurtleCommand> commands);
+
 // The plant a derived (and interpreted) string draws from the initial state.
+// Throws MemoryBudgetError (stage "turtle") when turtleBytes() is past `memory`.
 PlantAsset interpretPlant(const ModuleString& string, const SymbolTable& symbols, const TurtleSettings& settings,
-                          const SurfaceLibrary& surfaces);
+                          const SurfaceLibrary& surfaces, const MemoryBudget& memory = machineMemoryBudget());
 
 // Applies the grammar's interpretation (homomorphism) rules, then the turtle
-// with the header's settings: what a renderer calls after derive().
+// with the header's settings: what a renderer calls after derive(). Both
+// within `memory`.
 PlantAsset plantFromGrammar(const Grammar& grammar, const ModuleString& derived,
-                            const SurfaceLibrary& surfaces = SurfaceLibrary{});
+                            const SurfaceLibrary& surfaces = SurfaceLibrary{},
+                            const MemoryBudget& memory = machineMemoryBudget());
 
 } // namespace lsys

@@ -92,6 +92,13 @@ Heightfield decimated(const Heightfield& terrain, uint32_t maxSamples) {
 
 } // namespace
 
+uint64_t fieldUploadBytes(const FieldContent& content) {
+    constexpr uint64_t kPerPlant = 2 * (sizeof(gpu::FieldInstance) + sizeof(uint32_t));
+    uint64_t bytes = lsys::bytesTimes(content.plants.size(), kPerPlant);
+    bytes = lsys::bytesPlus(bytes, lsys::bytesTimes(content.models.vertices.size(), sizeof(gpu::FieldVertex)));
+    return lsys::bytesPlus(bytes, lsys::bytesTimes(content.models.indices.size(), sizeof(uint32_t)));
+}
+
 bool nestedInColourPass(std::string_view pass) {
     const auto colour = std::find(std::begin(kFieldPasses), std::end(kFieldPasses), std::string_view("colour"));
     return std::find(std::next(colour), std::end(kFieldPasses), pass) != std::end(kFieldPasses);
@@ -103,6 +110,7 @@ FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const 
     if (content_.plants.empty()) throw std::runtime_error("the scene places no plant");
     if (content_.plants.size() > FIELD_MAX_INSTANCES)
         throw std::runtime_error("at most " + std::to_string(FIELD_MAX_INSTANCES) + " plants can be drawn");
+    lsys::need(settings_.memory, "GPU uploads", fieldUploadBytes(content_));
     uniforms_ = createHostBuffer(resources_, sizeof(FieldUniformBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     uploadGeometry();
     uploadInstances();

@@ -50,7 +50,15 @@ struct FieldRenderSettings {
     // 2026-12-02).
     bool occlusionCulling = false;
     ClusterSettings clusters;
+    // The host memory of the uploads (fieldUploadBytes), checked before any of them.
+    lsys::MemoryBudget memory = lsys::machineMemoryBudget();
 };
+
+// What uploading the field holds in host memory at once: the instance and
+// naive lists built for the GPU and a staging copy of each, and the staging
+// copies of the vertex and index pools (saturating). The GPU side is bounded
+// by its heaps (GpuResources::allocate).
+uint64_t fieldUploadBytes(const FieldContent& content);
 
 struct FieldView {
     Camera camera;

@@ -9,7 +9,7 @@
 
 namespace pf {
 
-Heightfield terrainOf(const Scene& scene) {
+Heightfield terrainOf(const Scene& scene, const lsys::MemoryBudget& memory) {
     const Terrain& t = scene.terrain;
     if (const auto* image = std::get_if<ImageHeightfield>(&t.heightfield))
         return loadImageTerrain(image->path.string(), t.size, image->heightScale);
@@ -23,6 +23,7 @@ Heightfield terrainOf(const Scene& scene) {
     settings.amplitude = noise.amplitude;
     settings.lacunarity = noise.lacunarity;
     settings.gain = noise.gain;
+    settings.memory = memory;
     return makeNoiseTerrain(settings);
 }
 
@@ -90,20 +91,23 @@ std::vector<PlacementRule> placementRules(const Scene& scene) {
     return rules;
 }
 
-PlacedField placeField(const Scene& scene, std::optional<PlantCount> count) {
+uint64_t placementBytes(uint64_t plants) { return lsys::bytesTimes(plants, 4 * sizeof(PlantInstance)); }
+
+PlacedField placeField(const Scene& scene, std::optional<PlantCount> count, const lsys::MemoryBudget& memory) {
+    if (count) lsys::need(memory, "placement", placementBytes(count->plants));
     const std::vector<PlacementRule> rules = placementRules(scene);
     const uint64_t seed = placementSeed(scene, 0);
     PlacedField field;
     field.terrain = scene.terrain;
     std::vector<PlantInstance> generated;
     if (count && count->mode == CountMode::NaturalDensity && !rules.empty()) {
-        NaturalField natural = placeAtNaturalDensity(scene, rules, count->plants, seed);
+        NaturalField natural = placeAtNaturalDensity(scene, rules, count->plants, seed, memory);
         field.terrain = natural.terrain;
         field.heightfield = std::move(natural.heightfield);
         field.note = std::move(natural.note);
         generated = std::move(natural.plants);
     } else {
-        field.heightfield = terrainOf(scene);
+        field.heightfield = terrainOf(scene, memory);
         if (!rules.empty())
             generated = count ? scaleToCount(field.heightfield, rules, count->plants, seed)
                               : placeSpecies(field.heightfield, rules, seed);
@@ -123,8 +127,9 @@ PlacedField placeField(const Scene& scene, std::optional<PlantCount> count) {
     return field;
 }
 
-FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> count, const ModelProgress& progress) {
-    PlacedField field = placeField(scene, count);
+FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> count, const ModelProgress& progress,
+                               const lsys::MemoryBudget& memory) {
+    PlacedField field = placeField(scene, count, memory);
     FieldContent content;
     content.scene = scene;
     content.scene.terrain = field.terrain;

@@ -12,8 +12,8 @@
 
 namespace pf {
 
-// The scene's heightfield (noise or image).
-Heightfield terrainOf(const Scene& scene);
+// The scene's heightfield (noise or image); a noise one within `memory`.
+Heightfield terrainOf(const Scene& scene, const lsys::MemoryBudget& memory = lsys::machineMemoryBudget());
 
 // One placement rule per species placed by density or distance (Count
 // species get the distance that gives about `count` plants on the scene's
@@ -36,14 +36,21 @@ struct PlantCount {
 // in scene order. Without a count, the scene as written. With one, the
 // generated plants number exactly `count->plants` (placeAtNaturalDensity or
 // scaleToCount); hand-placed plants are added unchanged. Same scene and count
-// ⇒ same plants in the same order.
+// ⇒ same plants in the same order. Throws lsys::MemoryBudgetError (stage
+// "placement") when `count` plants would not fit `memory`, before placing,
+// and past it for the terrain (terrainOf).
 struct PlacedField {
     Terrain terrain;         // the scene's, or grown to hold the count at natural densities
     Heightfield heightfield; // of `terrain`
     std::vector<PlantInstance> plants;
     std::string note; // set when the count could not be reached as asked (an image terrain densified)
 };
-PlacedField placeField(const Scene& scene, std::optional<PlantCount> count = std::nullopt);
+PlacedField placeField(const Scene& scene, std::optional<PlantCount> count = std::nullopt,
+                       const lsys::MemoryBudget& memory = lsys::machineMemoryBudget());
+
+// What placing `plants` plants holds: a pilot placement and the kept one,
+// the field's list and the content's (sorted in cluster order), saturating.
+uint64_t placementBytes(uint64_t plants);
 
 // Everything the field renderer draws, built on the CPU.
 struct FieldContent {
@@ -58,6 +65,7 @@ struct FieldContent {
 
 // Terrain, plants (exactly `count` generated ones when given) and every species' meshes.
 FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> count = std::nullopt,
-                               const ModelProgress& progress = {});
+                               const ModelProgress& progress = {},
+                               const lsys::MemoryBudget& memory = lsys::machineMemoryBudget());
 
 } // namespace pf

@@ -1,11 +1,12 @@
 #include "engine/scene/json_reader.h"
 
+#include "lsystem/file_reader.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -211,15 +212,17 @@ JsonNode childNode(const JsonNode& parent, const nlohmann::json& value, std::str
 } // namespace
 
 JsonSource readJsonFile(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
     std::error_code ec;
-    if (!in || !std::filesystem::is_regular_file(file, ec))
+    if (!std::filesystem::is_regular_file(file, ec))
         throw SceneError(file.string() + ": cannot read the scene file (not a regular file)");
     // A million explicitly placed plants take about 60 MB of JSON.
-    constexpr uintmax_t kMaxSceneBytes = uintmax_t(256) << 20;
-    if (std::filesystem::file_size(file, ec) > kMaxSceneBytes)
+    constexpr size_t kMaxSceneBytes = size_t(256) << 20;
+    lsys::FileBytes read = lsys::readFileUpTo(file, kMaxSceneBytes);
+    if (read.problem == lsys::FileProblem::TooLarge)
         throw SceneError(file.string() + ": the scene file is larger than 256 MiB");
-    JsonSource source{file, std::string(std::istreambuf_iterator<char>(in), {}), {}};
+    if (read.problem != lsys::FileProblem::None)
+        throw SceneError(file.string() + ": cannot read the scene file (not a regular file)");
+    JsonSource source{file, std::move(read.bytes), {}};
     try {
         source.root = nlohmann::json::parse(source.text);
     } catch (const nlohmann::json::out_of_range& e) {

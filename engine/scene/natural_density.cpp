@@ -33,8 +33,8 @@ Terrain grownTerrain(const Terrain& terrain, float side, size_t maxSamples) {
 }
 
 NaturalField placeAtNaturalDensity(const Scene& scene, std::span<const PlacementRule> rules, size_t count,
-                                   uint64_t seed) {
-    NaturalField field{scene.terrain, terrainOf(scene), {}, {}};
+                                   uint64_t seed, const lsys::MemoryBudget& memory) {
+    NaturalField field{scene.terrain, terrainOf(scene, memory), {}, {}};
     const std::vector<PlantInstance> natural = placeSpecies(field.heightfield, rules, seed);
     if (natural.empty()) throw std::runtime_error("placement: the rules admit no plant on this terrain");
     if (count <= natural.size()) {
@@ -56,7 +56,7 @@ NaturalField placeAtNaturalDensity(const Scene& scene, std::span<const Placement
         Scene grown = scene;
         grown.terrain = grownTerrain(scene.terrain, float(side), maxSamples);
         field.terrain = grown.terrain;
-        field.heightfield = terrainOf(grown);
+        field.heightfield = terrainOf(grown, memory);
         std::vector<PlantInstance> placed = placeSpecies(field.heightfield, rules, seed);
         if (placed.size() >= count) {
             field.plants = keepCentralSquare(placed, count);

@@ -41,8 +41,8 @@ struct NaturalField {
 // spare, cut the same way (grown again in the rare case it falls short). An
 // image terrain cannot grow: its plants are densified to `count`
 // (scaleToCount) and `note` says so. Throws when the rules admit no plant on
-// the scene's terrain.
+// the scene's terrain; every terrain it builds is within `memory` (terrainOf).
 NaturalField placeAtNaturalDensity(const Scene& scene, std::span<const PlacementRule> rules, size_t count,
-                                   uint64_t seed);
+                                   uint64_t seed, const lsys::MemoryBudget& memory = lsys::machineMemoryBudget());
 
 } // namespace pf

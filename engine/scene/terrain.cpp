@@ -64,9 +64,14 @@ float slopeAlong(const Heightfield& terrain, float x, float z, float stepX, floa
 
 } // namespace
 
+uint64_t heightfieldBytes(uint32_t resolution) {
+    return lsys::bytesTimes(uint64_t(resolution) * resolution, 2 * sizeof(float));
+}
+
 Heightfield makeNoiseTerrain(const NoiseTerrainSettings& s) {
     if (s.resolution < 2) throw std::invalid_argument("noise terrain: resolution must be at least 2");
     if (!(s.size > 0)) throw std::invalid_argument("noise terrain: size must be positive");
+    lsys::need(s.memory, "terrain", heightfieldBytes(s.resolution));
     Heightfield terrain = emptyHeightfield(s.resolution, s.size);
     for (uint32_t octave = 0; octave < s.octaves; ++octave) {
         const uint64_t key = lsys::splitmix64(lsys::splitmix64(s.seed) ^ octave);

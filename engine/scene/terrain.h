@@ -2,6 +2,8 @@
 // Built from seeded fBm noise or a greyscale PNG; sampled bilinearly.
 #pragma once
 
+#include "lsystem/memory_budget.h"
+
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -33,10 +35,17 @@ struct NoiseTerrainSettings {
     float amplitude = 16;            // metres
     float lacunarity = 2;
     float gain = 0.5f;
+    lsys::MemoryBudget memory = lsys::machineMemoryBudget(); // heightfieldBytes(resolution) must fit
 };
 
+// What a heightfield of `resolution` samples a side costs while it is built:
+// its heights, and those of the one it replaces (a terrain grown to a plant
+// count is built again larger), saturating.
+uint64_t heightfieldBytes(uint32_t resolution);
+
 // Same settings ⇒ same heights, bit for bit. Throws on a resolution below 2 or
-// a size that is not positive.
+// a size that is not positive, and lsys::MemoryBudgetError (stage "terrain")
+// when heightfieldBytes is past the budget, before allocating.
 Heightfield makeNoiseTerrain(const NoiseTerrainSettings& settings);
 
 // A square greyscale PNG, one sample a pixel: grey level g maps to height

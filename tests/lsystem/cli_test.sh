@@ -95,6 +95,16 @@ expect_run export-fifo 2 'is a fifo' -- "$LSYS" export "$DATA/plants/koch_curve.
 printf 'Axiom: F(1) F(0/0)\n' > "$WORK/nan.lsys"
 expect_run export-not-a-number 2 "the turtle's F got NaN" -- "$LSYS" export "$WORK/nan.lsys" -o "$WORK/nan.glb"
 [ -e "$WORK/nan.glb" ] && fail "export-not-a-number: a file was written"
+# The memory budget: each stage refuses before it allocates, naming itself, the need and the limit.
+expect_run export-memory-budget 2 'export .*budget.glb: memory budget: export needs 208.0 MiB, the limit is 16.0 MiB (set with --memory-budget)' -- "$LSYS" export "$DATA/plants/fractal_bush.lsys" -n 5 -o "$WORK/budget.glb" --memory-budget 16M
+[ -e "$WORK/budget.glb" ] && fail "export-memory-budget: a file was written"
+expect_run turtle-memory-budget 2 'memory budget: turtle needs' -- "$LSYS" export "$DATA/plants/fractal_bush.lsys" -n 5 -o "$WORK/budget.obj" --memory-budget 4M
+expect_run derive-memory-budget 2 'memory budget: derivation needs' -- "$LSYS" derive "$DATA/plants/fractal_bush.lsys" -n 7 --memory-budget 10M
+expect_run instance-memory-budget 2 'memory budget: instance graph needs' -- "$LSYS" instance "$DATA/plants/monopodial_tree.lsys" -n 40 --memory-budget 64M
+expect_run memory-budget-fits 0 '88940 modules' -- "$LSYS" derive "$DATA/plants/fractal_bush.lsys" -n 5 --memory-budget 1G
+expect_run bad-memory-budget 2 "'lots' is not a size" -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" --memory-budget lots
+expect_run zero-memory-budget 2 "'0' is not a size" -- "$LSYS" instance "$DATA/plants/koch_curve.lsys" --memory-budget 0
+expect_run memory-budget-help 0 '--memory-budget SIZE' -- "$LSYS" export --help
 expect_run derive-negative-steps 2 'steps' -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" -n -1
 expect_run help 0 'derive' -- "$LSYS" --help
 expect_run derive-help 0 '--max-modules' -- "$LSYS" derive --help

@@ -32,5 +32,25 @@ TEST_F(GpuBytesTest, GpuBytesIsTheDeviceMemoryTheRendererHolds) {
     EXPECT_EQ(liveDeviceMemoryBytes(), before);
 }
 
+// The host side of the uploads (instance lists and staging copies) is
+// checked against the memory budget before any device memory is allocated.
+TEST_F(GpuBytesTest, UploadsPastTheMemoryBudgetAreRefusedBeforeAllocating) {
+    const Scene scene = loadScene(std::string(PLANTFIELD_DATA_DIR) + "/scenes/test_small.json");
+    FieldContent content = buildFieldContent(scene);
+    const uint64_t need = fieldUploadBytes(content);
+    EXPECT_GE(need, content.plants.size() * 2 * sizeof(gpu::FieldInstance) +
+                        content.models.vertices.size() * sizeof(gpu::FieldVertex));
+    FieldRenderSettings settings;
+    settings.memory = {need - 1};
+    const VkDeviceSize before = liveDeviceMemoryBytes();
+    try {
+        FieldRenderer renderer(ctx, std::move(content), settings);
+        FAIL() << "expected the uploads to be refused";
+    } catch (const lsys::MemoryBudgetError& error) {
+        EXPECT_NE(std::string(error.what()).find("GPU uploads needs"), std::string::npos) << error.what();
+    }
+    EXPECT_EQ(liveDeviceMemoryBytes(), before);
+}
+
 } // namespace
 } // namespace pf::test

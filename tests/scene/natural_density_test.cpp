@@ -203,5 +203,21 @@ TEST(KeepCentralSquare, KeepsTheNearestInTheMaximumNormInTheirOrder) {
     EXPECT_TRUE(keepCentralSquare(plants, 0).empty());
 }
 
+TEST(NaturalDensity, ACountPastTheMemoryBudgetIsRefusedBeforePlacing) {
+    const Scene scene = forest();
+    try {
+        placeField(scene, PlantCount{10'000'000}, {64ull << 20});
+        FAIL() << "expected the placement to be refused";
+    } catch (const lsys::MemoryBudgetError& error) {
+        EXPECT_NE(std::string(error.what()).find("placement needs " + lsys::formatBytes(placementBytes(10'000'000))),
+                  std::string::npos)
+            << error.what();
+    }
+    // The scene's own terrain is checked with the same budget: "resolution": 8000 is valid.
+    Scene fine = scene;
+    fine.terrain.resolution = 8000;
+    EXPECT_THROW(placeField(fine, std::nullopt, {256ull << 20}), lsys::MemoryBudgetError);
+}
+
 } // namespace
 } // namespace pf

@@ -59,6 +59,23 @@ TEST(NoiseTerrain, RejectsAResolutionBelowTwo) {
     EXPECT_THROW(pf::makeNoiseTerrain(settings), std::invalid_argument);
 }
 
+TEST(NoiseTerrain, AResolutionPastTheMemoryBudgetIsRefusedBeforeAllocating) {
+    // A valid resolution (at most 8193) of 64 million samples, on a machine with 256 MiB to spare.
+    pf::NoiseTerrainSettings settings = smallNoise(0);
+    settings.resolution = 8000;
+    settings.memory = {256ull << 20};
+    EXPECT_EQ(pf::heightfieldBytes(8000), 8000ull * 8000 * 2 * sizeof(float));
+    try {
+        pf::makeNoiseTerrain(settings);
+        FAIL() << "expected the terrain to be refused";
+    } catch (const lsys::MemoryBudgetError& error) {
+        EXPECT_STREQ(error.what(),
+                     "memory budget: terrain needs 488.3 MiB, the limit is 256.0 MiB (set with --memory-budget)");
+    }
+    settings.resolution = 2000;
+    EXPECT_EQ(pf::makeNoiseTerrain(settings).heights.size(), 2000u * 2000);
+}
+
 // 3×3 samples, 2 m apart: x and z in {-2, 0, 2}.
 pf::Heightfield threeByThree() { return {3, 4.0f, {0, 1, 2, 3, 4, 5, 6, 7, 9}}; }
 

@@ -350,29 +350,33 @@ TEST_P(PlantbenchBadFlags, ExitTwoWithoutWriting) {
 
 INSTANTIATE_TEST_SUITE_P(
     Flags, PlantbenchBadFlags,
-    ::testing::Values(BadInvocation{"UnknownOption", "--counts 10 --json OUT.json --frobnicate", "frobnicate"},
-                      BadInvocation{"NoCounts", "--json OUT.json", "--counts"},
-                      BadInvocation{"EmptyCounts", "--counts '' --json OUT.json", "--counts"},
-                      BadInvocation{"ZeroCount", "--counts 10,0 --json OUT.json", "at least 1"},
-                      BadInvocation{"MalformedCounts", "--counts 10,x5 --json OUT.json", "x5"},
-                      BadInvocation{"DoubleComma", "--counts 10,,20 --csv OUT.csv", "--counts"},
-                      BadInvocation{"CountAboveFieldMaximum", "--counts 16777217 --json OUT.json", "16777216"},
-                      BadInvocation{"ZeroFrames", "--counts 10 --frames 0 --json OUT.json", "--frames"},
-                      BadInvocation{"MalformedSize", "--counts 10 --size 640by360 --json OUT.json", "--size"},
-                      BadInvocation{"UnknownCompare", "--counts 10 --compare fancy --json OUT.json", "--compare"},
-                      BadInvocation{"UnknownAntialiasing", "--counts 10 --aa smaa --json OUT.json", "--aa"},
-                      BadInvocation{"UnsupportedSamples", "--counts 10 --aa msaa --samples 3 --json OUT.json",
-                                    "--samples"},
-                      BadInvocation{"SamplesWithoutMsaa", "--counts 10 --samples 4 --json OUT.json", "--aa msaa"},
-                      BadInvocation{"MissingOutputFolder", "--counts 10 --json OUT/missing/x.json", "does not exist"},
-                      BadInvocation{"UnknownScene", "OUT/nosuch.json --counts 10", "does not exist"},
-                      BadInvocation{"ZeroPathTimes", "--counts 10 --path 0 --json OUT.json", "--path"},
-                      BadInvocation{"NegativePathTimes", "--counts 10 --path -3 --json OUT.json", "--path"},
-                      BadInvocation{"MalformedPathTimes", "--counts 10 --path 3x --csv OUT.csv", "--path"},
-                      BadInvocation{"TooManyPathTimes", "--counts 10 --path 1001 --json OUT.json", "1 to 1000"},
-                      BadInvocation{"TimeNotANumber", "--counts 10 --time nan --json OUT.json", "not a finite number"},
-                      BadInvocation{"InfiniteTime", "--counts 10 --time inf --json OUT.json", "not a finite number"},
-                      BadInvocation{"PathAndTime", "--counts 10 --path 4 --time 2 --json OUT.json", "alternatives"}),
+    ::testing::Values(
+        BadInvocation{"UnknownOption", "--counts 10 --json OUT.json --frobnicate", "frobnicate"},
+        BadInvocation{"NoCounts", "--json OUT.json", "--counts"},
+        BadInvocation{"EmptyCounts", "--counts '' --json OUT.json", "--counts"},
+        BadInvocation{"ZeroCount", "--counts 10,0 --json OUT.json", "at least 1"},
+        BadInvocation{"MalformedCounts", "--counts 10,x5 --json OUT.json", "x5"},
+        BadInvocation{"DoubleComma", "--counts 10,,20 --csv OUT.csv", "--counts"},
+        BadInvocation{"CountAboveFieldMaximum", "--counts 16777217 --json OUT.json", "16777216"},
+        BadInvocation{"ZeroFrames", "--counts 10 --frames 0 --json OUT.json", "--frames"},
+        BadInvocation{"MalformedSize", "--counts 10 --size 640by360 --json OUT.json", "--size"},
+        BadInvocation{"UnknownCompare", "--counts 10 --compare fancy --json OUT.json", "--compare"},
+        BadInvocation{"UnknownAntialiasing", "--counts 10 --aa smaa --json OUT.json", "--aa"},
+        BadInvocation{"UnsupportedSamples", "--counts 10 --aa msaa --samples 3 --json OUT.json", "--samples"},
+        BadInvocation{"SamplesWithoutMsaa", "--counts 10 --samples 4 --json OUT.json", "--aa msaa"},
+        BadInvocation{"MissingOutputFolder", "--counts 10 --json OUT/missing/x.json", "does not exist"},
+        BadInvocation{"UnknownScene", "OUT/nosuch.json --counts 10", "does not exist"},
+        BadInvocation{"ZeroPathTimes", "--counts 10 --path 0 --json OUT.json", "--path"},
+        BadInvocation{"NegativePathTimes", "--counts 10 --path -3 --json OUT.json", "--path"},
+        BadInvocation{"MalformedPathTimes", "--counts 10 --path 3x --csv OUT.csv", "--path"},
+        BadInvocation{"TooManyPathTimes", "--counts 10 --path 1001 --json OUT.json", "1 to 1000"},
+        BadInvocation{"TimeNotANumber", "--counts 10 --time nan --json OUT.json", "not a finite number"},
+        BadInvocation{"InfiniteTime", "--counts 10 --time inf --json OUT.json", "not a finite number"},
+        BadInvocation{"PathAndTime", "--counts 10 --path 4 --time 2 --json OUT.json", "alternatives"},
+        BadInvocation{"MalformedMemoryBudget", "--counts 10 --memory-budget 4Q --json OUT.json", "not a size"},
+        // Refused before the sweep: the host check is against the budget.
+        BadInvocation{"CountPastTheMemoryBudget", "--counts 1000000 --memory-budget 64M --json OUT.json",
+                      "the memory budget is 64.0 MiB"}),
     invocationName);
 
 TEST(PlantbenchCli, MalformedSceneFailsClearlyWithoutWriting) {
@@ -409,7 +413,7 @@ TEST(PlantbenchCli, HelpListsEveryOption) {
     EXPECT_EQ(r.exitCode, 0);
     for (const char* flag :
          {"--counts", "--frames", "--warmup", "--size", "--aa", "--samples", "--no-shadows", "--compare", "--naive-max",
-          "--json", "--csv", "--plot", "--seed", "--device", "--validation", "--path", "--densify"})
+          "--json", "--csv", "--plot", "--seed", "--device", "--validation", "--path", "--densify", "--memory-budget"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 

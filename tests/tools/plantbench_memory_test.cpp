@@ -47,15 +47,15 @@ TEST(PlantbenchMemory, FittingCountIsAccepted) {
     EXPECT_EQ(gpuMemoryProblem(100000, estimatedFieldBytes(100000, nullptr, 1280, 720, kMsaa4), "fake GPU",
                                {4 * kGiB, false}),
               "");
-    EXPECT_EQ(hostMemoryProblem(100000, estimatedHostBytes(100000, CountMode::NaturalDensity), 8 * kGiB), "");
+    EXPECT_EQ(hostMemoryProblem(100000, estimatedHostBytes(100000, CountMode::NaturalDensity), {8 * kGiB}), "");
 }
 
 TEST(PlantbenchMemory, CountAboveTheHeapIsRefusedNamingCountNeedAndHeap) {
     const uint64_t need = estimatedFieldBytes(kMaxPlants, nullptr, 1280, 720, kMsaa4);
     ASSERT_GT(need, 512 * kMiB);
-    expectMentions(
-        gpuMemoryProblem(kMaxPlants, need, "fake GPU", {512 * kMiB, false}),
-        {"16777216 plants", formatBytes(need), "GPU memory", "fake GPU", "holds 512.0 MiB", "measure fewer plants"});
+    expectMentions(gpuMemoryProblem(kMaxPlants, need, "fake GPU", {512 * kMiB, false}),
+                   {"16777216 plants", lsys::formatBytes(need), "GPU memory", "fake GPU", "holds 512.0 MiB",
+                    "measure fewer plants"});
 }
 
 TEST(PlantbenchMemory, HeapBudgetIsNamedAsABudget) {
@@ -63,33 +63,12 @@ TEST(PlantbenchMemory, HeapBudgetIsNamedAsABudget) {
                    {"1000 plants", "300.0 MiB", "budget of 256.0 MiB"});
 }
 
-TEST(PlantbenchMemory, CountAboveAvailableHostMemoryIsRefused) {
+TEST(PlantbenchMemory, CountAboveTheMemoryBudgetIsRefused) {
     const uint64_t need = estimatedHostBytes(kMaxPlants, CountMode::NaturalDensity);
     ASSERT_GT(need, 100 * kMiB);
-    expectMentions(hostMemoryProblem(kMaxPlants, need, 100 * kMiB),
-                   {"16777216 plants", formatBytes(need), "host memory", "only 100.0 MiB", "MemAvailable",
-                    "measure fewer plants"});
-}
-
-TEST(PlantbenchMemory, HostIsNotCheckedWhenMemAvailableIsUnknown) {
-    EXPECT_EQ(hostMemoryProblem(kMaxPlants, 1000 * kGiB, std::nullopt), "");
-}
-
-TEST(PlantbenchMemory, MemAvailableIsReadInBytes) {
-    EXPECT_EQ(memAvailableOf("MemTotal:       32768000 kB\nMemFree:         1000 kB\n"
-                             "MemAvailable:   24000000 kB\nBuffers:          100 kB\n"),
-              24000000ull * 1024);
-    EXPECT_EQ(memAvailableOf("MemTotal:       32768000 kB\nMemFree:         1000 kB\n"), std::nullopt);
-    EXPECT_EQ(memAvailableOf(""), std::nullopt);
-    const std::optional<uint64_t> here = hostMemoryAvailable();
-    ASSERT_TRUE(here.has_value()) << "this machine's /proc/meminfo has MemAvailable";
-    EXPECT_GT(*here, 0u);
-}
-
-TEST(PlantbenchMemory, BytesAreFormattedForPeople) {
-    EXPECT_EQ(formatBytes(800), "800 B");
-    EXPECT_EQ(formatBytes(12 * kMiB), "12.0 MiB");
-    EXPECT_EQ(formatBytes(3 * kGiB / 2), "1.5 GiB");
+    expectMentions(hostMemoryProblem(kMaxPlants, need, {100 * kMiB}),
+                   {"16777216 plants", lsys::formatBytes(need), "host memory", "memory budget is 100.0 MiB",
+                    "--memory-budget", "measure fewer plants"});
 }
 
 } // namespace

@@ -75,38 +75,43 @@ TEST_P(PlantfieldBadFlags, FailsClearlyWithoutWriting) {
 
 INSTANTIATE_TEST_SUITE_P(
     Flags, PlantfieldBadFlags,
-    ::testing::Values(BadInvocation{"UnknownOption", "--capture OUT --frobnicate", "frobnicate"},
-                      BadInvocation{"ZeroSize", "--capture OUT --size 0x360", "--size"},
-                      BadInvocation{"MalformedSize", "--capture OUT --size 640by360", "--size"},
-                      BadInvocation{"HugeSize", "--capture OUT --size 99999x10", "--size"},
-                      BadInvocation{"MissingOutputFolder", "--capture /nonexistent-dir/x.png", "does not exist"},
-                      BadInvocation{"UnsupportedSamples", "--capture OUT --aa msaa --samples 3", "samples"},
-                      BadInvocation{"OneSampleMsaa", "--capture OUT --aa msaa --samples 1", "samples"},
-                      BadInvocation{"UnknownAntialiasing", "--capture OUT --aa smaa", "--aa"},
-                      BadInvocation{"SamplesWithoutMsaa", "--capture OUT --samples 4", "--aa msaa"},
-                      BadInvocation{"SamplesWithFxaa", "--capture OUT --aa fxaa --samples 8", "--aa msaa"},
-                      BadInvocation{"SamplesWithNone", "--capture OUT --aa none --samples 2", "--aa msaa"},
-                      BadInvocation{"NoOutputChosen", "--size 640x360", "nothing to do"},
-                      BadInvocation{"ZeroInstances", "--capture OUT --instances 0", "--instances"},
-                      BadInvocation{"TooManyInstances", "--capture OUT --instances 16777217", "--instances"},
-                      BadInvocation{"DensifyWithoutInstances", "--capture OUT --densify",
-                                    "--densify needs --instances"},
-                      BadInvocation{"LodOutOfRange", "--capture OUT --lod 3", "--lod"},
-                      BadInvocation{"FramesWithoutOutDir", "--frames 5", "--out-dir"},
-                      BadInvocation{"MalformedWind", "--capture OUT --wind fast", "--wind"},
-                      BadInvocation{"WindTooStrong", "--capture OUT --wind 500,90", "--wind"},
-                      BadInvocation{"WindDirectionNotANumber", "--capture OUT --wind 10,east", "--wind"},
-                      BadInvocation{"JointBudgetTooLarge", "--capture OUT --joint-budget 10000001", "--joint-budget"},
-                      BadInvocation{"JointBudgetNotANumber", "--capture OUT --joint-budget many", "--joint-budget"},
-                      BadInvocation{"TimeNotANumber", "--capture OUT --time nan", "not a finite number"},
-                      BadInvocation{"InfiniteTime", "--capture OUT --time inf", "not a finite number"},
-                      BadInvocation{"TimeTooLate", "--capture OUT --time 1e9", "--time"},
-                      BadInvocation{"NegativeTime", "--capture OUT --time -1", "--time"},
-                      BadInvocation{"FpsNotANumber", "--frames 2 --out-dir OUT --fps nan", "not a finite number"},
-                      BadInvocation{"RenderScaleWithoutWindow", "--capture OUT --render-scale 0.5", "--window"},
-                      BadInvocation{"RenderScaleTooSmall", "--window --render-scale 0.1", "--render-scale"},
-                      BadInvocation{"RenderScaleNotANumber", "--window --render-scale half", "--render-scale"},
-                      BadInvocation{"UnknownScene", "/nonexistent/scene.json --capture OUT", "does not exist"}),
+    ::testing::Values(
+        BadInvocation{"UnknownOption", "--capture OUT --frobnicate", "frobnicate"},
+        BadInvocation{"ZeroSize", "--capture OUT --size 0x360", "--size"},
+        BadInvocation{"MalformedSize", "--capture OUT --size 640by360", "--size"},
+        BadInvocation{"HugeSize", "--capture OUT --size 99999x10", "--size"},
+        BadInvocation{"MissingOutputFolder", "--capture /nonexistent-dir/x.png", "does not exist"},
+        BadInvocation{"UnsupportedSamples", "--capture OUT --aa msaa --samples 3", "samples"},
+        BadInvocation{"OneSampleMsaa", "--capture OUT --aa msaa --samples 1", "samples"},
+        BadInvocation{"UnknownAntialiasing", "--capture OUT --aa smaa", "--aa"},
+        BadInvocation{"SamplesWithoutMsaa", "--capture OUT --samples 4", "--aa msaa"},
+        BadInvocation{"SamplesWithFxaa", "--capture OUT --aa fxaa --samples 8", "--aa msaa"},
+        BadInvocation{"SamplesWithNone", "--capture OUT --aa none --samples 2", "--aa msaa"},
+        BadInvocation{"NoOutputChosen", "--size 640x360", "nothing to do"},
+        BadInvocation{"ZeroInstances", "--capture OUT --instances 0", "--instances"},
+        BadInvocation{"TooManyInstances", "--capture OUT --instances 16777217", "--instances"},
+        BadInvocation{"DensifyWithoutInstances", "--capture OUT --densify", "--densify needs --instances"},
+        BadInvocation{"LodOutOfRange", "--capture OUT --lod 3", "--lod"},
+        BadInvocation{"FramesWithoutOutDir", "--frames 5", "--out-dir"},
+        BadInvocation{"MalformedWind", "--capture OUT --wind fast", "--wind"},
+        BadInvocation{"WindTooStrong", "--capture OUT --wind 500,90", "--wind"},
+        BadInvocation{"WindDirectionNotANumber", "--capture OUT --wind 10,east", "--wind"},
+        BadInvocation{"JointBudgetTooLarge", "--capture OUT --joint-budget 10000001", "--joint-budget"},
+        BadInvocation{"JointBudgetNotANumber", "--capture OUT --joint-budget many", "--joint-budget"},
+        BadInvocation{"TimeNotANumber", "--capture OUT --time nan", "not a finite number"},
+        BadInvocation{"InfiniteTime", "--capture OUT --time inf", "not a finite number"},
+        BadInvocation{"TimeTooLate", "--capture OUT --time 1e9", "--time"},
+        BadInvocation{"NegativeTime", "--capture OUT --time -1", "--time"},
+        BadInvocation{"FpsNotANumber", "--frames 2 --out-dir OUT --fps nan", "not a finite number"},
+        BadInvocation{"RenderScaleWithoutWindow", "--capture OUT --render-scale 0.5", "--window"},
+        BadInvocation{"RenderScaleTooSmall", "--window --render-scale 0.1", "--render-scale"},
+        BadInvocation{"RenderScaleNotANumber", "--window --render-scale half", "--render-scale"},
+        BadInvocation{"UnknownScene", "/nonexistent/scene.json --capture OUT", "does not exist"},
+        BadInvocation{"MalformedMemoryBudget", "--capture OUT --memory-budget lots", "not a size"},
+        BadInvocation{"ZeroMemoryBudget", "--capture OUT --memory-budget 0", "--memory-budget"},
+        // A million plants need about 122 MiB to place: refused before placing.
+        BadInvocation{"InstancesPastTheMemoryBudget", "--capture OUT --instances 1000000 --memory-budget 64M",
+                      "memory budget: placement needs 122.1 MiB, the limit is 64.0 MiB"}),
     invocationName);
 
 TEST(PlantfieldCli, MalformedSceneNamesFileLineAndColumn) {
@@ -184,9 +189,10 @@ TEST(PlantfieldCli, SpeciesThatDrawNothingRenderTheTerrain) {
 TEST(PlantfieldCli, HelpListsEveryOption) {
     const CommandResult r = runCommand(kPlantfield + " --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* flag : {"--capture", "--size", "--window", "--frames", "--time", "--device", "--validation",
-                             "--wind", "--joint-budget", "--physics-check", "--instances", "--densify", "--aa",
-                             "--samples", "--no-shadow-cache", "--no-clusters", "--occlusion", "--render-scale"})
+    for (const char* flag :
+         {"--capture", "--size", "--window", "--frames", "--time", "--device", "--validation", "--wind",
+          "--joint-budget", "--physics-check", "--instances", "--densify", "--aa", "--samples", "--no-shadow-cache",
+          "--no-clusters", "--occlusion", "--render-scale", "--memory-budget"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 

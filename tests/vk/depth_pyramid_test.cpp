@@ -3,13 +3,13 @@
 // sizes: every level equal, and each texel the farthest depth of the pixels
 // it covers.
 #include "gpu_test.h"
+#include "image_upload.h"
 
 #include "engine/vk/depth_pyramid.h"
 #include "engine/vk/resources.h"
 
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <random>
 
 namespace pf::test {
@@ -26,25 +26,16 @@ protected:
                                              VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                     .aspect = VK_IMAGE_ASPECT_DEPTH_BIT});
         const DepthPyramid pyramid = createDepthPyramid(resources, image);
-        const Buffer upload = createHostBuffer(resources, depth.size() * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-        std::memcpy(upload.mapped, depth.data(), depth.size() * 4);
+        const Buffer upload = createUploadBuffer(resources, depth.data(), depth.size() * 4);
         VkDeviceSize texels = 0;
         for (const VkExtent2D& e : pyramid.extents) texels += VkDeviceSize(e.width) * e.height;
         const Buffer download = createHostBuffer(resources, texels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-            imageBarrier(cmd, image.image, VK_IMAGE_ASPECT_DEPTH_BIT,
-                         {VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                          VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL});
-            VkBufferImageCopy region{};
-            region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-            region.imageExtent = {extent.width, extent.height, 1};
-            vkCmdCopyBufferToImage(cmd, upload.buffer, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
             // As a rendering that stored it leaves it.
-            imageBarrier(cmd, image.image, VK_IMAGE_ASPECT_DEPTH_BIT,
-                         {VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                          VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
+            recordImageUpload(cmd, upload, image, VK_IMAGE_ASPECT_DEPTH_BIT,
+                              VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
             recordDepthPyramid(cmd, pyramid);
             memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                           VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);

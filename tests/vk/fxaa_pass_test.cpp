@@ -2,6 +2,7 @@
 // and nowhere else, flat areas and smooth gradients pass unchanged, dark
 // edges are found by their perceptual contrast, and two runs agree.
 #include "gpu_test.h"
+#include "image_upload.h"
 
 #include "engine/vk/capture.h"
 #include "engine/vk/fxaa_pass.h"
@@ -10,7 +11,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <functional>
 
 namespace pf::test {
@@ -71,24 +71,13 @@ protected:
                                     .format = kColorFormat,
                                     .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                     .flags = VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT});
-        const Buffer upload = createHostBuffer(resources, input.pixels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-        std::memcpy(upload.mapped, input.pixels.data(), input.pixels.size());
+        const Buffer upload = createUploadBuffer(resources, input.pixels.data(), input.pixels.size());
         RenderTarget target = createRenderTarget(ctx, extent, {.method = AntialiasMethod::fxaa});
         const FxaaPass pass = createFxaaPass(resources, source, target.color);
 
         const RgbaImage output = captureFrame(ctx, target, [&](VkCommandBuffer cmd, const RenderTarget& t) {
-            imageBarrier(cmd, source.image, VK_IMAGE_ASPECT_COLOR_BIT,
-                         {VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                          VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL});
-            VkBufferImageCopy region{};
-            region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-            region.imageExtent = {extent.width, extent.height, 1};
-            vkCmdCopyBufferToImage(cmd, upload.buffer, source.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-            imageBarrier(cmd, source.image, VK_IMAGE_ASPECT_COLOR_BIT,
-                         {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                          VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
-                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+            recordImageUpload(cmd, upload, source, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                              VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
             imageBarrier(cmd, t.color.image, VK_IMAGE_ASPECT_COLOR_BIT,
                          {VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,

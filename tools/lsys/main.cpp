@@ -5,12 +5,14 @@
 //   lsys export FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] -o OUT.gltf|.glb|.obj [--flat|--instanced]
 //               [--randomness K] [--granularity G] [--max-gltf-nodes N] [--generalized-cylinders]
 //   lsys --help-turtle
-// Exit codes: 0 success, 2 bad input (parse errors, budget exceeded), 1 usage errors.
+// derive, instance and export take --memory-budget SIZE (tools/memory_budget_option.h).
+// Exit codes: 0 success, 2 bad input (parse errors, budget exceeded, out of memory), 1 usage errors.
 
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,7 @@
 #include "lsystem/rewriter.h"
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"
+#include "tools/memory_budget_option.h"
 
 namespace {
 
@@ -41,6 +44,7 @@ struct Arguments {
     bool print = false;
     bool json = false;
     size_t maxModules = 50'000'000;
+    lsys::MemoryBudget memory; // --memory-budget
     int threads = 2;
     int randomness = 0;
     lsys::BGrammarLimits limits;
@@ -100,6 +104,7 @@ lsys::DeriveOptions deriveOptions(const Arguments& arguments) {
     options.steps = arguments.steps;
     options.seed = arguments.seed;
     options.maxModules = arguments.maxModules;
+    options.memory = arguments.memory;
     options.threads = arguments.threads;
     return options;
 }
@@ -155,6 +160,13 @@ lsys::BGrammarOptions bgrammarOptions(const Arguments& arguments) {
     options.randomness = arguments.randomness;
     options.limits = arguments.limits;
     options.maxModules = arguments.maxModules;
+    options.memory = arguments.memory;
+    return options;
+}
+
+lsys::InstanceGraphOptions graphOptions(const Arguments& arguments) {
+    lsys::InstanceGraphOptions options = arguments.graphOptions;
+    options.memory = arguments.memory;
     return options;
 }
 
@@ -169,7 +181,7 @@ int instance(const Arguments& arguments) {
         const lsys::BGrammar bgrammar = lsys::buildBGrammar(*grammar, options);
         method = bgrammar.method;
         stats = lsys::instanceGraphStats(
-            lsys::buildInstanceGraph(bgrammar, *grammar, arguments.graphOptions,
+            lsys::buildInstanceGraph(bgrammar, *grammar, graphOptions(arguments),
                                      lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file))));
     } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
         return failed(arguments, error);
@@ -203,13 +215,15 @@ int exportGraph(const Arguments& arguments, const lsys::Grammar& grammar) {
     lsys::InstanceGraph graph;
     try {
         graph = lsys::buildInstanceGraph(lsys::buildBGrammar(grammar, bgrammarOptions(arguments)), grammar,
-                                         arguments.graphOptions, surfaces);
+                                         graphOptions(arguments), surfaces);
     } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
         return failed(arguments, error);
     }
     lsys::GraphExportSummary summary;
     try {
-        summary = lsys::exportInstanceGraph(graph, surfaces, arguments.output, arguments.graphExportOptions);
+        lsys::GraphExportOptions options = arguments.graphExportOptions;
+        options.memory = arguments.memory;
+        summary = lsys::exportInstanceGraph(graph, surfaces, arguments.output, options);
     } catch (const std::runtime_error& error) {
         std::cerr << "lsys: error: " << error.what() << '\n';
         return kBadInput;
@@ -230,13 +244,15 @@ int exportCommand(const Arguments& arguments) {
     lsys::PlantAsset plant;
     try {
         const lsys::ModuleString string = lsys::derive(*grammar, deriveOptions(arguments));
-        plant =
-            lsys::plantFromGrammar(*grammar, string, lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file)));
+        plant = lsys::plantFromGrammar(*grammar, string, lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file)),
+                                       arguments.memory);
     } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
         return failed(arguments, error);
     }
     try {
-        lsys::exportPlant(plant, arguments.output, arguments.exportOptions);
+        lsys::ExportOptions options = arguments.exportOptions;
+        options.memory = arguments.memory;
+        lsys::exportPlant(plant, arguments.output, options);
     } catch (const std::runtime_error& error) {
         std::cerr << "lsys: error: " << error.what() << '\n';
         return kBadInput;
@@ -268,6 +284,7 @@ void addDerivationOptions(CLI::App& command, Arguments& arguments) {
     command.add_option("--seed", arguments.seed, "Random seed (default: the file's 'seed:')");
     command.add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
     addDialectOption(command, arguments);
+    tools::addMemoryBudgetOption(command, arguments.memory);
 }
 
 // --randomness and --granularity: how the InstanceGraph is built.
@@ -380,8 +397,13 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& error) {
         return app.exit(error) == 0 ? 0 : kBadInput;
     }
-    if (deriveCommand->parsed()) return derive(arguments);
-    if (instanceCommand->parsed()) return instance(arguments);
-    if (exportSubcommand->parsed()) return exportCommand(arguments);
-    return check(arguments);
+    try {
+        if (deriveCommand->parsed()) return derive(arguments);
+        if (instanceCommand->parsed()) return instance(arguments);
+        if (exportSubcommand->parsed()) return exportCommand(arguments);
+        return check(arguments);
+    } catch (const std::bad_alloc&) { // a stage the memory budget does not count
+        std::cerr << "lsys: error: out of memory (--memory-budget, -n fewer steps or a smaller plant)\n";
+        return kBadInput;
+    }
 }

@@ -9,6 +9,7 @@
 
 #include <exception>
 #include <iostream>
+#include <new>
 
 namespace pf {
 namespace {
@@ -36,6 +37,12 @@ int run(const PlantbenchOptions& o) {
     } catch (const SceneError& e) { // bad input, like a bad flag
         std::cerr << "plantbench: error: " << e.what() << "\n";
         exitCode = 2;
+    } catch (const lsys::MemoryBudgetError& e) { // too large for the budget, like a scene too large
+        std::cerr << "\nplantbench: error: " << e.what() << "\n";
+        exitCode = 2;
+    } catch (const std::bad_alloc&) { // a stage the memory budget does not count
+        std::cerr << "\nplantbench: error: out of memory (measure fewer plants or set a lower --memory-budget)\n";
+        exitCode = 2;
     } catch (const std::exception& e) {
         std::cerr << "\nplantbench: error: " << e.what() << "\n";
         exitCode = 1;
@@ -57,11 +64,14 @@ int run(const PlantbenchOptions& o) {
 } // namespace pf
 
 int main(int argc, char** argv) {
-    int exitCode = 0;
-    const std::optional<pf::PlantbenchOptions> options = pf::parsePlantbenchOptions(argc, argv, &exitCode);
-    if (!options) return exitCode;
     try {
+        int exitCode = 0;
+        const std::optional<pf::PlantbenchOptions> options = pf::parsePlantbenchOptions(argc, argv, &exitCode);
+        if (!options) return exitCode;
         return pf::run(*options);
+    } catch (const std::bad_alloc&) { // writing the outputs
+        std::cerr << "plantbench: error: out of memory\n";
+        return 2;
     } catch (const std::exception& e) {
         std::cerr << "plantbench: error: " << e.what() << "\n";
         return 1;

@@ -2,10 +2,6 @@
 
 #include "shaders/field_layouts.h"
 
-#include <cstdio>
-#include <fstream>
-#include <sstream>
-
 namespace pf {
 
 uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_t width, uint32_t height,
@@ -33,48 +29,19 @@ uint64_t estimatedHostBytes(uint64_t count, CountMode mode) {
     return count * (kHostBytesPerPlant + (mode == CountMode::NaturalDensity ? kGrownTerrainBytesPerPlant : 0));
 }
 
-std::optional<uint64_t> memAvailableOf(const std::string& meminfo) {
-    std::istringstream lines(meminfo);
-    for (std::string line; std::getline(lines, line);) {
-        std::istringstream fields(line);
-        std::string key, unit;
-        uint64_t value = 0;
-        if (!(fields >> key >> value) || key != "MemAvailable:") continue;
-        fields >> unit;
-        return unit == "kB" ? value * 1024 : value;
-    }
-    return std::nullopt;
-}
-
-std::optional<uint64_t> hostMemoryAvailable() {
-    std::ifstream in("/proc/meminfo");
-    if (!in) return std::nullopt;
-    return memAvailableOf(std::string(std::istreambuf_iterator<char>(in), {}));
-}
-
 std::string gpuMemoryProblem(uint64_t count, uint64_t bytes, const std::string& device, const HeapCapacity& heap) {
     if (bytes <= heap.bytes) return {};
-    return std::to_string(count) + " plants need about " + formatBytes(bytes) +
+    return std::to_string(count) + " plants need about " + lsys::formatBytes(bytes) +
            " of GPU memory, but the largest device-local heap of " + device +
-           (heap.fromBudget ? " has a budget of " : " holds ") + formatBytes(heap.bytes) + ": measure fewer plants";
+           (heap.fromBudget ? " has a budget of " : " holds ") + lsys::formatBytes(heap.bytes) +
+           ": measure fewer plants";
 }
 
-std::string hostMemoryProblem(uint64_t count, uint64_t bytes, std::optional<uint64_t> available) {
-    if (!available || bytes <= *available) return {};
-    return std::to_string(count) + " plants need about " + formatBytes(bytes) +
-           " of host memory to build the field, but only " + formatBytes(*available) +
-           " is available (MemAvailable in /proc/meminfo): measure fewer plants";
-}
-
-std::string formatBytes(uint64_t bytes) {
-    char text[32];
-    if (bytes >= (1ull << 30))
-        std::snprintf(text, sizeof(text), "%.1f GiB", double(bytes) / double(1ull << 30));
-    else if (bytes >= (1ull << 20))
-        std::snprintf(text, sizeof(text), "%.1f MiB", double(bytes) / double(1ull << 20));
-    else
-        std::snprintf(text, sizeof(text), "%llu B", static_cast<unsigned long long>(bytes));
-    return text;
+std::string hostMemoryProblem(uint64_t count, uint64_t bytes, const lsys::MemoryBudget& budget) {
+    if (bytes <= budget.limitBytes) return {};
+    return std::to_string(count) + " plants need about " + lsys::formatBytes(bytes) +
+           " of host memory to build the field, but the memory budget is " + lsys::formatBytes(budget.limitBytes) +
+           " (--memory-budget; by default 3/4 of MemAvailable): measure fewer plants";
 }
 
 } // namespace pf

@@ -7,6 +7,7 @@
 #include "engine/scene/natural_density.h"
 #include "engine/scene/plant_models.h"
 #include "engine/vk/antialiasing.h"
+#include "lsystem/memory_budget.h"
 
 #include <cstdint>
 #include <optional>
@@ -38,21 +39,13 @@ inline constexpr uint64_t kHostBytesPerPlant = 160;
 inline constexpr uint64_t kGrownTerrainBytesPerPlant = kGrownSamplesPerPlant * sizeof(float);
 uint64_t estimatedHostBytes(uint64_t count, CountMode mode);
 
-// MemAvailable of a /proc/meminfo text in bytes; nullopt when absent.
-std::optional<uint64_t> memAvailableOf(const std::string& meminfo);
-// MemAvailable of this machine's /proc/meminfo; nullopt when unreadable.
-std::optional<uint64_t> hostMemoryAvailable();
-
 // Empty when `count` plants needing `bytes` of GPU memory fit `heap`, the
 // largest heap of `device`; otherwise a message naming the count, the
 // estimated need and the heap.
 std::string gpuMemoryProblem(uint64_t count, uint64_t bytes, const std::string& device, const HeapCapacity& heap);
-// Empty when `bytes` of host memory fit `available` (MemAvailable; nullopt:
-// unknown, not checked); otherwise a message naming the count, the
-// estimated need and what is available.
-std::string hostMemoryProblem(uint64_t count, uint64_t bytes, std::optional<uint64_t> available);
-
-// "1.5 GiB", "12.0 MiB", "800 B".
-std::string formatBytes(uint64_t bytes);
+// Empty when `bytes` of host memory fit the memory budget (--memory-budget,
+// lsystem/memory_budget.h); otherwise a message naming the count, the
+// estimated need and the budget.
+std::string hostMemoryProblem(uint64_t count, uint64_t bytes, const lsys::MemoryBudget& budget);
 
 } // namespace pf

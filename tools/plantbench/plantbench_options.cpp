@@ -5,6 +5,7 @@
 #include "engine/vk/device.h"
 #include "lsystem/output_file.h"
 #include "shaders/field_layouts.h"
+#include "tools/memory_budget_option.h"
 
 #include <CLI/CLI.hpp>
 
@@ -144,6 +145,7 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     app.add_option("--device", o.deviceName, "Use the Vulkan device whose name contains this text");
     app.add_flag("--validation,!--no-validation", o.validation,
                  "Enable the Khronos validation layer (default: on in debug builds)");
+    tools::addMemoryBudgetOption(app, o.memory);
 
     try {
         app.parse(argc, argv);

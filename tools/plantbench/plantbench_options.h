@@ -2,6 +2,7 @@
 #pragma once
 
 #include "engine/vk/antialiasing.h"
+#include "lsystem/memory_budget.h"
 
 #include <cstdint>
 #include <optional>
@@ -44,6 +45,7 @@ struct PlantbenchOptions {
     std::optional<uint32_t> seed;
     std::string deviceName;
     bool validation = false;
+    lsys::MemoryBudget memory; // --memory-budget: every count's host memory, and each stage building it
 };
 
 // Parses argv. On --help prints usage and sets *exitCode to 0; on a bad flag

@@ -1,5 +1,6 @@
 #include "report.h"
 
+#include "lsystem/memory_budget.h"
 #include "lsystem/output_file.h"
 
 #include "gpu_memory.h"
@@ -160,7 +161,7 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
         row.push_back(std::to_string(r.stats.occluded));
         row.push_back(std::to_string(r.stats.triangles));
         row.push_back(std::to_string(r.jointsSimulated));
-        row.push_back(formatBytes(r.gpuMemoryBytes));
+        row.push_back(lsys::formatBytes(r.gpuMemoryBytes));
         row.push_back(fixed(r.terrainSize, 0));
         row.push_back(r.naive ? fixed(r.naive->frameMs.median, 2) : "-");
         row.push_back(cell(naiveRatio(r), 1));

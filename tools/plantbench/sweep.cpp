@@ -183,10 +183,14 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
     const Clock::time_point buildStart = Clock::now();
     const PlantCount plants{size_t(count), countMode(o)};
     showProgress(progress, 0.0, "placing plants"); // buildFieldContent reports only the models after
-    FieldContent content = buildFieldContent(scene, plants, [&](size_t done, size_t all, const std::string& name) {
-        showProgress(progress, 0.0,
-                     "building plant models " + std::to_string(done) + "/" + std::to_string(all) + " (" + name + ")");
-    });
+    FieldContent content = buildFieldContent(
+        scene, plants,
+        [&](size_t done, size_t all, const std::string& name) {
+            showProgress(progress, 0.0,
+                         "building plant models " + std::to_string(done) + "/" + std::to_string(all) + " (" + name +
+                             ")");
+        },
+        o.memory);
     r.buildSeconds = std::chrono::duration<double>(Clock::now() - buildStart).count();
     r.terrainSize = content.scene.terrain.size;
     r.placementNote = content.note;
@@ -199,6 +203,7 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
     settings.shadows = o.shadows;
     settings.occlusionCulling = o.occlusionCulling;
     settings.clusters.enabled = o.clusters;
+    settings.memory = o.memory;
     showProgress(progress, 0.0, "uploading the field and baking impostors");
     FieldRenderer renderer(ctx, std::move(content), settings);
     FrameResources frame(ctx, {o.width, o.height}, renderer.antialiasing());
@@ -238,15 +243,15 @@ void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, S
     result.device = ctx.properties.deviceName;
     result.memorySource = budget ? "VK_EXT_memory_budget" : "renderer accounting";
     const HeapCapacity heap = largestDeviceLocalHeap(ctx, budget);
-    const std::optional<uint64_t> hostAvailable = hostMemoryAvailable();
     // A CPU device (lavapipe) takes its "GPU" memory from the host too.
     const bool hostHoldsGpu = ctx.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     // Refuse the whole sweep up front rather than after hours of smaller counts.
     for (uint64_t count : o.counts) {
         const uint64_t gpuBytes = estimatedFieldBytes(count, nullptr, o.width, o.height, o.antialiasing);
         refuseIf(gpuMemoryProblem(count, gpuBytes, ctx.properties.deviceName, heap));
-        refuseIf(hostMemoryProblem(count, estimatedHostBytes(count, countMode(o)) + (hostHoldsGpu ? gpuBytes : 0),
-                                   hostAvailable));
+        const std::string host =
+            hostMemoryProblem(count, estimatedHostBytes(count, countMode(o)) + (hostHoldsGpu ? gpuBytes : 0), o.memory);
+        if (!host.empty()) throw lsys::MemoryBudgetError(host);
     }
 
     SweepProgress progress = startProgress(o.counts.size());
@@ -257,9 +262,12 @@ void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, S
             result.counts.push_back(measureCount(o, ctx, scene, o.counts[i], budget, heap, progress));
         } catch (const SceneError&) {
             throw;
-        } catch (const std::bad_alloc&) {
-            throw std::runtime_error("at " + std::to_string(o.counts[i]) +
-                                     " plants the host ran out of memory: measure fewer plants");
+        } catch (const lsys::MemoryBudgetError& e) {
+            throw lsys::MemoryBudgetError("at " + std::to_string(o.counts[i]) + " plants " + e.what());
+        } catch (const std::bad_alloc&) { // below the budget: a stage it does not count
+            throw lsys::MemoryBudgetError("at " + std::to_string(o.counts[i]) +
+                                          " plants the host ran out of memory: measure fewer plants or lower "
+                                          "--memory-budget");
         } catch (const std::runtime_error& e) {
             const bool outOfGpuMemory = std::strstr(e.what(), "VK_ERROR_OUT_OF_DEVICE_MEMORY") != nullptr;
             throw std::runtime_error(

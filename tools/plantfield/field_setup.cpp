@@ -33,11 +33,14 @@ FieldContent loadFieldContent(const PlantfieldOptions& o) {
     const bool terminal = isatty(fileno(stderr));
     // buildFieldContent places the plants before it reports the models.
     if (terminal) std::fprintf(stderr, "\rplantfield: placing plants\x1b[K");
-    FieldContent content = buildFieldContent(scene, count, [&](size_t done, size_t all, const std::string& name) {
-        if (!terminal) return;
-        std::fprintf(stderr, "\rplantfield: plant models %zu/%zu (%s)\x1b[K", done, all, name.c_str());
-        if (done == all) std::fprintf(stderr, "\r\x1b[K");
-    });
+    FieldContent content = buildFieldContent(
+        scene, count,
+        [&](size_t done, size_t all, const std::string& name) {
+            if (!terminal) return;
+            std::fprintf(stderr, "\rplantfield: plant models %zu/%zu (%s)\x1b[K", done, all, name.c_str());
+            if (done == all) std::fprintf(stderr, "\r\x1b[K");
+        },
+        o.memory);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "plantfield: %s: %zu plants of %zu species on %.0f m x %.0f m, %zu models, built in %.1f s\n",
                  o.scenePath.c_str(), content.plants.size(), content.scene.species.size(), content.scene.terrain.size,
@@ -53,6 +56,7 @@ FieldRenderSettings renderSettings(const PlantfieldOptions& o) {
     s.occlusionCulling = o.occlusionCulling;
     s.shadowCache.reuse = o.shadowCache;
     s.clusters.enabled = o.clusters;
+    s.memory = o.memory;
     return s;
 }
 

@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <new>
+
+#include "lsystem/memory_budget.h"
 
 namespace pf {
 namespace {
@@ -23,15 +26,21 @@ int listDevices(const PlantfieldOptions& o) {
 } // namespace pf
 
 int main(int argc, char** argv) {
-    int exitCode = 0;
-    const std::optional<pf::PlantfieldOptions> options = pf::parsePlantfieldOptions(argc, argv, &exitCode);
-    if (!options) return exitCode;
     try {
+        int exitCode = 0;
+        const std::optional<pf::PlantfieldOptions> options = pf::parsePlantfieldOptions(argc, argv, &exitCode);
+        if (!options) return exitCode;
         if (options->listDevices) return pf::listDevices(*options);
         if (options->physicsCheck) return pf::runPhysicsCheck(*options);
         return options->window ? pf::runWindow(*options) : pf::runHeadless(*options);
     } catch (const pf::SceneError& e) { // bad input, like a bad flag
         std::cerr << "plantfield: error: " << e.what() << "\n";
+        return 2;
+    } catch (const lsys::MemoryBudgetError& e) { // too large for the budget, like a scene too large
+        std::cerr << "plantfield: error: " << e.what() << "\n";
+        return 2;
+    } catch (const std::bad_alloc&) { // a stage the memory budget does not count
+        std::cerr << "plantfield: error: out of memory (a smaller scene, fewer --instances or a --memory-budget)\n";
         return 2;
     } catch (const std::exception& e) {
         std::cerr << "plantfield: error: " << e.what() << "\n";

@@ -3,6 +3,7 @@
 #include "engine/vk/device.h"
 #include "lsystem/output_file.h"
 #include "shaders/field_layouts.h"
+#include "tools/memory_budget_option.h"
 
 #include <CLI/CLI.hpp>
 
@@ -177,6 +178,7 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                  "Enable the Khronos validation layer (default: on in debug builds)");
     AntialiasFlags antialias;
     addAntialiasOptions(app, antialias);
+    tools::addMemoryBudgetOption(app, o.memory);
 
     try {
         app.parse(argc, argv);

@@ -3,6 +3,7 @@
 
 #include "engine/scene/scene.h"
 #include "engine/vk/antialiasing.h"
+#include "lsystem/memory_budget.h"
 
 #include <cstdint>
 #include <optional>
@@ -80,6 +81,7 @@ struct PlantfieldOptions {
     // --render-scale: the window renders at this share of its size; nullopt
     // (auto) lets engine/window/render_scale.h choose it from frame times.
     std::optional<float> renderScale;
+    lsys::MemoryBudget memory; // --memory-budget: terrain, placement, uploads
 };
 
 // Parses argv. On --help prints usage and returns exit code 0 through
