@@ -137,7 +137,7 @@ FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> cou
     content.plants = std::move(field.plants);
     sortPlantsByCluster(content.plants, clusterRoot(content.terrain));
     content.note = std::move(field.note);
-    content.models = buildPlantModels(scene, progress);
+    content.models = buildPlantModels(scene, progress, memory);
     return content;
 }
 

@@ -328,31 +328,34 @@ lsys::Grammar parseSpecies(const Species& species) {
     const std::string path = species.lsystem.string();
     std::string problem;
     const std::string source = lsys::readTextFile(path, problem);
-    if (!problem.empty()) throw std::runtime_error("species '" + species.name + "': " + path + " " + problem);
+    if (!problem.empty()) throw SceneError("species '" + species.name + "': " + path + " " + problem);
     lsys::ParseOptions options;
     options.file = path;
     options.defines.insert(species.defines.begin(), species.defines.end());
     lsys::ParseResult result = lsys::parseDialect(std::nullopt, source, options);
     if (!result.ok())
-        throw std::runtime_error("species '" + species.name +
-                                 "': " + lsys::formatDiagnostics(result.diagnostics, source));
+        throw SceneError("species '" + species.name + "': " + lsys::formatDiagnostics(result.diagnostics, source));
     return std::move(result.grammar);
 }
 
 lsys::PlantAsset derivePlant(const Species& species, const lsys::Grammar& grammar, const lsys::SurfaceLibrary& surfaces,
-                             uint64_t seed) {
+                             uint64_t seed, const lsys::MemoryBudget& memory) {
     lsys::DeriveOptions options;
     if (species.steps) options.steps = int(*species.steps);
     options.seed = seed;
     options.maxModules = kModuleBudget;
+    options.memory = memory;
+    const std::string which =
+        "species '" + species.name + "' (" + species.lsystem.string() + ", seed " + std::to_string(seed) + "): ";
     try {
         const lsys::ModuleString derived = lsys::derive(grammar, options);
-        return lsys::plantFromGrammar(grammar, derived, surfaces);
-    } catch (const std::runtime_error& error) { // DerivationError (budget), SurfaceError
-        const bool budget = dynamic_cast<const lsys::ModuleBudgetError*>(&error) != nullptr;
-        throw std::runtime_error("species '" + species.name + "' (" + species.lsystem.string() + ", seed " +
-                                 std::to_string(seed) + "): " + error.what() +
-                                 (budget ? "; give the species fewer \"steps\"" : ""));
+        return lsys::plantFromGrammar(grammar, derived, surfaces, memory);
+    } catch (const lsys::MemoryBudgetError& error) { // the species too large for the budget: its type kept
+        throw lsys::MemoryBudgetError(which + error.what());
+    } catch (const lsys::ModuleBudgetError& error) {
+        throw lsys::ModuleBudgetError(which + error.what() + "; give the species fewer \"steps\"");
+    } catch (const std::runtime_error& error) { // DerivationError, SurfaceError: the species' own fault
+        throw SceneError(which + error.what());
     }
 }
 
@@ -395,10 +398,11 @@ void fillBounds(gpu::PlantModel& model, const std::array<ClassMeshes, kMeshLodCo
 }
 
 PlantModelInfo buildModel(PlantModelPool& pool, const Scene& scene, uint32_t speciesIndex, uint32_t variant,
-                          const lsys::Grammar& grammar, const lsys::SurfaceLibrary& surfaces) {
+                          const lsys::Grammar& grammar, const lsys::SurfaceLibrary& surfaces,
+                          const lsys::MemoryBudget& memory) {
     const Species& species = scene.species[speciesIndex];
     const uint64_t seed = uint64_t(speciesSeed(scene, speciesIndex)) + variant;
-    lsys::PlantAsset asset = derivePlant(species, grammar, surfaces, seed);
+    lsys::PlantAsset asset = derivePlant(species, grammar, surfaces, seed, memory);
     applyMaterialOverrides(asset, species.materials);
     std::array<ClassMeshes, kMeshLodCount> lods = bakeLods(asset);
     const float scale = species.height ? scaleToHeight(lods, *species.height) : 1.0f;
@@ -424,7 +428,7 @@ PlantModelInfo buildModel(PlantModelPool& pool, const Scene& scene, uint32_t spe
 
 } // namespace
 
-PlantModelPool buildPlantModels(const Scene& scene, const ModelProgress& progress) {
+PlantModelPool buildPlantModels(const Scene& scene, const ModelProgress& progress, const lsys::MemoryBudget& memory) {
     size_t total = 0;
     for (const Species& species : scene.species) total += species.variants;
     PlantModelPool pool;
@@ -433,7 +437,7 @@ PlantModelPool buildPlantModels(const Scene& scene, const ModelProgress& progres
         const lsys::SurfaceLibrary surfaces(lsys::meshDirectoriesFor(scene.species[s].lsystem));
         pool.firstModel.push_back(uint32_t(pool.models.size()));
         for (uint32_t variant = 0; variant < scene.species[s].variants; ++variant) {
-            pool.models.push_back(buildModel(pool, scene, s, variant, grammar, surfaces));
+            pool.models.push_back(buildModel(pool, scene, s, variant, grammar, surfaces, memory));
             if (progress) progress(pool.models.size(), total, pool.models.back().name);
         }
     }

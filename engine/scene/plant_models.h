@@ -5,6 +5,7 @@
 #pragma once
 
 #include "engine/scene/scene.h"
+#include "lsystem/memory_budget.h"
 #include "shaders/field_layouts.h"
 #include "shaders/physics_layouts.h"
 
@@ -58,9 +59,13 @@ struct PlantModelPool {
 // Called after each model with (models done, models in all, model name).
 using ModelProgress = std::function<void(size_t, size_t, const std::string&)>;
 
-// Derives and bakes every variant of every species. Same scene ⇒ same pool,
-// bit for bit. Throws SceneError-like runtime errors naming the species and
-// its L-system file (with line and column) when a file does not derive.
-PlantModelPool buildPlantModels(const Scene& scene, const ModelProgress& progress = {});
+// Derives and bakes every variant of every species, each derivation and
+// turtle within `memory`. Same scene ⇒ same pool, bit for bit. Throws
+// SceneError naming the species and its L-system file (with line and
+// column) when a file does not parse or derive, and
+// lsys::MemoryBudgetError / lsys::ModuleBudgetError naming the species when
+// it grows past a budget.
+PlantModelPool buildPlantModels(const Scene& scene, const ModelProgress& progress = {},
+                                const lsys::MemoryBudget& memory = lsys::machineMemoryBudget());
 
 } // namespace pf

@@ -37,7 +37,7 @@ int run(const PlantbenchOptions& o) {
     } catch (const SceneError& e) { // bad input, like a bad flag
         std::cerr << "plantbench: error: " << e.what() << "\n";
         exitCode = 2;
-    } catch (const lsys::MemoryBudgetError& e) { // too large for the budget, like a scene too large
+    } catch (const lsys::DerivationError& e) { // past a budget (memory, modules), like a scene too large
         std::cerr << "\nplantbench: error: " << e.what() << "\n";
         exitCode = 2;
     } catch (const std::bad_alloc&) { // a stage the memory budget does not count

@@ -264,6 +264,8 @@ void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, S
             throw;
         } catch (const lsys::MemoryBudgetError& e) {
             throw lsys::MemoryBudgetError("at " + std::to_string(o.counts[i]) + " plants " + e.what());
+        } catch (const lsys::DerivationError&) { // a species past the module budget
+            throw;
         } catch (const std::bad_alloc&) { // below the budget: a stage it does not count
             throw lsys::MemoryBudgetError("at " + std::to_string(o.counts[i]) +
                                           " plants the host ran out of memory: measure fewer plants or lower "

@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
     } catch (const pf::SceneError& e) { // bad input, like a bad flag
         std::cerr << "plantfield: error: " << e.what() << "\n";
         return 2;
-    } catch (const lsys::MemoryBudgetError& e) { // too large for the budget, like a scene too large
+    } catch (const lsys::DerivationError& e) { // past a budget (memory, modules), like a scene too large
         std::cerr << "plantfield: error: " << e.what() << "\n";
         return 2;
     } catch (const std::bad_alloc&) { // a stage the memory budget does not count
