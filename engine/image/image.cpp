@@ -21,8 +21,12 @@ void writePng(const std::string& path, const RgbaImage& image) {
     file.commit();
 }
 
-RgbaImage readPng(const std::string& path) {
+RgbaImage readPng(const std::string& path, const lsys::MemoryBudget& memory) {
     int w = 0, h = 0, channels = 0;
+    if (!stbi_info(path.c_str(), &w, &h, &channels))
+        throw std::runtime_error("cannot read image '" + path + "': " + stbi_failure_reason());
+    // stb's decoded copy and ours, 4 bytes a pixel each.
+    lsys::need(memory, "image", lsys::bytesTimes(uint64_t(w) * uint64_t(h), 8));
     stbi_uc* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
     if (!data) throw std::runtime_error("cannot read image '" + path + "': " + stbi_failure_reason());
     RgbaImage image{uint32_t(w), uint32_t(h), std::vector<uint8_t>(data, data + size_t(w) * size_t(h) * 4)};

@@ -12,7 +12,7 @@ namespace pf {
 Heightfield terrainOf(const Scene& scene, const lsys::MemoryBudget& memory) {
     const Terrain& t = scene.terrain;
     if (const auto* image = std::get_if<ImageHeightfield>(&t.heightfield))
-        return loadImageTerrain(image->path.string(), t.size, image->heightScale);
+        return loadImageTerrain(image->path.string(), t.size, image->heightScale, memory);
     const auto& noise = std::get<NoiseHeightfield>(t.heightfield);
     NoiseTerrainSettings settings;
     settings.resolution = t.resolution;

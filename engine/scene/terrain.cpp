@@ -89,14 +89,15 @@ Heightfield makeNoiseTerrain(const NoiseTerrainSettings& s) {
     return terrain;
 }
 
-Heightfield loadImageTerrain(const std::string& path, float size, float heightScale) {
-    const RgbaImage image = readPng(path);
+Heightfield loadImageTerrain(const std::string& path, float size, float heightScale, const lsys::MemoryBudget& memory) {
+    const RgbaImage image = readPng(path, memory);
     const std::string where = "terrain image '" + path + "'";
     if (image.width != image.height)
         throw std::runtime_error(where + " must be square, not " + std::to_string(image.width) + "x" +
                                  std::to_string(image.height));
     if (image.width < 2) throw std::runtime_error(where + " must be at least 2x2 pixels");
     if (!(size > 0)) throw std::invalid_argument(where + ": size must be positive");
+    lsys::need(memory, "terrain", heightfieldBytes(image.width));
     Heightfield terrain = emptyHeightfield(image.width, size);
     for (size_t i = 0; i < terrain.heights.size(); ++i) {
         const uint8_t* rgb = &image.pixels[i * 4];

@@ -52,7 +52,8 @@ Heightfield makeNoiseTerrain(const NoiseTerrainSettings& settings);
 // g/255·heightScale; image column → +x, image row (top first) → +z. Throws,
 // naming the file, when it cannot be read, is not square, is smaller than
 // 2×2, or has a pixel whose red, green and blue differ.
-Heightfield loadImageTerrain(const std::string& path, float size, float heightScale);
+Heightfield loadImageTerrain(const std::string& path, float size, float heightScale,
+                             const lsys::MemoryBudget& memory = lsys::machineMemoryBudget());
 
 // Bilinear between the four surrounding samples; points outside the square
 // take the height of the nearest edge.

@@ -177,6 +177,17 @@ TEST_F(ImageTerrain, ANonSquareImageIsAnErrorNamingIt) {
     EXPECT_NE(error.find("must be square, not 3x2"), std::string::npos) << error;
 }
 
+// The image's decoded pixels are checked against the budget from its
+// header, before stb decodes it.
+TEST_F(ImageTerrain, AnImagePastTheMemoryBudgetIsRefusedBeforeDecoding) {
+    const std::string path = writeImage("grey_64.png", 64, 64, std::vector<uint8_t>(64 * 64 * 3, 100));
+    const lsys::MemoryBudget small{16 * 1024}; // 64² pixels decode to 32 KiB, twice
+    const std::string error = errorOf([&] { pf::loadImageTerrain(path, 10, 1, small); });
+    EXPECT_NE(error.find("memory budget: image needs"), std::string::npos) << error;
+    EXPECT_NE(error.find("the limit is 16.0 KiB"), std::string::npos) << error;
+    EXPECT_EQ(pf::loadImageTerrain(path, 10, 1, lsys::MemoryBudget{1 << 20}).resolution, 64u);
+}
+
 TEST(TerrainMesh, CountsFollowTheResolution) {
     const pf::TerrainMesh mesh = pf::makeTerrainMesh(pf::makeNoiseTerrain(smallNoise(1)));
     EXPECT_EQ(mesh.positions.size(), size_t(65 * 65));
