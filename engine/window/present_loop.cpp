@@ -48,16 +48,15 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
     VkFence frameDone;
     VK_CHECK(vkCreateFence(ctx.device, &fenceInfo, nullptr, &frameDone));
 
-    // The target at `share` of the swapchain's size, once no frame uses the old one.
-    auto retarget = [&](float share) {
-        vkDeviceWaitIdle(ctx.device);
+    // The target at `share` of the swapchain's size; call once no frame uses the old one.
+    auto replaceTarget = [&](float share) {
         destroyRenderTarget(target);
         target = createRenderTarget(ctx, scaledExtent(swapchain.extent, share), options.antialiasing);
     };
     auto rebuild = [&] {
         vkDeviceWaitIdle(ctx.device);
         swapchain = createSwapchain(ctx, surface, window.framebufferExtent(), swapchain);
-        retarget(scale.scale);
+        replaceTarget(scale.scale);
     };
 
     using Clock = std::chrono::steady_clock;
@@ -132,13 +131,16 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
         const Clock::time_point now = Clock::now();
         lastFrameMs = 1000.0 * std::chrono::duration<double>(frameStart - lastFrameStart).count();
         lastFrameStart = frameStart;
-        // The first frame's time is only its own start: no frame before it.
         if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||
             size.width != swapchain.extent.width || size.height != swapchain.extent.height)
             rebuild();
         else
             VK_CHECK(presented);
-        if (stats.frames > 1 && updateRenderScale(scale, options.renderScale, lastFrameMs)) retarget(scale.scale);
+        // The first frame's time is only its own start: no frame before it.
+        if (stats.frames > 1 && updateRenderScale(scale, options.renderScale, lastFrameMs)) {
+            vkDeviceWaitIdle(ctx.device);
+            replaceTarget(scale.scale);
+        }
 
         const double sinceTitle = std::chrono::duration<double>(now - titleTime).count();
         if (sinceTitle >= 0.5) {
@@ -157,8 +159,7 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
 
     // The screenshot at the window's size, whatever the last render scale.
     if (!options.screenshotPath.empty() && stats.frames > 0) {
-        if (target.extent.width != swapchain.extent.width || target.extent.height != swapchain.extent.height)
-            retarget(1.0f);
+        if (scale.scale != 1.0f) replaceTarget(1.0f); // the device is idle since the loop's end
         writePng(options.screenshotPath, captureFrame(ctx, target, options.record));
     }
 
