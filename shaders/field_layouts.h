@@ -215,11 +215,12 @@ struct ImpostorBakePush {
 #define FIELD_PASS_COLOUR 0u       // the camera's
 #define FIELD_PASS_SHADOW 1u       // the sun's, into the frame's shadow map (FieldFrame::sunViewProj)
 #define FIELD_PASS_SHADOW_CACHE 2u // the sun's, into the cache of static casters (FieldFrame::sunCacheViewProj)
-// impostorPart: which of the listed impostors a draw keeps (the others
-// collapse to a point in impostor.vert): all, only those the frame's shadow
-// map may reach, or only those it cannot reach, drawn by a pipeline with no
-// shadow lookup (sunlit_select.h).
-#define IMPOSTOR_PART_ALL 0u
+// impostorPart: which of the listed impostors a colour draw of impostor.vert
+// keeps (the others collapse to a point there): only those the frame's
+// shadow map may reach, or only those it cannot reach, drawn by a pipeline
+// with no shadow lookup (sunlit_select.h). Draws of anything else push
+// IMPOSTOR_PART_NONE.
+#define IMPOSTOR_PART_NONE 0u
 #define IMPOSTOR_PART_SHADOWED 1u
 #define IMPOSTOR_PART_SUNLIT 2u
 

@@ -85,8 +85,7 @@ void main() {
     // A colour draw of one part keeps only that part's impostors: the others
     // collapse onto a point beyond the far plane, and the rasteriser drops
     // their triangles before any fragment.
-    uint part = fieldPush.impostorPart;
-    if (part != IMPOSTOR_PART_ALL &&
-        impostorPartOf(instanceSphere(inst, m), field.sunViewProj, field.viewport.z, field.viewport.w > 0.5) != part)
+    if (impostorPartOf(instanceSphere(inst, m), field.sunViewProj, field.viewport.z, field.viewport.w > 0.5) !=
+        fieldPush.impostorPart)
         gl_Position = vec4(0.0, 0.0, 2.0, 1.0);
 }

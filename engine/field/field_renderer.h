@@ -209,7 +209,7 @@ private:
     void recordShadowCache(VkCommandBuffer cmd) const;
     void recordShadowPass(VkCommandBuffer cmd) const;
     void recordNaiveShadowPass(VkCommandBuffer cmd) const;
-    void pushFieldPass(VkCommandBuffer cmd, uint32_t pass, uint32_t impostorPart = IMPOSTOR_PART_ALL) const;
+    void pushFieldPass(VkCommandBuffer cmd, uint32_t pass, uint32_t impostorPart = IMPOSTOR_PART_NONE) const;
     void drawShadowCasters(VkCommandBuffer cmd, const CullPass& casters, VkDescriptorSet set, uint32_t pass) const;
     void recordColourPass(VkCommandBuffer cmd, const RenderTarget& target, bool naive, GpuTimer* timer) const;
     void drawPlantLists(VkCommandBuffer cmd, uint32_t phase, GpuTimer* timer) const;
