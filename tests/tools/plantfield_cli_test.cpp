@@ -163,21 +163,25 @@ TEST(PlantfieldCli, CaptureReplacesOnlyRegularFiles) {
     EXPECT_EQ(content, "precious");
 }
 
+// Writes NAME.lsys with `lsystem` and a scene of two NAME plants on a small
+// terrain into `dir`; returns the scene's path.
+std::string sceneOfOneSpecies(const fs::path& dir, const std::string& name, const std::string& lsystem) {
+    std::ofstream(dir / (name + ".lsys")) << lsystem;
+    std::ofstream(dir / "scene.json") << R"({ "terrain": { "size": 20, "resolution": 17 }, "species": [ { "name": ")"
+                                      << name << R"(", "lsystem": ")" << name
+                                      << R"(.lsys", "placement": { "count": 2 } } ] })";
+    return (dir / "scene.json").string();
+}
+
 // A species that grows past --memory-budget is refused with the stage, the
 // need and the limit, naming the species, and exit 2 (bad input, as a
 // species past the module budget), nothing written.
 TEST(PlantfieldCli, SpeciesPastTheMemoryBudgetIsRefusedByName) {
     const fs::path dir = scratchDir("species-budget");
-    { std::ofstream(dir / "bush.lsys") << "derivation length: 9\nAxiom: F\nF -> F[+F]F[-F]F\n"; }
-    {
-        std::ofstream(dir / "scene.json") << R"({
-  "terrain": { "size": 20, "resolution": 17 },
-  "species": [ { "name": "bush", "lsystem": "bush.lsys", "placement": { "count": 2 } } ]
-})";
-    }
     const fs::path out = dir / "out.png";
-    const CommandResult r = runCommand(kPlantfield + " " + (dir / "scene.json").string() + " --capture " +
-                                       out.string() + " --size 32x32 --memory-budget 16M");
+    const CommandResult r = runCommand(
+        kPlantfield + " " + sceneOfOneSpecies(dir, "bush", "derivation length: 9\nAxiom: F\nF -> F[+F]F[-F]F\n") +
+        " --capture " + out.string() + " --size 32x32 --memory-budget 16M");
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("species 'bush'"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("memory budget: "), std::string::npos) << r.output;
@@ -189,15 +193,9 @@ TEST(PlantfieldCli, SpeciesPastTheMemoryBudgetIsRefusedByName) {
 // with the species, the file, line and column.
 TEST(PlantfieldCli, MalformedSpeciesFileExitsTwoWithFileLineAndColumn) {
     const fs::path dir = scratchDir("species-malformed");
-    { std::ofstream(dir / "bad.lsys") << "Axiom: F\nF -> F[+F\nthis is not a rule\n"; }
-    {
-        std::ofstream(dir / "scene.json") << R"({
-  "terrain": { "size": 20, "resolution": 17 },
-  "species": [ { "name": "bad", "lsystem": "bad.lsys", "placement": { "count": 2 } } ]
-})";
-    }
-    const CommandResult r = runCommand(kPlantfield + " " + (dir / "scene.json").string() + " --capture " +
-                                       (dir / "out.png").string() + " --size 32x32");
+    const CommandResult r =
+        runCommand(kPlantfield + " " + sceneOfOneSpecies(dir, "bad", "Axiom: F\nF -> F[+F\nthis is not a rule\n") +
+                   " --capture " + (dir / "out.png").string() + " --size 32x32");
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("species 'bad'"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("bad.lsys:3:1"), std::string::npos) << r.output;
