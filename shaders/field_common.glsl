@@ -169,13 +169,20 @@ float terrainBroadPatches(vec2 groundXz) {
     return 0.55 * valueNoise(groundXz * 0.08);
 }
 
-// Sun visibility at a world position: 2×2 PCF of the shadow map, fully lit
-// outside it or when shadows are off.
-float sunVisibility(vec3 worldPos, vec3 normal) {
-    if (field.viewport.w < 0.5) return 1.0;
+// Where the shadow map is read for a world position: 1.5 texels along its
+// normal (turned towards the sun), in the map's clip space. The sun's
+// projection is orthographic (w = 1), so this is an affine function of the
+// position, which a vertex shader may pass on for the rasteriser to
+// interpolate exactly (terrain.vert).
+vec3 sunMapPosition(vec3 worldPos, vec3 normal) {
     vec3 offsetPos = worldPos + normal * field.viewport.z * 1.5;
-    vec4 clip = field.sunViewProj * vec4(offsetPos, 1.0);
-    vec3 ndc = clip.xyz / clip.w;
+    return (field.sunViewProj * vec4(offsetPos, 1.0)).xyz;
+}
+
+// Sun visibility at sunMapPosition `ndc`: 2×2 PCF of the shadow map, fully
+// lit outside it or when shadows are off.
+float sunVisibilityAt(vec3 ndc) {
+    if (field.viewport.w < 0.5) return 1.0;
     vec2 uv = ndc.xy * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0) return 1.0;
     // One tap: the comparison sampler filters linearly, a 2×2 PCF.
@@ -195,10 +202,15 @@ vec3 shadeFieldSeen(vec3 albedo, vec3 normal, float visibility, float occlusion,
     return albedo * (frame.sunRadiance.rgb * sun * visibility + ambient * occlusion);
 }
 
+// The normal turned towards the sun: the side a surface lit through its
+// back (foliage) is looked up on.
+vec3 sunwardNormal(vec3 normal) {
+    return normal * sign(dot(normal, frame.sunDirection.xyz) + 1e-4);
+}
+
 // The same with the sun's visibility from the shadow map.
 vec3 shadeField(vec3 albedo, vec3 normal, vec3 worldPos, float occlusion, float transmission) {
-    float facing = dot(normal, frame.sunDirection.xyz);
-    float visibility = sunVisibility(worldPos, normal * sign(facing + 1e-4));
+    float visibility = sunVisibilityAt(sunMapPosition(worldPos, sunwardNormal(normal)));
     return shadeFieldSeen(albedo, normal, visibility, occlusion, transmission);
 }
 

@@ -1,6 +1,6 @@
 // Which impostors the frame's shadow map cannot reach (IMPOSTOR_PART_SUNLIT),
 // shared by shaders/impostor.vert and the tests like lod_select.h. Outside
-// the map's square or beyond its far plane sunVisibility (field_common.glsl)
+// the map's square or beyond its far plane sunVisibilityAt (field_common.glsl)
 // is 1, so a plant whose every fragment lies there is drawn by a pipeline
 // with no shadow lookup: on a CPU rasteriser a branch around the lookup
 // saves nothing (every lane of a SIMD block runs both sides), while another
@@ -25,7 +25,7 @@ using glm::length;
 // sphere, per metre of radius: the wind's lean of its top (impostor.vert), a
 // few tenths of a metre on a ten-metre crown, well inside a quarter.
 #define SUNLIT_SWAY_MARGIN 0.25f
-// Shadow-map texels sunVisibility offsets a fragment along its normal
+// Shadow-map texels sunMapPosition offsets a fragment along its normal
 // (1.5), with room to spare.
 #define SUNLIT_OFFSET_TEXELS 2.0f
 

@@ -7,6 +7,7 @@ layout(location = 0) in vec3 inWorldPos;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec4 inFog;
 layout(location = 3) in float inBroadPatches; // terrain.vert: terrainBroadPatches
+layout(location = 4) in vec3 inSunMap;        // terrain.vert: sunMapPosition, from the vertex normal
 layout(location = 0) out vec4 outColor;
 
 // `shadowed`: a constant of each shader, false for chunks the sun's map does
@@ -20,6 +21,6 @@ vec4 groundColour(const bool shadowed) {
     vec3 earth = vec3(0.16, 0.12, 0.08) * mix(0.8, 1.1, valueNoise(p * 1.7));
     float slope = 1.0 - n.y;
     vec3 albedo = mix(grass, earth, smoothstep(0.18, 0.35, slope + 0.1 * (patches - 0.5)));
-    vec3 color = shadowed ? shadeField(albedo, n, inWorldPos, 1.0, 0.0) : shadeFieldSeen(albedo, n, 1.0, 1.0, 0.0);
+    vec3 color = shadeFieldSeen(albedo, n, shadowed ? sunVisibilityAt(inSunMap) : 1.0, 1.0, 0.0);
     return vec4(toneMap(applyVertexFog(color, inFog)), 1.0);
 }

@@ -345,7 +345,7 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     block.field.wind = glm::vec4(wind.wind.x, wind.wind.y, wind.wind.z, view.time);
     block.field.windDetail = glm::vec4(wind.windDetail.x, wind.windDetail.y, wind.wind.w, settings_.impostorSway);
     std::memcpy(uniforms_.mapped, &block, sizeof(block));
-    // The shaders look the shadow up 1.5 texels along the normal (sunVisibility).
+    // The shaders look the shadow up 1.5 texels along the normal (sunMapPosition).
     const float shadowTexel = 2.0f * settings_.shadowRadius / float(shadow_.size);
     const float pixelsPerRadian = 0.5f * float(extent.height) / std::tan(0.5f * glm::radians(view.camera.fovYDegrees));
     terrainRanges_ = visibleTerrainRanges(terrainChunks_, block.frame.viewProj, view.camera.position, pixelsPerRadian,
