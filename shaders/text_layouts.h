@@ -12,6 +12,12 @@ using vec4 = glm::vec4;
 // The overlay's one descriptor binding (set 0).
 #define TEXT_BINDING_RECTS 0 // OverlayRect[]
 
+// The overlay's viewport is this many pixels square from the top-left
+// corner, whatever the target's size (the scissor keeps the drawing inside
+// the target): text.vert maps pixels to clip space without being told the
+// size. 4096 is the least maxViewportDimensions a device may have.
+#define TEXT_VIEWPORT_SIDE 4096
+
 // One stb_easy_font quad (or its shadow) in framebuffer pixels, y down.
 struct OverlayRect {
     vec4 bounds; // x0, y0, x1, y1

@@ -47,7 +47,7 @@ TextOverlay createTextOverlay(GpuResources& owner) {
     const DescriptorBinding table[] = {storageBuffer(TEXT_BINDING_RECTS, VK_SHADER_STAGE_VERTEX_BIT, overlay.rects)};
     const VkDescriptorSetLayout setLayout = createSetLayout(owner, table);
     overlay.descriptorSet = createSet(owner, setLayout, table);
-    overlay.pipelineLayout = createPipelineLayout(owner, setLayout, {VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::vec2)});
+    overlay.pipelineLayout = createPipelineLayout(owner, setLayout);
 
     overlay.pipeline =
         createColorOnlyPipeline(owner, spirv_text_vert, spirv_text_frag, overlay.pipelineLayout, kColorFormat);
@@ -93,12 +93,12 @@ void recordTextOverlay(VkCommandBuffer cmd, const TextOverlay& overlay, const Re
                   VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
 
     beginColorOnlyRendering(cmd, target.color.view, VK_ATTACHMENT_LOAD_OP_LOAD, target.extent);
+    // The scissor stays the target's: the viewport may reach past it.
+    const VkViewport viewport{0.0f, 0.0f, float(TEXT_VIEWPORT_SIDE), float(TEXT_VIEWPORT_SIDE), 0.0f, 1.0f};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, overlay.pipeline);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, overlay.pipelineLayout, 0, 1, &overlay.descriptorSet,
                             0, nullptr);
-    const glm::vec2 framebufferSize{float(target.extent.width), float(target.extent.height)};
-    vkCmdPushConstants(cmd, overlay.pipelineLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(framebufferSize),
-                       &framebufferSize);
     vkCmdDraw(cmd, 6 * overlay.rectCount, 1, 0, 0);
     vkCmdEndRendering(cmd);
 

@@ -23,12 +23,12 @@ class TextOverlayTest : public GpuTest {
 protected:
     // Clears a target, leaves it as the renderer would (TRANSFER_SRC), draws
     // the overlay when `text` is given, and reads the pixels back.
-    RgbaImage render(const std::string* text) {
+    RgbaImage render(const std::string* text, VkExtent2D extent = kExtent) {
         GpuResources scratch(ctx);
         TextOverlay overlay = createTextOverlay(scratch);
         if (text) setOverlayText(overlay, *text);
-        RenderTarget target = createRenderTarget(ctx, kExtent, {.method = AntialiasMethod::none});
-        const VkDeviceSize bytes = VkDeviceSize(kExtent.width) * kExtent.height * 4;
+        RenderTarget target = createRenderTarget(ctx, extent, {.method = AntialiasMethod::none});
+        const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
         Buffer readback = createHostBuffer(scratch, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
@@ -40,7 +40,7 @@ protected:
                          {VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
-            beginColorOnlyRendering(cmd, target.color.view, VK_ATTACHMENT_LOAD_OP_CLEAR, kExtent,
+            beginColorOnlyRendering(cmd, target.color.view, VK_ATTACHMENT_LOAD_OP_CLEAR, extent,
                                     {{0.05f, 0.2f, 0.4f, 1.0f}});
             vkCmdEndRendering(cmd);
             imageBarrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT,
@@ -51,14 +51,14 @@ protected:
 
             VkBufferImageCopy region{};
             region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-            region.imageExtent = {kExtent.width, kExtent.height, 1};
+            region.imageExtent = {extent.width, extent.height, 1};
             vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &region);
             // Make the copy visible to the host read after the wait.
             memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                           VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
         });
 
-        RgbaImage image{kExtent.width, kExtent.height, std::vector<uint8_t>(bytes)};
+        RgbaImage image{extent.width, extent.height, std::vector<uint8_t>(bytes)};
         std::memcpy(image.pixels.data(), readback.mapped, bytes);
         destroyRenderTarget(target);
         return image;
@@ -91,6 +91,22 @@ TEST_F(TextOverlayTest, TextAppearsInTheTopLeftPanelOnly) {
     // Six glyphs at scale 2 cover a few hundred pixels; each has a shadow.
     EXPECT_GT(textPixels, 100u);
     EXPECT_GT(shadowPixels, 30u);
+}
+
+// The vertex shader maps pixels through a viewport of its own, not the
+// target's size: the same text covers the same pixels in any target.
+TEST_F(TextOverlayTest, TextCoversTheSamePixelsInAnyTargetSize) {
+    const std::string text = "12.3 ms\nLOD0 1200";
+    const RgbaImage small = render(&text);
+    const RgbaImage large = render(&text, {3 * kExtent.width, 5 * kExtent.height});
+    uint32_t different = 0, drawn = 0;
+    for (uint32_t y = 0; y < kExtent.height; ++y)
+        for (uint32_t x = 0; x < kExtent.width; ++x) {
+            if (std::memcmp(pixelAt(small, x, y), pixelAt(large, x, y), 4) != 0) ++different;
+            if (pixelAt(small, x, y)[0] == 255) ++drawn;
+        }
+    EXPECT_GT(drawn, 100u);
+    EXPECT_EQ(different, 0u);
 }
 
 TEST_F(TextOverlayTest, EmptyTextLeavesTheImageUnchanged) {
