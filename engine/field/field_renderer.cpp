@@ -347,8 +347,8 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     std::memcpy(uniforms_.mapped, &block, sizeof(block));
     // The shaders look the shadow up 1.5 texels along the normal (sunMapPosition).
     const float shadowTexel = 2.0f * settings_.shadowRadius / float(shadow_.size);
-    const float pixelsPerRadian = 0.5f * float(extent.height) / std::tan(0.5f * glm::radians(view.camera.fovYDegrees));
-    terrainRanges_ = visibleTerrainRanges(terrainChunks_, block.frame.viewProj, view.camera.position, pixelsPerRadian,
+    terrainRanges_ = visibleTerrainRanges(terrainChunks_, block.frame.viewProj, view.camera.position,
+                                          pixelsPerMetre(glm::radians(view.camera.fovYDegrees), extent.height),
                                           settings_.shadows ? std::optional(block.field.sunViewProj) : std::nullopt,
                                           2.0f * shadowTexel);
 
