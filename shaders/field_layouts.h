@@ -134,8 +134,9 @@ struct PlantModel {
     vec4 boxMax; // w: not drawn at all below this many pixels of projected height (0: always drawn)
     vec4 lod; // x: LOD0→1 below this many pixels of projected height, y: LOD1→2 below, z: hysteresis fraction, w: fade
               // seconds
-    uvec4 lists;       // first visible-list entry of each LOD, then the capacity (PLANT_MODEL_LIST_CAPACITY)
-    uvec4 impostor;    // x: first atlas layer, y: frames around the plant, z: quads per billboard (1, 2, 3), w: 0
+    uvec4 lists;    // first visible-list entry of each LOD, then the capacity (PLANT_MODEL_LIST_CAPACITY)
+    uvec4 impostor; // x: first colour layer (ring r, frame f at x + r·y + f), y: frames around the plant, z: quads per
+                    // billboard (1, 2, 3), w: first shadow frame layer
     vec4 impostorQuad; // x: half width (m), y: bottom, z: top (plant space), w: half depth of the baked box
 };
 

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "field_common.glsl"
-#include "impostor_shadow_frame.h"
+#include "impostor_frame.h"
 
 // LOD2 in the sun's shadow passes (docs/IMPOSTORS.md, "Shadow frames"): one
 // quad per plant perpendicular to the sun direction, a true billboard in the
@@ -45,16 +45,16 @@ void main() {
     uint frames = m.impostor.y;
     // The nearest frame, as the colour pass's single billboards choose.
     float t = mod(azimuth / kTau * float(frames), float(frames));
-    outLayer = m.impostor.x + uint(round(t)) % frames;
+    outLayer = m.impostor.w + uint(round(t)) % frames;
 
     // Corner v.position.x of the whole frame, in impostor_outline.h's order:
     // (0, 0), (1, 0), (1, 1), (0, 1), v = 0 at the top.
     uint corner = uint(v.position.x);
     vec2 uv = vec2(corner == 1u || corner == 2u ? 1.0 : 0.0, corner >= 2u ? 1.0 : 0.0);
-    vec3 halfExtent = shadowFrameHalfExtents(m.impostorQuad, sinE, cosE);
-    vec3 plantPos = shadowFrameCentre(m.impostorQuad) +
-                    shadowFrameRight(azimuth) * ((2.0 * uv.x - 1.0) * halfExtent.x) +
-                    shadowFrameUp(azimuth, sinE, cosE) * ((1.0 - 2.0 * uv.y) * halfExtent.y);
+    vec3 halfExtent = impostorFrameHalfExtents(m.impostorQuad, sinE, cosE);
+    vec3 plantPos = impostorFrameCentre(m.impostorQuad) +
+                    impostorFrameRight(azimuth) * ((2.0 * uv.x - 1.0) * halfExtent.x) +
+                    impostorFrameUp(azimuth, sinE, cosE) * ((1.0 - 2.0 * uv.y) * halfExtent.y);
     outUv = uv;
     mat4 sunViewProj = passViewProj();
     // The frame's half depth along the sun, in map depth (orthographic: a

@@ -1,24 +1,12 @@
-// The impostor frame convention and the billboard meshes; the bake itself
-// is impostor_bake.cpp.
+// The impostor box and the billboard meshes; the frames' views are
+// shaders/impostor_frame.h, the bake impostor_bake.cpp.
 #include "engine/field/impostor_atlas.h"
-
-#include <glm/gtc/constants.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace pf {
-
-glm::vec3 impostorViewDirection(uint32_t frame, uint32_t frames) {
-    float a = glm::two_pi<float>() * float(frame) / float(frames);
-    return {std::sin(a), 0.0f, std::cos(a)};
-}
-
-glm::vec3 impostorRightAxis(uint32_t frame, uint32_t frames) {
-    float a = glm::two_pi<float>() * float(frame) / float(frames);
-    return {std::cos(a), 0.0f, -std::sin(a)};
-}
 
 glm::vec4 impostorQuadOf(const gpu::PlantModel& model) {
     float x = std::max(std::abs(model.boxMin.x), std::abs(model.boxMax.x));

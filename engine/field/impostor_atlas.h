@@ -1,9 +1,10 @@
 // Billboard impostors (LOD2, after Tankard 2001's billboards): at load, every plant
 // model is rendered on the GPU from `frames` directions around its vertical
-// axis into a layered atlas of albedo + coverage and normal + depth, so far
-// plants are drawn as one camera-facing quad (frame chosen and blended by
-// view direction) or as two or three crossed quads, each showing the frame
-// seen along its normal.
+// axis on each of IMPOSTOR_RINGS rings of elevation into a layered atlas of
+// albedo + coverage and normal + depth, so far plants are drawn as one quad
+// turned to the view (showing the frame nearest the view's azimuth and
+// elevation) or, seen from near the horizon, as two or three crossed quads,
+// each showing the frame seen along its normal.
 #pragma once
 
 #include "engine/field/impostor_outline.h"
@@ -24,36 +25,34 @@ struct ImpostorSettings {
     uint32_t shadowFrameSize = 128;
 };
 
-// Frame convention, shared with shaders/impostor.vert. Frame f of n views the
-// plant from azimuth a = 2π·f/n about +y: the orthographic camera sits along
-// d = (sin a, 0, cos a), looks along -d, its right axis is
-// (cos a, 0, -sin a) and its up axis +y (frame 0 looks along -z, +x right).
-// The frame spans [-halfWidth, halfWidth] along the right axis (u 0 → 1) and
-// [bottom, top] in y (image row 0 = top); depth 0 is the box's front
-// (dot(p, d) = halfDepth), 1 its back. Crossed quads need frames divisible
-// by 4 (Double) and 6 (Triple): 12 serves all three kinds.
-glm::vec3 impostorViewDirection(uint32_t frame, uint32_t frames);
-glm::vec3 impostorRightAxis(uint32_t frame, uint32_t frames);
+// Frame convention (shaders/impostor_frame.h has the axes and extents, for
+// the bake and the billboards). Frame f of n on ring r views the plant from
+// azimuth a = 2π·f/n about +y and elevation e = r·IMPOSTOR_RING_STEP: the
+// orthographic camera sits along d = (sin a·cos e, sin e, cos a·cos e),
+// looks along -d, its right axis is (cos a, 0, -sin a) and its up axis the
+// vertical tilted away from d (frame 0 of ring 0 looks along -z, +x right,
+// +y up). The frame is fitted about the box's centre on the plant's axis to
+// the projection of the cylinder that holds the box from every azimuth: on
+// ring 0, [-halfWidth, halfWidth] along the right axis (u 0 → 1) and
+// [bottom, top] in y (image row 0 = top). Depth 0 is the cylinder's front
+// along d, 1 its back. Crossed quads need frames divisible by 4 (Double)
+// and 6 (Triple): 12 serves all three kinds.
 
 // gpu.impostorQuad of a model from its box: half width = half depth = the
 // box's horizontal radius about the plant's axis (x = z = 0), so every frame
 // holds the whole plant; bottom and top = the box's y range.
 glm::vec4 impostorQuadOf(const gpu::PlantModel& model);
 
-// Shadow frame f of n views the plant from the sun's elevation e at azimuth
-// a = 2π·f/n (shaders/impostor_shadow_frame.h has the axes and extents):
-// the orthographic camera looks along -(sin a·cos e, sin e, cos a·cos e),
-// its right axis is the colour frame's, its up axis the vertical tilted
-// away from the sun, and the frame is fitted about the box's centre on the
-// plant's axis to the projection of the cylinder that holds the box from
-// every azimuth.
+// Shadow frame f of n views the plant the same way from the sun's
+// elevation: one ring of frames in an image of its own.
 
 // Both colour images are premultiplied by coverage (the MSAA resolve of a
 // clear-0 background): divide rgb and normalDepth by color.a before use.
-// Layer of (model m, frame f) = models[m].gpu.impostor.x + f in all three
-// images (the shadow frames are their own, smaller, image); full mip chains.
+// Colour layer of (model m, ring r, frame f) = impostor.x + r·frames + f in
+// both colour images; shadow layer of (m, f) = impostor.w + f in the shadow
+// frames' own, smaller, image; full mip chains.
 struct ImpostorAtlas {
-    Image color;       // R8G8B8A8_SRGB array, one layer per (model, frame): albedo, alpha = coverage
+    Image color;       // R8G8B8A8_SRGB array, one layer per (model, ring, frame): albedo, alpha = coverage
     Image normalDepth; // R8G8B8A8_UNORM array: plant-space normal·0.5+0.5, alpha = depth across the box (0 front … 1
                        // back)
     Image shadow; // R8G8_UNORM array, shadowFrameSize²: coverage seen from the sun's elevation (shadow frames), depth
@@ -61,7 +60,8 @@ struct ImpostorAtlas {
     uint32_t mipLevels = 0;
     uint32_t shadowMipLevels = 0;
     VkSampler sampler = VK_NULL_HANDLE; // linear, clamp, mipmapped
-    uint32_t layers = 0;
+    uint32_t layers = 0;                // of the colour images
+    uint32_t shadowLayers = 0;          // of the shadow frames' image: one ring per model
     ImpostorSettings settings;
     // Per layer, the rectangle its billboards are drawn as (impostor_outline.h):
     // read back from mip kOutlineMip (or the last, if coarser), grown by
@@ -77,8 +77,9 @@ constexpr float kOutlineMargin = 2.0f;
 // Bakes all models of the pool (already uploaded: vertices as FieldVertex
 // storage buffer, indices as index buffer), the colour frames and the shadow
 // frames seen from `sunElevation` (radians above the horizon: the scene's
-// sun, fixed per scene), writes each model's gpu.impostor (first layer,
-// frames, quads per billboard from its BillboardKind) and gpu.impostorQuad,
+// sun, fixed per scene), writes each model's gpu.impostor (first colour
+// layer, frames, quads per billboard from its BillboardKind, first shadow
+// layer) and gpu.impostorQuad,
 // and leaves the images in SHADER_READ_ONLY_OPTIMAL. The images and the
 // sampler are owned by `owner`.
 ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const Buffer& vertices,
@@ -89,8 +90,9 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
 // fan of kOutlineCorners corners (FieldVertex position.x = corner index,
 // position.z = quad index) that the shader places at the corners of the
 // shown frame's outline. Quad q lies in the plane through the plant's axis
-// at azimuth q·180°/quads (quads > 1); a single quad turns to the view.
-// Draw two-sided (no culling). Appends to the pool; returns the mesh range.
+// at azimuth q·180°/quads (quads > 1); a single quad turns to the view, and
+// so does quad 0 of crossed ones seen from above the lowest ring (the
+// others are dropped). Draw two-sided (no culling). Appends to the pool; returns the mesh range.
 MeshRange appendBillboardMesh(PlantModelPool& pool, uint32_t quads);
 
 } // namespace pf

@@ -9,10 +9,8 @@
 #include "engine/vk/target_pass.h"
 #include "shaders/impostor_bake_frag.spv.h"
 #include "shaders/impostor_bake_vert.spv.h"
+#include "shaders/impostor_frame.h"
 #include "shaders/impostor_shadow_bake_frag.spv.h"
-#include "shaders/impostor_shadow_frame.h"
-
-#include <glm/gtc/constants.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -64,17 +62,18 @@ void pipelineBarrier(VkCommandBuffer cmd, const std::vector<VkImageMemoryBarrier
     vkCmdPipelineBarrier2(cmd, &dep);
 }
 
-// The atlas's layer count, after checking the atlas fits the device.
+// The colour images' layer count (every model's rings of frames), after
+// checking the atlas fits the device.
 uint32_t atlasLayers(const GpuContext& ctx, const PlantModelPool& pool, const ImpostorSettings& settings) {
     if (settings.frames == 0 || settings.frameSize == 0)
         throw std::runtime_error("impostor atlas: frames and frameSize must be positive");
-    const uint64_t layerCount = uint64_t(pool.models.size()) * settings.frames;
+    const uint64_t layerCount = uint64_t(pool.models.size()) * settings.frames * IMPOSTOR_RINGS;
     if (layerCount == 0) throw std::runtime_error("impostor atlas: the pool has no models");
     if (layerCount > ctx.properties.limits.maxImageArrayLayers)
         throw std::runtime_error(
             "the impostor atlas would need " + std::to_string(layerCount) + " layers (" +
             std::to_string(pool.models.size()) + " plant models, the scene's variants of every species, times " +
-            std::to_string(settings.frames) + " views), more than this device's " +
+            std::to_string(settings.frames * IMPOSTOR_RINGS) + " views), more than this device's " +
             std::to_string(ctx.properties.limits.maxImageArrayLayers) + ": give the species fewer \"variants\"");
     if (settings.shadowFrameSize == 0) throw std::runtime_error("impostor atlas: shadowFrameSize must be positive");
     if (std::max(settings.frameSize, settings.shadowFrameSize) > ctx.properties.limits.maxImageDimension2D)
@@ -96,16 +95,19 @@ Image createAtlasImage(GpuResources& owner, uint32_t size, VkFormat format, uint
                 .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
 }
 
-// Both images with their full mip chains, and the billboards' sampler.
+// The three images with their full mip chains (the shadow frames one ring
+// per model), and the billboards' sampler.
 ImpostorAtlas createAtlas(GpuResources& owner, const ImpostorSettings& settings, uint32_t layers) {
     ImpostorAtlas atlas;
     atlas.settings = settings;
     atlas.layers = layers;
+    atlas.shadowLayers = layers / IMPOSTOR_RINGS;
     atlas.mipLevels = mipCount(settings.frameSize);
     atlas.color = createAtlasImage(owner, settings.frameSize, kAtlasColorFormat, layers, atlas.mipLevels);
     atlas.normalDepth = createAtlasImage(owner, settings.frameSize, kAtlasNormalFormat, layers, atlas.mipLevels);
     atlas.shadowMipLevels = mipCount(settings.shadowFrameSize);
-    atlas.shadow = createAtlasImage(owner, settings.shadowFrameSize, kShadowFrameFormat, layers, atlas.shadowMipLevels);
+    atlas.shadow = createAtlasImage(owner, settings.shadowFrameSize, kShadowFrameFormat, atlas.shadowLayers,
+                                    atlas.shadowMipLevels);
 
     VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     samplerInfo.magFilter = VK_FILTER_LINEAR;
@@ -119,11 +121,14 @@ ImpostorAtlas createAtlas(GpuResources& owner, const ImpostorSettings& settings,
     return atlas;
 }
 
-// Each model's first layer, frames, quads per billboard and baked box.
+// Each model's first colour and shadow layers, frames, quads per billboard
+// and baked box.
 void assignImpostorLayers(PlantModelPool& pool, const ImpostorSettings& settings) {
     for (size_t m = 0; m < pool.models.size(); ++m) {
         gpu::PlantModel& model = pool.models[m].gpu;
-        model.impostor = {uint32_t(m) * settings.frames, settings.frames, quadsOf(pool.models[m].billboard), 0};
+        const uint32_t shadowFirst = uint32_t(m) * settings.frames;
+        model.impostor = {shadowFirst * IMPOSTOR_RINGS, settings.frames, quadsOf(pool.models[m].billboard),
+                          shadowFirst};
         model.impostorQuad = impostorQuadOf(model);
     }
 }
@@ -266,19 +271,14 @@ gpu::ImpostorBakePush bakeView(glm::vec3 centre, glm::vec3 right, glm::vec3 up, 
     return {axis(right, half.x), axis(up, half.y), axis(toView, half.z)};
 }
 
-// Colour frame f: from the side, about the box's centre on the plant's
-// axis, as wide and deep as the box's horizontal radius, as tall as the box.
-gpu::ImpostorBakePush colourFrameView(const glm::vec4& quad, uint32_t f, uint32_t frames) {
-    return bakeView(gpu::shadowFrameCentre(quad), impostorRightAxis(f, frames), {0.0f, 1.0f, 0.0f},
-                    impostorViewDirection(f, frames), {quad.x, 0.5f * (quad.z - quad.y), quad.w});
-}
-
-// Shadow frame f: from the sun's elevation (shaders/impostor_shadow_frame.h).
-gpu::ImpostorBakePush shadowFrameView(const glm::vec4& quad, uint32_t f, uint32_t frames, float sunElevation) {
-    const float a = glm::two_pi<float>() * float(f) / float(frames);
-    const float sinE = std::sin(sunElevation), cosE = std::cos(sunElevation);
-    return bakeView(gpu::shadowFrameCentre(quad), gpu::shadowFrameRight(a), gpu::shadowFrameUp(a, sinE, cosE),
-                    gpu::shadowFrameToSun(a, sinE, cosE), gpu::shadowFrameHalfExtents(quad, sinE, cosE));
+// Frame f of n from `elevation` (shaders/impostor_frame.h): a colour ring's
+// or the sun's. At elevation 0 it is as wide and deep as the box's
+// horizontal radius and as tall as the box.
+gpu::ImpostorBakePush frameView(const glm::vec4& quad, uint32_t f, uint32_t frames, float elevation) {
+    const float a = gpu::impostorFrameAzimuth(f, frames);
+    const float sinE = std::sin(elevation), cosE = std::cos(elevation);
+    return bakeView(gpu::impostorFrameCentre(quad), gpu::impostorFrameRight(a), gpu::impostorFrameUp(a, sinE, cosE),
+                    gpu::impostorFrameToView(a, sinE, cosE), gpu::impostorFrameHalfExtents(quad, sinE, cosE));
 }
 
 // A model's LOD0 mesh seen from `view`, each class culled as `cull` says.
@@ -332,7 +332,7 @@ void resolveBakeFrame(VkCommandBuffer cmd, std::initializer_list<BakeResolve> re
 }
 
 // Every model from every direction into mip 0 of its layers: the colour
-// frames, then the shadow frames.
+// frames of every ring, then the shadow frames.
 void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const BakeTargets& targets,
                       const BakePipeline& bake, const PlantModelPool& pool, const Buffer& indices, float sunElevation) {
     // Level 0 of every layer receives one frame's resolve (or copy); its old
@@ -345,29 +345,32 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
                                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
     pipelineBarrier(cmd, {atlasBarrier(atlas.color, 0, 1, atlas.layers, toDestination),
                           atlasBarrier(atlas.normalDepth, 0, 1, atlas.layers, toDestination),
-                          atlasBarrier(atlas.shadow, 0, 1, atlas.layers, toDestination)});
+                          atlasBarrier(atlas.shadow, 0, 1, atlas.shadowLayers, toDestination)});
 
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.layout, 0, 1, &bake.set, 0, nullptr);
     vkCmdBindIndexBuffer(cmd, indices.buffer, 0, VK_INDEX_TYPE_UINT32);
     const uint32_t frames = atlas.settings.frames;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.pipeline);
     for (const PlantModelInfo& model : pool.models) {
-        for (uint32_t f = 0; f < frames; ++f) {
-            beginBakeFrame(cmd, {&targets.color, &targets.normalDepth}, targets.depth, targets.size);
-            drawBakeFrame(cmd, bake, model, colourFrameView(model.gpu.impostorQuad, f, frames),
-                          {VK_CULL_MODE_BACK_BIT, VK_CULL_MODE_NONE});
-            resolveBakeFrame(cmd, {{&targets.color, &atlas.color}, {&targets.normalDepth, &atlas.normalDepth}},
-                             targets.samples, targets.size, model.gpu.impostor.x + f);
+        for (uint32_t ring = 0; ring < IMPOSTOR_RINGS; ++ring) {
+            for (uint32_t f = 0; f < frames; ++f) {
+                beginBakeFrame(cmd, {&targets.color, &targets.normalDepth}, targets.depth, targets.size);
+                drawBakeFrame(cmd, bake, model,
+                              frameView(model.gpu.impostorQuad, f, frames, float(ring) * IMPOSTOR_RING_STEP),
+                              {VK_CULL_MODE_BACK_BIT, VK_CULL_MODE_NONE});
+                resolveBakeFrame(cmd, {{&targets.color, &atlas.color}, {&targets.normalDepth, &atlas.normalDepth}},
+                                 targets.samples, targets.size, model.gpu.impostor.x + ring * frames + f);
+            }
         }
     }
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.shadowPipeline);
     for (const PlantModelInfo& model : pool.models) {
         for (uint32_t f = 0; f < frames; ++f) {
             beginBakeFrame(cmd, {&targets.shadow}, targets.shadowDepth, targets.shadowSize);
-            drawBakeFrame(cmd, bake, model, shadowFrameView(model.gpu.impostorQuad, f, frames, sunElevation),
+            drawBakeFrame(cmd, bake, model, frameView(model.gpu.impostorQuad, f, frames, sunElevation),
                           {VK_CULL_MODE_NONE, VK_CULL_MODE_NONE});
             resolveBakeFrame(cmd, {{&targets.shadow, &atlas.shadow}}, targets.samples, targets.shadowSize,
-                             model.gpu.impostor.x + f);
+                             model.gpu.impostor.w + f);
         }
     }
 }
@@ -484,7 +487,7 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
             recordBakeFrames(cmd, atlas, targets, bake, pool, indices, sunElevation);
             recordMipChain(cmd, {&atlas.color, &atlas.normalDepth}, settings.frameSize, atlas.mipLevels, atlas.layers);
-            recordMipChain(cmd, {&atlas.shadow}, settings.shadowFrameSize, atlas.shadowMipLevels, atlas.layers);
+            recordMipChain(cmd, {&atlas.shadow}, settings.shadowFrameSize, atlas.shadowMipLevels, atlas.shadowLayers);
         });
     }
     atlas.outlines = readOutlines(ctx, atlas);
