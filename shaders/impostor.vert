@@ -45,18 +45,15 @@ void main() {
     vec3 centre = impostorFrameCentre(m.impostorQuad);
     float viewElevation = atan(local.y - centre.y * inst.positionScale.w, length(local.xz));
     uint ring = impostorRingOf(viewElevation);
-    float elevation = float(ring) * IMPOSTOR_RING_STEP;
+    float elevation = impostorRingElevation(ring);
     float sinE = sin(elevation), cosE = cos(elevation);
 
     float quadAzimuth;
     bool back = false;
     uint shownFrame;
     if (quads == 1u || ring > 0u) {
-        float t = mod(viewAzimuth / kTau * float(frames), float(frames));
-        // The nearest frame, not a blend: frames are 30° apart and far
-        // plants small, so the switch is not seen, and one texture fetch
-        // per pixel is what a CPU rasteriser can afford.
-        shownFrame = uint(round(t)) % frames;
+        // Far plants are small: the switch between frames is not seen.
+        shownFrame = impostorNearestFrame(viewAzimuth, frames);
         quadAzimuth = viewAzimuth;
     } else {
         quadAzimuth = v.position.z * 0.5 * kTau / float(quads);

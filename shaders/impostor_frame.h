@@ -21,6 +21,7 @@ namespace gpu {
 using vec3 = glm::vec3;
 using glm::clamp;
 using glm::cos;
+using glm::mod;
 using glm::round;
 using glm::sin;
 #define IMPOSTOR_FRAME_FN inline
@@ -65,6 +66,17 @@ IMPOSTOR_FRAME_FN vec3 impostorFrameHalfExtents(vec4 impostorQuad, float sinE, f
     float halfHeight = 0.5f * (impostorQuad.z - impostorQuad.y);
     return vec3(r, halfHeight * cosE + r * sinE, halfHeight * sinE + r * cosE);
 }
+
+// The frame of n whose azimuth is nearest `azimuth` (radians, any turn):
+// the nearest, not a blend of two, since frames are 30° apart and one
+// texture fetch a pixel is what a CPU rasteriser can afford.
+IMPOSTOR_FRAME_FN uint impostorNearestFrame(float azimuth, uint n) {
+    float t = mod(azimuth / 6.28318531f * float(n), float(n));
+    return uint(round(t)) % n;
+}
+
+// The elevation of ring r (radians).
+IMPOSTOR_FRAME_FN float impostorRingElevation(uint ring) { return float(ring) * IMPOSTOR_RING_STEP; }
 
 // The ring whose elevation is nearest `elevation` (radians; views from
 // below the horizon take the lowest ring).

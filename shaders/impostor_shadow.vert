@@ -19,8 +19,6 @@ layout(location = 2) flat out uint outLayer; // the shadow frame shown
 layout(location = 4) flat out uint outFade;
 layout(location = 5) flat out float outDepthSpan; // map depth from the quad to the frame's front
 
-const float kTau = 6.28318531;
-
 void main() {
     VisiblePlant p = visiblePlant(gl_InstanceIndex);
     FieldInstance inst = fieldInstanceAt(p.index);
@@ -44,8 +42,7 @@ void main() {
     float azimuth = cosE > 1e-6 ? atan(toSun.x, toSun.z) : 0.0;
     uint frames = m.impostor.y;
     // The nearest frame, as the colour pass's single billboards choose.
-    float t = mod(azimuth / kTau * float(frames), float(frames));
-    outLayer = m.impostor.w + uint(round(t)) % frames;
+    outLayer = m.impostor.w + impostorNearestFrame(azimuth, frames);
 
     // Corner v.position.x of the whole frame, in impostor_outline.h's order:
     // (0, 0), (1, 0), (1, 1), (0, 1), v = 0 at the top.

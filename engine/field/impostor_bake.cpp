@@ -356,7 +356,7 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
             for (uint32_t f = 0; f < frames; ++f) {
                 beginBakeFrame(cmd, {&targets.color, &targets.normalDepth}, targets.depth, targets.size);
                 drawBakeFrame(cmd, bake, model,
-                              frameView(model.gpu.impostorQuad, f, frames, float(ring) * IMPOSTOR_RING_STEP),
+                              frameView(model.gpu.impostorQuad, f, frames, gpu::impostorRingElevation(ring)),
                               {VK_CULL_MODE_BACK_BIT, VK_CULL_MODE_NONE});
                 resolveBakeFrame(cmd, {{&targets.color, &atlas.color}, {&targets.normalDepth, &atlas.normalDepth}},
                                  targets.samples, targets.size, model.gpu.impostor.x + ring * frames + f);

@@ -436,7 +436,7 @@ TEST_F(ImpostorTest, RingFramesCoverWhatTheMeshCoversSeenFromTheirElevation) {
     double worst = 0.0;
     for (uint32_t ring = 0; ring < IMPOSTOR_RINGS; ++ring)
         for (uint32_t f = 0; f < kFrames; f += 3) {
-            const float elevation = float(ring) * IMPOSTOR_RING_STEP;
+            const float elevation = gpu::impostorRingElevation(ring);
             const std::vector<float> seen = meshViewOnCpu(pool, f, elevation, kSize).coverage;
             const std::vector<float> fromHorizon = meshViewOnCpu(pool, f, 0.0f, kSize).coverage;
             const Frame frame = colorFrame(ring * kFrames + f);
@@ -567,7 +567,7 @@ TEST(ImpostorFrames, Frame0LooksAlongMinusZWithPlusXRight) {
     // right × up = toward the viewer: a right-handed view, on every ring.
     for (uint32_t ring = 0; ring < IMPOSTOR_RINGS; ++ring)
         for (uint32_t f = 0; f < 12; ++f) {
-            const float a = gpu::impostorFrameAzimuth(f, 12), e = float(ring) * IMPOSTOR_RING_STEP;
+            const float a = gpu::impostorFrameAzimuth(f, 12), e = gpu::impostorRingElevation(ring);
             const glm::vec3 up = gpu::impostorFrameUp(a, std::sin(e), std::cos(e));
             EXPECT_NEAR(glm::distance(glm::cross(gpu::impostorFrameRight(a), up),
                                       gpu::impostorFrameToView(a, std::sin(e), std::cos(e))),
