@@ -1,7 +1,8 @@
 // The impostor bake (impostor_atlas.h): every model drawn from every frame
-// direction into MSAA targets, resolved into its atlas layers, then from
-// every shadow frame direction into its coverage-only target and the shadow
-// frames' layers, the mip chains blitted, and the outlines read back.
+// direction into targets of twice the frame's side, each filtered down 2:1
+// into its atlas layer (2×2 supersampling), then from every shadow frame
+// direction into its coverage-only target and the shadow frames' layers,
+// the mip chains blitted, and the outlines read back.
 #include "engine/field/impostor_atlas.h"
 
 #include "engine/vk/descriptors.h"
@@ -26,7 +27,11 @@ constexpr VkFormat kAtlasColorFormat = VK_FORMAT_R8G8B8A8_SRGB;
 constexpr VkFormat kAtlasNormalFormat = VK_FORMAT_R8G8B8A8_UNORM;
 constexpr VkFormat kShadowFrameFormat = VK_FORMAT_R8G8_UNORM;
 constexpr VkFormat kBakeDepthFormat = VK_FORMAT_D32_SFLOAT;
-constexpr VkSampleCountFlagBits kBakeSamples = VK_SAMPLE_COUNT_4_BIT;
+// Frames are drawn at this many times the frame's side, one sample a pixel,
+// and filtered down to it: 2×2 supersampling. On lavapipe it takes about two
+// thirds of the time of 4× MSAA at the frame's side, whose per-sample coverage
+// and resolve cost more than shading four times the pixels.
+constexpr uint32_t kBakeSupersampling = 2;
 
 uint32_t mipCount(uint32_t size) {
     uint32_t levels = 1;
@@ -41,13 +46,6 @@ uint32_t quadsOf(BillboardKind kind) {
     case BillboardKind::Triple: return 3;
     }
     return 2;
-}
-
-// 4× MSAA where the device has it for both formats and depth, else none.
-VkSampleCountFlagBits bakeSamples(const GpuContext& ctx) {
-    const VkPhysicalDeviceLimits& limits = ctx.properties.limits;
-    VkSampleCountFlags supported = limits.framebufferColorSampleCounts & limits.framebufferDepthSampleCounts;
-    return (supported & kBakeSamples) ? kBakeSamples : VK_SAMPLE_COUNT_1_BIT;
 }
 
 VkImageMemoryBarrier2 atlasBarrier(const Image& image, uint32_t baseMip, uint32_t mips, uint32_t layers,
@@ -83,7 +81,7 @@ uint32_t atlasLayers(const GpuContext& ctx, const PlantModelPool& pool, const Im
     return uint32_t(layerCount);
 }
 
-// Destination of the frames' resolves, source and destination of the mip
+// Destination of the frames' filtered targets, source and destination of the mip
 // blits, sampled by the billboards.
 Image createAtlasImage(GpuResources& owner, uint32_t size, VkFormat format, uint32_t layers, uint32_t mips) {
     return createImage(
@@ -133,49 +131,46 @@ void assignImpostorLayers(PlantModelPool& pool, const ImpostorSettings& settings
     }
 }
 
-// The images every frame is drawn into (MSAA when the device has it), then
-// resolved or copied into the frame's layer.
+// The images every frame is drawn into, kBakeSupersampling times the
+// frame's side, then filtered down into the frame's layer.
 struct BakeTargets {
     Image color;
     Image normalDepth;
     Image depth;
-    Image shadow; // shadowFrameSize²: coverage and depth from the sun
+    Image shadow; // coverage and depth from the sun
     Image shadowDepth;
-    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-    uint32_t size = 0;
-    uint32_t shadowSize = 0;
+    uint32_t size = 0;       // the colour targets' side
+    uint32_t shadowSize = 0; // the shadow targets' side
 };
 
-BakeTargets createBakeTargets(GpuResources& owner, uint32_t size, uint32_t shadowSize) {
+BakeTargets createBakeTargets(GpuResources& owner, uint32_t frameSize, uint32_t shadowFrameSize) {
     BakeTargets targets;
-    targets.samples = bakeSamples(owner.ctx());
-    targets.size = size;
-    targets.shadowSize = shadowSize;
+    targets.size = frameSize * kBakeSupersampling;
+    targets.shadowSize = shadowFrameSize * kBakeSupersampling;
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    targets.color = createImage(
-        owner, {.extent = {size, size}, .format = kAtlasColorFormat, .usage = usage, .samples = targets.samples});
-    targets.normalDepth = createImage(
-        owner, {.extent = {size, size}, .format = kAtlasNormalFormat, .usage = usage, .samples = targets.samples});
-    targets.shadow = createImage(
-        owner,
-        {.extent = {shadowSize, shadowSize}, .format = kShadowFrameFormat, .usage = usage, .samples = targets.samples});
-    for (auto [depth, side] : {std::pair{&targets.depth, size}, std::pair{&targets.shadowDepth, shadowSize}})
+    auto target = [&](uint32_t side, VkFormat format) {
+        return createImage(owner, {.extent = {side, side}, .format = format, .usage = usage});
+    };
+    targets.color = target(targets.size, kAtlasColorFormat);
+    targets.normalDepth = target(targets.size, kAtlasNormalFormat);
+    targets.shadow = target(targets.shadowSize, kShadowFrameFormat);
+    for (auto [depth, side] :
+         {std::pair{&targets.depth, targets.size}, std::pair{&targets.shadowDepth, targets.shadowSize}})
         *depth = createImage(
             owner, {.extent = {side, side},
                     .format = kBakeDepthFormat,
                     .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                    .aspect = VK_IMAGE_ASPECT_DEPTH_BIT,
-                    .samples = targets.samples});
+                    .aspect = VK_IMAGE_ASPECT_DEPTH_BIT});
     return targets;
 }
 
 // shaders/impostor_bake.vert reading the vertex pool, with the frame's
 // view as push constants, and the cull mode dynamic. The colour frames'
 // pipeline (impostor_bake.frag): two colour attachments (albedo, normal +
-// depth), depth test, MSAA, back faces culled for bark, none for two-sided
+// depth), depth test, back faces culled for bark, none for two-sided
 // foliage. The shadow frames' (impostor_shadow_bake.frag): one attachment
-// of coverage and the nearest depth from the sun, depth test, MSAA, both
-// sides of everything, as the shadow passes cast.
+// of coverage and the nearest depth from the sun, depth test, both sides of
+// everything, as the shadow passes cast.
 struct BakePipeline {
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkDescriptorSet set = VK_NULL_HANDLE;
@@ -183,7 +178,7 @@ struct BakePipeline {
     VkPipeline shadowPipeline = VK_NULL_HANDLE;
 };
 
-BakePipeline createBakePipeline(GpuResources& owner, const Buffer& vertices, VkSampleCountFlagBits samples) {
+BakePipeline createBakePipeline(GpuResources& owner, const Buffer& vertices) {
     const DescriptorBinding table[] = {
         storageBuffer(IMPOSTOR_BAKE_BINDING_VERTICES, VK_SHADER_STAGE_VERTEX_BIT, vertices)};
     const VkDescriptorSetLayout setLayout = createSetLayout(owner, table);
@@ -200,7 +195,6 @@ BakePipeline createBakePipeline(GpuResources& owner, const Buffer& vertices, VkS
     desc.colorFormat = kAtlasColorFormat;
     desc.secondColorFormat = kAtlasNormalFormat;
     desc.depthFormat = kBakeDepthFormat;
-    desc.samples = samples;
     desc.dynamicCullMode = true;
     // The bake projection is a right-handed view with +y at row 0, so
     // triangles counter-clockwise seen from outside stay counter-clockwise
@@ -216,14 +210,14 @@ BakePipeline createBakePipeline(GpuResources& owner, const Buffer& vertices, VkS
     return bake;
 }
 
-// Clears the frame's targets (MSAA colour attachments and depth, `size`²)
+// Clears the frame's targets (colour attachments and depth, `size`²)
 // and begins rendering into them.
 void beginBakeFrame(VkCommandBuffer cmd, std::initializer_list<const Image*> colours, const Image& depthTarget,
                     uint32_t size) {
-    // Each frame clears the targets again: the previous frame's resolve
+    // Each frame clears the targets again: the previous frame's filtering
     // reads must be done before (write after read: execution only), and
     // its depth writes before the depth clear (write after write).
-    const ImageTransition toAttachment{VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+    const ImageTransition toAttachment{VK_PIPELINE_STAGE_2_BLIT_BIT,
                                        VK_ACCESS_2_NONE,
                                        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
@@ -293,56 +287,52 @@ void drawBakeFrame(VkCommandBuffer cmd, const BakePipeline& bake, const PlantMod
     }
 }
 
-// An MSAA target and the atlas image its frames resolve into.
-struct BakeResolve {
+// A supersampled target and the atlas image its frames are filtered into.
+struct BakeDownsample {
     const Image* target;
     const Image* image;
 };
 
-// Ends the frame and resolves (or copies) each target into mip 0 of
-// `layer` of its image, which is in TRANSFER_DST_OPTIMAL.
-void resolveBakeFrame(VkCommandBuffer cmd, std::initializer_list<BakeResolve> resolves, VkSampleCountFlagBits samples,
-                      uint32_t size, uint32_t layer) {
+// Ends the frame and filters each target (`size`²) down into mip 0 of
+// `layer` of its image, which is in TRANSFER_DST_OPTIMAL. A linear blit
+// halving each side samples every destination texel at the corner its 2×2
+// source texels share, with weight 1/4 each: a box filter, which averages
+// the premultiplied values and the coverage as an MSAA resolve would (the
+// sRGB colour in linear space).
+void downsampleBakeFrame(VkCommandBuffer cmd, std::initializer_list<BakeDownsample> targets, uint32_t size,
+                         uint32_t layer) {
+    static_assert(kBakeSupersampling == 2, "a linear blit is a box filter only when it halves the side");
     vkCmdEndRendering(cmd);
-    // The frame's attachment writes must land before the resolve reads them.
+    // The frame's attachment writes must land before the blit reads them.
     const ImageTransition toSource{VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                                   VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                                   VK_PIPELINE_STAGE_2_BLIT_BIT,
                                    VK_ACCESS_2_TRANSFER_READ_BIT,
                                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
     std::vector<VkImageMemoryBarrier2> barriers;
-    for (const BakeResolve& r : resolves) barriers.push_back(atlasBarrier(*r.target, 0, 1, 1, toSource));
+    for (const BakeDownsample& d : targets) barriers.push_back(atlasBarrier(*d.target, 0, 1, 1, toSource));
     pipelineBarrier(cmd, barriers);
-    // A separate resolve rather than a resolve attachment on a layer view:
-    // lavapipe resolves those into layer 0.
-    for (const BakeResolve& r : resolves) {
-        const VkImageSubresourceLayers src{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        const VkImageSubresourceLayers dst{VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
-        if (samples != VK_SAMPLE_COUNT_1_BIT) {
-            VkImageResolve region{src, {}, dst, {}, {size, size, 1}};
-            vkCmdResolveImage(cmd, r.target->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, r.image->image,
-                              VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        } else {
-            VkImageCopy region{src, {}, dst, {}, {size, size, 1}};
-            vkCmdCopyImage(cmd, r.target->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, r.image->image,
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        }
-    }
+    const int32_t from = int32_t(size), to = int32_t(size / kBakeSupersampling);
+    VkImageBlit blit{};
+    blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    blit.srcOffsets[1] = {from, from, 1};
+    blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
+    blit.dstOffsets[1] = {to, to, 1};
+    for (const BakeDownsample& d : targets)
+        vkCmdBlitImage(cmd, d.target->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d.image->image,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
 }
 
 // Every model from every direction into mip 0 of its layers: the colour
 // frames of every ring, then the shadow frames.
 void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const BakeTargets& targets,
                       const BakePipeline& bake, const PlantModelPool& pool, const Buffer& indices, float sunElevation) {
-    // Level 0 of every layer receives one frame's resolve (or copy); its old
+    // Level 0 of every layer receives one frame's filtered target; its old
     // contents are discarded.
-    const ImageTransition toDestination{VK_PIPELINE_STAGE_2_NONE,
-                                        VK_ACCESS_2_NONE,
-                                        VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                                        VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                        VK_IMAGE_LAYOUT_UNDEFINED,
-                                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
+    const ImageTransition toDestination{VK_PIPELINE_STAGE_2_NONE,     VK_ACCESS_2_NONE,
+                                        VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                        VK_IMAGE_LAYOUT_UNDEFINED,    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
     pipelineBarrier(cmd, {atlasBarrier(atlas.color, 0, 1, atlas.layers, toDestination),
                           atlasBarrier(atlas.normalDepth, 0, 1, atlas.layers, toDestination),
                           atlasBarrier(atlas.shadow, 0, 1, atlas.shadowLayers, toDestination)});
@@ -358,8 +348,8 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
                 drawBakeFrame(cmd, bake, model,
                               frameView(model.gpu.impostorQuad, f, frames, gpu::impostorRingElevation(ring)),
                               {VK_CULL_MODE_BACK_BIT, VK_CULL_MODE_NONE});
-                resolveBakeFrame(cmd, {{&targets.color, &atlas.color}, {&targets.normalDepth, &atlas.normalDepth}},
-                                 targets.samples, targets.size, model.gpu.impostor.x + ring * frames + f);
+                downsampleBakeFrame(cmd, {{&targets.color, &atlas.color}, {&targets.normalDepth, &atlas.normalDepth}},
+                                    targets.size, model.gpu.impostor.x + ring * frames + f);
             }
         }
     }
@@ -369,8 +359,7 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
             beginBakeFrame(cmd, {&targets.shadow}, targets.shadowDepth, targets.shadowSize);
             drawBakeFrame(cmd, bake, model, frameView(model.gpu.impostorQuad, f, frames, sunElevation),
                           {VK_CULL_MODE_NONE, VK_CULL_MODE_NONE});
-            resolveBakeFrame(cmd, {{&targets.shadow, &atlas.shadow}}, targets.samples, targets.shadowSize,
-                             model.gpu.impostor.w + f);
+            downsampleBakeFrame(cmd, {{&targets.shadow, &atlas.shadow}}, targets.shadowSize, model.gpu.impostor.w + f);
         }
     }
 }
@@ -380,20 +369,17 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
 // correctly); then every level is left for the billboards' fragment shaders.
 void recordMipChain(VkCommandBuffer cmd, std::initializer_list<const Image*> images, uint32_t size, uint32_t mips,
                     uint32_t layers) {
-    // The resolves into level 0 must be done before the first blit reads
-    // it; the other levels hold nothing yet.
-    const ImageTransition resolvedToSource{VK_PIPELINE_STAGE_2_RESOLVE_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                                           VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                           VK_PIPELINE_STAGE_2_BLIT_BIT,
-                                           VK_ACCESS_2_TRANSFER_READ_BIT,
-                                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+    // The frames' blits into level 0 must be done before the first mip blit
+    // reads it; the other levels hold nothing yet.
+    const ImageTransition bakedToSource{VK_PIPELINE_STAGE_2_BLIT_BIT,         VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                        VK_PIPELINE_STAGE_2_BLIT_BIT,         VK_ACCESS_2_TRANSFER_READ_BIT,
+                                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
     const ImageTransition emptyToDestination{VK_PIPELINE_STAGE_2_NONE,     VK_ACCESS_2_NONE,
                                              VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                                              VK_IMAGE_LAYOUT_UNDEFINED,    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
     std::vector<VkImageMemoryBarrier2> toBlit;
     for (const Image* image : images) {
-        toBlit.push_back(atlasBarrier(*image, 0, 1, layers, resolvedToSource));
+        toBlit.push_back(atlasBarrier(*image, 0, 1, layers, bakedToSource));
         if (mips > 1) toBlit.push_back(atlasBarrier(*image, 1, mips - 1, layers, emptyToDestination));
     }
     pipelineBarrier(cmd, toBlit);
@@ -482,7 +468,7 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
     {
         GpuResources scratch(ctx); // the targets and pipeline only the bake uses
         const BakeTargets targets = createBakeTargets(scratch, settings.frameSize, settings.shadowFrameSize);
-        const BakePipeline bake = createBakePipeline(scratch, vertices, targets.samples);
+        const BakePipeline bake = createBakePipeline(scratch, vertices);
         // All models and frames in one submission.
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
             recordBakeFrames(cmd, atlas, targets, bake, pool, indices, sunElevation);
