@@ -1,8 +1,9 @@
 // The impostor bake (impostor_atlas.h): every model drawn from every frame
-// direction into targets of twice the frame's side, each filtered down 2:1
-// into its atlas layer (2×2 supersampling), then from every shadow frame
-// direction into its coverage-only target and the shadow frames' layers,
-// the mip chains blitted, and the outlines read back.
+// direction into targets of twice the frame's side, a ring of frames at a
+// time, each ring filtered down 2:1 into its atlas layers (2×2
+// supersampling), then from every shadow frame direction into its
+// coverage-only targets and the shadow frames' layers, the mip chains
+// blitted, and the outlines read back.
 #include "engine/field/impostor_atlas.h"
 
 #include "engine/vk/descriptors.h"
@@ -131,36 +132,55 @@ void assignImpostorLayers(PlantModelPool& pool, const ImpostorSettings& settings
     }
 }
 
-// The images every frame is drawn into, kBakeSupersampling times the
-// frame's side, then filtered down into the frame's layer.
+// An image every frame of a ring is drawn into, one layer each,
+// kBakeSupersampling times the frame's side, and a view of each layer. A
+// ring's frames are drawn one after the other and filtered into their atlas
+// layers together: the filtering waits for the drawing it reads, and on
+// lavapipe waiting after every frame keeps the rasteriser's threads and the
+// thread that bins the next frame's triangles from working at the same time
+// (the bake took 0.90 of the time with per-ring waits).
+struct BakeTarget {
+    Image image;
+    std::vector<VkImageView> layers;
+};
+
+BakeTarget createBakeTarget(GpuResources& owner, uint32_t side, VkFormat format, uint32_t layers) {
+    const bool depth = format == kBakeDepthFormat;
+    const VkImageAspectFlags aspect = depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+    BakeTarget target;
+    target.image = createImage(
+        owner, {.extent = {side, side},
+                .format = format,
+                .usage = depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT
+                               : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                .aspect = aspect,
+                .layers = layers,
+                .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
+    for (uint32_t layer = 0; layer < layers; ++layer)
+        target.layers.push_back(createLayerView(owner, target.image, layer, aspect));
+    return target;
+}
+
 struct BakeTargets {
-    Image color;
-    Image normalDepth;
-    Image depth;
-    Image shadow; // coverage and depth from the sun
-    Image shadowDepth;
+    BakeTarget color;
+    BakeTarget normalDepth;
+    BakeTarget depth;
+    BakeTarget shadow; // coverage and depth from the sun
+    BakeTarget shadowDepth;
     uint32_t size = 0;       // the colour targets' side
     uint32_t shadowSize = 0; // the shadow targets' side
 };
 
-BakeTargets createBakeTargets(GpuResources& owner, uint32_t frameSize, uint32_t shadowFrameSize) {
+BakeTargets createBakeTargets(GpuResources& owner, const ImpostorSettings& settings) {
     BakeTargets targets;
-    targets.size = frameSize * kBakeSupersampling;
-    targets.shadowSize = shadowFrameSize * kBakeSupersampling;
-    const VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    auto target = [&](uint32_t side, VkFormat format) {
-        return createImage(owner, {.extent = {side, side}, .format = format, .usage = usage});
-    };
-    targets.color = target(targets.size, kAtlasColorFormat);
-    targets.normalDepth = target(targets.size, kAtlasNormalFormat);
-    targets.shadow = target(targets.shadowSize, kShadowFrameFormat);
-    for (auto [depth, side] :
-         {std::pair{&targets.depth, targets.size}, std::pair{&targets.shadowDepth, targets.shadowSize}})
-        *depth = createImage(
-            owner, {.extent = {side, side},
-                    .format = kBakeDepthFormat,
-                    .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
-                    .aspect = VK_IMAGE_ASPECT_DEPTH_BIT});
+    targets.size = settings.frameSize * kBakeSupersampling;
+    targets.shadowSize = settings.shadowFrameSize * kBakeSupersampling;
+    const uint32_t frames = settings.frames;
+    targets.color = createBakeTarget(owner, targets.size, kAtlasColorFormat, frames);
+    targets.normalDepth = createBakeTarget(owner, targets.size, kAtlasNormalFormat, frames);
+    targets.depth = createBakeTarget(owner, targets.size, kBakeDepthFormat, frames);
+    targets.shadow = createBakeTarget(owner, targets.shadowSize, kShadowFrameFormat, frames);
+    targets.shadowDepth = createBakeTarget(owner, targets.shadowSize, kBakeDepthFormat, frames);
     return targets;
 }
 
@@ -210,13 +230,12 @@ BakePipeline createBakePipeline(GpuResources& owner, const Buffer& vertices) {
     return bake;
 }
 
-// Clears the frame's targets (colour attachments and depth, `size`²)
-// and begins rendering into them.
-void beginBakeFrame(VkCommandBuffer cmd, std::initializer_list<const Image*> colours, const Image& depthTarget,
-                    uint32_t size) {
-    // Each frame clears the targets again: the previous frame's filtering
-    // reads must be done before (write after read: execution only), and
-    // its depth writes before the depth clear (write after write).
+// Every layer of a ring's targets made ready to be cleared and drawn.
+void prepareBakeRing(VkCommandBuffer cmd, std::initializer_list<const BakeTarget*> colours, const BakeTarget& depth,
+                     uint32_t frames) {
+    // The previous ring's filtering reads must be done before its layers
+    // are cleared again (write after read: execution only), and its depth
+    // writes before the depth clears (write after write).
     const ImageTransition toAttachment{VK_PIPELINE_STAGE_2_BLIT_BIT,
                                        VK_ACCESS_2_NONE,
                                        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
@@ -224,27 +243,34 @@ void beginBakeFrame(VkCommandBuffer cmd, std::initializer_list<const Image*> col
                                        VK_IMAGE_LAYOUT_UNDEFINED,
                                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkImageMemoryBarrier2 depthToAttachment =
-        atlasBarrier(depthTarget, 0, 1, 1,
+        atlasBarrier(depth.image, 0, 1, frames,
                      {VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                       VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
     depthToAttachment.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
     std::vector<VkImageMemoryBarrier2> barriers{depthToAttachment};
+    for (const BakeTarget* colour : colours)
+        barriers.push_back(atlasBarrier(colour->image, 0, 1, frames, toAttachment));
+    pipelineBarrier(cmd, barriers);
+}
+
+// Clears layer `layer` of the targets (colour attachments and depth,
+// `size`²) and begins rendering into it.
+void beginBakeFrame(VkCommandBuffer cmd, std::initializer_list<const BakeTarget*> colours,
+                    const BakeTarget& depthTarget, uint32_t size, uint32_t layer) {
     std::vector<VkRenderingAttachmentInfo> attachments;
-    for (const Image* colour : colours) {
-        barriers.push_back(atlasBarrier(*colour, 0, 1, 1, toAttachment));
+    for (const BakeTarget* colour : colours) {
         VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-        a.imageView = colour->view;
+        a.imageView = colour->layers[layer];
         a.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
         a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
         a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
         a.clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}}; // background: coverage 0
         attachments.push_back(a);
     }
-    pipelineBarrier(cmd, barriers);
-
-    const VkRenderingAttachmentInfo depth = clearedDepthAttachment(depthTarget.view, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+    const VkRenderingAttachmentInfo depth =
+        clearedDepthAttachment(depthTarget.layers[layer], VK_ATTACHMENT_STORE_OP_DONT_CARE);
     const VkRect2D area{{0, 0}, {size, size}};
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
     rendering.renderArea = area;
@@ -289,21 +315,21 @@ void drawBakeFrame(VkCommandBuffer cmd, const BakePipeline& bake, const PlantMod
 
 // A supersampled target and the atlas image its frames are filtered into.
 struct BakeDownsample {
-    const Image* target;
+    const BakeTarget* target;
     const Image* image;
 };
 
-// Ends the frame and filters each target (`size`²) down into mip 0 of
-// `layer` of its image, which is in TRANSFER_DST_OPTIMAL. A linear blit
-// halving each side samples every destination texel at the corner its 2×2
-// source texels share, with weight 1/4 each: a box filter, which averages
-// the premultiplied values and the coverage as an MSAA resolve would (the
-// sRGB colour in linear space).
-void downsampleBakeFrame(VkCommandBuffer cmd, std::initializer_list<BakeDownsample> targets, uint32_t size,
-                         uint32_t layer) {
+// Filters the first `frames` layers of each target (`size`²), just drawn,
+// down into mip 0 of the layers from `firstLayer` on of its image, which
+// is in TRANSFER_DST_OPTIMAL. A linear blit halving each side samples
+// every destination texel at the corner its 2×2 source texels share, with
+// weight 1/4 each: a box filter, which averages the premultiplied values
+// and the coverage as an MSAA resolve would (the sRGB colour in linear
+// space).
+void downsampleBakeRing(VkCommandBuffer cmd, std::initializer_list<BakeDownsample> targets, uint32_t size,
+                        uint32_t firstLayer, uint32_t frames) {
     static_assert(kBakeSupersampling == 2, "a linear blit is a box filter only when it halves the side");
-    vkCmdEndRendering(cmd);
-    // The frame's attachment writes must land before the blit reads them.
+    // The frames' attachment writes must land before the blit reads them.
     const ImageTransition toSource{VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                                    VK_PIPELINE_STAGE_2_BLIT_BIT,
@@ -311,16 +337,16 @@ void downsampleBakeFrame(VkCommandBuffer cmd, std::initializer_list<BakeDownsamp
                                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
     std::vector<VkImageMemoryBarrier2> barriers;
-    for (const BakeDownsample& d : targets) barriers.push_back(atlasBarrier(*d.target, 0, 1, 1, toSource));
+    for (const BakeDownsample& d : targets) barriers.push_back(atlasBarrier(d.target->image, 0, 1, frames, toSource));
     pipelineBarrier(cmd, barriers);
     const int32_t from = int32_t(size), to = int32_t(size / kBakeSupersampling);
     VkImageBlit blit{};
-    blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, frames};
     blit.srcOffsets[1] = {from, from, 1};
-    blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
+    blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, firstLayer, frames};
     blit.dstOffsets[1] = {to, to, 1};
     for (const BakeDownsample& d : targets)
-        vkCmdBlitImage(cmd, d.target->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d.image->image,
+        vkCmdBlitImage(cmd, d.target->image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d.image->image,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
 }
 
@@ -343,24 +369,28 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.pipeline);
     for (const PlantModelInfo& model : pool.models) {
         for (uint32_t ring = 0; ring < IMPOSTOR_RINGS; ++ring) {
+            prepareBakeRing(cmd, {&targets.color, &targets.normalDepth}, targets.depth, frames);
             for (uint32_t f = 0; f < frames; ++f) {
-                beginBakeFrame(cmd, {&targets.color, &targets.normalDepth}, targets.depth, targets.size);
+                beginBakeFrame(cmd, {&targets.color, &targets.normalDepth}, targets.depth, targets.size, f);
                 drawBakeFrame(cmd, bake, model,
                               frameView(model.gpu.impostorQuad, f, frames, gpu::impostorRingElevation(ring)),
                               {VK_CULL_MODE_BACK_BIT, VK_CULL_MODE_NONE});
-                downsampleBakeFrame(cmd, {{&targets.color, &atlas.color}, {&targets.normalDepth, &atlas.normalDepth}},
-                                    targets.size, model.gpu.impostor.x + ring * frames + f);
+                vkCmdEndRendering(cmd);
             }
+            downsampleBakeRing(cmd, {{&targets.color, &atlas.color}, {&targets.normalDepth, &atlas.normalDepth}},
+                               targets.size, model.gpu.impostor.x + ring * frames, frames);
         }
     }
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.shadowPipeline);
     for (const PlantModelInfo& model : pool.models) {
+        prepareBakeRing(cmd, {&targets.shadow}, targets.shadowDepth, frames);
         for (uint32_t f = 0; f < frames; ++f) {
-            beginBakeFrame(cmd, {&targets.shadow}, targets.shadowDepth, targets.shadowSize);
+            beginBakeFrame(cmd, {&targets.shadow}, targets.shadowDepth, targets.shadowSize, f);
             drawBakeFrame(cmd, bake, model, frameView(model.gpu.impostorQuad, f, frames, sunElevation),
                           {VK_CULL_MODE_NONE, VK_CULL_MODE_NONE});
-            downsampleBakeFrame(cmd, {{&targets.shadow, &atlas.shadow}}, targets.shadowSize, model.gpu.impostor.w + f);
+            vkCmdEndRendering(cmd);
         }
+        downsampleBakeRing(cmd, {{&targets.shadow, &atlas.shadow}}, targets.shadowSize, model.gpu.impostor.w, frames);
     }
 }
 
@@ -467,7 +497,7 @@ ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const
     assignImpostorLayers(pool, settings);
     {
         GpuResources scratch(ctx); // the targets and pipeline only the bake uses
-        const BakeTargets targets = createBakeTargets(scratch, settings.frameSize, settings.shadowFrameSize);
+        const BakeTargets targets = createBakeTargets(scratch, settings);
         const BakePipeline bake = createBakePipeline(scratch, vertices);
         // All models and frames in one submission.
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {

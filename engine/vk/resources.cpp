@@ -154,6 +154,10 @@ VkImageView createMipView(GpuResources& owner, const Image& image, uint32_t mip)
                       {VK_IMAGE_ASPECT_COLOR_BIT, mip, 1, 0, 1});
 }
 
+VkImageView createLayerView(GpuResources& owner, const Image& image, uint32_t layer, VkImageAspectFlags aspect) {
+    return createView(owner, image.image, VK_IMAGE_VIEW_TYPE_2D, image.format, {aspect, 0, 1, layer, 1});
+}
+
 VkSampler createSampler(GpuResources& owner, const VkSamplerCreateInfo& info) {
     VkSampler sampler = VK_NULL_HANDLE;
     VK_CHECK(vkCreateSampler(owner.ctx().device, &info, nullptr, &sampler));

@@ -60,6 +60,8 @@ VkImageView createImageView(GpuResources& owner, const Image& image, VkFormat fo
 
 // A view of one mip level (first layer) of a colour image, in its format.
 VkImageView createMipView(GpuResources& owner, const Image& image, uint32_t mip);
+// A view of one layer (first mip level) of an image array, in its format.
+VkImageView createLayerView(GpuResources& owner, const Image& image, uint32_t layer, VkImageAspectFlags aspect);
 
 VkSampler createSampler(GpuResources& owner, const VkSamplerCreateInfo& info);
 
