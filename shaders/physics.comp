@@ -15,6 +15,8 @@ layout(local_size_x = PHYSICS_GROUP_SIZE) in;
 layout(push_constant) uniform DispatchBlock {
     PhysicsDispatch dispatch;
 };
+// The same count, fixed for this pipeline (physics_layouts.h says why).
+layout(constant_id = PHYSICS_SUB_STEPS_CONSTANT_ID) const uint kSubSteps = 1u;
 
 void main() {
     // Two-dimensional dispatch past maxComputeWorkGroupCount[0] groups.
@@ -31,10 +33,10 @@ void main() {
 
     PhysicsUniforms u = physics;
     u.windDetail.z = dispatch.time;
-    u.counts.z = dispatch.subSteps;
+    u.counts.z = kSubSteps;
     float dt = u.windDetail.w;
     JointState s = stateAt(index);
     JointStep c = prepareJointStep(jp, parentRotation, base, s, sk, u, dt);
-    for (uint step = 0u; step < u.counts.z; ++step) s = stepJoint(c, s, step, dt);
+    for (uint step = 0u; step < kSubSteps; ++step) s = stepJoint(c, s, step, dt);
     states[index] = endJointFrame(s);
 }

@@ -32,6 +32,14 @@ using uint = uint32_t;
 #define PHYSICS_BINDING_STATE_TEXELS 7   // the states again, as texels
 #define PHYSICS_BINDING_POSE_TEXELS 8    // the poses again, as texels
 
+// A physics dispatch takes 1 to PHYSICS_MAX_DISPATCH_SUB_STEPS sub-steps, its
+// pipeline's loop count a specialization constant (PHYSICS_SUB_STEPS_CONSTANT_ID),
+// one pipeline per count: a loop bound the compiler knows is unrolled, and
+// lavapipe compiles a shader again whenever push constants that bound a
+// loop change (it inlines their values), at every dispatch.
+#define PHYSICS_MAX_DISPATCH_SUB_STEPS 8u
+#define PHYSICS_SUB_STEPS_CONSTANT_ID 0
+
 // Texels of 16 bytes (R32G32B32A32_UINT views) each struct below takes in
 // the texel views the passes and the draw shaders read it through.
 #define JOINT_PARAMS_TEXELS 6
@@ -89,8 +97,9 @@ struct PhysicsUniforms {
 };
 
 // The push constants of one physics dispatch: when its sub-steps start and
-// how many it takes. A frame's catch-up and its own steps are several
-// dispatches in one command buffer; the rest of PhysicsUniforms holds for all.
+// how many it takes (the shader's count is its pipeline's, which is chosen by
+// this one). A frame's catch-up and its own steps are several dispatches in
+// one command buffer; the rest of PhysicsUniforms holds for all.
 struct PhysicsDispatch {
     float time;    // s: the first sub-step's time (PhysicsUniforms::windDetail.z of this dispatch)
     uint subSteps; // PhysicsUniforms::counts.z of this dispatch

@@ -17,6 +17,7 @@ namespace pf {
 // jump in time) records several, each followed by the poses, so parents'
 // poses are never older than this many steps.
 inline constexpr uint32_t kFrameSubSteps = 8;
+static_assert(kFrameSubSteps <= PHYSICS_MAX_DISPATCH_SUB_STEPS, "a dispatch takes at most that many sub-steps");
 // A capture at time T starts from rest at T − this (plants settle in ~5 s),
 // so it costs the same at any T and depends on T alone; so does a sequence
 // whose next frame is further ahead than this.

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 namespace pf {
 
@@ -53,7 +55,7 @@ std::vector<uint32_t> jointsByDepth(const SkeletonSet& set, std::vector<glm::uve
 // pose levels read the new states and overwrite the poses it read.
 void recordPhysicsDispatch(VkCommandBuffer cmd, const PhysicsPass& pass, const gpu::PhysicsDispatch& dispatch) {
     if (dispatch.subSteps == 0) return;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.physicsPipeline);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.physicsPipelines[dispatch.subSteps - 1]);
     vkCmdPushConstants(cmd, pass.set.pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(dispatch), &dispatch);
     dispatchJoints(cmd, pass, pass.jointCount);
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
@@ -154,7 +156,12 @@ PhysicsPass createPhysicsPass(GpuResources& owner, const SkeletonSet& set) {
     // 8 bytes of push constants: the physics dispatch or the pose level.
     static_assert(sizeof(gpu::PhysicsDispatch) == sizeof(glm::uvec2));
     pass.set = createComputeSet(owner, bindings, sizeof(glm::uvec2));
-    pass.physicsPipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_physics_comp);
+    for (uint32_t steps = 1; steps <= PHYSICS_MAX_DISPATCH_SUB_STEPS; ++steps) {
+        const VkSpecializationMapEntry entry{PHYSICS_SUB_STEPS_CONSTANT_ID, 0, sizeof(steps)};
+        const VkSpecializationInfo specialization{1, &entry, sizeof(steps), &steps};
+        pass.physicsPipelines[steps - 1] =
+            createComputePipeline(owner, pass.set.pipelineLayout, spirv_physics_comp, &specialization);
+    }
     pass.posePipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_pose_comp);
     return pass;
 }
@@ -181,6 +188,11 @@ void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, std::span<c
     bindComputeSet(cmd, pass.set);
     const gpu::PhysicsDispatch poseOnly{0.0f, 0};
     if (dispatches.empty()) dispatches = {&poseOnly, 1};
+    for (const gpu::PhysicsDispatch& d : dispatches)
+        if (d.subSteps > PHYSICS_MAX_DISPATCH_SUB_STEPS)
+            throw std::invalid_argument("a physics dispatch takes at most " +
+                                        std::to_string(PHYSICS_MAX_DISPATCH_SUB_STEPS) + " sub-steps, not " +
+                                        std::to_string(d.subSteps));
     if (timer) beginScope(cmd, *timer, "physics");
     for (size_t i = 0; i < dispatches.size(); ++i) {
         if (i > 0) {

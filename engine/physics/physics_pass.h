@@ -19,7 +19,8 @@ namespace pf {
 
 struct PhysicsPass {
     ComputeSet set; // PHYSICS_BINDING_*: the buffers below; its pipeline layout has the pose level's push constants
-    VkPipeline physicsPipeline = VK_NULL_HANDLE;
+    // physics.comp for 1, 2, … PHYSICS_MAX_DISPATCH_SUB_STEPS sub-steps (index count − 1).
+    std::array<VkPipeline, PHYSICS_MAX_DISPATCH_SUB_STEPS> physicsPipelines{};
     VkPipeline posePipeline = VK_NULL_HANDLE;
 
     Buffer uniforms;      // host-visible PhysicsUniforms
@@ -44,7 +45,8 @@ PhysicsPass createPhysicsPass(GpuResources& owner, const SkeletonSet& set);
 // the time (windDetail.z) and sub-step count (counts.z) with its own.
 void setPhysicsUniforms(const PhysicsPass& pass, const gpu::PhysicsUniforms& uniforms);
 
-// Records, for each dispatch in order, its physics sub-steps (none when 0)
+// Records, for each dispatch in order, its physics sub-steps (none when 0,
+// at most PHYSICS_MAX_DISPATCH_SUB_STEPS, else std::invalid_argument)
 // then the pose levels, with the barriers that order the first after the
 // previous frame's vertex reads of the poses, each dispatch after the poses
 // of the one before, and make the last poses visible to vertex shaders. With

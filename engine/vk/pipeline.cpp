@@ -103,13 +103,15 @@ VkPipeline createColorOnlyPipeline(GpuResources& owner, std::span<const uint32_t
     return createGraphicsPipeline(owner, desc);
 }
 
-VkPipeline createComputePipeline(GpuResources& owner, VkPipelineLayout layout, std::span<const uint32_t> spirv) {
+VkPipeline createComputePipeline(GpuResources& owner, VkPipelineLayout layout, std::span<const uint32_t> spirv,
+                                 const VkSpecializationInfo* specialization) {
     GpuResources scratch(owner.ctx());
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     info.stage.module = createShaderModule(scratch, spirv);
     info.stage.pName = "main";
+    info.stage.pSpecializationInfo = specialization;
     info.layout = layout;
     VkPipeline pipeline;
     VK_CHECK(vkCreateComputePipelines(owner.ctx().device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));

@@ -40,7 +40,9 @@ struct GraphicsPipelineDesc {
 
 // Pipelines are owned by `owner`.
 // A compute pipeline of the shader's main.
-VkPipeline createComputePipeline(GpuResources& owner, VkPipelineLayout layout, std::span<const uint32_t> spirv);
+// `specialization`, when given, sets the shader's specialization constants.
+VkPipeline createComputePipeline(GpuResources& owner, VkPipelineLayout layout, std::span<const uint32_t> spirv,
+                                 const VkSpecializationInfo* specialization = nullptr);
 
 // Vertices are pulled from storage buffers, so there is no vertex input;
 // viewport and scissor are dynamic.

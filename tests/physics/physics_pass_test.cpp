@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 namespace pf {
 namespace {
@@ -187,6 +188,54 @@ TEST_F(PhysicsPassTest, MatchesCpuReferenceAfter600SubStepsInGustyWind) {
     EXPECT_LT(stateDeviation, 1e-4f);
     EXPECT_LT(poseDeviation, 1e-4f);
     EXPECT_LT(translationDeviation, 1e-4f * 10.0f); // 1e-4 rad over plants under 10 m
+}
+
+// Each sub-step count has a pipeline of its own (physics_layouts.h): every
+// one of them, in one command buffer, against the CPU reference.
+TEST_F(PhysicsPassTest, DispatchesOfEverySubStepCountMatchTheCpuReference) {
+    SkeletonSet cpu = makeForest(2);
+    PhysicsPass pass = createPhysicsPass(resources, cpu);
+    const Wind wind = gustyWind();
+    const PhysicsSettings settings;
+    const uint32_t joints = uint32_t(cpu.states.size()), skeletons = uint32_t(cpu.skeletons.size());
+    std::vector<gpu::PhysicsDispatch> dispatches;
+    uint32_t step = 0;
+    for (uint32_t round = 0; round < 4; ++round)
+        for (uint32_t count = 1; count <= PHYSICS_MAX_DISPATCH_SUB_STEPS; ++count) {
+            dispatches.push_back({float(step) * settings.subStep, count});
+            step += count;
+        }
+    setPhysicsUniforms(pass, makePhysicsUniforms(wind, settings, 0.0f, settings.subStep, 0, skeletons, joints));
+    submitAndWait(ctx, [&](VkCommandBuffer cmd) { recordPhysicsPass(cmd, pass, dispatches); });
+    for (const gpu::PhysicsDispatch& d : dispatches) {
+        stepSkeletonsOnCpu(
+            cpu, makePhysicsUniforms(wind, settings, d.time, settings.subStep, d.subSteps, skeletons, joints));
+        poseSkeletonsOnCpu(cpu);
+    }
+    std::vector<gpu::JointState> states;
+    std::vector<gpu::JointPose> poses;
+    readPhysicsState(ctx, pass, states, poses);
+    ASSERT_EQ(states.size(), joints);
+    float deviation = 0, largestBend = 0;
+    for (uint32_t j = 0; j < joints; ++j) {
+        deviation = std::max(deviation, angleBetween(poses[j].rotation, cpu.poses[j].rotation));
+        largestBend = std::max(largestBend, glm::length(gpu::rotationVectorOf(cpu.states[j].rotation)));
+    }
+    std::printf("%zu dispatches, %u sub-steps: pose deviation %.3g rad, largest bend %.3g rad\n", dispatches.size(),
+                step, deviation, largestBend);
+    EXPECT_GT(largestBend, 0.02f) << "the wind should move the forest";
+    EXPECT_LT(deviation, 1e-4f);
+}
+
+TEST_F(PhysicsPassTest, DispatchOfMoreSubStepsThanAPipelineTakesIsRefused) {
+    PhysicsPass pass = createPhysicsPass(resources, makeForest(1));
+    const gpu::PhysicsDispatch tooLong{0.0f, PHYSICS_MAX_DISPATCH_SUB_STEPS + 1};
+    VkCommandBuffer cmd = allocateCommandBuffer(ctx);
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    vkBeginCommandBuffer(cmd, &begin);
+    EXPECT_THROW(recordPhysicsPass(cmd, pass, {&tooLong, 1}), std::invalid_argument);
+    vkEndCommandBuffer(cmd);
+    vkFreeCommandBuffers(ctx.device, ctx.commandPool, 1, &cmd);
 }
 
 TEST_F(PhysicsPassTest, RestInRestOutWithZeroSubSteps) {
