@@ -54,6 +54,21 @@ VkImageMemoryBarrier2 atlasBarrier(const Image& image, uint32_t baseMip, uint32_
     return imageMemoryBarrier(image.image, {VK_IMAGE_ASPECT_COLOR_BIT, baseMip, mips, 0, layers}, t);
 }
 
+// A linear blit halving a square of `side` texels (none below 1) from the
+// `from` layers into the `to` layers: every destination texel is sampled at
+// the corner its 2×2 source texels share, with weight 1/4 each, a box filter
+// of the premultiplied values and the coverage. The frames' 2:1 filtering
+// and the mip chains both use it.
+VkImageBlit halvingBlit(uint32_t side, const VkImageSubresourceLayers& from, const VkImageSubresourceLayers& to) {
+    const int32_t source = int32_t(std::max(side, 1u)), destination = int32_t(std::max(side / 2, 1u));
+    VkImageBlit blit{};
+    blit.srcSubresource = from;
+    blit.srcOffsets[1] = {source, source, 1};
+    blit.dstSubresource = to;
+    blit.dstOffsets[1] = {destination, destination, 1};
+    return blit;
+}
+
 void pipelineBarrier(VkCommandBuffer cmd, const std::vector<VkImageMemoryBarrier2>& images) {
     VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
     dep.imageMemoryBarrierCount = uint32_t(images.size());
@@ -322,11 +337,8 @@ struct BakeDownsample {
 
 // Filters the first `frames` layers of each target (`size`²), just drawn,
 // down into mip 0 of the layers from `firstLayer` on of its image, which
-// is in TRANSFER_DST_OPTIMAL. A linear blit halving each side samples
-// every destination texel at the corner its 2×2 source texels share, with
-// weight 1/4 each: a box filter, which averages the premultiplied values
-// and the coverage as an MSAA resolve would (the sRGB colour in linear
-// space).
+// is in TRANSFER_DST_OPTIMAL (halvingBlit: a box filter, which averages as
+// an MSAA resolve would, the sRGB colour in linear space).
 void downsampleBakeRing(VkCommandBuffer cmd, std::initializer_list<BakeDownsample> targets, uint32_t size,
                         uint32_t firstLayer, uint32_t frames) {
     static_assert(kBakeSupersampling == 2, "a linear blit is a box filter only when it halves the side");
@@ -340,12 +352,8 @@ void downsampleBakeRing(VkCommandBuffer cmd, std::initializer_list<BakeDownsampl
     std::vector<VkImageMemoryBarrier2> barriers;
     for (const BakeDownsample& d : targets) barriers.push_back(atlasBarrier(d.target->image, 0, 1, frames, toSource));
     pipelineBarrier(cmd, barriers);
-    const int32_t from = int32_t(size), to = int32_t(size / kBakeSupersampling);
-    VkImageBlit blit{};
-    blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, frames};
-    blit.srcOffsets[1] = {from, from, 1};
-    blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, firstLayer, frames};
-    blit.dstOffsets[1] = {to, to, 1};
+    const VkImageBlit blit = halvingBlit(size, {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, frames},
+                                         {VK_IMAGE_ASPECT_COLOR_BIT, 0, firstLayer, frames});
     for (const BakeDownsample& d : targets)
         vkCmdBlitImage(cmd, d.target->image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, d.image->image,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
@@ -416,13 +424,8 @@ void recordMipChain(VkCommandBuffer cmd, std::initializer_list<const Image*> ima
     pipelineBarrier(cmd, toBlit);
 
     for (uint32_t level = 1; level < mips; ++level) {
-        const int32_t from = int32_t(std::max(size >> (level - 1), 1u));
-        const int32_t to = int32_t(std::max(size >> level, 1u));
-        VkImageBlit blit{};
-        blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, layers};
-        blit.srcOffsets[1] = {from, from, 1};
-        blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, layers};
-        blit.dstOffsets[1] = {to, to, 1};
+        const VkImageBlit blit = halvingBlit(size >> (level - 1), {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, layers},
+                                             {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, layers});
         for (const Image* image : images)
             vkCmdBlitImage(cmd, image->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image->image,
                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
