@@ -11,7 +11,7 @@
 // phase's draws start after the early phase's entries of each list.
 layout(local_size_x = CULL_GROUP_SIZE) in;
 
-layout(set = 0, binding = CULL_BINDING_UNIFORMS, std140) uniform CullBlock {
+layout(set = 0, binding = CULL_BINDING_UNIFORMS, std430) readonly buffer CullBlock {
     CullUniforms cull;
 };
 layout(set = 0, binding = CULL_BINDING_COUNTS, std430) readonly buffer Counts {

@@ -9,7 +9,7 @@
 // only.
 layout(local_size_x = CULL_GROUP_SIZE) in;
 
-layout(set = 0, binding = CLUSTER_BINDING_UNIFORMS, std140) uniform ClusterBlock {
+layout(set = 0, binding = CLUSTER_BINDING_UNIFORMS, std430) readonly buffer ClusterBlock {
     ClusterUniforms cluster;
 };
 layout(set = 0, binding = CLUSTER_BINDING_NODES, std430) readonly buffer Nodes {

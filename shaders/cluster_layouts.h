@@ -41,6 +41,8 @@ struct ClusterNode {
 #define CLUSTER_FAR 2u     // drawn as its canopy
 #define CLUSTER_NEAR 3u    // a leaf whose plants go through the per-plant cull
 
+// Bound as a read-only storage buffer, not a uniform block (docs/ARCHITECTURE.md,
+// "What a shader may branch on").
 struct ClusterUniforms {
     vec4 frustum[6]; // planes as CullUniforms::frustum (or the sun's box for CLUSTER_CUT_BOX_ONLY)
     vec4 camera;     // xyz position, w pixels per metre at one metre (CullUniforms::camera)

@@ -14,7 +14,7 @@
 
 layout(local_size_x = CULL_GROUP_SIZE) in;
 
-layout(set = 0, binding = CULL_BINDING_UNIFORMS, std140) uniform CullBlock {
+layout(set = 0, binding = CULL_BINDING_UNIFORMS, std430) readonly buffer CullBlock {
     CullUniforms cull;
 };
 layout(set = 0, binding = CULL_BINDING_INSTANCES, std430) readonly buffer Instances {

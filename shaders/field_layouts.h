@@ -169,6 +169,8 @@ struct DrawCommand {
     uint firstInstance;
 };
 
+// Bound as a read-only storage buffer, not a uniform block (docs/ARCHITECTURE.md,
+// "What a shader may branch on").
 struct CullUniforms {
     vec4 frustum[6]; // world-space planes, xyz inward normal, w offset: inside when dot(n,p)+w >= 0
     vec4 camera;     // xyz position, w pixels per metre at one metre of distance (viewport height / (2 tan(fov/2)))
@@ -191,6 +193,8 @@ struct CullPush {
 // CullUniforms has it: build_draws.comp reads counts.y of either.
 #define SHADOW_CULL_CACHE 0u // the plants the cache holds
 #define SHADOW_CULL_FRAME 1u // every other caster, at the LOD the camera sees it at
+// Bound as a read-only storage buffer, not a uniform block (docs/ARCHITECTURE.md,
+// "What a shader may branch on").
 struct ShadowCullUniforms {
     vec4 box[6];      // planes of the sun's box (frustumPlanes of its view-projection), as CullUniforms::frustum
     vec4 camera;      // xyz the camera, w its pixels per metre at one metre (CullUniforms::camera)

@@ -7,7 +7,7 @@
 // maxComputeWorkGroupCount[0] groups.
 layout(local_size_x = 1) in;
 
-layout(set = 0, binding = CLUSTER_BINDING_UNIFORMS, std140) uniform ClusterBlock {
+layout(set = 0, binding = CLUSTER_BINDING_UNIFORMS, std430) readonly buffer ClusterBlock {
     ClusterUniforms cluster;
 };
 layout(set = 0, binding = CLUSTER_BINDING_NEAR, std430) buffer Near {

@@ -6,7 +6,7 @@
 #include "joint_physics.h"
 #include "texels.glsl"
 
-layout(set = 0, binding = PHYSICS_BINDING_UNIFORMS, std140) uniform PhysicsBlock {
+layout(set = 0, binding = PHYSICS_BINDING_UNIFORMS, std430) readonly buffer PhysicsBlock {
     PhysicsUniforms physics;
 };
 layout(set = 0, binding = PHYSICS_BINDING_PARAMS) uniform usamplerBuffer paramTexels;

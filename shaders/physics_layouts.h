@@ -87,6 +87,8 @@ struct Skeleton {
     vec4 scale;     // x instance scale, yzw 0
 };
 
+// Bound as a read-only storage buffer, not a uniform block (docs/ARCHITECTURE.md,
+// "What a shader may branch on").
 struct PhysicsUniforms {
     vec4 gravity; // xyz m/s² (world), w air density (kg/m³)
     vec4 wind;    // x, z: mean wind velocity (m/s, world); y gust strength (fraction of the speed); w gust front speed

@@ -12,7 +12,7 @@
 // camera's.
 layout(local_size_x = CULL_GROUP_SIZE) in;
 
-layout(set = 0, binding = CULL_BINDING_UNIFORMS, std140) uniform ShadowCullBlock {
+layout(set = 0, binding = CULL_BINDING_UNIFORMS, std430) readonly buffer ShadowCullBlock {
     ShadowCullUniforms cull;
 };
 layout(set = 0, binding = CULL_BINDING_INSTANCES, std430) readonly buffer Instances {

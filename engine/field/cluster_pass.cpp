@@ -35,7 +35,7 @@ ClusterPass createClusterPass(GpuResources& owner, const ClusterTree& tree, cons
     auto device = [&](VkDeviceSize bytes, VkBufferUsageFlags usage) {
         return createBuffer(owner, bytes, usage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     };
-    pass.uniforms = createHostBuffer(owner, sizeof(gpu::ClusterUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    pass.uniforms = createHostBuffer(owner, sizeof(gpu::ClusterUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     pass.leafState = device(VkDeviceSize(pass.leafCount) * 4, cleared);
     pass.near = device(NEAR_CHUNK_HEADER_BYTES + chunks * 8, cleared | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
     // The canopy's vertex shader reads the far list through a texel view.
@@ -52,7 +52,7 @@ ClusterPass createClusterPass(GpuResources& owner, const ClusterTree& tree, cons
     });
 
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-    const DescriptorBinding bindings[] = {uniformBuffer(CLUSTER_BINDING_UNIFORMS, compute, pass.uniforms),
+    const DescriptorBinding bindings[] = {storageBuffer(CLUSTER_BINDING_UNIFORMS, compute, pass.uniforms),
                                           storageBuffer(CLUSTER_BINDING_NODES, compute, nodes),
                                           storageBuffer(CLUSTER_BINDING_LEAF_STATE, compute, pass.leafState),
                                           storageBuffer(CLUSTER_BINDING_NEAR, compute, pass.near),

@@ -100,7 +100,7 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
     }
     const bool camera = inputs.kind == CullKind::Camera;
     pass.uniforms = createHostBuffer(owner, camera ? sizeof(gpu::CullUniforms) : sizeof(gpu::ShadowCullUniforms),
-                                     VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     if (pass.templateCount > 0)
         pass.templates =
             createDeviceBufferWithData(owner, inputs.templates.data(), inputs.templates.size_bytes(), storage);
@@ -131,7 +131,7 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
 
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
     const DescriptorBinding bindings[] = {
-        uniformBuffer(CULL_BINDING_UNIFORMS, compute, pass.uniforms),
+        storageBuffer(CULL_BINDING_UNIFORMS, compute, pass.uniforms),
         storageBuffer(CULL_BINDING_INSTANCES, compute, *inputs.instances),
         storageBuffer(CULL_BINDING_MODELS, compute, *inputs.models),
         storageBuffer(CULL_BINDING_STATE, compute, pass.state),

@@ -90,7 +90,7 @@ PhysicsPass createPhysicsPass(GpuResources& owner, const SkeletonSet& set) {
     // Every array is read through a texel view; states and poses are also written.
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
     const VkBufferUsageFlags uploaded = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    pass.uniforms = createHostBuffer(owner, sizeof(gpu::PhysicsUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    pass.uniforms = createHostBuffer(owner, sizeof(gpu::PhysicsUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     pass.skeletons = createHostBuffer(owner, bytesOf(set.skeletons), storage);
     if (!set.skeletons.empty())
         std::memcpy(pass.skeletons.mapped, set.skeletons.data(), set.skeletons.size() * sizeof(gpu::Skeleton));
@@ -144,7 +144,7 @@ PhysicsPass createPhysicsPass(GpuResources& owner, const SkeletonSet& set) {
     auto texels = [&](uint32_t binding, const Buffer& buffer, VkFormat format) {
         return texelBuffer(binding, compute, createTexelView(owner, buffer, format));
     };
-    const DescriptorBinding bindings[] = {uniformBuffer(PHYSICS_BINDING_UNIFORMS, compute, pass.uniforms),
+    const DescriptorBinding bindings[] = {storageBuffer(PHYSICS_BINDING_UNIFORMS, compute, pass.uniforms),
                                           texels(PHYSICS_BINDING_PARAMS, pass.params, uint4),
                                           texels(PHYSICS_BINDING_SKELETONS, pass.skeletons, uint4),
                                           storageBuffer(PHYSICS_BINDING_STATES, compute, pass.states),

@@ -8,6 +8,12 @@
 
 namespace pf::test {
 
+// A headless context with the validation layer on (a test's own, where the
+// fixture's one context is not enough).
+void createValidatedContext(GpuContext& ctx);
+// Destroys the context, then fails the test if the layer said anything.
+void destroyValidatedContext(GpuContext& ctx);
+
 class GpuTest : public ::testing::Test {
 protected:
     void SetUp() override;
