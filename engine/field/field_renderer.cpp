@@ -48,11 +48,20 @@ constexpr VkShaderStageFlags kDrawStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADE
 constexpr VkBufferUsageFlags kStorageAndTexels =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
 
+// Where a scope begins: around passes (beginScopeOutsideRendering), or
+// around draws inside a rendering.
+enum class ScopeStart { outsideRendering, insideRendering };
+
 struct Timed {
     VkCommandBuffer cmd;
     GpuTimer* timer;
-    Timed(VkCommandBuffer c, GpuTimer* t, const char* name) : cmd(c), timer(t) {
-        if (timer) beginScope(cmd, *timer, name);
+    Timed(VkCommandBuffer c, GpuTimer* t, const char* name, ScopeStart start = ScopeStart::outsideRendering)
+        : cmd(c), timer(t) {
+        if (!timer) return;
+        if (start == ScopeStart::outsideRendering)
+            beginScopeOutsideRendering(cmd, *timer, name);
+        else
+            beginScope(cmd, *timer, name);
     }
     ~Timed() {
         if (timer) endScope(cmd, *timer);
@@ -385,7 +394,7 @@ void FieldRenderer::pushFieldPass(VkCommandBuffer cmd, uint32_t pass, uint32_t i
 void FieldRenderer::drawPlantLists(VkCommandBuffer cmd, uint32_t phase, GpuTimer* timer) const {
     const bool late = phase == CULL_PHASE_LATE;
     {
-        Timed scope(cmd, late ? nullptr : timer, "plants");
+        Timed scope(cmd, late ? nullptr : timer, "plants", ScopeStart::insideRendering);
         vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.bark);
         drawClassIndirect(cmd, ctx_, cull_, DRAW_BARK, phase);
@@ -396,7 +405,7 @@ void FieldRenderer::drawPlantLists(VkCommandBuffer cmd, uint32_t phase, GpuTimer
         // The list twice: those the shadow map may reach, then the rest with
         // no shadow lookup (shaders/sunlit_select.h); each draw drops the
         // other's impostors in its vertex shader.
-        Timed scope(cmd, late ? nullptr : timer, "impostors");
+        Timed scope(cmd, late ? nullptr : timer, "impostors", ScopeStart::insideRendering);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.impostor);
         pushFieldPass(cmd, FIELD_PASS_COLOUR, IMPOSTOR_PART_SHADOWED);
         drawClassIndirect(cmd, ctx_, cull_, DRAW_IMPOSTOR, phase);
@@ -439,19 +448,19 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
     pushFieldPass(cmd, FIELD_PASS_COLOUR);
     if (naive) {
         {
-            Timed scope(cmd, timer, "plants");
+            Timed scope(cmd, timer, "plants", ScopeStart::insideRendering);
             vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.bark);
             drawPlantsNaive(cmd, true, false);
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.foliage);
             drawPlantsNaive(cmd, false, true);
         }
-        Timed scope(cmd, timer, "impostors"); // the naive baseline draws no impostors
+        Timed scope(cmd, timer, "impostors", ScopeStart::insideRendering); // the naive baseline draws no impostors
     } else {
         drawPlantLists(cmd, twoParts ? CULL_PHASE_EARLY : CULL_PHASE_ALL, timer);
     }
     {
-        Timed scope(cmd, timer, "canopy");
+        Timed scope(cmd, timer, "canopy", ScopeStart::insideRendering);
         if (!naive && settings_.clusters.enabled && drawCanopy_) {
             // One instance per far node; the cluster pass wrote the count.
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.canopy);
@@ -460,7 +469,7 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
         }
     }
     {
-        Timed scope(cmd, timer, "terrain_sky");
+        Timed scope(cmd, timer, "terrain_sky", ScopeStart::insideRendering);
         // Last, behind everything: only pixels no plant covers are shaded
         // (the depth test runs before these shaders, which never discard).
         // With occlusion culling the terrain is the early phase's main

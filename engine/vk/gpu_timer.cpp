@@ -1,5 +1,6 @@
 #include "engine/vk/gpu_timer.h"
 
+#include "engine/vk/resources.h"
 #include "engine/vk/vk_check.h"
 
 #include <stdexcept>
@@ -63,6 +64,13 @@ void beginScope(VkCommandBuffer cmd, GpuTimer& timer, const char* name) {
     timer.scopes.push_back({name});
     timer.openScopes.push_back(index);
     if (timer.supported) vkCmdWriteTimestamp2(cmd, kTimestampStage, timer.queryPool, 2 * index);
+}
+
+void beginScopeOutsideRendering(VkCommandBuffer cmd, GpuTimer& timer, const char* name) {
+    beginScope(cmd, timer, name);
+    if (timer.supported)
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                      VK_ACCESS_2_NONE);
 }
 
 void endScope(VkCommandBuffer cmd, GpuTimer& timer) {

@@ -113,7 +113,7 @@ void beginColorOnlyRendering(VkCommandBuffer cmd, VkImageView view, VkAttachment
 void endTargetPass(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) {
     vkCmdEndRendering(cmd);
 
-    if (timer) beginScope(cmd, *timer, kAntialiasScope);
+    if (timer) beginScopeOutsideRendering(cmd, *timer, kAntialiasScope);
     if (target.antialiasing.method == AntialiasMethod::fxaa) {
         imageBarrier(cmd, target.fxaaInput.image, VK_IMAGE_ASPECT_COLOR_BIT,
                      {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,

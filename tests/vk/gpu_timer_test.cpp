@@ -50,6 +50,32 @@ TEST_F(GpuTimerTest, TwoScopesAroundFillsReportTimesInOrder) {
     destroyGpuTimer(ctx, timer);
 }
 
+// The scope for passes outside rendering records its dependency with no
+// validation message and reports like any other, nested scopes inside it.
+TEST_F(GpuTimerTest, ScopeBegunOutsideRenderingEnclosesItsInnerScopes) {
+    GpuTimer timer = createGpuTimer(ctx, 2);
+    if (!timer.supported) {
+        destroyGpuTimer(ctx, timer);
+        GTEST_SKIP() << "the queue family writes no timestamps";
+    }
+    Buffer buffer =
+        createBuffer(resources, 16u << 20, VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+        resetGpuTimer(cmd, timer);
+        beginScopeOutsideRendering(cmd, timer, "pass");
+        beginScope(cmd, timer, "fill");
+        vkCmdFillBuffer(cmd, buffer.buffer, 0, VK_WHOLE_SIZE, 0u);
+        endScope(cmd, timer);
+        endScope(cmd, timer);
+    });
+    const std::vector<ScopeTime> times = readGpuTimer(ctx, timer);
+    ASSERT_EQ(times.size(), 2u);
+    EXPECT_EQ(times[0].name, "pass");
+    EXPECT_EQ(times[1].name, "fill");
+    EXPECT_GE(times[0].milliseconds, times[1].milliseconds);
+    destroyGpuTimer(ctx, timer);
+}
+
 TEST_F(GpuTimerTest, ScopesBeyondMaxScopesThrow) {
     GpuTimer timer = createGpuTimer(ctx, 2);
     submitAndWait(ctx, [&](VkCommandBuffer cmd) {

@@ -95,7 +95,7 @@ void BM_GpuPhysicsPose(benchmark::State& state) {
         const auto start = std::chrono::steady_clock::now();
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
             resetGpuTimer(cmd, timer);
-            beginScope(cmd, timer, "physics+pose");
+            beginScopeOutsideRendering(cmd, timer, "physics+pose");
             recordPhysicsPass(cmd, pass, &timer);
             endScope(cmd, timer);
         });

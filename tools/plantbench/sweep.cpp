@@ -82,7 +82,7 @@ struct FrameResources {
 // TRANSFER_SRC_OPTIMAL by the renderer) copied to a host buffer and made
 // visible to the host, timed as the "capture" scope.
 void recordCapture(VkCommandBuffer cmd, FrameResources& frame) {
-    beginScope(cmd, frame.timer, kCapturePass);
+    beginScopeOutsideRendering(cmd, frame.timer, kCapturePass);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {frame.target.extent.width, frame.target.extent.height, 1};

@@ -63,7 +63,7 @@ int runPhysicsCheck(const PlantfieldOptions& o) {
         const auto gpuStart = std::chrono::steady_clock::now();
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
             resetGpuTimer(cmd, timer);
-            beginScope(cmd, timer, "physics");
+            beginScopeOutsideRendering(cmd, timer, "physics");
             recordPhysicsPass(cmd, pass);
             endScope(cmd, timer);
         });
