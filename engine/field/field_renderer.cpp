@@ -489,7 +489,8 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
         recordLatePhase(cmd, target, timer);
     } else {
         // Every frame has the same scopes.
-        for (const char* name : {"depth_pyramid", "occlusion", "late_draws"}) Timed scope(cmd, timer, name);
+        for (const char* name : {"depth_pyramid", "occlusion", "late_draws"})
+            Timed scope(cmd, timer, name, ScopeStart::insideRendering);
     }
     endTargetPass(cmd, target, timer);
 }
