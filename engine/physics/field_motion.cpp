@@ -7,32 +7,41 @@
 namespace pf {
 namespace {
 
-// Shared skeletons: `phases` copies per model, model after model.
-SkeletonSet sharedSkeletons(const FieldContent& content) {
+// The shared copies and which each plant follows: `phases` copies per model,
+// each plant the copy its wind phase falls in. Only the copies some plant
+// follows are simulated, model after model and phase after phase; a copy no
+// plant follows would be stepped for nothing (a scene of few plants).
+struct SharedSkeletons {
+    SkeletonSet set;
+    std::vector<uint32_t> ofPlant; // index into set.skeletons
+};
+
+SharedSkeletons sharedSkeletons(const FieldContent& content) {
     const PlantModelPool& pool = content.models;
     const uint32_t phases = std::max(1u, content.scene.physics.sharedPhases);
-    const float angle = glm::radians(content.scene.wind.directionDegrees);
-    const glm::vec3 along(std::sin(angle), 0.0f, -std::cos(angle));
-    SkeletonSet set;
-    set.params = pool.joints;
-    for (uint32_t m = 0; m < pool.models.size(); ++m)
-        for (uint32_t phase = 0; phase < phases; ++phase)
-            addSkeleton(set, m, pool.models[m].firstJoint, pool.models[m].joints,
-                        along * (float(phase) * sharedPhaseSpacing(content.scene.physics)), 0.0f, 1.0f);
-    return set;
-}
-
-// Each plant follows the shared copy its wind phase falls in.
-std::vector<uint32_t> skeletonPerPlant(const FieldContent& content) {
-    const uint32_t phases = std::max(1u, content.scene.physics.sharedPhases);
-    std::vector<uint32_t> skeleton(content.plants.size());
-    for (size_t i = 0; i < skeleton.size(); ++i) {
+    constexpr uint32_t kUnfollowed = ~0u;
+    std::vector<uint32_t> copyOf(pool.models.size() * phases, kUnfollowed); // (model, phase) → skeleton
+    SharedSkeletons shared;
+    shared.ofPlant.resize(content.plants.size());
+    for (size_t i = 0; i < content.plants.size(); ++i) {
         const PlantInstance& p = content.plants[i];
         const uint32_t phase =
             std::min(phases - 1, uint32_t(p.windPhase / (2.0f * std::numbers::pi_v<float>)*float(phases)));
-        skeleton[i] = content.models.modelOf(p.species, p.variant) * phases + phase;
+        shared.ofPlant[i] = content.models.modelOf(p.species, p.variant) * phases + phase;
+        copyOf[shared.ofPlant[i]] = 0;
     }
-    return skeleton;
+    const float angle = glm::radians(content.scene.wind.directionDegrees);
+    const glm::vec3 along(std::sin(angle), 0.0f, -std::cos(angle));
+    shared.set.params = pool.joints;
+    for (uint32_t copy = 0; copy < copyOf.size(); ++copy) {
+        if (copyOf[copy] == kUnfollowed) continue;
+        copyOf[copy] = uint32_t(shared.set.skeletons.size());
+        const uint32_t m = copy / phases, phase = copy % phases;
+        addSkeleton(shared.set, m, pool.models[m].firstJoint, pool.models[m].joints,
+                    along * (float(phase) * sharedPhaseSpacing(content.scene.physics)), 0.0f, 1.0f);
+    }
+    for (uint32_t& skeleton : shared.ofPlant) skeleton = copyOf[skeleton];
+    return shared;
 }
 
 template <class T>
@@ -74,11 +83,12 @@ FieldMotion createFieldMotion(GpuResources& owner, const FieldContent& content) 
     motion.content = &content;
     motion.wind = content.scene.wind;
     motion.settings = content.scene.physics;
-    SkeletonSet set = sharedSkeletons(content);
+    SharedSkeletons shared = sharedSkeletons(content);
+    SkeletonSet& set = shared.set;
     motion.near = reserveNearSkeletons(set, content.models, content.plants, motion.settings.jointBudget);
     motion.grid = makePlantGrid(content.plants, content.scene.terrain.size, 16.0f);
     motion.pass = createPhysicsPass(owner, set);
-    motion.sharedOf = skeletonPerPlant(content);
+    motion.sharedOf = std::move(shared.ofPlant);
     motion.instanceSkeleton = createHostBuffer(owner, std::max<size_t>(1, motion.sharedOf.size()) * sizeof(uint32_t),
                                                VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
     std::copy(motion.sharedOf.begin(), motion.sharedOf.end(), static_cast<uint32_t*>(motion.instanceSkeleton.mapped));

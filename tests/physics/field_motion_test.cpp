@@ -7,6 +7,7 @@
 #include "gpu_test.h"
 
 #include <cstring>
+#include <set>
 
 namespace pf {
 namespace {
@@ -45,6 +46,22 @@ TEST_F(FieldMotionTest, PreparingAFrameRunsNoPhysics) {
     EXPECT_TRUE(snapshot(motion) == rest) << "advanceFieldMotion stepped the simulation itself";
     EXPECT_TRUE(motion.next.restart);
     EXPECT_FALSE(motion.next.ownStates.empty()) << "the camera stands by the broadleaf";
+}
+
+// The shared copies simulated are exactly those some plant follows: of a
+// field cut down to one plant, one.
+TEST_F(FieldMotionTest, SimulatesOnlyTheSharedCopiesSomePlantFollows) {
+    for (const size_t plants : {content.plants.size(), size_t(1)}) {
+        content.plants.resize(plants);
+        FieldMotion motion = createFieldMotion(resources, content);
+        size_t own = 0;
+        for (const std::vector<uint32_t>& free : motion.near.freeOfModel) own += free.size();
+        const size_t shared = motion.pass.skeletonCount - own;
+        const std::set<uint32_t> followed(motion.sharedOf.begin(), motion.sharedOf.end());
+        EXPECT_EQ(followed.size(), shared) << plants << " plants";
+        EXPECT_EQ(*followed.rbegin(), shared - 1) << plants << " plants";
+    }
+    EXPECT_EQ(content.plants.size(), 1u);
 }
 
 TEST_F(FieldMotionTest, PlanCoversEveryStepFromRestInFrameSizedDispatches) {
