@@ -48,26 +48,6 @@ constexpr VkShaderStageFlags kDrawStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADE
 constexpr VkBufferUsageFlags kStorageAndTexels =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
 
-// Where a scope begins: around passes (beginScopeOutsideRendering), or
-// around draws inside a rendering.
-enum class ScopeStart { outsideRendering, insideRendering };
-
-struct Timed {
-    VkCommandBuffer cmd;
-    GpuTimer* timer;
-    Timed(VkCommandBuffer c, GpuTimer* t, const char* name, ScopeStart start = ScopeStart::outsideRendering)
-        : cmd(c), timer(t) {
-        if (!timer) return;
-        if (start == ScopeStart::outsideRendering)
-            beginScopeOutsideRendering(cmd, *timer, name);
-        else
-            beginScope(cmd, *timer, name);
-    }
-    ~Timed() {
-        if (timer) endScope(cmd, *timer);
-    }
-};
-
 template <class T>
 Buffer uploadVector(GpuResources& owner, const std::vector<T>& data, VkBufferUsageFlags usage) {
     if (data.empty()) throw std::runtime_error("field renderer: nothing to upload");
@@ -394,7 +374,7 @@ void FieldRenderer::pushFieldPass(VkCommandBuffer cmd, uint32_t pass, uint32_t i
 void FieldRenderer::drawPlantLists(VkCommandBuffer cmd, uint32_t phase, GpuTimer* timer) const {
     const bool late = phase == CULL_PHASE_LATE;
     {
-        Timed scope(cmd, late ? nullptr : timer, "plants", ScopeStart::insideRendering);
+        TimedScope scope(cmd, late ? nullptr : timer, "plants", ScopeStart::insideRendering);
         vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.bark);
         drawClassIndirect(cmd, ctx_, cull_, DRAW_BARK, phase);
@@ -405,7 +385,7 @@ void FieldRenderer::drawPlantLists(VkCommandBuffer cmd, uint32_t phase, GpuTimer
         // The list twice: those the shadow map may reach, then the rest with
         // no shadow lookup (shaders/sunlit_select.h); each draw drops the
         // other's impostors in its vertex shader.
-        Timed scope(cmd, late ? nullptr : timer, "impostors", ScopeStart::insideRendering);
+        TimedScope scope(cmd, late ? nullptr : timer, "impostors", ScopeStart::insideRendering);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.impostor);
         pushFieldPass(cmd, FIELD_PASS_COLOUR, IMPOSTOR_PART_SHADOWED);
         drawClassIndirect(cmd, ctx_, cull_, DRAW_IMPOSTOR, phase);
@@ -421,14 +401,14 @@ void FieldRenderer::drawPlantLists(VkCommandBuffer cmd, uint32_t phase, GpuTimer
 void FieldRenderer::recordLatePhase(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const {
     vkCmdEndRendering(cmd);
     {
-        Timed scope(cmd, timer, "depth_pyramid");
+        TimedScope scope(cmd, timer, "depth_pyramid");
         recordDepthPyramid(cmd, target.pyramid);
     }
     {
-        Timed scope(cmd, timer, "occlusion");
+        TimedScope scope(cmd, timer, "occlusion");
         recordCullPass(cmd, cull_, CULL_PHASE_LATE, target.pyramid.readSet);
     }
-    Timed scope(cmd, timer, "late_draws");
+    TimedScope scope(cmd, timer, "late_draws");
     beginTargetPass(cmd, target, TargetPassPart::last);
     pushFieldPass(cmd, FIELD_PASS_COLOUR);
     drawPlantLists(cmd, CULL_PHASE_LATE, timer);
@@ -440,7 +420,7 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
     // rasterisers (lavapipe) shade at the end of the pass, so the draw scopes
     // inside it measure only their share of vertex work and binning there.
     // The FXAA pass (kAntialiasScope) is a rendering of its own after it.
-    Timed pass(cmd, timer, "colour");
+    TimedScope pass(cmd, timer, "colour");
     const bool twoParts = !naive && occlusion();
     const VkDescriptorSet set = naive ? naiveSet_ : drawSet_;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &set, 0, nullptr);
@@ -448,19 +428,19 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
     pushFieldPass(cmd, FIELD_PASS_COLOUR);
     if (naive) {
         {
-            Timed scope(cmd, timer, "plants", ScopeStart::insideRendering);
+            TimedScope scope(cmd, timer, "plants", ScopeStart::insideRendering);
             vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.bark);
             drawPlantsNaive(cmd, true, false);
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.foliage);
             drawPlantsNaive(cmd, false, true);
         }
-        Timed scope(cmd, timer, "impostors", ScopeStart::insideRendering); // the naive baseline draws no impostors
+        TimedScope scope(cmd, timer, "impostors", ScopeStart::insideRendering); // the naive baseline draws no impostors
     } else {
         drawPlantLists(cmd, twoParts ? CULL_PHASE_EARLY : CULL_PHASE_ALL, timer);
     }
     {
-        Timed scope(cmd, timer, "canopy", ScopeStart::insideRendering);
+        TimedScope scope(cmd, timer, "canopy", ScopeStart::insideRendering);
         if (!naive && settings_.clusters.enabled && drawCanopy_) {
             // One instance per far node; the cluster pass wrote the count.
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.canopy);
@@ -469,7 +449,7 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
         }
     }
     {
-        Timed scope(cmd, timer, "terrain_sky", ScopeStart::insideRendering);
+        TimedScope scope(cmd, timer, "terrain_sky", ScopeStart::insideRendering);
         // Last, behind everything: only pixels no plant covers are shaded
         // (the depth test runs before these shaders, which never discard).
         // With occlusion culling the terrain is the early phase's main
@@ -490,7 +470,7 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
     } else {
         // Every frame has the same scopes.
         for (const char* name : {"depth_pyramid", "occlusion", "late_draws"})
-            Timed scope(cmd, timer, name, ScopeStart::insideRendering);
+            TimedScope scope(cmd, timer, name, ScopeStart::insideRendering);
     }
     endTargetPass(cmd, target, timer);
 }
@@ -499,15 +479,15 @@ void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuT
     if (timer) resetGpuTimer(cmd, *timer);
     recordFieldMotion(cmd, motion_, timer);
     {
-        Timed scope(cmd, timer, "clusters");
+        TimedScope scope(cmd, timer, "clusters");
         if (settings_.clusters.enabled) recordClusterPass(cmd, clusters_);
     }
     {
-        Timed scope(cmd, timer, "cull");
+        TimedScope scope(cmd, timer, "cull");
         recordCullPass(cmd, cull_, occlusion() ? CULL_PHASE_EARLY : CULL_PHASE_ALL);
     }
     {
-        Timed scope(cmd, timer, "shadow");
+        TimedScope scope(cmd, timer, "shadow");
         if (settings_.shadows) recordShadowPass(cmd);
     }
     recordColourPass(cmd, target, false, timer);
@@ -516,10 +496,10 @@ void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuT
 void FieldRenderer::recordNaive(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const {
     if (timer) resetGpuTimer(cmd, *timer);
     recordFieldMotion(cmd, motion_, timer);
-    { Timed scope(cmd, timer, "clusters"); }
-    { Timed scope(cmd, timer, "cull"); }
+    { TimedScope scope(cmd, timer, "clusters"); }
+    { TimedScope scope(cmd, timer, "cull"); }
     {
-        Timed scope(cmd, timer, "shadow");
+        TimedScope scope(cmd, timer, "shadow");
         if (settings_.shadows) recordNaiveShadowPass(cmd);
     }
     recordColourPass(cmd, target, true, timer);

@@ -81,6 +81,19 @@ void endScope(VkCommandBuffer cmd, GpuTimer& timer) {
     if (timer.supported) vkCmdWriteTimestamp2(cmd, kTimestampStage, timer.queryPool, 2 * index + 1);
 }
 
+TimedScope::TimedScope(VkCommandBuffer cmd, GpuTimer* timer, const char* name, ScopeStart start)
+    : cmd_(cmd), timer_(timer) {
+    if (!timer_) return;
+    if (start == ScopeStart::outsideRendering)
+        beginScopeOutsideRendering(cmd_, *timer_, name);
+    else
+        beginScope(cmd_, *timer_, name);
+}
+
+TimedScope::~TimedScope() {
+    if (timer_) endScope(cmd_, *timer_);
+}
+
 std::vector<ScopeTime> readGpuTimer(const GpuContext& ctx, const GpuTimer& timer) {
     std::vector<ScopeTime> times;
     if (!timer.supported || !timer.frameRecorded) return times;

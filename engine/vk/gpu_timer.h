@@ -57,6 +57,24 @@ void beginScopeOutsideRendering(VkCommandBuffer cmd, GpuTimer& timer, const char
 // Ends the innermost open scope; throws when none is open.
 void endScope(VkCommandBuffer cmd, GpuTimer& timer);
 
+// Where a scope begins: around passes (beginScopeOutsideRendering), or
+// around draws inside a rendering (beginScope: no dependency may be
+// recorded there).
+enum class ScopeStart { outsideRendering, insideRendering };
+
+// A scope open for the object's lifetime; nothing when `timer` is null.
+class TimedScope {
+public:
+    TimedScope(VkCommandBuffer cmd, GpuTimer* timer, const char* name, ScopeStart start = ScopeStart::outsideRendering);
+    ~TimedScope();
+    TimedScope(const TimedScope&) = delete;
+    TimedScope& operator=(const TimedScope&) = delete;
+
+private:
+    VkCommandBuffer cmd_;
+    GpuTimer* timer_;
+};
+
 // The durations of the last recorded frame's ended scopes, in the order they
 // were begun. Call only after that frame's fence has signalled. Empty when
 // timestamps are unsupported or no frame was recorded yet; a scope whose

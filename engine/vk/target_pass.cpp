@@ -113,15 +113,16 @@ void beginColorOnlyRendering(VkCommandBuffer cmd, VkImageView view, VkAttachment
 void endTargetPass(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) {
     vkCmdEndRendering(cmd);
 
-    if (timer) beginScopeOutsideRendering(cmd, *timer, kAntialiasScope);
-    if (target.antialiasing.method == AntialiasMethod::fxaa) {
-        imageBarrier(cmd, target.fxaaInput.image, VK_IMAGE_ASPECT_COLOR_BIT,
-                     {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
-                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
-        recordFxaaPass(cmd, target.fxaa);
+    {
+        const TimedScope scope(cmd, timer, kAntialiasScope);
+        if (target.antialiasing.method == AntialiasMethod::fxaa) {
+            imageBarrier(cmd, target.fxaaInput.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                         {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                          VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+            recordFxaaPass(cmd, target.fxaa);
+        }
     }
-    if (timer) endScope(cmd, *timer);
 
     imageBarrier(cmd, target.color.image, VK_IMAGE_ASPECT_COLOR_BIT,
                  {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
