@@ -115,16 +115,25 @@ void advanceFieldMotion(FieldMotion& motion, double time, bool restart, const gl
                                                 static_cast<gpu::Skeleton*>(motion.pass.skeletons.mapped)));
     if (realTime && !restart && target - motion.simulatedStep > kMaxFrameGapSubSteps)
         motion.simulatedStep = target - kMaxFrameGapSubSteps;
+    const uint64_t steps = target - motion.simulatedStep;
+    const double start = double(motion.simulatedStep) * dt;
+    motion.next.subStepSeconds = dt;
+    if (realTime && !motion.next.restart && steps > kFrameSubSteps) {
+        // One dispatch of longer sub-steps (field_motion.h, kMaxFrameGapSubSteps).
+        motion.next.subStepSeconds = dt * double(steps) / double(kFrameSubSteps);
+        motion.next.dispatches.push_back({float(start), kFrameSubSteps});
+        motion.simulatedStep = target;
+    }
     // Frame-sized dispatches, so parents' poses are never older than kFrameSubSteps steps.
-    const float start = float(double(motion.simulatedStep) * dt);
-    for (uint64_t steps = target - motion.simulatedStep; steps > 0;) {
-        const uint32_t count = uint32_t(std::min<uint64_t>(steps, kFrameSubSteps));
+    for (uint64_t left = target - motion.simulatedStep; left > 0;) {
+        const uint32_t count = uint32_t(std::min<uint64_t>(left, kFrameSubSteps));
         motion.next.dispatches.push_back({float(double(motion.simulatedStep) * dt), count});
         motion.simulatedStep += count;
-        steps -= count;
+        left -= count;
     }
-    setPhysicsUniforms(motion.pass, makePhysicsUniforms(motion.wind, motion.settings, start, float(dt), 0,
-                                                        motion.pass.skeletonCount, motion.pass.jointCount));
+    setPhysicsUniforms(motion.pass, makePhysicsUniforms(motion.wind, motion.settings, float(start),
+                                                        float(motion.next.subStepSeconds), 0, motion.pass.skeletonCount,
+                                                        motion.pass.jointCount));
 }
 
 void recordFieldMotion(VkCommandBuffer cmd, const FieldMotion& motion, GpuTimer* timer) {

@@ -24,11 +24,16 @@ static_assert(kFrameSubSteps <= PHYSICS_MAX_DISPATCH_SUB_STEPS, "a dispatch take
 inline constexpr double kSettleSeconds = 5.0;
 // In real time, at most this many steps between two frames: a slow frame
 // (a window on a CPU device) must not make the next one slower still. Time
-// beyond it passes without being simulated. Two dispatches, 1/15 s of wind
-// at the 1/240 s sub-step: a window at the 15 frames a second the dynamic
-// render scale holds (engine/window/render_scale.h) simulates all of it,
-// a slower one sees the wind slowed instead of its frames slowed further
-// (each step of the default forest's 105 473 joints costs lavapipe ~2 ms).
+// beyond it passes without being simulated. A gap longer than one dispatch
+// is taken by one dispatch of kFrameSubSteps longer sub-steps (at most
+// twice the scene's): backward Euler keeps springs and damping stable at any
+// length and the explicit drag stays stable up to about 50 m/s of wind at
+// twice 1/240 s (docs/PHYSICS.md), while a second dispatch and pose pass
+// would cost a window on lavapipe ~15 ms (of the default forest's 105 473
+// joints, ~1.2 ms a sub-step and ~7 ms a dispatch with its poses). So a
+// window at the 15 frames a second the dynamic render scale holds
+// (engine/window/render_scale.h) sees the wind in real time, a slower one
+// sees it slowed instead of its frames slowed further.
 inline constexpr uint32_t kMaxFrameGapSubSteps = 2 * kFrameSubSteps;
 
 // What the next recordFieldMotion records, as advanceFieldMotion planned it.
@@ -36,6 +41,7 @@ struct FieldMotionFrame {
     bool restart = false;                          // states and poses back to rest first
     std::vector<VkBufferCopy> ownStates, ownPoses; // near plants' new skeletons start from their shared copy's
     std::vector<gpu::PhysicsDispatch> dispatches;  // the catch-up, then the frame's own steps
+    double subStepSeconds = 0.0;                   // each sub-step's length: the scene's, or longer in real time
 };
 
 struct FieldMotion {
@@ -62,8 +68,9 @@ FieldMotion createFieldMotion(GpuResources& owner, const FieldContent& content);
 // Writes what the host owns (which skeleton each plant follows, near plants'
 // placements) and the uniforms, so call it while no frame is in flight; it
 // submits nothing. Near plants are those around `camera`. `realTime` caps the
-// steps between frames (kMaxFrameGapSubSteps); captures and sequences
-// simulate every step.
+// steps between frames (kMaxFrameGapSubSteps) and takes a gap of up to that
+// many in one dispatch of longer sub-steps; captures and sequences simulate
+// every step at the scene's sub-step.
 void advanceFieldMotion(FieldMotion& motion, double time, bool restart, const glm::vec3& camera, bool realTime);
 // Records the planned frame: the copies, then the physics and pose passes
 // (timer scopes "physics", with any catch-up, and "pose").

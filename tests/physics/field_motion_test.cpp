@@ -6,6 +6,7 @@
 #include "engine/scene/field_content.h"
 #include "gpu_test.h"
 
+#include <cmath>
 #include <cstring>
 #include <set>
 
@@ -78,6 +79,78 @@ TEST_F(FieldMotionTest, PlanCoversEveryStepFromRestInFrameSizedDispatches) {
     }
     EXPECT_EQ(step, subStepsUntil(time, settings));
     EXPECT_EQ(motion.simulatedStep, step);
+}
+
+// In real time a gap between frames longer than one dispatch is one
+// dispatch of longer sub-steps, up to twice the scene's; beyond that the
+// wind slows. Captures keep the scene's sub-step.
+TEST_F(FieldMotionTest, RealTimeTakesALongGapInOneDispatchOfLongerSubSteps) {
+    FieldMotion motion = createFieldMotion(resources, content);
+    const PhysicsSettings& settings = content.scene.physics;
+    const double step = settings.subStep;
+    double time = 3.0;
+    advanceFieldMotion(motion, time, true, camera, true);
+    EXPECT_DOUBLE_EQ(motion.next.subStepSeconds, step) << "the catch-up from rest";
+    struct Gap {
+        uint64_t steps;
+        bool realTime;
+        std::vector<uint32_t> dispatches;
+        double stepsPerSubStep;
+    };
+    for (const Gap& gap : {Gap{5, true, {5}, 1.0}, Gap{12, true, {8}, 1.5}, Gap{16, true, {8}, 2.0},
+                           Gap{40, true, {8}, 2.0}, Gap{12, false, {8, 4}, 1.0}}) {
+        const uint64_t before = subStepsUntil(time, settings);
+        time = double(before + gap.steps) * step;
+        advanceFieldMotion(motion, time, false, camera, gap.realTime);
+        std::vector<uint32_t> counts;
+        for (const gpu::PhysicsDispatch& d : motion.next.dispatches) counts.push_back(d.subSteps);
+        EXPECT_EQ(counts, gap.dispatches) << gap.steps << " steps";
+        EXPECT_NEAR(motion.next.subStepSeconds, gap.stepsPerSubStep * step, 1e-12) << gap.steps << " steps";
+        EXPECT_EQ(motion.simulatedStep, subStepsUntil(time, settings)) << gap.steps << " steps";
+        const uint64_t simulated = gap.realTime ? std::min<uint64_t>(gap.steps, kMaxFrameGapSubSteps) : gap.steps;
+        EXPECT_EQ(motion.next.dispatches.front().time, float(double(motion.simulatedStep - simulated) * step))
+            << gap.steps << " steps";
+    }
+}
+
+// The longer sub-steps sway the plants as the scene's do: three seconds of
+// strong gusts in frames of a window at 15 frames a second (8 sub-steps of
+// 1/120 s) against the same frames at the scene's 1/240 s.
+TEST_F(FieldMotionTest, RealTimeSubStepsSwayAsTheScenesDo) {
+    auto swayAfter = [&](bool realTime) {
+        FieldMotion motion = createFieldMotion(resources, content);
+        for (int frame = 0; frame <= 45; ++frame) {
+            advanceFieldMotion(motion, 2.0 + frame / 15.0, frame == 0, camera, realTime);
+            submitAndWait(ctx, [&](VkCommandBuffer cmd) { recordFieldMotion(cmd, motion); });
+        }
+        if (realTime) {
+            EXPECT_NEAR(motion.next.subStepSeconds, 2.0 * content.scene.physics.subStep, 1e-9);
+        }
+        std::vector<float> angles;
+        for (const gpu::JointState& s : snapshot(motion).states)
+            angles.push_back(2.0f * std::acos(std::min(std::abs(s.rotation.w), 1.0f)));
+        return angles;
+    };
+    const std::vector<float> fixed = swayAfter(false), longer = swayAfter(true);
+    ASSERT_EQ(fixed.size(), longer.size());
+    double fixedSum = 0.0, longerSum = 0.0, differenceSum = 0.0;
+    float largestDifference = 0.0f, largest = 0.0f;
+    for (size_t i = 0; i < fixed.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(longer[i])) << "joint " << i;
+        fixedSum += fixed[i] * fixed[i];
+        longerSum += longer[i] * longer[i];
+        differenceSum += (fixed[i] - longer[i]) * (fixed[i] - longer[i]);
+        largestDifference = std::max(largestDifference, std::abs(fixed[i] - longer[i]));
+        largest = std::max(largest, fixed[i]);
+    }
+    const double fixedRms = std::sqrt(fixedSum / fixed.size()), longerRms = std::sqrt(longerSum / fixed.size());
+    const double differenceRms = std::sqrt(differenceSum / fixed.size());
+    std::printf("sway rms: fixed %.4f, longer %.4f, difference %.4f rad; largest %.3f, largest difference %.3f rad\n",
+                fixedRms, longerRms, differenceRms, largest, largestDifference);
+    EXPECT_GT(fixedRms, 0.01) << "the gusts should bend the plants";
+    EXPECT_NEAR(longerRms, fixedRms, 0.1 * fixedRms);
+    EXPECT_LT(differenceRms, 0.25 * fixedRms);
+    EXPECT_LT(largestDifference, 0.25f * largest) << "a joint strayed: the longer sub-steps are unstable";
 }
 
 TEST_F(FieldMotionTest, OneRecordedFrameEqualsItsDispatchesSubmittedOneByOne) {
