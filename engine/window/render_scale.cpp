@@ -17,16 +17,20 @@ bool updateRenderScale(RenderScaleState& state, const RenderScaleSettings& setti
     const double growth = double(up / state.scale) * double(up / state.scale);
     const bool slow = frameMs > settings.targetFrameMs * 1.1 && state.scale > settings.minScale;
     const bool fast = up > state.scale && frameMs * growth < settings.targetFrameMs * 0.9;
+    state.leastSlowMs = !slow ? 0.0 : state.slowFrames == 0 ? frameMs : std::min(state.leastSlowMs, frameMs);
     state.slowFrames = slow ? state.slowFrames + 1 : 0;
     state.fastFrames = fast ? state.fastFrames + 1 : 0;
     if (state.slowFrames >= settings.settleFrames) {
-        state.scale = std::max(state.scale - settings.step, settings.minScale);
+        const double wanted = double(state.scale) * std::sqrt(settings.targetFrameMs / state.leastSlowMs);
+        const double steps = std::max(1.0, std::ceil((double(state.scale) - wanted) / double(settings.step) - 1e-6));
+        state.scale = std::max(state.scale - float(steps) * settings.step, settings.minScale);
     } else if (state.fastFrames >= settings.settleFrames) {
         state.scale = up;
     } else {
         return false;
     }
     state.slowFrames = state.fastFrames = 0;
+    state.leastSlowMs = 0.0;
     return true;
 }
 

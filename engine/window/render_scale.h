@@ -23,16 +23,22 @@ struct RenderScaleSettings {
 struct RenderScaleState {
     float scale = 1.0f;
     uint32_t slowFrames = 0; // in a row slower than the target allows
+    double leastSlowMs = 0;  // the fastest of those slow frames
     uint32_t fastFrames = 0; // in a row fast enough for one step up
 };
 
 RenderScaleState startRenderScale(const RenderScaleSettings& settings);
 
 // Takes the last frame's time; returns true when the scale changed. A frame
-// is slow above targetFrameMs · 1.1. It is fast when its time scaled by the
-// pixels one step up would add, ((scale + step) / scale)², stays below
-// targetFrameMs · 0.9 (an overestimate: not all of a frame grows with its
-// pixels), so the scale does not swing between two steps.
+// is slow above targetFrameMs · 1.1; after settleFrames of them the scale
+// goes down by as many steps as the fastest of them asks for, taking its
+// time as all pixels (scale · √(target / ms), at least one step): the
+// window's first frames, at its whole size, reach the share it can hold in
+// one change instead of one step per settleFrames. That underestimates the
+// drop (not all of a frame shrinks with its pixels), so it never goes too
+// far. A frame is fast when its time scaled by the pixels one step up would
+// add, ((scale + step) / scale)², stays below targetFrameMs · 0.9 (an
+// overestimate again), so the scale does not swing between two steps.
 bool updateRenderScale(RenderScaleState& state, const RenderScaleSettings& settings, double frameMs);
 
 // `window` scaled by `scale`, each side rounded and at least 1.

@@ -18,13 +18,30 @@ TEST(RenderScale, SlowFramesLowerTheScaleInStepsDownToTheMinimum) {
     RenderScaleState state = startRenderScale(settings);
     EXPECT_FLOAT_EQ(state.scale, 1.0f);
     // Fewer slow frames in a row than settleFrames change nothing.
-    EXPECT_EQ(feed(state, settings, 300.0, int(settings.settleFrames) - 1), 0);
+    EXPECT_EQ(feed(state, settings, 80.0, int(settings.settleFrames) - 1), 0);
     EXPECT_FLOAT_EQ(state.scale, 1.0f);
-    EXPECT_EQ(feed(state, settings, 300.0, 1), 1);
+    // Slightly slow: one step (1 · √(66.7 / 80) = 0.91).
+    EXPECT_EQ(feed(state, settings, 80.0, 1), 1);
     EXPECT_FLOAT_EQ(state.scale, 1.0f - settings.step);
     feed(state, settings, 300.0, 100);
     EXPECT_FLOAT_EQ(state.scale, settings.minScale);
     EXPECT_EQ(feed(state, settings, 300.0, 20), 0) << "never below the minimum";
+}
+
+// Far too slow: as many steps down at once as the pixels ask for, judged by
+// the fastest frame of the run (one quick frame among slow ones).
+TEST(RenderScale, AFarTooSlowRunDropsSeveralStepsAtOnce) {
+    const RenderScaleSettings settings;
+    RenderScaleState state = startRenderScale(settings);
+    // √(66.7 / 150) = 0.667: three steps, to 0.625; the 400 ms frames do not count.
+    EXPECT_FALSE(updateRenderScale(state, settings, 400.0));
+    EXPECT_FALSE(updateRenderScale(state, settings, 150.0));
+    EXPECT_FALSE(updateRenderScale(state, settings, 400.0));
+    EXPECT_TRUE(updateRenderScale(state, settings, 400.0));
+    EXPECT_FLOAT_EQ(state.scale, 0.625f);
+    // Far slower still: down to the minimum at once, not below.
+    EXPECT_EQ(feed(state, settings, 2000.0, int(settings.settleFrames)), 1);
+    EXPECT_FLOAT_EQ(state.scale, settings.minScale);
 }
 
 TEST(RenderScale, FastFramesRaiseItBackToTheWholeWindow) {
