@@ -5,6 +5,12 @@
 
 namespace pf {
 
+RenderScaleSettings dynamicRenderScaleFor(VkPhysicalDeviceType device) {
+    RenderScaleSettings settings;
+    if (device == VK_PHYSICAL_DEVICE_TYPE_CPU) settings.scale = settings.minScale;
+    return settings;
+}
+
 RenderScaleState startRenderScale(const RenderScaleSettings& settings) {
     RenderScaleState state;
     state.scale = std::clamp(settings.scale, settings.minScale, 1.0f);

@@ -27,6 +27,14 @@ struct RenderScaleState {
     uint32_t fastFrames = 0; // in a row fast enough for one step up
 };
 
+// The dynamic scale for a device of this type: a CPU rasteriser (lavapipe)
+// starts at minScale and rises while its frames allow, every other device at
+// the whole window. A CPU device is far from the target at the whole window
+// (a frame of the default forest at 1280×720 takes it ~4 times as long as at
+// 640×360), so starting there shows seconds of slow frames before the share
+// has come down; a GPU would show blocky first frames for nothing.
+RenderScaleSettings dynamicRenderScaleFor(VkPhysicalDeviceType device);
+
 RenderScaleState startRenderScale(const RenderScaleSettings& settings);
 
 // Takes the last frame's time; returns true when the scale changed. A frame

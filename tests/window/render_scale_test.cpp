@@ -69,6 +69,21 @@ TEST(RenderScale, HoldsWhereOneStepUpWouldMissTheTarget) {
     EXPECT_FLOAT_EQ(state.scale, 0.75f);
 }
 
+TEST(RenderScale, ACpuDeviceStartsAtTheMinimumAndOthersAtTheWholeWindow) {
+    const RenderScaleSettings cpu = dynamicRenderScaleFor(VK_PHYSICAL_DEVICE_TYPE_CPU);
+    EXPECT_TRUE(cpu.dynamic);
+    EXPECT_FLOAT_EQ(startRenderScale(cpu).scale, cpu.minScale);
+    for (const VkPhysicalDeviceType gpu : {VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU,
+                                           VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU, VK_PHYSICAL_DEVICE_TYPE_OTHER}) {
+        EXPECT_TRUE(dynamicRenderScaleFor(gpu).dynamic);
+        EXPECT_FLOAT_EQ(startRenderScale(dynamicRenderScaleFor(gpu)).scale, 1.0f) << gpu;
+    }
+    // It rises from there as any dynamic scale does.
+    RenderScaleState state = startRenderScale(cpu);
+    feed(state, cpu, 10.0, 100);
+    EXPECT_FLOAT_EQ(state.scale, 1.0f);
+}
+
 TEST(RenderScale, AFixedScaleNeverChanges) {
     RenderScaleSettings settings;
     settings.dynamic = false;

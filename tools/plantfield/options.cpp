@@ -131,7 +131,8 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_option("--render-scale", renderScaleText,
                    "With --window: render at this share of the window's size, 0.25 to 1, or auto (default): the\n"
                    "share drops in steps of 1/8 to 1/2 while frames take over 1/15 s and rises again when they\n"
-                   "have time to spare; the frame is blitted up to the window (docs/WINDOW.md)")
+                   "have time to spare, starting at 1/2 on a CPU device and at 1 on a GPU; the frame is blitted\n"
+                   "up to the window (docs/WINDOW.md)")
         ->type_name("S|auto");
     app.add_option("--frames", o.frames,
                    "Headless: render this many frames into --out-dir; with --window: close after this many");

@@ -55,7 +55,8 @@ int runWindow(const PlantfieldOptions& o) {
         loop.maxFrames = o.frames;
         loop.screenshotPath = o.capturePath;
         loop.antialiasing = renderer.antialiasing();
-        if (o.renderScale) loop.renderScale = {.dynamic = false, .scale = *o.renderScale};
+        loop.renderScale = o.renderScale ? RenderScaleSettings{.dynamic = false, .scale = *o.renderScale}
+                                         : dynamicRenderScaleFor(ctx.properties.deviceType);
         loop.prepare = [&](double t, double dt, VkExtent2D extent, double frameMs) {
             if (frameMs > 0) { // the previous frame has finished: its counters are ready
                 stats = renderer.readStats();
