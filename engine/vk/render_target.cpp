@@ -43,11 +43,13 @@ RenderTarget createRenderTarget(const GpuContext& ctx, VkExtent2D extent, Antial
                                            .format = kColorFormat,
                                            .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                                            .flags = fxaaViews});
-    target.color =
-        createImage(target.resources, {.extent = extent,
-                                       .format = kColorFormat,
-                                       .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                       .flags = fxaaViews});
+    // The window's blit samples the finished frame, also through a view of
+    // another format (engine/window/window_blit.h).
+    target.color = createImage(target.resources, {.extent = extent,
+                                                  .format = kColorFormat,
+                                                  .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                                           VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                                  .flags = VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT});
     if (fxaa) target.fxaa = createFxaaPass(target.resources, target.fxaaInput, target.color);
     target.depth = createImage(target.resources,
                                {.extent = extent,

@@ -3,6 +3,7 @@
 #include "engine/vk/capture.h"
 #include "engine/vk/vk_check.h"
 #include "engine/window/swapchain.h"
+#include "engine/window/window_blit.h"
 
 #include <chrono>
 #include <cstdio>
@@ -10,24 +11,34 @@
 namespace pf {
 namespace {
 
-void recordBlitToSwapchain(VkCommandBuffer cmd, const RenderTarget& target, VkImage swapImage, VkExtent2D swapExtent) {
+// The finished frame drawn over the swapchain image. The target comes and
+// goes back in TRANSFER_SRC_OPTIMAL, where the renderer leaves it.
+void recordWindowBlitToSwapchain(VkCommandBuffer cmd, const WindowBlit& blit, const RenderTarget& target,
+                                 const Swapchain& swapchain, uint32_t imageIndex) {
+    const VkImage swapImage = swapchain.images[imageIndex];
+    // The frame's last writes (colour pass, FXAA, overlay) before the blit's
+    // reads; the image it last presented is overwritten whole.
+    imageBarrier(cmd, target.color.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                 {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
     imageBarrier(cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT,
-                 {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                  VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL});
-    VkImageBlit region{};
-    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.srcOffsets[1] = {int32_t(target.extent.width), int32_t(target.extent.height), 1};
-    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.dstOffsets[1] = {int32_t(swapExtent.width), int32_t(swapExtent.height), 1};
-    // Bilinear where the render scale makes the target smaller than the window.
-    const bool scaled = target.extent.width != swapExtent.width || target.extent.height != swapExtent.height;
-    vkCmdBlitImage(cmd, target.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, swapImage,
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, scaled ? VK_FILTER_LINEAR : VK_FILTER_NEAREST);
+                 {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, 0, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+    recordWindowBlit(cmd, blit, swapchain.views[imageIndex], swapchain.extent);
     // Presentation needs no access mask: the semaphore signal makes the write available.
     imageBarrier(cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT,
-                 {VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 0, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, 0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                   VK_IMAGE_LAYOUT_PRESENT_SRC_KHR});
+    // Write-after-read: the next frame's colour pass or capture copy after the blit's reads.
+    imageBarrier(cmd, target.color.image, VK_IMAGE_ASPECT_COLOR_BIT,
+                 {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0,
+                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                  VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL});
 }
 
 } // namespace
@@ -38,6 +49,7 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
     swapchain = createSwapchain(ctx, surface, window.framebufferExtent(), swapchain);
     RenderScaleState scale = startRenderScale(options.renderScale);
     RenderTarget target = createRenderTarget(ctx, scaledExtent(swapchain.extent, scale.scale), options.antialiasing);
+    WindowBlit blit = createWindowBlit(target.resources, target.color, swapchain.format);
 
     VkCommandBuffer cmd = allocateCommandBuffer(ctx);
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
@@ -52,6 +64,7 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
     auto replaceTarget = [&](float share) {
         destroyRenderTarget(target);
         target = createRenderTarget(ctx, scaledExtent(swapchain.extent, share), options.antialiasing);
+        blit = createWindowBlit(target.resources, target.color, swapchain.format);
     };
     auto rebuild = [&] {
         vkDeviceWaitIdle(ctx.device);
@@ -99,12 +112,12 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
         VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
         options.record(cmd, target);
-        recordBlitToSwapchain(cmd, target, swapchain.images[imageIndex], swapchain.extent);
+        recordWindowBlitToSwapchain(cmd, blit, target, swapchain, imageIndex);
         VK_CHECK(vkEndCommandBuffer(cmd));
 
         VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
         wait.semaphore = imageAcquired;
-        wait.stageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT; // only the blit touches the swapchain image
+        wait.stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT; // only the blit touches the swapchain image
         VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
         signal.semaphore = swapchain.renderFinished[imageIndex];
         signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;

@@ -1,7 +1,7 @@
 // The windowed path: render each frame into a RenderTarget with the same
-// record function as headless capture, blit it to the swapchain (scaled up
-// when the render scale is below 1) and present. Shows frame time and the
-// render size in the title.
+// record function as headless capture, draw it into the swapchain image
+// (window_blit.h: scaled up when the render scale is below 1) and present.
+// Shows frame time and the render size in the title.
 #pragma once
 
 #include "engine/vk/render_target.h"
