@@ -15,10 +15,8 @@ VkFormat windowBlitSourceFormat(VkFormat outputFormat) {
     switch (outputFormat) {
     case VK_FORMAT_B8G8R8A8_SRGB:
     case VK_FORMAT_R8G8B8A8_SRGB:
-    case VK_FORMAT_A8B8G8R8_SRGB_PACK32:
-        return kColorFormat;
-    default:
-        return VK_FORMAT_R8G8B8A8_UNORM;
+    case VK_FORMAT_A8B8G8R8_SRGB_PACK32: return kColorFormat;
+    default: return VK_FORMAT_R8G8B8A8_UNORM;
     }
 }
 
@@ -34,8 +32,8 @@ WindowBlit createWindowBlit(GpuResources& owner, const Image& source, VkFormat o
     WindowBlit blit;
     blit.set = createSet(owner, setLayout, table);
     blit.pipelineLayout = createPipelineLayout(owner, setLayout);
-    blit.pipeline = createColorOnlyPipeline(owner, spirv_window_blit_vert, spirv_window_blit_frag,
-                                            blit.pipelineLayout, outputFormat);
+    blit.pipeline = createColorOnlyPipeline(owner, spirv_window_blit_vert, spirv_window_blit_frag, blit.pipelineLayout,
+                                            outputFormat);
     return blit;
 }
 

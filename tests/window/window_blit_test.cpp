@@ -23,10 +23,10 @@ protected:
                                                   .format = kColorFormat,
                                                   .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                                   .flags = VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT});
-        const Image target = createImage(scratch, {.extent = output,
-                                                   .format = outputFormat,
-                                                   .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
-                                                            VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+        const Image target =
+            createImage(scratch, {.extent = output,
+                                  .format = outputFormat,
+                                  .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
         const WindowBlit windowBlit = createWindowBlit(scratch, frame, outputFormat);
         const Buffer upload = createUploadBuffer(scratch, pixels.data(), pixels.size());
         const VkDeviceSize bytes = VkDeviceSize(output.width) * output.height * 4;
