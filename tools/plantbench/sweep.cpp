@@ -101,7 +101,8 @@ enum class Path { Driven, Naive };
 constexpr double kStillFrameSeconds = 1.0 / 60.0;
 
 // The view of frame i of a measurement starting at `start`: the scene time
-// runs on from there, and with --fly the camera follows its path with it.
+// runs on from there, and with --fly the camera follows its path with it
+// and the physics steps as a window's does.
 FieldView frameView(const PlantbenchOptions& o, const Scene& scene, const FieldView& start, uint32_t i) {
     const double seconds = o.flyFps ? 1.0 / *o.flyFps : kStillFrameSeconds;
     FieldView v = start;
@@ -109,7 +110,10 @@ FieldView frameView(const PlantbenchOptions& o, const Scene& scene, const FieldV
     const double t = double(start.time) + i * seconds;
     v.time = float(t);
     v.deltaTime = i == 0 ? 0.0f : float(seconds);
-    if (o.flyFps) v.camera = cameraAt(scene.camera, t);
+    if (o.flyFps) {
+        v.camera = cameraAt(scene.camera, t);
+        v.realTime = true; // the physics of a window at that rate (field_motion.h)
+    }
     return v;
 }
 
