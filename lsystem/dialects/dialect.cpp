@@ -10,7 +10,7 @@ namespace lsys {
 
 namespace {
 
-constexpr const char* kNames[] = {"native", "crankshaw", "robbins", "plantlang"};
+constexpr const char* kNames[] = {"native", "crankshaw", "robbins", "plantlang", "cpfg"};
 
 // Native text needs no translation; only a header line the native parser would reject is blanked.
 Translation blankHeader(std::string_view source) {
@@ -63,6 +63,7 @@ Translation translateToNative(Dialect dialect, std::string_view source, const st
     Source text(source, file, commentProblems);
     Translation out = dialect == Dialect::Crankshaw ? translateCrankshaw(text)
                       : dialect == Dialect::Robbins ? translateRobbins(text)
+                      : dialect == Dialect::Cpfg    ? translateCpfg(text)
                                                     : translatePlantlang(text);
     out.diagnostics.insert(out.diagnostics.begin(), commentProblems.begin(), commentProblems.end());
     return out;
@@ -97,6 +98,12 @@ ParseResult parseDialect(std::optional<Dialect> dialect, std::string_view source
     return result;
 }
 
+Dialect dialectOfFile(std::optional<Dialect> given, std::string_view source, std::string_view path) {
+    if (given) return *given;
+    if (std::optional<HeaderLine> header = findHeaderLine(source)) return header->dialect;
+    return path.ends_with(".l") ? Dialect::Cpfg : Dialect::Native;
+}
+
 ParseResult loadDialectFile(const std::string& path, std::optional<Dialect> dialect, ParseOptions options) {
     std::string problem;
     std::string source = readTextFile(path, problem);
@@ -106,7 +113,7 @@ ParseResult loadDialectFile(const std::string& path, std::optional<Dialect> dial
         result.diagnostics.push_back({path, 0, 0, "cannot read file: it " + problem});
         return result;
     }
-    return parseDialect(dialect, source, options);
+    return parseDialect(dialectOfFile(dialect, source, path), source, options);
 }
 
 } // namespace lsys

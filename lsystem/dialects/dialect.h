@@ -1,11 +1,12 @@
 #pragma once
-// The three notations of the source documents (docs/DIALECTS.md), each read by
-// translating it into native .lsys text, which the native parser then reads:
-// every dialect ends in the same Grammar.
+// The notations of the source documents and of vlab's cpfg (docs/DIALECTS.md),
+// each read by translating it into native .lsys text, which the native parser
+// then reads: every dialect ends in the same Grammar.
 //   crankshaw  Crankshaw 2020: #n = 6; #define r 20; #w : ...; #p1 : pred : cond : succ;
 //   robbins    Robbins 1998: iterations 10 angle 30 ...  A --> ...
 //   plantlang  the clouds-and-mountains chapter:
 //              Axiom = f20t15dX   X => t<dY   d m f u r t T o O c a A l L
+//   cpfg       vlab's cpfg (.l files): native text in cpfg's spellings
 
 #include <cstdint>
 #include <optional>
@@ -18,12 +19,12 @@
 
 namespace lsys {
 
-enum class Dialect { Native, Crankshaw, Robbins, Plantlang };
+enum class Dialect { Native, Crankshaw, Robbins, Plantlang, Cpfg };
 
-// "native", "crankshaw", "robbins", "plantlang" (case-insensitive).
+// "native", "crankshaw", "robbins", "plantlang", "cpfg" (case-insensitive).
 std::optional<Dialect> dialectFromName(std::string_view name);
 const char* dialectName(Dialect dialect);
-std::string knownDialects(); // "native, crankshaw, robbins or plantlang", for messages
+std::string knownDialects(); // "native, crankshaw, robbins, plantlang or cpfg", for messages
 
 // The first non-blank line "dialect: NAME" (also "// dialect: NAME",
 // "/* dialect: NAME */", "# dialect: NAME") selects the dialect; Native otherwise.
@@ -50,8 +51,12 @@ void mapToSource(const Translation& translation, std::string_view source, std::v
 // original source, in source order.
 ParseResult parseDialect(std::optional<Dialect> dialect, std::string_view source, const ParseOptions& options = {});
 
-// Reads a file and parses it with parseDialect; a missing file becomes a
-// diagnostic at line 0.
+// The dialect a file is read in: `given`, else its header line's, else cpfg
+// for a name ending in ".l" (cpfg's own extension), else native.
+Dialect dialectOfFile(std::optional<Dialect> given, std::string_view source, std::string_view path);
+
+// Reads a file and parses it with parseDialect in dialectOfFile's dialect; a
+// missing file becomes a diagnostic at line 0.
 ParseResult loadDialectFile(const std::string& path, std::optional<Dialect> dialect = std::nullopt,
                             ParseOptions options = {});
 

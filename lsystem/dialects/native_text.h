@@ -97,5 +97,6 @@ std::optional<HeaderLine> findHeaderLine(std::string_view source);
 Translation translateCrankshaw(const Source& source);
 Translation translateRobbins(const Source& source);
 Translation translatePlantlang(const Source& source);
+Translation translateCpfg(const Source& source);
 
 } // namespace lsys

@@ -10,7 +10,8 @@ TEST(DialectNames, KnownNamesInAnyCase) {
     EXPECT_EQ(dialectFromName("Robbins"), Dialect::Robbins);
     EXPECT_EQ(dialectFromName("PLANTLANG"), Dialect::Plantlang);
     EXPECT_EQ(dialectFromName("native"), Dialect::Native);
-    EXPECT_EQ(dialectFromName("cpfg"), std::nullopt);
+    EXPECT_EQ(dialectFromName("Cpfg"), Dialect::Cpfg);
+    EXPECT_EQ(dialectFromName("lpfg"), std::nullopt);
     EXPECT_EQ(dialectFromName(""), std::nullopt);
     EXPECT_STREQ(dialectName(Dialect::Robbins), "robbins");
 }

@@ -40,7 +40,7 @@ struct Arguments {
     std::optional<int> steps;
     std::optional<uint64_t> seed;
     std::vector<std::string> defines;
-    std::optional<lsys::Dialect> dialect; // none: the file's "dialect:" line, else native
+    std::optional<lsys::Dialect> dialect; // none: the file's "dialect:" line, else cpfg for a .l file, else native
     bool print = false;
     bool json = false;
     size_t maxModules = 50'000'000;
@@ -81,7 +81,8 @@ std::optional<lsys::Grammar> load(const Arguments& arguments) {
         std::cerr << arguments.file << ": error: cannot read file: it " << problem << "\n";
         return std::nullopt;
     }
-    lsys::ParseResult result = lsys::parseDialect(arguments.dialect, source, options);
+    lsys::ParseResult result =
+        lsys::parseDialect(lsys::dialectOfFile(arguments.dialect, source, arguments.file), source, options);
     if (!result.ok()) {
         std::cerr << lsys::formatDiagnostics(result.diagnostics, source);
         std::cerr << result.diagnostics.size() << (result.diagnostics.size() == 1 ? " error\n" : " errors\n");
@@ -268,7 +269,8 @@ void addDialectOption(CLI::App& command, Arguments& arguments) {
     command
         .add_option_function<std::string>(
             "--dialect", [&arguments](const std::string& name) { arguments.dialect = lsys::dialectFromName(name); },
-            "Input notation: " + lsys::knownDialects() + " (default: the file's 'dialect:' line, else native)")
+            "Input notation: " + lsys::knownDialects() +
+                " (default: the file's 'dialect:' line, else cpfg for a .l file, else native)")
         ->check([](const std::string& name) {
             return lsys::dialectFromName(name)
                        ? std::string()

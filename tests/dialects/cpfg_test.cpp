@@ -1,0 +1,83 @@
+// The cpfg dialect (lsystem/dialects/cpfg.cpp): cpfg's line structure and
+// section headers read as cpfg reads them (Měch 2005, §5.1), problems
+// reported at their place in the cpfg file, and .l files read as cpfg.
+
+#include <filesystem>
+#include <fstream>
+
+#include "dialect_test_support.h"
+
+namespace lsys::test {
+namespace {
+
+std::string derived(const Grammar& grammar, int steps) {
+    return toString(deriveSteps(grammar, steps), grammar.symbols);
+}
+
+// cpfg's lexer reads a newline followed by a tab as white space: the
+// production goes on over its tab-indented lines.
+TEST(Cpfg, ALineStartingWithATabContinuesTheStatementAbove) {
+    const std::string oneLine = "Axiom: A\nA --> F[+A][-A]B\nB --> FB\n";
+    const std::string continued = "Axiom: A\nA --> F[+A]\n\t[-A]\n\tB\nB --> FB\n";
+    const Grammar expected = parseOk(Dialect::Native, oneLine);
+    const Grammar grammar = parseOk(Dialect::Cpfg, continued);
+    EXPECT_EQ(derived(grammar, 3), derived(expected, 3));
+    EXPECT_EQ(grammar.rules.productions.size(), expected.rules.productions.size());
+    // Natively the tab-indented lines are statements of their own.
+    EXPECT_FALSE(parseDialect(Dialect::Native, continued).ok());
+}
+
+TEST(Cpfg, AProblemOnAContinuationLineIsReportedThere) {
+    const ParseResult result = parseDialect(Dialect::Cpfg, "Axiom: A\nA --> F\n\tB(1\nB --> F\n", {"tree.l"});
+    ASSERT_FALSE(result.diagnostics.empty());
+    EXPECT_EQ(result.diagnostics.front().file, "tree.l");
+    EXPECT_EQ(result.diagnostics.front().line, 3) << result.diagnostics.front().message;
+    EXPECT_EQ(result.diagnostics.front().column, 4) << result.diagnostics.front().message; // the '1'
+}
+
+// Section headers as cpfg accepts them: no colon, a capital letter, cpfg's
+// warnings switch, the maximum depth on the same or the next line.
+TEST(Cpfg, SectionHeadersInCpfgsSpellings) {
+    const std::string source = "Derivationlength: 2\n"
+                               "Axiom: A\n"
+                               "A --> AB\n"
+                               "decomposition\n"
+                               "maximum depth: 3\n"
+                               "B --> C\n"
+                               "Homomorphism: no warnings\n"
+                               "C --> F\n"
+                               "endlsystem\n";
+    const Grammar grammar = parseOk(Dialect::Cpfg, source);
+    EXPECT_EQ(grammar.derivationLength, 2);
+    EXPECT_EQ(grammar.decomposition.productions.size(), 1u);
+    EXPECT_EQ(grammar.decomposition.maxDepth, 3);
+    EXPECT_EQ(grammar.interpretation.productions.size(), 1u);
+    for (const char* header : {"homomorphism", "homomorphism:", "Homomorphism warnings", "homomorphism no warnings",
+                               "homomorphism: warnings maximum depth: 2"}) {
+        const Grammar g = parseOk(Dialect::Cpfg, std::string("Axiom: A\n") + header + "\nA --> F\n");
+        EXPECT_EQ(g.interpretation.productions.size(), 1u) << header;
+        EXPECT_TRUE(g.rules.productions.empty()) << header;
+    }
+    // A word that only starts like a header is not one.
+    EXPECT_FALSE(parseDialect(Dialect::Cpfg, "Axiom: A\nhomomorphisms\nA --> F\n").ok());
+    EXPECT_FALSE(parseDialect(Dialect::Cpfg, "Axiom: A\nhomomorphism: maybe warnings\nA --> F\n").ok());
+}
+
+TEST(Cpfg, TheDialectIsNamedOrTakenFromTheExtension) {
+    EXPECT_EQ(dialectFromName("CPFG"), Dialect::Cpfg);
+    EXPECT_EQ(detectDialect("/* dialect: cpfg */\nAxiom: A\n"), Dialect::Cpfg);
+    EXPECT_EQ(dialectOfFile(std::nullopt, "Axiom: A\n", "objects/tree/plant.l"), Dialect::Cpfg);
+    EXPECT_EQ(dialectOfFile(std::nullopt, "Axiom: A\n", "plant.lsys"), Dialect::Native);
+    EXPECT_EQ(dialectOfFile(std::nullopt, "dialect: robbins\nA\n", "plant.l"), Dialect::Robbins);
+    EXPECT_EQ(dialectOfFile(Dialect::Native, "Axiom: A\n", "plant.l"), Dialect::Native);
+
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "plantfield_cpfg_test.l";
+    std::ofstream(file) << "Axiom: A\nA --> F\n\tB\nhomomorphism\nB --> F\n";
+    const ParseResult result = loadDialectFile(file.string());
+    std::filesystem::remove(file);
+    ASSERT_TRUE(result.ok()) << formatDiagnostics(result.diagnostics, "");
+    EXPECT_EQ(derived(result.grammar, 1), "FB");
+}
+
+} // namespace
+} // namespace lsys::test
