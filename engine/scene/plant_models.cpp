@@ -332,7 +332,7 @@ lsys::Grammar parseSpecies(const Species& species) {
     lsys::ParseOptions options;
     options.file = path;
     options.defines.insert(species.defines.begin(), species.defines.end());
-    lsys::ParseResult result = lsys::parseDialect(std::nullopt, source, options);
+    lsys::ParseResult result = lsys::parseDialect(lsys::dialectOfFile(std::nullopt, source, path), source, options);
     if (!result.ok())
         throw SceneError("species '" + species.name + "': " + lsys::formatDiagnostics(result.diagnostics, source));
     return std::move(result.grammar);

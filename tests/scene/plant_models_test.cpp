@@ -145,6 +145,18 @@ TEST(PlantModels, PlantWithFewLeavesKeepsEveryLeafAtLod1) {
     EXPECT_EQ(foliageJoints(pool, pool.models[0], LOD_REDUCED), full);
 }
 
+// A species' cpfg file (.l) is read as cpfg: its tab-indented line goes on
+// with the production above (natively it would be a line of its own, and
+// an error).
+TEST(PlantModels, ASpeciesCpfgFileIsReadAsCpfg) {
+    std::filesystem::create_directories(kOutput);
+    const std::filesystem::path file = kOutput / "cpfg_probe.l";
+    std::ofstream(file) << "derivationlength: 3\nAxiom: A\nA --> F[+A]\n\t[-A]FA\nhomomorphism\nendlsystem\n";
+    const pf::PlantModelPool pool = pf::buildPlantModels(sceneOf(file, 1));
+    ASSERT_EQ(pool.models.size(), 1u);
+    EXPECT_GT(pool.models[0].meshes[LOD_FULL][DRAW_BARK].indexCount, 0u);
+}
+
 TEST(PlantModels, LeafySpeciesHaveFoliageAtBothLods) {
     const pf::PlantModelPool& pool = defaultPool();
     for (const pf::PlantModelInfo& model : pool.models) {
