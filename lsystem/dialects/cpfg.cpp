@@ -33,21 +33,15 @@ constexpr std::array kSpellings = {
     Spelling{"derivationlength", "derivation length:", false},
 };
 
-// `word` at `pos` of `text`, its first letter in either case and the rest
-// as written, not followed by a letter or digit; the end of it, or npos.
-size_t acceptWord(std::string_view text, size_t pos, std::string_view word) {
-    if (text.size() - std::min(pos, text.size()) < word.size()) return std::string_view::npos;
-    if (std::tolower(static_cast<unsigned char>(text[pos])) != word[0] ||
-        text.substr(pos + 1, word.size() - 1) != word.substr(1))
-        return std::string_view::npos;
-    size_t end = pos + word.size();
-    if (end < text.size() && std::isalnum(static_cast<unsigned char>(text[end]))) return std::string_view::npos;
-    return end;
-}
-
-size_t skipBlanks(std::string_view text, size_t pos) {
-    while (pos < text.size() && (text[pos] == ' ' || text[pos] == '\t' || text[pos] == '\r')) ++pos;
-    return pos;
+// The spelling `word` is, its first letter in either case and the rest as
+// written (cpfg's lexer: "(H|h)omomorphism"); null for none.
+const Spelling* spellingOf(std::string_view word) {
+    for (const Spelling& spelling : kSpellings)
+        if (word.size() == spelling.cpfg.size() &&
+            std::tolower(static_cast<unsigned char>(word[0])) == spelling.cpfg[0] &&
+            word.substr(1) == spelling.cpfg.substr(1))
+            return &spelling;
+    return nullptr;
 }
 
 struct Cpfg {
@@ -59,28 +53,29 @@ struct Cpfg {
     // The line's header in cpfg's spelling as native text, the rest of the
     // line copied; false when the line starts with no such header.
     bool header(Statement& into, size_t begin, size_t end) const {
-        const std::string_view text = std::string_view(source.text).substr(0, end);
-        const size_t at = skipBlanks(text, begin);
-        for (const Spelling& spelling : kSpellings) {
-            size_t pos = acceptWord(text, at, spelling.cpfg);
-            if (pos == std::string_view::npos) continue;
-            pos = skipBlanks(text, pos);
-            if (pos < text.size() && text[pos] == ':')
-                pos = skipBlanks(text, pos + 1);
-            else if (!spelling.colonOptional)
-                continue;
-            if (spelling.colonOptional) { // cpfg's warnings switch
-                size_t no = acceptWord(text, pos, "no");
-                size_t warnings =
-                    acceptWord(text, no == std::string_view::npos ? pos : skipBlanks(text, no), "warnings");
-                if (warnings != std::string_view::npos) pos = skipBlanks(text, warnings);
-            }
-            into.emit(spelling.native, at);
-            into.emit(" ", pos);
-            into.copy(text.substr(pos), pos);
-            return true;
+        Scanner s{source, begin};
+        s.skipSpaces();
+        const size_t at = s.pos;
+        const Spelling* spelling = spellingOf(s.identifier());
+        if (!spelling) return false;
+        s.skipSpaces();
+        if (!s.accept(":") && !spelling->colonOptional) return false;
+        s.skipSpaces();
+        if (spelling->colonOptional) { // cpfg's warnings switch: "warnings" or "no warnings"
+            const size_t before = s.pos;
+            if (s.identifier() == "no")
+                s.skipSpaces();
+            else
+                s.pos = before;
+            if (s.identifier() == "warnings")
+                s.skipSpaces();
+            else
+                s.pos = before;
         }
-        return false;
+        into.emit(spelling->native, at);
+        into.emit(" ", s.pos);
+        into.copy(std::string_view(source.text).substr(s.pos, end - s.pos), s.pos);
+        return true;
     }
 
     Translation run() {
