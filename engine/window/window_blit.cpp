@@ -6,8 +6,8 @@
 #include "engine/vk/target_pass.h"
 #include "shaders/window_blit_layouts.h"
 
+#include "shaders/fullscreen_vert.spv.h"
 #include "shaders/window_blit_frag.spv.h"
-#include "shaders/window_blit_vert.spv.h"
 
 namespace pf {
 
@@ -32,7 +32,7 @@ WindowBlit createWindowBlit(GpuResources& owner, const Image& source, VkFormat o
     WindowBlit blit;
     blit.set = createSet(owner, setLayout, table);
     blit.pipelineLayout = createPipelineLayout(owner, setLayout);
-    blit.pipeline = createColorOnlyPipeline(owner, spirv_window_blit_vert, spirv_window_blit_frag, blit.pipelineLayout,
+    blit.pipeline = createColorOnlyPipeline(owner, spirv_fullscreen_vert, spirv_window_blit_frag, blit.pipelineLayout,
                                             outputFormat);
     return blit;
 }

@@ -1,7 +1,7 @@
 // The window's last pass: the finished frame (RenderTarget::color, rendered
 // at the dynamic render scale's share of the window, render_scale.h) drawn
 // over the whole swapchain image with one bilinear tap a pixel
-// (shaders/window_blit.frag).
+// (shaders/fullscreen.vert, shaders/window_blit.frag).
 //
 // A draw rather than vkCmdBlitImage, so the filter may work on the frame's
 // encoded bytes: the target is sRGB and a blit filters sRGB texels in linear
