@@ -48,8 +48,6 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
     Swapchain swapchain;
     swapchain = createSwapchain(ctx, surface, window.framebufferExtent(), swapchain);
     RenderScaleState scale = startRenderScale(options.renderScale);
-    RenderTarget target = createRenderTarget(ctx, scaledExtent(swapchain.extent, scale.scale), options.antialiasing);
-    WindowBlit blit = createWindowBlit(target.resources, target.color, swapchain.format);
 
     VkCommandBuffer cmd = allocateCommandBuffer(ctx);
     VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
@@ -60,12 +58,16 @@ PresentStats runPresentLoop(const GpuContext& ctx, Window& window, VkSurfaceKHR 
     VkFence frameDone;
     VK_CHECK(vkCreateFence(ctx.device, &fenceInfo, nullptr, &frameDone));
 
-    // The target at `share` of the swapchain's size; call once no frame uses the old one.
+    // The target at `share` of the swapchain's size and its blit; call once
+    // no frame uses the old one.
+    RenderTarget target;
+    WindowBlit blit;
     auto replaceTarget = [&](float share) {
         destroyRenderTarget(target);
         target = createRenderTarget(ctx, scaledExtent(swapchain.extent, share), options.antialiasing);
         blit = createWindowBlit(target.resources, target.color, swapchain.format);
     };
+    replaceTarget(scale.scale);
     auto rebuild = [&] {
         vkDeviceWaitIdle(ctx.device);
         swapchain = createSwapchain(ctx, surface, window.framebufferExtent(), swapchain);
