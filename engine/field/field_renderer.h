@@ -67,8 +67,7 @@ struct FieldView {
     bool firstFrame = true;            // LOD state starts settled at each plant's target LOD
     std::optional<uint32_t> forcedLod; // every visible plant at this LOD (tests, debugging)
     std::optional<uint32_t> forcedCut; // CLUSTER_CUT_ALL_NEAR or _ALL_FAR in place of the threshold (tests)
-    bool realTime =
-        false; // a window: physics takes a long gap in longer sub-steps, skips what it cannot (field_motion.h)
+    bool realTime = false;             // a window: physics steps as field_motion.h says for real time
 };
 
 // Names of the LODs and draw classes in statistics, reports and the overlay.
