@@ -70,14 +70,19 @@ std::string formatWithLine(const Diagnostic& diagnostic, std::string_view text) 
 } // namespace
 
 std::string formatDiagnostic(const Diagnostic& diagnostic, std::string_view source) {
-    return formatWithLine(diagnostic, LineIndex(source).line(diagnostic.line));
+    return formatWithLine(diagnostic, diagnostic.sourceLine.empty() ? LineIndex(source).line(diagnostic.line)
+                                                                    : diagnostic.sourceLine);
 }
 
 std::string formatDiagnostics(const std::vector<Diagnostic>& diagnostics, std::string_view source) {
     const LineIndex lines(source);
     std::string out;
     const size_t shown = std::min(diagnostics.size(), kMaxReportedDiagnostics);
-    for (size_t i = 0; i < shown; ++i) out += formatWithLine(diagnostics[i], lines.line(diagnostics[i].line));
+    for (size_t i = 0; i < shown; ++i) {
+        const Diagnostic& diagnostic = diagnostics[i];
+        out += formatWithLine(diagnostic,
+                              diagnostic.sourceLine.empty() ? lines.line(diagnostic.line) : diagnostic.sourceLine);
+    }
     if (diagnostics.size() > shown)
         out += diagnostics.front().file + ": " + std::to_string(diagnostics.size() - shown) +
                " more errors not shown (" + std::to_string(diagnostics.size()) + " in all)\n";

@@ -15,6 +15,9 @@ struct Diagnostic {
     int column = 0;
     std::string message;  // what is wrong
     std::string expected; // what would have been accepted here (may be empty)
+    // The offending line when it is not in the source the diagnostics are
+    // formatted with (a line of an #include'd file); empty otherwise.
+    std::string sourceLine;
 };
 
 // Characters of the offending line shown either side of the column; a

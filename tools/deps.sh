@@ -5,6 +5,8 @@
 # Usage: tools/deps.sh [fuzz] [bench]
 #   fuzz:  clang and libFuzzer for tools/fuzz.sh
 #   bench: hyperfine for the peer benchmarks in tools/bench/
+# cpp, the C preprocessor, is a run-time need too: cpfg files are read through
+# it as cpfg reads them through vlabcpp (docs/DIALECTS.md).
 # Node.js and npm are in the default list (tests/export runs the Khronos
 # glTF-Validator with them); a machine that already has node and npm, from
 # Debian or elsewhere, keeps its own.
@@ -12,6 +14,7 @@ set -euo pipefail
 
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
+  cpp
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglm-dev libglfw3-dev libstb-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev xvfb xauth libtinygltf-dev gnuplot-nox

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <numeric>
 
+#include "lsystem/dialects/c_preprocessor.h"
 #include "lsystem/dialects/native_text.h"
 
 namespace lsys {
@@ -85,8 +86,12 @@ void mapToSource(const Translation& translation, std::string_view source, std::v
     }
 }
 
-ParseResult parseDialect(std::optional<Dialect> dialect, std::string_view source, const ParseOptions& options) {
-    Translation translation = translateToNative(dialect.value_or(detectDialect(source)), source, options.file);
+namespace {
+
+// Translates `source`, parses the native text and reports every diagnostic
+// at its position in `source`, in source order.
+ParseResult parseTranslated(Dialect dialect, std::string_view source, const ParseOptions& options) {
+    Translation translation = translateToNative(dialect, source, options.file);
     ParseResult result = parseLsystem(translation.nativeSource, options);
     mapToSource(translation, source, result.diagnostics);
     // A statement the translation rejected may be the axiom: "no axiom" would only repeat that error.
@@ -96,6 +101,37 @@ ParseResult parseDialect(std::optional<Dialect> dialect, std::string_view source
     result.diagnostics.insert(result.diagnostics.end(), translation.diagnostics.begin(), translation.diagnostics.end());
     sortBySourcePosition(result.diagnostics);
     return result;
+}
+
+// cpfg's way: the C preprocessor first, then cpfg's notation. `lsys -D`
+// values become macros, as cpfg's own command-line definitions do. A file
+// the preprocessor rejects is reported with its errors only, as a compiler
+// stops after them.
+ParseResult parseCpfg(std::string_view source, const ParseOptions& options) {
+    PreprocessOptions preprocess;
+    for (const auto& [name, value] : options.defines) preprocess.macros.emplace_back(name, formatNumber(value));
+    std::sort(preprocess.macros.begin(), preprocess.macros.end());
+    std::string text(source);
+    if (std::optional<HeaderLine> header = findHeaderLine(text)) // "# dialect: cpfg" is no directive
+        std::fill(text.begin() + header->begin, text.begin() + header->end, ' ');
+    const PreprocessedText preprocessed = runCPreprocessor(text, options.file, preprocess);
+    ParseResult result;
+    if (!preprocessed.diagnostics.empty()) {
+        result.diagnostics = preprocessed.diagnostics;
+        return result;
+    }
+    ParseOptions native = options;
+    native.defines.clear(); // already expanded
+    result = parseTranslated(Dialect::Cpfg, preprocessed.text, native);
+    mapToFiles(preprocessed, result.diagnostics);
+    return result;
+}
+
+} // namespace
+
+ParseResult parseDialect(std::optional<Dialect> dialect, std::string_view source, const ParseOptions& options) {
+    const Dialect chosen = dialect.value_or(detectDialect(source));
+    return chosen == Dialect::Cpfg ? parseCpfg(source, options) : parseTranslated(chosen, source, options);
 }
 
 Dialect dialectOfFile(std::optional<Dialect> given, std::string_view source, std::string_view path) {

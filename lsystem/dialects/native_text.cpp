@@ -108,8 +108,9 @@ Translation NativeText::finish(std::vector<Diagnostic> diagnostics) const {
         }
         out.nativeSource += statement.text;
         out.origin.insert(out.origin.end(), statement.origin.begin(), statement.origin.end());
+        // The end of the line is just past its last byte, where a problem at the end of a statement is shown.
         out.nativeSource += '\n';
-        out.origin.push_back(statement.origin.empty() ? blankOrigin : statement.origin.back());
+        out.origin.push_back(statement.origin.empty() ? blankOrigin : statement.origin.back() + 1);
         ++line;
     };
     for (const auto* group : {&leading_, &body_, &trailing_})

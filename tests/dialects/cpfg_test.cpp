@@ -32,7 +32,7 @@ TEST(Cpfg, AProblemOnAContinuationLineIsReportedThere) {
     ASSERT_FALSE(result.diagnostics.empty());
     EXPECT_EQ(result.diagnostics.front().file, "tree.l");
     EXPECT_EQ(result.diagnostics.front().line, 3) << result.diagnostics.front().message;
-    EXPECT_EQ(result.diagnostics.front().column, 4) << result.diagnostics.front().message; // the '1'
+    EXPECT_EQ(result.diagnostics.front().column, 5) << result.diagnostics.front().message; // past "B(1"
 }
 
 // Section headers as cpfg accepts them: no colon, a capital letter, cpfg's
