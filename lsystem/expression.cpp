@@ -23,11 +23,49 @@ constexpr Function kFunctions[] = {
     {"ran", Op::Ran, 1},   {"nran", Op::NRan, 2},
 };
 
+// cpfg's functions where they differ from the native ones (the rest are shared).
+constexpr Function kCpfgFunctions[] = {
+    {"sin", Op::SinDegrees, 1},   {"cos", Op::CosDegrees, 1},   {"tan", Op::TanDegrees, 1},
+    {"asin", Op::AsinDegrees, 1}, {"acos", Op::AcosDegrees, 1}, {"atan", Op::AtanDegrees, 1},
+    {"atan2", Op::Atan2Cpfg, 2},  {"fabs", Op::Abs, 1},         {"sign", Op::Sign, 1},
+    {"trunc", Op::Round, 1},      {"srand", Op::Srand, 1},
+};
+
+// cpfg's functions that need what plantfield does not have: files, sound,
+// a window, contours and functions from the object's files, a communicating
+// environment program, or its other random distributions.
+constexpr std::string_view kUnsupportedCpfgFunctions[] = {
+    "fopen",   "fclose",  "fflush",  "fprintf", "fscanf",  "play",    "display", "stop",   "inblob",
+    "curveX",  "curveY",  "curveZ",  "curveGAL", "func",   "vvxmin",  "vvxmax",  "vvymin", "vvymax",
+    "vvzmin",  "vvzmax",  "vvscale", "bran",    "biran",   "setDerivLength",     "getDerivLength",
+};
+
+const Function* findFunction(std::string_view name, Arithmetic arithmetic) {
+    if (arithmetic == Arithmetic::Cpfg)
+        for (const Function& function : kCpfgFunctions)
+            if (function.name == name) return &function;
+    for (const Function& function : kFunctions)
+        if (function.name == name) return &function;
+    return nullptr;
+}
+
 // Net effect of each instruction on the stack depth.
 int stackEffect(Op op) {
     switch (op) {
     case Op::Const:
-    case Op::Var: return 1;
+    case Op::Var:
+    case Op::Global: return 1;
+    case Op::Element:
+    case Op::Int:
+    case Op::SinDegrees:
+    case Op::CosDegrees:
+    case Op::TanDegrees:
+    case Op::AsinDegrees:
+    case Op::AcosDegrees:
+    case Op::AtanDegrees:
+    case Op::Sign:
+    case Op::Round:
+    case Op::Srand:
     case Op::Neg:
     case Op::Not:
     case Op::Sin:
@@ -76,7 +114,8 @@ struct Compiler {
         out.code.push_back(instruction);
         depth += stackEffect(instruction.op);
         maxDepth = std::max(maxDepth, depth);
-        if (instruction.op == Op::Var || instruction.op == Op::Ran || instruction.op == Op::NRan)
+        if (instruction.op == Op::Var || instruction.op == Op::Ran || instruction.op == Op::NRan ||
+            instruction.op == Op::Global || instruction.op == Op::Element || instruction.op == Op::Srand)
             usesVariablesOrRandom = true;
     }
 
@@ -117,7 +156,10 @@ struct Compiler {
             if (!binary || binary->precedence < minPrecedence) return;
             cursor.pos += binary->token.size();
             this->binary(binary->precedence + 1, nesting);
-            emit({binary->op});
+            const bool cpfg = scope.arithmetic == Arithmetic::Cpfg;
+            emit({cpfg && binary->op == Op::Div   ? Op::DivCpfg
+                  : cpfg && binary->op == Op::Mod ? Op::ModInt
+                                                  : binary->op});
         }
     }
 
@@ -168,7 +210,7 @@ struct Compiler {
             cursor.pos = begin;
             return fail("malformed number '" + std::string(text) + "'");
         }
-        emit({Op::Const, 0, value});
+        emit({Op::Const, 0, 0, value});
     }
 
     void call(const Function& function, int nesting) {
@@ -193,6 +235,30 @@ struct Compiler {
         emit({function.op});
     }
 
+    // A scalar global, or an element of a global array: name[i][j] reads
+    // slot + (int)i * extent(j) + (int)j, as C lays out its arrays.
+    void globalValue(const GlobalVariable& global, int nesting) {
+        if (global.extents.empty()) return emit({Op::Global, 0, 0, double(global.slot)});
+        for (size_t dimension = 0; dimension < global.extents.size(); ++dimension) {
+            cursor.skipSpaces();
+            if (!cursor.accept("["))
+                return fail("'" + global.name + "' is an array of " + std::to_string(global.extents.size()) +
+                                " dimension" + (global.extents.size() > 1 ? "s" : ""),
+                            "'['");
+            if (dimension > 0) {
+                emit({Op::Const, 0, 0, double(global.extents[dimension])});
+                emit({Op::Mul});
+            }
+            expression(nesting + 1);
+            if (failed) return;
+            emit({Op::Int});
+            if (dimension > 0) emit({Op::Add});
+            cursor.skipSpaces();
+            if (!cursor.accept("]")) return fail("unclosed array index", "']'");
+        }
+        emit({Op::Element, 0, global.size(), double(global.slot)});
+    }
+
     void primary(int nesting) {
         cursor.skipSpaces();
         char c = cursor.peek();
@@ -208,14 +274,17 @@ struct Compiler {
         } else if (isIdentifierStart(c)) {
             size_t begin = cursor.pos;
             std::string name(cursor.identifier());
-            for (const Function& function : kFunctions)
-                if (function.name == name) return call(function, nesting);
+            if (const Function* function = findFunction(name, scope.arithmetic)) return call(*function, nesting);
             for (size_t i = 0; i < scope.variables.size(); ++i)
                 if (scope.variables[i] == name) return emit({Op::Var, static_cast<uint16_t>(i)});
+            if (scope.globals)
+                if (const GlobalVariable* global = scope.globals->find(name)) return globalValue(*global, nesting);
             if (scope.constants)
                 if (auto found = scope.constants->find(name); found != scope.constants->end())
-                    return emit({Op::Const, 0, found->second});
+                    return emit({Op::Const, 0, 0, found->second});
             cursor.pos = begin;
+            for (std::string_view unsupported : kUnsupportedCpfgFunctions)
+                if (unsupported == name) return fail("cpfg's function '" + name + "' is not supported");
             fail("unknown name '" + name + "'", "a parameter of this production, a #define constant or a function");
         } else {
             fail(cursor.atEnd() ? "expression ends too early" : std::string("unexpected '") + c + "' in expression",
@@ -236,12 +305,38 @@ std::optional<Expression> parseExpression(Cursor& cursor, const ExpressionScope&
     if (!compiler.usesVariablesOrRandom && compiler.out.code.size() > 1) {
         RandomStream unused;
         double value = evaluate(compiler.out, nullptr, unused);
-        compiler.out.code = {{Op::Const, 0, value}};
+        compiler.out.code = {{Op::Const, 0, 0, value}};
     }
     return std::move(compiler.out);
 }
 
-double evaluate(const Expression& expression, const double* variables, RandomStream& random) {
+uint32_t GlobalVariable::size() const {
+    uint64_t size = 1;
+    for (uint32_t extent : extents) size = std::min<uint64_t>(size * extent, kMaxGlobalSlots + 1);
+    return static_cast<uint32_t>(size);
+}
+
+const GlobalVariable* GlobalTable::find(std::string_view name) const {
+    for (const GlobalVariable& variable : variables)
+        if (variable.name == name) return &variable;
+    return nullptr;
+}
+
+const GlobalVariable* GlobalTable::add(std::string name, std::vector<uint32_t> extents) {
+    GlobalVariable variable{std::move(name), static_cast<uint32_t>(initial.size()), std::move(extents)};
+    if (initial.size() + variable.size() > kMaxGlobalSlots) return nullptr;
+    initial.resize(initial.size() + variable.size(), 0.0);
+    variables.push_back(std::move(variable));
+    return &variables.back();
+}
+
+bool hasSideEffects(const Expression& expression) {
+    return std::any_of(expression.code.begin(), expression.code.end(),
+                       [](const Instruction& instruction) { return instruction.op == Op::Srand; });
+}
+
+double evaluate(const Expression& expression, const double* variables, RandomStream& random, const double* globals) {
+    constexpr double kDegrees = 180.0 / 3.14159265358979323846;
     double stack[kMaxStack];
     int top = -1; // index of the top element
     for (const Instruction& instruction : expression.code) {
@@ -344,6 +439,42 @@ double evaluate(const Expression& expression, const double* variables, RandomStr
         case Op::NRan:
             a = random.normal(a, t);
             --top;
+            break;
+        case Op::Global: stack[++top] = globals[static_cast<size_t>(instruction.value)]; break;
+        case Op::Element:
+            t = t >= 0 && t < instruction.extent ? globals[static_cast<size_t>(instruction.value) + static_cast<size_t>(t)]
+                                                 : 0.0;
+            break;
+        case Op::Int: t = std::isfinite(t) ? std::clamp(std::trunc(t), -2147483648.0, 2147483647.0) : 0.0; break;
+        case Op::SinDegrees: t = std::sin(t / kDegrees); break;
+        case Op::CosDegrees: t = std::cos(t / kDegrees); break;
+        case Op::TanDegrees: t = std::tan(t / kDegrees); break;
+        case Op::AsinDegrees: t = std::asin(t) * kDegrees; break;
+        case Op::AcosDegrees: t = std::acos(t) * kDegrees; break;
+        case Op::AtanDegrees: t = std::atan(t) * kDegrees; break;
+        case Op::Atan2Cpfg:
+            a = std::atan2(t, a) * kDegrees;
+            --top;
+            break;
+        case Op::DivCpfg:
+            a = t == 0.0 ? a : a / t;
+            --top;
+            break;
+        case Op::ModInt: {
+            const double divisor = std::isfinite(t) ? std::trunc(t) : 0.0;
+            const double dividend = std::isfinite(a) ? std::trunc(a) : 0.0;
+            a = divisor == 0.0 || std::fabs(divisor) > 2147483647.0 || std::fabs(dividend) > 2147483647.0
+                    ? 0.0
+                    : static_cast<double>(static_cast<int64_t>(dividend) % static_cast<int64_t>(divisor));
+            --top;
+            break;
+        }
+        case Op::Sign: t = t == 0.0 ? 0.0 : (t > 0.0 ? 1.0 : -1.0); break;
+        case Op::Round: t = std::floor(t + 0.5); break;
+        case Op::Srand:
+            random = RandomStream::forModule(static_cast<uint64_t>(static_cast<int64_t>(std::isfinite(t) ? t : 0.0)),
+                                             0, 0);
+            t = 0.0;
             break;
         }
     }

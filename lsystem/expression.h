@@ -53,12 +53,30 @@ enum class Op : uint8_t {
     Clamp,
     Ran,
     NRan,
+    // Global variables and arrays (lsystem/statements.h): the slot is in value.
+    Global,
+    Element, // pops a flat index; reads slot value + index when below extent, else 0
+    Int,     // truncation toward zero, as C converts an array index
+    // cpfg's arithmetic (Arithmetic::Cpfg; Měch 2005, §5.1's expressions).
+    SinDegrees,
+    CosDegrees,
+    TanDegrees,
+    AsinDegrees,
+    AcosDegrees,
+    AtanDegrees,
+    Atan2Cpfg, // atan2(a, b) is C's atan2(b, a), in degrees
+    DivCpfg,   // a / 0 is a (cpfg warns and divides by 1)
+    ModInt,    // (int)a % (int)b; 0 when (int)b is 0
+    Sign,
+    Round, // cpfg's trunc(x): floor(x + 0.5)
+    Srand, // reseeds the random stream with (integer) t; yields 0
 };
 
 struct Instruction {
     Op op;
     uint16_t variable = 0; // for Var
-    double value = 0;      // for Const
+    uint32_t extent = 0;   // for Element: the array's size
+    double value = 0;      // for Const; the slot for Global and Element
 };
 
 inline constexpr int kMaxStack = 32;     // deepest evaluation stack an expression may need
@@ -70,11 +88,37 @@ struct Expression {
     bool isConstant() const { return code.size() == 1 && code[0].op == Op::Const; }
 };
 
-// Names an expression may refer to: the production's formal parameters
-// (evaluated from a variable array) and the grammar's constants (folded in).
+// A grammar's global variables (cpfg's, set by statement blocks) and arrays:
+// slots of one array of doubles that a derivation carries from step to step.
+struct GlobalVariable {
+    std::string name;
+    uint32_t slot = 0;
+    std::vector<uint32_t> extents; // empty for a scalar; an array's dimensions otherwise
+    uint32_t size() const;
+};
+
+struct GlobalTable {
+    std::vector<GlobalVariable> variables;
+    std::vector<double> initial; // one per slot: 0, or an array's initialiser
+    const GlobalVariable* find(std::string_view name) const;
+    // Adds a variable (all zeros); nullptr when the slots would pass kMaxGlobalSlots.
+    const GlobalVariable* add(std::string name, std::vector<uint32_t> extents = {});
+};
+inline constexpr uint32_t kMaxGlobalSlots = 1u << 24;
+
+// How functions and operators compute: natively (radians, IEEE division), or
+// as cpfg does: trigonometric functions in degrees, cpfg's atan2 argument
+// order, x/0 = x, '%' on integers, trunc() rounding, sign(), srand().
+enum class Arithmetic : uint8_t { Native, Cpfg };
+
+// Names an expression may refer to: the production's formal parameters and
+// local variables (evaluated from a variable array), the grammar's global
+// variables (from the derivation's global array) and its constants (folded in).
 struct ExpressionScope {
     std::span<const std::string> variables;
     const std::unordered_map<std::string, double>* constants = nullptr;
+    const GlobalTable* globals = nullptr;
+    Arithmetic arithmetic = Arithmetic::Native;
 };
 
 // Parses an expression starting at the cursor. Stops before the first
@@ -83,6 +127,13 @@ struct ExpressionScope {
 std::optional<Expression> parseExpression(Cursor& cursor, const ExpressionScope& scope, const std::string& file,
                                           std::vector<Diagnostic>& diagnostics);
 
-double evaluate(const Expression& expression, const double* variables, RandomStream& random);
+// `globals` is the derivation's global array; only grammars with global
+// variables have expressions that read it.
+double evaluate(const Expression& expression, const double* variables, RandomStream& random,
+                const double* globals = nullptr);
+
+// Whether the expression has an effect beyond its value (srand): such
+// grammars are derived sequentially (lsystem/rewriter.h).
+bool hasSideEffects(const Expression& expression);
 
 } // namespace lsys

@@ -16,8 +16,8 @@ void index(ProductionSet& set, size_t symbolCount) {
     set.contextSensitive = false;
     for (size_t i = 0; i < set.productions.size(); ++i) {
         Production& production = set.productions[i];
-        production.usesRandom =
-            production.groupSize > 1 || (production.condition && drawsRandom(*production.condition));
+        production.usesRandom = production.groupSize > 1 || !production.before.empty() || !production.after.empty() ||
+                                (production.condition && drawsRandom(*production.condition));
         for (const SuccessorModule& module : production.successor) {
             set.producesParameters |= !module.arguments.empty();
             for (const Expression& argument : module.arguments) production.usesRandom |= drawsRandom(argument);
@@ -31,6 +31,24 @@ void index(ProductionSet& set, size_t symbolCount) {
             set.productions[i].usesRandom |= set.productions[i + k].usesRandom;
 }
 
+bool sequential(const Grammar& grammar) {
+    if (!grammar.globals.variables.empty()) return true;
+    for (const Block* block : {&grammar.startBlock, &grammar.startEachBlock, &grammar.endEachBlock, &grammar.endBlock})
+        if (!block->empty()) return true;
+    for (const SuccessorModule& module : grammar.axiom)
+        for (const Expression& argument : module.arguments)
+            if (hasSideEffects(argument)) return true;
+    for (const ProductionSet* set : {&grammar.rules, &grammar.decomposition, &grammar.interpretation})
+        for (const Production& production : set->productions) {
+            if (!production.before.empty() || !production.after.empty()) return true;
+            if (production.condition && hasSideEffects(*production.condition)) return true;
+            for (const SuccessorModule& module : production.successor)
+                for (const Expression& argument : module.arguments)
+                    if (hasSideEffects(argument)) return true;
+        }
+    return false;
+}
+
 } // namespace
 
 void finalizeGrammar(Grammar& grammar) {
@@ -38,6 +56,7 @@ void finalizeGrammar(Grammar& grammar) {
     index(grammar.decomposition, grammar.symbols.size());
     index(grammar.interpretation, grammar.symbols.size());
     grammar.ignored.resize(grammar.symbols.size(), 0);
+    grammar.sequential = sequential(grammar);
 }
 
 } // namespace lsys

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lsystem/expression.h"
+#include "lsystem/statements.h"
 #include "lsystem/symbols.h"
 
 namespace lsys {
@@ -32,8 +33,11 @@ struct Production {
     std::vector<PatternModule> left;  // left context, in string order
     PatternModule strict;             // the module being replaced
     std::vector<PatternModule> right; // right context, may contain [ and ]
-    std::vector<std::string> variables;
+    std::vector<std::string> variables; // formal parameters, then the blocks' local variables
+    uint16_t formalCount = 0;           // of variables; the locals start at 0 on every application
+    Block before;                       // cpfg's statements before the condition, when the predecessor matches
     std::optional<Expression> condition;
+    Block after; // and after it, when it holds
     std::vector<SuccessorModule> successor;
     // Stochastic productions: the first of a group holds groupSize, the number
     // of consecutive alternatives (itself included); the others hold 0.
@@ -70,6 +74,16 @@ struct Grammar {
     ProductionSet rules;
     ProductionSet decomposition;
     ProductionSet interpretation;
+    Arithmetic arithmetic = Arithmetic::Native;
+    // cpfg's global variables and the blocks that run at the start of a
+    // derivation (before the axiom is evaluated), before and after each
+    // step, and after the last step.
+    GlobalTable globals;
+    Block startBlock, startEachBlock, endEachBlock, endBlock;
+    // Blocks, global variables or srand() make rewriting depend on the order modules are
+    // visited in: such grammars are rewritten sequentially, left to right,
+    // with one random stream, as cpfg rewrites (lsystem/rewriter.h).
+    bool sequential = false;
 };
 
 // Indexes productions by symbol and sizes the per-symbol tables; called by the parser.

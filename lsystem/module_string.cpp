@@ -31,22 +31,48 @@ uint64_t moduleStringBytes(uint64_t modules, uint64_t parameters, bool offsets) 
     return bytesPlus(bytesTimes(modules, perModule), bytesTimes(parameters, sizeof(float)));
 }
 
+namespace {
+
+// Appends module i as "F(1,0.5)": parameters with %g (their float value, as
+// cpfg and lpfg print them). Returns the characters appended, commas left out.
+size_t appendModule(std::string& out, const ModuleString& string, const SymbolTable& symbols, size_t i) {
+    const size_t before = out.size();
+    out += symbols.name(string.symbols[i]);
+    std::span<const float> parameters = string.parameters(i);
+    if (parameters.empty()) return out.size() - before;
+    char buffer[32];
+    out += '(';
+    for (size_t p = 0; p < parameters.size(); ++p) {
+        if (p > 0) out += ',';
+        std::snprintf(buffer, sizeof buffer, "%g", static_cast<double>(parameters[p]));
+        out += buffer;
+    }
+    out += ')';
+    return out.size() - before - (parameters.size() - 1);
+}
+
+} // namespace
+
 std::string toString(const ModuleString& string, const SymbolTable& symbols) {
     std::string out;
     out.reserve(string.size());
-    char buffer[32];
+    for (size_t i = 0; i < string.size(); ++i) appendModule(out, string, symbols, i);
+    return out;
+}
+
+std::string toCpfgString(const ModuleString& string, const SymbolTable& symbols) {
+    constexpr size_t kLineLength = 70;
+    std::string out;
+    out.reserve(string.size() + string.size() / kLineLength + 1);
+    size_t onLine = 0;
     for (size_t i = 0; i < string.size(); ++i) {
-        out += symbols.name(string.symbols[i]);
-        std::span<const float> parameters = string.parameters(i);
-        if (parameters.empty()) continue;
-        out += '(';
-        for (size_t p = 0; p < parameters.size(); ++p) {
-            if (p > 0) out += ',';
-            std::snprintf(buffer, sizeof buffer, "%g", static_cast<double>(parameters[p]));
-            out += buffer;
+        if (onLine >= kLineLength) {
+            out += '\n';
+            onLine = 0;
         }
-        out += ')';
+        onLine += appendModule(out, string, symbols, i);
     }
+    out += '\n';
     return out;
 }
 

@@ -43,6 +43,11 @@ inline uint64_t moduleStringBytes(const ModuleString& string) {
 
 // Canonical text: modules back to back, parameters printed with %g joined by commas: F(1,0.5)[+A(2)]
 std::string toString(const ModuleString& string, const SymbolTable& symbols);
+// The same text laid out as cpfg writes a string file (its -str option), for
+// comparing derivations with it: a line break before a module once 70
+// characters are on the line (its commas uncounted, as cpfg counts), and one
+// at the end.
+std::string toCpfgString(const ModuleString& string, const SymbolTable& symbols);
 
 // Index of the matching bracket for every '[' and ']'; -1 for other modules and
 // for an unmatched ']'; size() for an unclosed '['.

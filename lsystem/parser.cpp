@@ -95,8 +95,12 @@ struct Parser {
         return {};
     }
 
+    ExpressionScope scopeFor(std::span<const std::string> variables) const {
+        return {variables, &grammar.constants, &grammar.globals, grammar.arithmetic};
+    }
+
     std::optional<double> constantExpression(Cursor& cursor) {
-        ExpressionScope scope{{}, &grammar.constants};
+        ExpressionScope scope{{}, &grammar.constants, nullptr, grammar.arithmetic};
         std::optional<Expression> expression = parseExpression(cursor, scope, file(), diagnostics);
         if (!expression) return std::nullopt;
         RandomStream random = RandomStream::forModule(grammar.seed, ~0ull, 0);
@@ -133,6 +137,14 @@ struct Parser {
         if (acceptHeader(cursor, "ignore")) return contextSymbols(cursor, false);
         if (acceptHeader(cursor, "consider")) return contextSymbols(cursor, true);
         if (acceptHeader(cursor, "axiom")) return axiom(cursor);
+        if (acceptHeader(cursor, "arithmetic")) return arithmetic(cursor);
+        if (acceptHeader(cursor, "define")) return globalBlock(cursor, nullptr);
+        if (acceptHeader(cursor, "start each") || acceptHeader(cursor, "starteach"))
+            return globalBlock(cursor, &grammar.startEachBlock);
+        if (acceptHeader(cursor, "end each") || acceptHeader(cursor, "endeach"))
+            return globalBlock(cursor, &grammar.endEachBlock);
+        if (acceptHeader(cursor, "start")) return globalBlock(cursor, &grammar.startBlock);
+        if (acceptHeader(cursor, "end")) return globalBlock(cursor, &grammar.endBlock);
         if (acceptHeader(cursor, "maximum depth")) return maximumDepth(cursor);
         if (acceptHeader(cursor, "production") || acceptHeader(cursor, "productions"))
             return beginSection(cursor, grammar.rules);
@@ -232,6 +244,39 @@ struct Parser {
                          [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
     }
 
+    // "arithmetic: cpfg" or "arithmetic: native", before the expressions it governs.
+    void arithmetic(Cursor& cursor) {
+        cursor.skipSpaces();
+        Cursor start = cursor;
+        const std::string_view name = cursor.identifier();
+        if (name == "cpfg")
+            grammar.arithmetic = Arithmetic::Cpfg;
+        else if (name == "native")
+            grammar.arithmetic = Arithmetic::Native;
+        else
+            return error(start, "unknown arithmetic", "'native' or 'cpfg'");
+        expectLineEnd(cursor);
+    }
+
+    // "start: { ... }" and the like; "define: { array ...; }" (into = null) only defines arrays.
+    void globalBlock(Cursor& cursor, Block* into) {
+        BlockScope scope{nullptr, &grammar.globals, &grammar.constants, grammar.arithmetic, into == nullptr};
+        std::optional<Block> block = parseBlock(cursor, scope, file(), diagnostics);
+        if (!block || !expectLineEnd(cursor)) return;
+        if (into) into->insert(into->end(), block->begin(), block->end());
+    }
+
+    // A production's block before or after its condition, when one starts at the cursor.
+    bool productionBlock(Cursor& cursor, Production& production, Block& into) {
+        cursor.skipSpaces();
+        if (cursor.peek() != '{') return true;
+        BlockScope scope{&production.variables, &grammar.globals, &grammar.constants, grammar.arithmetic, false};
+        std::optional<Block> block = parseBlock(cursor, scope, file(), diagnostics);
+        if (!block) return false;
+        into = std::move(*block);
+        return true;
+    }
+
     void beginSection(Cursor& cursor, ProductionSet& set) {
         section = &set;
         cursor.skipSpaces();
@@ -241,7 +286,7 @@ struct Parser {
 
     // Modules with argument expressions, until the end of the line or a ':' (probability).
     bool successorModules(Cursor& cursor, std::span<const std::string> variables, std::vector<SuccessorModule>& out) {
-        ExpressionScope scope{variables, &grammar.constants};
+        const ExpressionScope scope = scopeFor(variables);
         cursor.skipSpaces();
         if (cursor.peek() == '*') { // cpfg's explicit empty successor
             ++cursor.pos;
@@ -374,17 +419,21 @@ struct Parser {
                              "modules only; the left context climbs branches by itself");
         std::string signature = withoutSpaces(cursor.text.substr(predecessorStart, cursor.pos - predecessorStart));
 
-        if (cursor.accept(":")) {
+        production.formalCount = static_cast<uint16_t>(production.variables.size());
+        if (cursor.accept(":")) { // [{ before }] condition [{ after }], cpfg's statement blocks around the condition
             cursor.skipSpaces();
             size_t conditionStart = cursor.pos;
-            if (cursor.accept("*") && (cursor.skipSpaces(), cursor.atArrow())) {
+            if (!productionBlock(cursor, production, production.before)) return;
+            cursor.skipSpaces();
+            const size_t expressionStart = cursor.pos;
+            if (cursor.accept("*") && (cursor.skipSpaces(), cursor.atArrow() || cursor.peek() == '{')) {
                 // "*" means no condition (cpfg)
             } else {
-                cursor.pos = conditionStart;
-                ExpressionScope scope{production.variables, &grammar.constants};
-                production.condition = parseExpression(cursor, scope, file(), diagnostics);
+                cursor.pos = expressionStart;
+                production.condition = parseExpression(cursor, scopeFor(production.variables), file(), diagnostics);
                 if (!production.condition) return;
             }
+            if (!productionBlock(cursor, production, production.after)) return;
             signature += ":" + withoutSpaces(cursor.text.substr(conditionStart, cursor.pos - conditionStart));
             cursor.skipSpaces();
         }

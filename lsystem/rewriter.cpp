@@ -115,10 +115,14 @@ struct Written {
 // The production that rewrites a module, or null when none applies. The
 // module's parameters are bound to the formal variables; contexts are matched
 // in view (which may be null for a context-free set). random is (re)started
-// from source for every candidate that draws, as derive() always has.
+// from source for every candidate that draws, as derive() always has, unless
+// the grammar is sequential: then it is the derivation's one stream, and the
+// candidate's statement blocks run around its condition (cpfg's order: the
+// block before it once the predecessor matches, the one after it when it holds).
 inline const Production* selectProduction(const ProductionSet& set, const ContextView* view, size_t position,
                                           SymbolId symbol, std::span<const float> parameters,
-                                          const RandomSource& source, double* variables, RandomStream& random) {
+                                          const RandomSource& source, double* variables, RandomStream& random,
+                                          double* globals, bool sequential) {
     const uint32_t inputCount = static_cast<uint32_t>(parameters.size());
     for (uint32_t index : set.bySymbol[symbol]) {
         const Production& production = set.productions[index];
@@ -126,8 +130,14 @@ inline const Production* selectProduction(const ProductionSet& set, const Contex
         for (uint32_t k = 0; k < inputCount; ++k) variables[production.strict.firstVariable + k] = parameters[k];
         if (!production.left.empty() && !matchLeft(*view, production.left, position, variables)) continue;
         if (!production.right.empty() && !matchRight(*view, production.right, position, variables)) continue;
-        if (production.usesRandom) random = RandomStream::forModule(source.seed, source.pass, source.position);
-        if (production.condition && evaluate(*production.condition, variables, random) == 0.0) continue;
+        if (production.usesRandom && !sequential)
+            random = RandomStream::forModule(source.seed, source.pass, source.position);
+        if (sequential) {
+            std::fill(variables + production.formalCount, variables + production.variables.size(), 0.0);
+            runBlock(production.before, variables, globals, random);
+        }
+        if (production.condition && evaluate(*production.condition, variables, random, globals) == 0.0) continue;
+        if (sequential) runBlock(production.after, variables, globals, random);
         const Production* chosen = &production;
         if (production.groupSize > 1) {
             // Pick an alternative by cumulative probability; the last absorbs rounding.
@@ -142,8 +152,16 @@ inline const Production* selectProduction(const ProductionSet& set, const Contex
     return nullptr;
 }
 
+// The state a sequential grammar's derivation carries from module to module
+// and step to step: its global variables and its one random stream.
+struct SequentialState {
+    std::vector<double> globals;
+    RandomStream random;
+};
+
 Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const ModuleString& in,
-                     const int32_t* partners, Range range, uint64_t seed, uint64_t pass, size_t budget, Output out) {
+                     const int32_t* partners, Range range, uint64_t seed, uint64_t pass, size_t budget, Output out,
+                     SequentialState* sequential) {
     const ProductionSet& set = *prepared.set;
     const bool withParameters = out.starts != nullptr;
     SymbolId* symbols = out.symbols;
@@ -155,13 +173,15 @@ Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const 
 
     const ContextView view{in, partners, grammar.ignored.data()};
     double variables[kMaxVariables];
+    double* globals = sequential ? sequential->globals.data() : nullptr;
+    RandomStream ownStream;
+    RandomStream& random = sequential ? sequential->random : ownStream;
     for (size_t i = range.begin; i < range.end; ++i) {
         const SymbolId symbol = in.symbols[i];
         const uint32_t inputCount = in.paramCount(i);
         const float* inputParameters = in.paramData(i);
-        RandomStream random;
-        const Production* chosen =
-            selectProduction(set, &view, i, symbol, {inputParameters, inputCount}, {seed, pass, i}, variables, random);
+        const Production* chosen = selectProduction(set, &view, i, symbol, {inputParameters, inputCount},
+                                                    {seed, pass, i}, variables, random, globals, sequential);
         if (!chosen) { // no production applies: copy the module
             symbols[written++] = symbol;
             if (withParameters) {
@@ -176,7 +196,7 @@ Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const 
                 symbols[written++] = module.symbol;
                 if (!withParameters) continue;
                 for (const Expression& argument : module.arguments)
-                    *params++ = static_cast<float>(evaluate(argument, variables, random));
+                    *params++ = static_cast<float>(evaluate(argument, variables, random, globals));
                 parameterEnd += static_cast<uint32_t>(module.arguments.size());
                 starts[written] = parameterEnd;
             }
@@ -221,11 +241,13 @@ struct Rewriter {
     const Grammar& grammar;
     const DeriveOptions& options;
     uint64_t seed;
+    SequentialState* sequential = nullptr; // set for sequential grammars: one range, in string order
     std::vector<int32_t> partners;
 
     std::vector<Range> split(size_t n) const {
-        size_t count =
-            (options.threads > 1 && n >= options.parallelThreshold) ? static_cast<size_t>(options.threads) : 1;
+        size_t count = (options.threads > 1 && n >= options.parallelThreshold && !sequential)
+                           ? static_cast<size_t>(options.threads)
+                           : 1;
         std::vector<Range> ranges;
         for (size_t t = 0; t < count; ++t) ranges.push_back({n * t / count, n * (t + 1) / count});
         return ranges;
@@ -268,7 +290,7 @@ struct Rewriter {
                           withParameters ? out.paramStart.data() + moduleOffset[t] : nullptr,
                           static_cast<uint32_t>(parameterOffset[t])};
             written[t] = rewriteRange(grammar, prepared, in, partners.data(), ranges[t], seed, passNumber,
-                                      options.maxModules, target);
+                                      options.maxModules, target, sequential);
         });
 
         size_t modules = 0, parameters = 0, rewritten = 0;
@@ -386,7 +408,8 @@ bool rewriteModule(const ProductionSet& set, SymbolId symbol, std::span<const fl
         throw std::invalid_argument("rewriteModule: the production set has context-sensitive productions");
     double variables[kMaxVariables];
     RandomStream random;
-    const Production* chosen = selectProduction(set, nullptr, 0, symbol, parameters, source, variables, random);
+    const Production* chosen =
+        selectProduction(set, nullptr, 0, symbol, parameters, source, variables, random, nullptr, false);
     if (!chosen) {
         out.push(symbol, parameters);
         return false;
@@ -401,7 +424,7 @@ bool rewriteModule(const ProductionSet& set, SymbolId symbol, std::span<const fl
     return true;
 }
 
-ModuleString axiomString(const Grammar& grammar, uint64_t seed) {
+ModuleString axiomString(const Grammar& grammar, uint64_t seed, const double* globals) {
     ModuleString string;
     std::vector<float> values;
     for (size_t i = 0; i < grammar.axiom.size(); ++i) {
@@ -409,7 +432,7 @@ ModuleString axiomString(const Grammar& grammar, uint64_t seed) {
         RandomStream random = RandomStream::forModule(seed, kAxiomPass, i);
         values.clear();
         for (const Expression& argument : module.arguments)
-            values.push_back(static_cast<float>(evaluate(argument, nullptr, random)));
+            values.push_back(static_cast<float>(evaluate(argument, nullptr, random, globals)));
         string.push(module.symbol, values);
     }
     return string;
@@ -427,21 +450,37 @@ ModuleString withinMemory(Work work) {
     }
 }
 
+// A sequential grammar's state as its Start: block leaves it (cpfg runs it
+// before the axiom is evaluated); empty for other grammars.
+std::optional<SequentialState> startState(const Grammar& grammar, uint64_t seed) {
+    if (!grammar.sequential) return std::nullopt;
+    SequentialState state{grammar.globals.initial, RandomStream::forModule(seed, kAxiomPass, ~0ull)};
+    runBlock(grammar.startBlock, nullptr, state.globals.data(), state.random);
+    return state;
+}
+
+// Runs one of a sequential grammar's global blocks; nothing for other grammars.
+void runGlobalBlock(const Block& block, std::optional<SequentialState>& state) {
+    if (state) runBlock(block, nullptr, state->globals.data(), state->random);
+}
+
 ModuleString deriveUnguarded(const Grammar& grammar, const DeriveOptions& options) {
     const uint64_t seed = options.seed.value_or(grammar.seed);
     const int steps = options.steps.value_or(grammar.derivationLength);
-    Rewriter rewriter{grammar, options, seed};
+    std::optional<SequentialState> state = startState(grammar, seed);
+    Rewriter rewriter{grammar, options, seed, state ? &*state : nullptr};
     const size_t symbolCount = grammar.symbols.size();
     const PreparedSet rules = prepare(grammar.rules, symbolCount);
     const PreparedSet decomposition = prepare(grammar.decomposition, symbolCount);
 
     const std::optional<SymbolId> cut = producedCut(grammar);
-    ModuleString current = axiomString(grammar, seed);
+    ModuleString current = axiomString(grammar, seed, state ? state->globals.data() : nullptr);
     if (current.size() > options.maxModules) budgetExceeded(options.maxModules, 0);
     ModuleString next;
     if (!grammar.decomposition.empty()) rewriter.passesToFixpoint(decomposition, 1, current, next);
     for (int step = 1; step <= steps; ++step) {
         const uint64_t passNumber = static_cast<uint64_t>(step) * kPassesPerStep;
+        runGlobalBlock(grammar.startEachBlock, state);
         if (!grammar.rules.empty()) {
             rewriter.pass(rules, passNumber, current, next);
             std::swap(current, next);
@@ -451,14 +490,19 @@ ModuleString deriveUnguarded(const Grammar& grammar, const DeriveOptions& option
             removeCutBranches(current, *cut, next);
             std::swap(current, next);
         }
+        runGlobalBlock(grammar.endEachBlock, state);
     }
+    runGlobalBlock(grammar.endBlock, state);
     return current;
 }
 
 ModuleString interpretUnguarded(const Grammar& grammar, const ModuleString& string, const DeriveOptions& options) {
     ModuleString current = string;
     if (grammar.interpretation.empty()) return current;
-    Rewriter rewriter{grammar, options, options.seed.value_or(grammar.seed)};
+    const uint64_t seed = options.seed.value_or(grammar.seed);
+    // Interpretation rules read the global variables as the Start: block leaves them.
+    std::optional<SequentialState> state = startState(grammar, seed);
+    Rewriter rewriter{grammar, options, seed, state ? &*state : nullptr};
     const PreparedSet interpretation = prepare(grammar.interpretation, grammar.symbols.size());
     ModuleString scratch;
     rewriter.passesToFixpoint(interpretation, kInterpretationPass, current, scratch);

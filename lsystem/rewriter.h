@@ -43,11 +43,16 @@ bool rewriteModule(const ProductionSet& set, SymbolId symbol, std::span<const fl
 // then removes cut branches after every step.
 std::optional<SymbolId> producedCut(const Grammar& grammar);
 
-// The axiom with its parameters evaluated (random draws use the given seed).
-ModuleString axiomString(const Grammar& grammar, uint64_t seed);
+// The axiom with its parameters evaluated (random draws use the given seed;
+// global variables, of a grammar that has them, are read from `globals`).
+ModuleString axiomString(const Grammar& grammar, uint64_t seed, const double* globals = nullptr);
 
 // Axiom, then decomposition, then for each step: rules, decomposition, and
-// the removal of branches cut by '%'.
+// the removal of branches cut by '%'. A sequential grammar (Grammar::sequential)
+// is rewritten as cpfg rewrites: on one thread, left to right, with one
+// random stream and its global variables, its Start: block run before the
+// axiom is evaluated, StartEach: and EndEach: around each step and End:
+// after the last.
 // Throws DerivationError when the module budget is exceeded.
 ModuleString derive(const Grammar& grammar, const DeriveOptions& options = {});
 

@@ -1,8 +1,8 @@
 #include "lsystem/subprocess.h"
 
 #include <array>
-#include <chrono>
 #include <cerrno>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
@@ -89,12 +89,10 @@ int spawn(const std::string& program, std::vector<char*>& args, std::array<int, 
     int error = forkError;
     if (pid > 0) {
         ssize_t n;
-        while ((n = ::read(report[0], &error, sizeof error)) < 0 && errno == EINTR) {
-        }
+        while ((n = ::read(report[0], &error, sizeof error)) < 0 && errno == EINTR) {}
         if (n != sizeof error) error = 0; // closed by a successful exec
         if (error != 0)
-            while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
-            }
+            while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {}
     }
     ::close(report[0]);
     return error;
@@ -163,8 +161,7 @@ ProcessResult runProcess(const std::vector<std::string>& argv, std::string_view 
     if (!stopped.empty()) ::kill(pid, SIGKILL);
     in[0].reset();
     int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
     if (!stopped.empty())
         result.failure = stopped;
     else if (WIFEXITED(status))

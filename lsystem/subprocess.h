@@ -18,14 +18,15 @@ struct ProcessResult {
 
 struct ProcessLimits {
     size_t maxOutputBytes = size_t(64) << 20; // standard output and error together
-    int timeoutSeconds = 60;                   // wall-clock time, and CPU time
-    size_t maxMemoryBytes = size_t(1) << 30;   // the program's address space
+    int timeoutSeconds = 60;                  // wall-clock time, and CPU time
+    size_t maxMemoryBytes = size_t(1) << 30;  // the program's address space
 };
 
 // Runs argv[0] (looked up in PATH) with `input` on its standard input. A
 // program that writes more than the limit or runs longer is killed: `failure`
 // says which and exitCode is -1. Never raises SIGPIPE in the caller, whatever
 // the program does.
-ProcessResult runProcess(const std::vector<std::string>& argv, std::string_view input, const ProcessLimits& limits = {});
+ProcessResult runProcess(const std::vector<std::string>& argv, std::string_view input,
+                         const ProcessLimits& limits = {});
 
 } // namespace lsys

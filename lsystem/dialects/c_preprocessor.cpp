@@ -41,8 +41,8 @@ std::string applyOverrides(std::string_view source, const PreprocessOptions& opt
                 at += 6;
                 skip();
                 size_t nameEnd = at;
-                while (nameEnd < line.size() && (std::isalnum(static_cast<unsigned char>(line[nameEnd])) ||
-                                                 line[nameEnd] == '_'))
+                while (nameEnd < line.size() &&
+                       (std::isalnum(static_cast<unsigned char>(line[nameEnd])) || line[nameEnd] == '_'))
                     ++nameEnd;
                 const std::string_view name = line.substr(at, nameEnd - at);
                 const bool functionLike = nameEnd < line.size() && line[nameEnd] == '(';
@@ -234,7 +234,9 @@ PreprocessedText runCPreprocessor(std::string_view source, const std::string& fi
     Reader reader{out};
     if (!run.started || !run.failure.empty()) {
         out.diagnostics.push_back(
-            {file, 0, 0,
+            {file,
+             0,
+             0,
              "cpfg files are read through the C preprocessor, as cpfg reads them, but " + run.failure +
                  (run.started ? std::string() : " (Debian's package cpp provides it; tools/deps.sh installs it)"),
              {}});
@@ -242,7 +244,9 @@ PreprocessedText runCPreprocessor(std::string_view source, const std::string& fi
     }
     reader.readErrors(run.err);
     if (run.exitCode != 0 && out.diagnostics.empty())
-        out.diagnostics.push_back({file, 0, 0,
+        out.diagnostics.push_back({file,
+                                   0,
+                                   0,
                                    "the C preprocessor failed (it may use " +
                                        std::to_string(ProcessLimits{}.maxMemoryBytes >> 20) + " MiB): " + run.err,
                                    {}});

@@ -9,6 +9,11 @@
 //     header may be followed by "warnings" or "no warnings" (whether cpfg
 //     warns of modules no rule matches: nothing here to derive).
 //   - "derivationlength:" may lack its space.
+//   - A statement block ({ ... } after Start:, End:, StartEach:, EndEach:
+//     or define:, or around a production's condition) may span lines: its
+//     lines are joined into one native statement, as cpfg's grammar lets
+//     blank lines and statements follow each other inside the braces.
+//   - Expressions compute as cpfg's do: "arithmetic: cpfg" comes first.
 // The other constructs of cpfg's language are the native parser's to
 // accept or reject (docs/DIALECTS.md, "cpfg").
 
@@ -16,6 +21,7 @@
 #include <cctype>
 
 #include "lsystem/dialects/native_text.h"
+#include "lsystem/lexer.h"
 
 namespace lsys {
 
@@ -78,14 +84,39 @@ struct Cpfg {
         return true;
     }
 
+    // How many statement blocks the statement so far leaves open: braces
+    // count on a global block's line (Start:, define:, ...), and in a
+    // production between the condition's ':' and the arrow; elsewhere they
+    // are polygon modules.
+    static int openBlocks(std::string_view text) {
+        size_t at = text.find_first_not_of(" \t");
+        std::string word;
+        while (at < text.size() && isIdentifierChar(text[at]))
+            word += static_cast<char>(std::tolower(static_cast<unsigned char>(text[at++])));
+        size_t begin = 0, end = text.size();
+        if (word != "start" && word != "end" && word != "starteach" && word != "endeach" && word != "define") {
+            const size_t arrow = std::min(text.find("->"), text.size());
+            begin = text.find(':');
+            if (begin >= arrow) return 0;
+            end = arrow;
+        }
+        int depth = 0;
+        for (size_t i = begin; i < end; ++i) depth += text[i] == '{' ? 1 : text[i] == '}' ? -1 : 0;
+        return depth;
+    }
+
     Translation run() {
         const std::string& text = source.text;
+        Statement arithmetic = out.start(0);
+        arithmetic.emit("arithmetic: cpfg", 0);
+        out.addFirst(std::move(arithmetic));
         for (size_t begin = 0; begin < text.size();) {
             Statement statement = out.start(begin);
             size_t end = lineEnd(begin);
             if (!header(statement, begin, end))
                 statement.copy(std::string_view(text).substr(begin, end - begin), begin);
-            while (end + 1 < text.size() && text[end + 1] == '\t') { // the statement goes on
+            // The statement goes on over tab-indented lines and to the end of an open block.
+            while (end + 1 < text.size() && (text[end + 1] == '\t' || openBlocks(statement.text) > 0)) {
                 statement.emit(" ", end);
                 const size_t next = end + 1;
                 end = lineEnd(next);

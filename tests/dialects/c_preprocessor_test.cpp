@@ -71,9 +71,9 @@ TEST(CPreprocessor, IncludedFilesAreReadAndTheirProblemsNamedThere) {
     EXPECT_EQ(bad.diagnostics[0].line, 3);
     EXPECT_EQ(bad.diagnostics[0].column, 10); // where "F(2" ends
     // The quoted line is the included file's, not the plant file's line 3.
-    EXPECT_NE(formatDiagnostics(bad.diagnostics, "#include \"shared.h\"\nAxiom: A\nA --> +(ANGLE)B\n")
-                  .find("  B --> F(2\n"),
-              std::string::npos);
+    EXPECT_NE(
+        formatDiagnostics(bad.diagnostics, "#include \"shared.h\"\nAxiom: A\nA --> +(ANGLE)B\n").find("  B --> F(2\n"),
+        std::string::npos);
 }
 
 TEST(CPreprocessor, PreprocessorErrorsAreLocated) {
@@ -150,9 +150,8 @@ TEST(CPreprocessor, AnEndlessIncludeIsAnErrorNotAnExhaustedMachine) {
 TEST(CPreprocessor, OutputLinesKnowTheirFileAndLine) {
     const Folder folder("origins");
     folder.write("two.h", "X --> Y\nY --> Z\n");
-    const PreprocessedText text =
-        runCPreprocessor("Axiom: A\n#include \"two.h\"\n\n\n\n\n\n\n\n\n\n\n\nA --> B\n",
-                         (folder.path / "plant.l").string(), {});
+    const PreprocessedText text = runCPreprocessor("Axiom: A\n#include \"two.h\"\n\n\n\n\n\n\n\n\n\n\n\nA --> B\n",
+                                                   (folder.path / "plant.l").string(), {});
     ASSERT_TRUE(text.diagnostics.empty());
     std::vector<std::pair<std::string, int>> found;
     const std::vector<std::string_view> lines = splitLines(text.text);

@@ -81,3 +81,33 @@ TEST(Cpfg, TheDialectIsNamedOrTakenFromTheExtension) {
 
 } // namespace
 } // namespace lsys::test
+
+namespace lsys::test {
+namespace {
+
+// cpfg's blocks may span lines (its grammar allows blank lines and one
+// statement per line inside the braces); braces in successors stay polygons.
+TEST(Cpfg, StatementBlocksSpanLines) {
+    const std::string source = "Start: {\n"
+                               "    n = 0;\n"
+                               "}\n"
+                               "Axiom: A A\n"
+                               "A : {\n"
+                               "    n = n + 1;\n"
+                               "\n"
+                               "  } n > 1 --> B(n) {.F.F.}\n"
+                               "A --> C(n)\n";
+    const Grammar grammar = parseOk(Dialect::Cpfg, source);
+    EXPECT_EQ(derived(grammar, 1), "C(1)B(2){.F.F.}");
+    const ParseResult open = parseDialect(Dialect::Cpfg, "Axiom: A\nA : {\n x = 1;\n --> B\n", {"plant.l"});
+    ASSERT_FALSE(open.diagnostics.empty());
+    EXPECT_EQ(open.diagnostics[0].line, 4);
+}
+
+// A cpfg file computes as cpfg does: angles in degrees, x/0 = x.
+TEST(Cpfg, ExpressionsUseCpfgsArithmetic) {
+    EXPECT_EQ(derived(parseOk(Dialect::Cpfg, "Axiom: A\nA --> B(sin(30), 2/0, 7%4)\n"), 1), "B(0.5,2,3)");
+}
+
+} // namespace
+} // namespace lsys::test

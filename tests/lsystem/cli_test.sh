@@ -35,6 +35,13 @@ expect_run seed 0 '^F' -- "$LSYS" derive "$DATA/plants/stochastic.lsys" --seed 9
 "$LSYS" derive "$DATA/plants/stochastic.lsys" --seed 9 --print --threads 1 > "$WORK/b"
 cmp -s "$WORK/a" "$WORK/b" || fail "seed: 2 threads and 1 thread differ"
 
+# --format cpfg lays the string out as cpfg's -str does: a break before a module once 70 characters are on a line.
+printf 'Axiom: A(1)\nA(x) --> F(x)[+A(x/2)]A(x*2)\n' > "$WORK/cpfg.l"
+"$LSYS" derive "$WORK/cpfg.l" -n 3 --print --format cpfg > "$WORK/cpfg.str"
+printf 'F(1)[+F(0.5)[+F(0.25)[+A(0.125)]A(0.5)]F(1)[+A(0.5)]A(2)]F(2)[+F(1)[+A(0.5)\n]A(2)]F(4)[+A(2)]A(8)\n' > "$WORK/cpfg.expected"
+cmp -s "$WORK/cpfg.str" "$WORK/cpfg.expected" || fail "format cpfg: $(cat "$WORK/cpfg.str")"
+expect_run format-unknown 2 'xml not in' -- "$LSYS" derive "$WORK/cpfg.l" --print --format xml
+
 expect_run dialect-header 0 '"F":1330' -- "$LSYS" derive "$DATA/plants/dialects/gravity_tree_2d.crankshaw" --json
 printf 'FP A\nA --> FP B\nB --> [ & A ]\nFP --> F\n' > "$WORK/robbins.txt"
 expect_run dialect-option 0 '^FF\[&A\]$' -- "$LSYS" derive "$WORK/robbins.txt" --dialect robbins -n 2 --print

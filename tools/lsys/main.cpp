@@ -1,5 +1,5 @@
 // lsys: derive, check and instance (b-grammar statistics of) .lsys files from the command line.
-//   lsys derive FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--print] [--json] [--max-modules N]
+//   lsys derive FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--print [--format text|cpfg]] [--json] [--max-modules N]
 //   lsys check FILE [-D NAME=VALUE]... [--dialect D]
 //   lsys instance FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--randomness K] [--json]
 //   lsys export FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] -o OUT.gltf|.glb|.obj [--flat|--instanced]
@@ -42,6 +42,7 @@ struct Arguments {
     std::vector<std::string> defines;
     std::optional<lsys::Dialect> dialect; // none: the file's "dialect:" line, else cpfg for a .l file, else native
     bool print = false;
+    std::string printFormat = "text"; // --format: "text" or "cpfg"
     bool json = false;
     size_t maxModules = 50'000'000;
     lsys::MemoryBudget memory; // --memory-budget
@@ -125,9 +126,9 @@ int derive(const Arguments& arguments) {
     int steps = options.steps.value_or(grammar->derivationLength);
 
     if (arguments.print) {
-        std::string text = lsys::toString(string, grammar->symbols);
+        const std::string text = arguments.printFormat == "cpfg" ? lsys::toCpfgString(string, grammar->symbols)
+                                                                 : lsys::toString(string, grammar->symbols) + '\n';
         std::fwrite(text.data(), 1, text.size(), stdout);
-        std::fputc('\n', stdout);
     }
     if (arguments.json) {
         std::vector<size_t> counts(grammar->symbols.size(), 0);
@@ -329,6 +330,11 @@ int main(int argc, char** argv) {
     CLI::App* deriveCommand = app.add_subcommand("derive", "Derive an L-system and report, print or count the result");
     addDerivationOptions(*deriveCommand, arguments);
     deriveCommand->add_flag("--print", arguments.print, "Print the final string, e.g. F(1,0.5)[+A(2)]");
+    deriveCommand
+        ->add_option("--format", arguments.printFormat,
+                     "How --print writes the string: text (on one line) or cpfg (as cpfg's -str writes it: a line "
+                     "break before a module once 70 characters are on the line)")
+        ->check(CLI::IsMember({"text", "cpfg"}));
     deriveCommand->add_flag("--json", arguments.json,
                             "Print {\"modules\", \"steps\", \"counts\", \"seconds\"} as JSON");
     deriveCommand->add_option("--max-modules", arguments.maxModules, "Module budget; exceeding it is an error")
