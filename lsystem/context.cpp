@@ -30,6 +30,12 @@ bool matchRightFrom(const ContextView& view, std::span<const PatternModule> patt
             }
             return false;
         }
+        if (wanted == kSkipBranch) {
+            // Skip to the end of the current branch, stopping at its ']'.
+            while (j < n && symbols[j] != kPop)
+                j = symbols[j] == kPush ? static_cast<size_t>(view.partners[j]) + 1 : j + 1;
+            continue;
+        }
         if (wanted == kPop) {
             // The pattern leaves its branch: skip whatever remains of it.
             while (j < n && symbols[j] != kPop)
@@ -60,6 +66,14 @@ bool matchRightFrom(const ContextView& view, std::span<const PatternModule> patt
 
 bool matchRight(const ContextView& view, std::span<const PatternModule> pattern, size_t position, double* variables) {
     return matchRightFrom(view, pattern, 0, position + 1, variables);
+}
+
+bool matchStrictTail(const ContextView& view, std::span<const PatternModule> tail, size_t position,
+                     double* variables) {
+    if (position + tail.size() >= view.string.size()) return false;
+    for (size_t k = 0; k < tail.size(); ++k)
+        if (!bindIfMatches(view, tail[k], position + 1 + k, variables)) return false;
+    return true;
 }
 
 bool matchLeft(const ContextView& view, std::span<const PatternModule> pattern, size_t position, double* variables) {

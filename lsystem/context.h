@@ -29,5 +29,8 @@ struct ContextView {
 // at each pattern module's firstVariable.
 bool matchLeft(const ContextView& view, std::span<const PatternModule> pattern, size_t position, double* variables);
 bool matchRight(const ContextView& view, std::span<const PatternModule> pattern, size_t position, double* variables);
+// The modules of a strict predecessor after its first, at position + 1
+// onwards, exactly (nothing is skipped).
+bool matchStrictTail(const ContextView& view, std::span<const PatternModule> tail, size_t position, double* variables);
 
 } // namespace lsys

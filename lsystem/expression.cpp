@@ -35,9 +35,9 @@ constexpr Function kCpfgFunctions[] = {
 // a window, contours and functions from the object's files, a communicating
 // environment program, or its other random distributions.
 constexpr std::string_view kUnsupportedCpfgFunctions[] = {
-    "fopen",   "fclose",  "fflush",  "fprintf", "fscanf",  "play",    "display", "stop",   "inblob",
-    "curveX",  "curveY",  "curveZ",  "curveGAL", "func",   "vvxmin",  "vvxmax",  "vvymin", "vvymax",
-    "vvzmin",  "vvzmax",  "vvscale", "bran",    "biran",   "setDerivLength",     "getDerivLength",
+    "fopen",  "fclose", "fflush",  "fprintf",  "fscanf", "play",           "display",        "stop",   "inblob",
+    "curveX", "curveY", "curveZ",  "curveGAL", "func",   "vvxmin",         "vvxmax",         "vvymin", "vvymax",
+    "vvzmin", "vvzmax", "vvscale", "bran",     "biran",  "setDerivLength", "getDerivLength",
 };
 
 const Function* findFunction(std::string_view name, Arithmetic arithmetic) {
@@ -442,8 +442,9 @@ double evaluate(const Expression& expression, const double* variables, RandomStr
             break;
         case Op::Global: stack[++top] = globals[static_cast<size_t>(instruction.value)]; break;
         case Op::Element:
-            t = t >= 0 && t < instruction.extent ? globals[static_cast<size_t>(instruction.value) + static_cast<size_t>(t)]
-                                                 : 0.0;
+            t = t >= 0 && t < instruction.extent
+                    ? globals[static_cast<size_t>(instruction.value) + static_cast<size_t>(t)]
+                    : 0.0;
             break;
         case Op::Int: t = std::isfinite(t) ? std::clamp(std::trunc(t), -2147483648.0, 2147483647.0) : 0.0; break;
         case Op::SinDegrees: t = std::sin(t / kDegrees); break;
@@ -472,8 +473,8 @@ double evaluate(const Expression& expression, const double* variables, RandomStr
         case Op::Sign: t = t == 0.0 ? 0.0 : (t > 0.0 ? 1.0 : -1.0); break;
         case Op::Round: t = std::floor(t + 0.5); break;
         case Op::Srand:
-            random = RandomStream::forModule(static_cast<uint64_t>(static_cast<int64_t>(std::isfinite(t) ? t : 0.0)),
-                                             0, 0);
+            random =
+                RandomStream::forModule(static_cast<uint64_t>(static_cast<int64_t>(std::isfinite(t) ? t : 0.0)), 0, 0);
             t = 0.0;
             break;
         }

@@ -14,6 +14,7 @@ void index(ProductionSet& set, size_t symbolCount) {
     set.bySymbol.assign(symbolCount, {});
     set.producesParameters = false;
     set.contextSensitive = false;
+    set.consumesSeveral = false;
     for (size_t i = 0; i < set.productions.size(); ++i) {
         Production& production = set.productions[i];
         production.usesRandom = production.groupSize > 1 || !production.before.empty() || !production.after.empty() ||
@@ -22,7 +23,8 @@ void index(ProductionSet& set, size_t symbolCount) {
             set.producesParameters |= !module.arguments.empty();
             for (const Expression& argument : module.arguments) production.usesRandom |= drawsRandom(argument);
         }
-        set.contextSensitive |= !production.left.empty() || !production.right.empty();
+        set.contextSensitive |= !production.left.empty() || !production.right.empty() || !production.strictTail.empty();
+        set.consumesSeveral |= !production.strictTail.empty();
         if (production.groupSize > 0) set.bySymbol[production.strict.symbol].push_back(static_cast<uint32_t>(i));
     }
     // An alternative of a stochastic group draws if any alternative does: the leader decides for all.

@@ -30,9 +30,12 @@ struct SuccessorModule {
 struct Production {
     std::string label;
     int line = 0;
-    std::vector<PatternModule> left;  // left context, in string order
-    PatternModule strict;             // the module being replaced
-    std::vector<PatternModule> right; // right context, may contain [ and ]
+    std::vector<PatternModule> left;    // left context, in string order
+    PatternModule strict;               // the module being replaced
+    // cpfg's strict predecessors of several modules: the ones after `strict`,
+    // matched where they stand and replaced with it by the successor.
+    std::vector<PatternModule> strictTail;
+    std::vector<PatternModule> right;   // right context, may contain [ and ]
     std::vector<std::string> variables; // formal parameters, then the blocks' local variables
     uint16_t formalCount = 0;           // of variables; the locals start at 0 on every application
     Block before;                       // cpfg's statements before the condition, when the predecessor matches
@@ -54,6 +57,7 @@ struct ProductionSet {
     int maxDepth = 1; // decomposition / interpretation passes
     bool producesParameters = false;
     bool contextSensitive = false;
+    bool consumesSeveral = false; // a strict predecessor of several modules: rewritten on one thread, left to right
     bool empty() const { return productions.empty(); }
 };
 

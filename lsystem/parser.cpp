@@ -15,7 +15,7 @@ namespace lsys {
 namespace {
 
 // Symbols that are modules on their own (besides letters and digits).
-constexpr std::string_view kTurtleSymbols = "+-&^\\/|[]!;$%~'\"{}.?_=";
+constexpr std::string_view kTurtleSymbols = "+-&^\\/|[]!;$%~'\"{}.?_=#,";
 
 // Case-insensitive "keyword:" at the cursor (after leading spaces); consumes it on success.
 bool acceptHeader(Cursor& cursor, std::string_view keyword, bool needsColon = true) {
@@ -74,6 +74,14 @@ struct Parser {
         if (c == '@' && std::isupper(static_cast<unsigned char>(cursor.peek(1)))) {
             cursor.pos += 2;
             while (std::islower(static_cast<unsigned char>(cursor.peek()))) ++cursor.pos;
+            return std::string(cursor.text.substr(begin, cursor.pos - begin));
+        }
+        // cpfg's other '@' modules: @o @c @v ... (one letter), @mo @bc ... (two), @# @! @; @,
+        if (c == '@' && (std::islower(static_cast<unsigned char>(cursor.peek(1))) ||
+                         std::string_view("#!;,").find(cursor.peek(1)) != std::string_view::npos)) {
+            const char first = cursor.peek(1);
+            cursor.pos += 2;
+            if ((first == 'm' || first == 'b') && std::islower(static_cast<unsigned char>(cursor.peek()))) ++cursor.pos;
             return std::string(cursor.text.substr(begin, cursor.pos - begin));
         }
         if (c == '~' && isIdentifierStart(cursor.peek(1))) {
@@ -397,6 +405,16 @@ struct Parser {
                 current = &strict;
                 continue;
             }
+            if (cursor.peek() == '*') { // cpfg's explicit empty context: "* < A", "A > *"
+                if (!((current == &before && before.empty()) || (current == &after && after.empty())))
+                    return error(cursor, "'*' stands for a whole context",
+                                 "'* < strict' or 'strict > *' (no context), or a module");
+                ++cursor.pos;
+                cursor.skipSpaces();
+                if (current == &before && cursor.peek() != '<')
+                    return error(cursor, "'*' is an empty left context, so '<' must follow", "'<'");
+                continue;
+            }
             if (cursor.peek() == '>') {
                 if (current == &after) return error(cursor, "second '>' in predecessor", "one right context");
                 ++cursor.pos;
@@ -409,10 +427,13 @@ struct Parser {
         if (!sawLeft && current != &after) std::swap(before, strict);
         production.left = std::move(before);
         production.right = std::move(after);
-        if (strict.size() != 1)
-            return error(cursor, "predecessor must be exactly one module",
-                         "one module, with optional '<' and '>' contexts");
+        if (strict.empty())
+            return error(cursor, "predecessor has no strict module", "a module, with optional '<' and '>' contexts");
+        for (const PatternModule& module : strict)
+            if (module.symbol == kPush || module.symbol == kPop)
+                return error(cursor, "brackets are not allowed in a strict predecessor", "modules only");
         production.strict = strict[0];
+        production.strictTail.assign(strict.begin() + 1, strict.end());
         for (const PatternModule& module : production.left)
             if (module.symbol == kPush || module.symbol == kPop)
                 return error(leftMark, "brackets are not allowed in a left context",

@@ -128,8 +128,12 @@ inline const Production* selectProduction(const ProductionSet& set, const Contex
         const Production& production = set.productions[index];
         if (production.strict.paramCount != inputCount) continue;
         for (uint32_t k = 0; k < inputCount; ++k) variables[production.strict.firstVariable + k] = parameters[k];
+        if (!production.strictTail.empty() && !matchStrictTail(*view, production.strictTail, position, variables))
+            continue;
         if (!production.left.empty() && !matchLeft(*view, production.left, position, variables)) continue;
-        if (!production.right.empty() && !matchRight(*view, production.right, position, variables)) continue;
+        if (!production.right.empty() &&
+            !matchRight(*view, production.right, position + production.strictTail.size(), variables))
+            continue;
         if (production.usesRandom && !sequential)
             random = RandomStream::forModule(source.seed, source.pass, source.position);
         if (sequential) {
@@ -192,6 +196,7 @@ Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const 
             }
         } else {
             ++applied;
+            i += chosen->strictTail.size(); // the predecessor's other modules are replaced too
             for (const SuccessorModule& module : chosen->successor) {
                 symbols[written++] = module.symbol;
                 if (!withParameters) continue;
@@ -244,8 +249,8 @@ struct Rewriter {
     SequentialState* sequential = nullptr; // set for sequential grammars: one range, in string order
     std::vector<int32_t> partners;
 
-    std::vector<Range> split(size_t n) const {
-        size_t count = (options.threads > 1 && n >= options.parallelThreshold && !sequential)
+    std::vector<Range> split(size_t n, bool oneRange = false) const {
+        size_t count = (options.threads > 1 && n >= options.parallelThreshold && !sequential && !oneRange)
                            ? static_cast<size_t>(options.threads)
                            : 1;
         std::vector<Range> ranges;
@@ -260,7 +265,7 @@ struct Rewriter {
         if (prepared.isD0L && !in.hasParameters()) return passD0L(prepared, passNumber, in, out);
         if (prepared.set->contextSensitive) computeBracketPartners(in, partners);
         const bool withParameters = in.hasParameters() || prepared.set->producesParameters;
-        const std::vector<Range> ranges = split(in.size());
+        const std::vector<Range> ranges = split(in.size(), prepared.set->consumesSeveral);
         const size_t count = ranges.size();
         const size_t moduleCap = options.maxModules + prepared.longestSuccessor;
 

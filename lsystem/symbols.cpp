@@ -7,6 +7,7 @@ namespace lsys {
 SymbolTable::SymbolTable() {
     intern("[");
     intern("]");
+    intern("=");
 }
 
 SymbolId SymbolTable::intern(std::string_view name) {

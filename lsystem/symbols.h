@@ -12,10 +12,13 @@ namespace lsys {
 
 using SymbolId = uint16_t;
 
-// Brackets are interned first in every table so the hot loops can test them
-// against constants.
+// Brackets (and '=') are interned first in every table so the hot loops can
+// test them against constants.
 inline constexpr SymbolId kPush = 0; // [
 inline constexpr SymbolId kPop = 1;  // ]
+// '=' in a right context skips the rest of the current branch, up to its ']'
+// (cpfg's context rule; Měch 2005, §5.1).
+inline constexpr SymbolId kSkipBranch = 2;
 
 struct SymbolTable {
     std::vector<std::string> names;

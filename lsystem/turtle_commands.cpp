@@ -185,6 +185,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, 180.0f); }},
     {.action = TurtleAction::RollHorizontal,
      .symbol = "$",
+     .alias = "@v", // cpfg's name (its $ ends a sub-L-system)
      .documentation = "roll about H until L is horizontal (ABOP: L = V x H / |V x H|, V = +Y)",
      .reads = {kReadsWorldUp},
      .changes = kChangesNoStyle,
@@ -214,6 +215,14 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .changes = {StyleField::Width, FieldChange::Set, FieldChange::Derive},
      .stacks = kKeepsStacks,
      .apply = [](const TurtleStep& t) { t.state.width = t.parameterOr(0, t.state.width * t.settings.widthFactor); }},
+    {.action = TurtleAction::Widen,
+     .symbol = "#",
+     .parameters = "w = width / 0.7",
+     .documentation = "set the width to w (cpfg's width increase: a bare # undoes a bare !)",
+     .reads = {kReadsNothing},
+     .changes = {StyleField::Width, FieldChange::Set, FieldChange::Derive},
+     .stacks = kKeepsStacks,
+     .apply = [](const TurtleStep& t) { t.state.width = t.parameterOr(0, t.state.width / t.settings.widthFactor); }},
     {.action = TurtleAction::Material,
      .symbol = ";",
      .alias = "'",
@@ -225,6 +234,17 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
      .apply =
          [](const TurtleStep& t) {
              t.state.material = materialIndex(t.parameterOr(0, static_cast<float>(t.state.material) + 1.0f));
+         }},
+    {.action = TurtleAction::MaterialDown,
+     .symbol = ",",
+     .parameters = "i = material - 1",
+     .documentation = "set the material index to i (cpfg's colour decrement); outside 0..255 it becomes 0",
+     .reads = {kReadsNothing},
+     .changes = {StyleField::Material, FieldChange::Set, FieldChange::Derive},
+     .stacks = kKeepsStacks,
+     .apply =
+         [](const TurtleStep& t) {
+             t.state.material = materialIndex(t.parameterOr(0, static_cast<float>(t.state.material) - 1.0f));
          }},
     // A string-level operation, not a state transition: interpretModules()
     // skips to the ] (and the rewriter already removes % produced by rules).

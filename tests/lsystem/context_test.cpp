@@ -113,6 +113,40 @@ TEST(LsysParameters, ConditionSeesContextParameters) {
     EXPECT_EQ(once("", "B(1)A B(5)A", "B(x) < A : x > 2 --> X"), "B(1)AB(5)X");
 }
 
+// cpfg's '=' in a right context skips the rest of the current branch, up to
+// its ']' (the pipe model's "S > [S(a,d,f)=]S(b,e,g)": the first module of
+// each lateral branch and the next one on the axis).
+TEST(LsysRightContext, EqualsSkipsTheRestOfTheBranch) {
+    EXPECT_EQ(once("", "A[BCD[E]F]G", "A > [B=]G --> X"), "X[BCD[E]F]G");
+    EXPECT_EQ(once("", "A[BCD]G", "A > [B=] --> X"), "X[BCD]G");
+    // '=' stops at the branch's ']': what follows must still match.
+    EXPECT_EQ(once("", "A[BCD]G", "A > [B=]H --> X"), "A[BCD]G");
+    EXPECT_EQ(once("", "A[BC]G", "A > [C=]G --> X"), "A[BC]G");
+}
+
+// cpfg writes an empty context as '*'.
+TEST(LsysContext, StarIsAnEmptyContext) {
+    EXPECT_EQ(once("", "BAC", "* < A > * --> X"), "BXC");
+    EXPECT_EQ(once("", "BAC", "* < A > C --> X"), "BXC");
+    EXPECT_FALSE(parseLsystem("Axiom: A\nB * < A --> X\n").ok());
+    EXPECT_FALSE(parseLsystem("Axiom: A\n* A --> X\n").ok());
+}
+
+// cpfg's strict predecessors of several modules replace them all, matched
+// left to right; contexts lie either side of the whole predecessor.
+TEST(LsysMatching, AStrictPredecessorOfSeveralModules) {
+    EXPECT_EQ(once("", "ABCABD", "AB --> X"), "XCXD");
+    EXPECT_EQ(once("", "AAA", "AA --> X"), "XA");
+    EXPECT_EQ(once("", "CABD", "C < AB > D --> X"), "CXD");
+    EXPECT_EQ(once("", "CABE", "C < AB > D --> X"), "CABE");
+    EXPECT_EQ(derived("Axiom: A(1)B(2)C\nA(x)B(y) : x < y --> X(x+y)\n", 1), "X(3)C");
+    Grammar grammar = parseOk("Axiom: ABABABABAB\nAB --> X\nB --> Y\n");
+    DeriveOptions options = stepsOf(1);
+    options.threads = 4;
+    options.parallelThreshold = 1; // one range all the same: a match may not cross a range's end
+    EXPECT_EQ(toString(derive(grammar, options), grammar.symbols), "XXXXX");
+}
+
 TEST(LsysMatching, ProductionsAreTriedInFileOrder) {
     EXPECT_EQ(derived("Axiom: BA CA\nB < A --> X\nA --> Y\n", 1), "BXCY");
     EXPECT_EQ(derived("Axiom: BA CA\nA --> Y\nB < A --> X\n", 1), "BYCY");

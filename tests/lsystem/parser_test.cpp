@@ -62,6 +62,11 @@ TEST(LsysParser, PrefixedModuleNames) {
     EXPECT_EQ(grammar.symbols.name(string.symbols[0]), "@O");
     EXPECT_EQ(grammar.symbols.name(string.symbols[1]), "@Ts");
     EXPECT_EQ(grammar.symbols.name(string.symbols[2]), "~leaf");
+    // cpfg's: one lower-case letter (two after @m and @b), or one of # ! ; , after the '@'.
+    Grammar cpfg = parseOk("Axiom: @o(1)@cF@mo@bcf@#(2)@!@;@,#,\n");
+    std::vector<std::string> names;
+    for (SymbolId symbol : derive(cpfg, stepsOf(0)).symbols) names.push_back(cpfg.symbols.name(symbol));
+    EXPECT_EQ(names, (std::vector<std::string>{"@o", "@c", "F", "@mo", "@bc", "f", "@#", "@!", "@;", "@,", "#", ","}));
 }
 
 TEST(LsysParser, LabelsAndStarCondition) {
@@ -145,7 +150,7 @@ TEST_P(LsysMalformedInput, IsReportedAtTheRightPlace) {
 INSTANTIATE_TEST_SUITE_P(
     Parser, LsysMalformedInput,
     ::testing::Values(Malformed{"A --> B\n", 1, 1, "no axiom"},
-                      Malformed{"Axiom: A\nA B --> C\n", 2, 5, "exactly one module"},
+                      Malformed{"Axiom: A\nA [B --> C\n", 2, 6, "brackets are not allowed in a strict predecessor"},
                       Malformed{"Axiom: A\nA < < B --> C\n", 2, 5, "misplaced '<'"},
                       Malformed{"Axiom: A\nA > B > C --> D\n", 2, 7, "second '>'"},
                       Malformed{"Axiom: A\nB[C] < A --> D\n", 2, 6, "brackets are not allowed in a left context"},

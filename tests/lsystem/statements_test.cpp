@@ -67,8 +67,7 @@ TEST(Statements, DefineArraysAndTheirElements) {
               std::string::npos);
     EXPECT_NE(firstError("Start: {array a[2];}\nAxiom: A\n").find("arrays are defined in the 'define:' block"),
               std::string::npos);
-    EXPECT_NE(firstError("define: {array a[2];}\nAxiom: A\nA --> B(a)\n").find("'a' is an array"),
-              std::string::npos);
+    EXPECT_NE(firstError("define: {array a[2];}\nAxiom: A\nA --> B(a)\n").find("'a' is an array"), std::string::npos);
 }
 
 TEST(Statements, CpfgArithmetic) {
@@ -116,10 +115,10 @@ TEST(Statements, MalformedBlocksAreLocated) {
     EXPECT_NE(firstError("Axiom: A\nA : {x = ;} * --> B\n").find("<input>:2:10: error: "), std::string::npos);
     EXPECT_NE(firstError("Start: {if x > 1 {y = 1;}}\nAxiom: A\n").find("expected '(' after if"), std::string::npos);
     EXPECT_NE(firstError("Start: {do {y = 1;}}\nAxiom: A\n").find("needs its condition"), std::string::npos);
-    EXPECT_NE(firstError("Start: {f = fopen(\"x\", \"w\");}\nAxiom: A\n").find("cpfg's function 'fopen' is not supported"),
-              std::string::npos);
-    EXPECT_NE(firstError("Start: {n = 1}\nAxiom: A\n").find("expected ';' after the assignment"),
-              std::string::npos);
+    EXPECT_NE(
+        firstError("Start: {f = fopen(\"x\", \"w\");}\nAxiom: A\n").find("cpfg's function 'fopen' is not supported"),
+        std::string::npos);
+    EXPECT_NE(firstError("Start: {n = 1}\nAxiom: A\n").find("expected ';' after the assignment"), std::string::npos);
     EXPECT_NE(firstError("Start: {n[2] = 1;}\nAxiom: A\n").find("'n' is not an array"), std::string::npos);
 }
 

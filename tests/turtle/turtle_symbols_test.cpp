@@ -77,6 +77,15 @@ std::vector<uint32_t> materialsOf(const std::string& source) {
 
 TEST(LsysTurtle, MaterialIndex) { EXPECT_EQ(materialsOf("Axiom: F;(3)F;F'F\n"), (std::vector<uint32_t>{0, 3, 4, 5})); }
 
+// cpfg's '#' and ',' are the counterparts of '!' and ';'.
+TEST(LsysTurtle, HashWidensAndCommaLowersTheMaterial) {
+    auto segments = spansOf("width: 2\nAxiom: F#(1)F!#F\n");
+    ASSERT_EQ(segments.size(), 3u);
+    EXPECT_FLOAT_EQ(segments[1].startRadius, 0.5f);
+    EXPECT_FLOAT_EQ(segments[2].startRadius, 0.5f); // a bare # undoes a bare !
+    EXPECT_EQ(materialsOf("Axiom: ;(5)F,F,(2)F,F,F\n"), (std::vector<uint32_t>{5, 4, 2, 1, 0}));
+}
+
 TEST(LsysTurtle, RollToHorizontalKeepsHeading) {
     auto segments = spansOf("angle: 30\nAxiom: &+/(50)$F+(90)F\n");
     ASSERT_EQ(segments.size(), 2u);
@@ -85,6 +94,10 @@ TEST(LsysTurtle, RollToHorizontalKeepsHeading) {
     glm::vec3 second = segments[1].end - segments[1].start;
     glm::vec3 left = glm::normalize(second - first * glm::dot(first, second));
     EXPECT_NEAR(left.y, 0.0f, 1e-5f);
+    // cpfg's @v is the same roll.
+    auto cpfg = spansOf("angle: 30\nAxiom: &+/(50)@vF+(90)F\n");
+    ASSERT_EQ(cpfg.size(), 2u);
+    expectNear(cpfg[1].end, segments[1].end);
 }
 
 TEST(LsysTurtle, ScalingModules) {

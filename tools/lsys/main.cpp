@@ -1,8 +1,8 @@
 // lsys: derive, check and instance (b-grammar statistics of) .lsys files from the command line.
-//   lsys derive FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--print [--format text|cpfg]] [--json] [--max-modules N]
-//   lsys check FILE [-D NAME=VALUE]... [--dialect D]
-//   lsys instance FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--randomness K] [--json]
-//   lsys export FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] -o OUT.gltf|.glb|.obj [--flat|--instanced]
+//   lsys derive FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--print [--format text|cpfg]] [--json]
+//   [--max-modules N] lsys check FILE [-D NAME=VALUE]... [--dialect D] lsys instance FILE [-n STEPS] [--seed S] [-D
+//   NAME=VALUE]... [--dialect D] [--randomness K] [--json] lsys export FILE [-n STEPS] [--seed S] [-D NAME=VALUE]...
+//   [--dialect D] -o OUT.gltf|.glb|.obj [--flat|--instanced]
 //               [--randomness K] [--granularity G] [--max-gltf-nodes N] [--generalized-cylinders]
 //   lsys --help-turtle
 // derive, instance and export take --memory-budget SIZE (tools/memory_budget_option.h).
