@@ -68,8 +68,7 @@ bool matchRight(const ContextView& view, std::span<const PatternModule> pattern,
     return matchRightFrom(view, pattern, 0, position + 1, variables);
 }
 
-bool matchStrictTail(const ContextView& view, std::span<const PatternModule> tail, size_t position,
-                     double* variables) {
+bool matchStrictTail(const ContextView& view, std::span<const PatternModule> tail, size_t position, double* variables) {
     if (position + tail.size() >= view.string.size()) return false;
     for (size_t k = 0; k < tail.size(); ++k)
         if (!bindIfMatches(view, tail[k], position + 1 + k, variables)) return false;

@@ -30,8 +30,8 @@ struct SuccessorModule {
 struct Production {
     std::string label;
     int line = 0;
-    std::vector<PatternModule> left;    // left context, in string order
-    PatternModule strict;               // the module being replaced
+    std::vector<PatternModule> left; // left context, in string order
+    PatternModule strict;            // the module being replaced
     // cpfg's strict predecessors of several modules: the ones after `strict`,
     // matched where they stand and replaced with it by the successor.
     std::vector<PatternModule> strictTail;

@@ -65,12 +65,15 @@ std::string applyOverrides(std::string_view source, const PreprocessOptions& opt
 std::vector<std::string> commandLine(const std::string& file, const PreprocessOptions& options,
                                      const std::vector<std::pair<std::string, std::string>>& macros) {
     // GNU C89 is cccp's language: // comments, no digraphs (so "%:" is two
-    // modules, not "#") and no trigraphs. No predefined macros ("unix",
-    // "linux" are not modules' parameters), no system headers, and "$" — a
-    // turtle module — ends a name so that a macro before it still expands.
+    // modules, not "#") and no trigraphs. As assembler source, a line that
+    // starts with '#' but no directive (a tab-continued "#(0.1) F") is
+    // passed on as text, as vlabcpp passes it on after its complaint. No
+    // predefined macros ("unix", "linux" are not modules' parameters), no
+    // system headers, and "$" — a turtle module — ends a name so that a
+    // macro before it still expands.
     std::vector<std::string> argv{options.program,
                                   "-x",
-                                  "c",
+                                  "assembler-with-cpp",
                                   "-std=gnu89",
                                   "-undef",
                                   "-nostdinc",
@@ -121,14 +124,15 @@ struct Reader {
         return lineOfText(out.fileTexts[origin.file], origin.line);
     }
 
-    // '# 12 "name" 1 2': the next line is line 12 of "name".
+    // '# 12 "name" 1 2': the next line is line 12 of "name". (A line "# 12"
+    // without a name is the user's, passed on as text.)
     bool marker(std::string_view line, PreprocessedText::Origin& next) {
         if (line.size() < 3 || line[0] != '#' || line[1] != ' ' || !std::isdigit(static_cast<unsigned char>(line[2])))
             return false;
         const size_t quote = line.find('"');
+        if (quote == std::string_view::npos) return false;
         std::string name;
-        for (size_t i = quote == std::string_view::npos ? line.size() : quote + 1; i < line.size() && line[i] != '"';
-             ++i)
+        for (size_t i = quote + 1; i < line.size() && line[i] != '"'; ++i)
             name += line[i] == '\\' && i + 1 < line.size() ? line[++i] : line[i];
         next = {fileIndex(name), parseInt(line.substr(2))};
         return true;
