@@ -282,7 +282,8 @@ private:
 } // namespace
 
 bool memoisable(const Grammar& grammar, const BGrammarOptions& options) {
-    if (!contextFree(grammar, options.interpreted) || producedCut(grammar) || grammar.sequential) return false;
+    if (!contextFree(grammar, options.interpreted) || producedCut(grammar) || grammar.sequential || grammar.queries)
+        return false;
     if (options.randomness > 0) return true;
     std::vector<uint8_t> random = randomSymbols(grammar, options.interpreted);
     return std::find(random.begin(), random.end(), 1) == random.end();

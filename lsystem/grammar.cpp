@@ -1,5 +1,7 @@
 #include "lsystem/grammar.h"
 
+#include "lsystem/queries.h"
+
 namespace lsys {
 
 namespace {
@@ -59,6 +61,7 @@ void finalizeGrammar(Grammar& grammar) {
     index(grammar.interpretation, grammar.symbols.size());
     grammar.ignored.resize(grammar.symbols.size(), 0);
     grammar.sequential = sequential(grammar);
+    grammar.queries = hasQueries(grammar);
 }
 
 } // namespace lsys

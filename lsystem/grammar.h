@@ -79,6 +79,10 @@ struct Grammar {
     ProductionSet decomposition;
     ProductionSet interpretation;
     Arithmetic arithmetic = Arithmetic::Native;
+    // When a '%' cuts its branch: after the step that produced it (lpfg's
+    // rule, "cut: this step"), or while the next step reads the string, so
+    // the last step's cuts stay in the derived string (cpfg's, "cut: next step").
+    bool cutInNextStep = false;
     // cpfg's global variables and the blocks that run at the start of a
     // derivation (before the axiom is evaluated), before and after each
     // step, and after the last step.
@@ -88,6 +92,8 @@ struct Grammar {
     // visited in: such grammars are rewritten sequentially, left to right,
     // with one random stream, as cpfg rewrites (lsystem/rewriter.h).
     bool sequential = false;
+    // The turtle answers query modules (?P, ?H, ?L, ?U) before each step (lsystem/queries.h).
+    bool queries = false;
 };
 
 // Indexes productions by symbol and sizes the per-symbol tables; called by the parser.

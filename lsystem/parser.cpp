@@ -146,6 +146,7 @@ struct Parser {
         if (acceptHeader(cursor, "consider")) return contextSymbols(cursor, true);
         if (acceptHeader(cursor, "axiom")) return axiom(cursor);
         if (acceptHeader(cursor, "arithmetic")) return arithmetic(cursor);
+        if (acceptHeader(cursor, "cut")) return cutTiming(cursor);
         if (acceptHeader(cursor, "define")) return globalBlock(cursor, nullptr);
         if (acceptHeader(cursor, "start each") || acceptHeader(cursor, "starteach"))
             return globalBlock(cursor, &grammar.startEachBlock);
@@ -263,6 +264,17 @@ struct Parser {
             grammar.arithmetic = Arithmetic::Native;
         else
             return error(start, "unknown arithmetic", "'native' or 'cpfg'");
+        expectLineEnd(cursor);
+    }
+
+    // "cut: this step" (the default) or "cut: next step".
+    void cutTiming(Cursor& cursor) {
+        if (acceptHeader(cursor, "this step", false))
+            grammar.cutInNextStep = false;
+        else if (acceptHeader(cursor, "next step", false))
+            grammar.cutInNextStep = true;
+        else
+            return error(cursor, "unknown cut timing", "'this step' or 'next step'");
         expectLineEnd(cursor);
     }
 

@@ -9,6 +9,7 @@
 
 #include "lsystem/context.h"
 #include "lsystem/error.h"
+#include "lsystem/queries.h"
 #include "lsystem/random.h"
 
 namespace lsys {
@@ -486,18 +487,24 @@ ModuleString deriveUnguarded(const Grammar& grammar, const DeriveOptions& option
     for (int step = 1; step <= steps; ++step) {
         const uint64_t passNumber = static_cast<uint64_t>(step) * kPassesPerStep;
         runGlobalBlock(grammar.startEachBlock, state);
+        if (cut && grammar.cutInNextStep) {
+            removeCutBranches(current, *cut, next);
+            std::swap(current, next);
+        }
+        if (grammar.queries) answerQueries(grammar, current); // the turtle's answers from the string as it stands
         if (!grammar.rules.empty()) {
             rewriter.pass(rules, passNumber, current, next);
             std::swap(current, next);
         }
         if (!grammar.decomposition.empty()) rewriter.passesToFixpoint(decomposition, passNumber + 1, current, next);
-        if (cut) {
+        if (cut && !grammar.cutInNextStep) {
             removeCutBranches(current, *cut, next);
             std::swap(current, next);
         }
         runGlobalBlock(grammar.endEachBlock, state);
     }
     runGlobalBlock(grammar.endBlock, state);
+    if (grammar.queries) answerQueries(grammar, current); // as cpfg's drawing of the string answers them
     return current;
 }
 

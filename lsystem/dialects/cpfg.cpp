@@ -13,7 +13,8 @@
 //     or define:, or around a production's condition) may span lines: its
 //     lines are joined into one native statement, as cpfg's grammar lets
 //     blank lines and statements follow each other inside the braces.
-//   - Expressions compute as cpfg's do: "arithmetic: cpfg" comes first.
+//   - Expressions compute as cpfg's do, and a '%' cuts its branch when the
+//     next step reads it: "arithmetic: cpfg" and "cut: next step" come first.
 // The other constructs of cpfg's language are the native parser's to
 // accept or reject (docs/DIALECTS.md, "cpfg").
 
@@ -107,9 +108,11 @@ struct Cpfg {
 
     Translation run() {
         const std::string& text = source.text;
-        Statement arithmetic = out.start(0);
-        arithmetic.emit("arithmetic: cpfg", 0);
-        out.addFirst(std::move(arithmetic));
+        for (std::string_view setting : {"arithmetic: cpfg", "cut: next step"}) {
+            Statement header = out.start(0);
+            header.emit(setting, 0);
+            out.addFirst(std::move(header));
+        }
         for (size_t begin = 0; begin < text.size();) {
             Statement statement = out.start(begin);
             size_t end = lineEnd(begin);

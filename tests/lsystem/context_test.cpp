@@ -147,6 +147,17 @@ TEST(LsysMatching, AStrictPredecessorOfSeveralModules) {
     EXPECT_EQ(toString(derive(grammar, options), grammar.symbols), "XXXXX");
 }
 
+// lpfg cuts a branch after the step that produced its '%'; cpfg when the next
+// step reads it, so the last step's cut is still in the string.
+TEST(LsysCut, InThisStepOrInTheNext) {
+    const std::string rules = "Axiom: [AB]C\nA --> X%\n";
+    EXPECT_EQ(derived(rules, 1), "[X]C");
+    EXPECT_EQ(derived("cut: next step\n" + rules, 1), "[X%B]C");
+    EXPECT_EQ(derived("cut: next step\n" + rules, 2), "[X]C");
+    EXPECT_EQ(derived("cut: this step\n" + rules, 1), "[X]C");
+    EXPECT_FALSE(parseLsystem("cut: sometimes\nAxiom: A\n").ok());
+}
+
 TEST(LsysMatching, ProductionsAreTriedInFileOrder) {
     EXPECT_EQ(derived("Axiom: BA CA\nB < A --> X\nA --> Y\n", 1), "BXCY");
     EXPECT_EQ(derived("Axiom: BA CA\nA --> Y\nB < A --> X\n", 1), "BYCY");

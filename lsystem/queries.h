@@ -1,0 +1,23 @@
+#pragma once
+// cpfg's query modules (Prusinkiewicz, James and Měch 1994, "Synthetic
+// topiary", §2): a '?' followed by P, H, L or U — "?P(x,y,z)" — asks the
+// turtle for its position, heading, left or up vector where the module
+// stands. Before each derivation step, and once more after the last (where
+// cpfg draws the string), the turtle reads the string and writes the
+// answers into the parameters of the module after each '?', so that
+// productions can use them in conditions and contexts.
+
+#include "lsystem/grammar.h"
+#include "lsystem/module_string.h"
+
+namespace lsys {
+
+// Whether the axiom or any successor holds a query (a '?' followed by P, H, L or U).
+bool hasQueries(const Grammar& grammar);
+
+// Interprets `string` with the turtle of the grammar's header settings (the
+// interpretation rules are not applied; surfaces are not built) and writes
+// each query's answer into the first three parameters of its P, H, L or U.
+void answerQueries(const Grammar& grammar, ModuleString& string);
+
+} // namespace lsys
