@@ -45,7 +45,8 @@ std::string_view windowAround(std::string_view text, int& column, bool& cutBefor
 
 std::string formatWithLine(const Diagnostic& diagnostic, std::string_view text) {
     std::string out = diagnostic.file + ":" + std::to_string(diagnostic.line) + ":" +
-                      std::to_string(diagnostic.column) + ": error: " + diagnostic.message;
+                      std::to_string(diagnostic.column) +
+                      (diagnostic.severity == Severity::Warning ? ": warning: " : ": error: ") + diagnostic.message;
     if (!diagnostic.expected.empty()) out += " (expected " + diagnostic.expected + ")";
     out += '\n';
     if (diagnostic.line > 0 && (!text.empty() || diagnostic.column > 0)) {

@@ -2,6 +2,7 @@
 // Diagnostics for malformed input and errors raised while deriving.
 
 #include <stdexcept>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -9,6 +10,8 @@
 namespace lsys {
 
 // One problem found in a source file. Lines and columns are 1-based.
+enum class Severity : uint8_t { Error, Warning };
+
 struct Diagnostic {
     std::string file;
     int line = 0;
@@ -18,6 +21,7 @@ struct Diagnostic {
     // The offending line when it is not in the source the diagnostics are
     // formatted with (a line of an #include'd file); empty otherwise.
     std::string sourceLine;
+    Severity severity = Severity::Error; // a warning leaves the file readable
 };
 
 // Characters of the offending line shown either side of the column; a

@@ -51,6 +51,7 @@ struct Parser {
     Grammar& grammar;
     const ParseOptions& options;
     std::vector<Diagnostic>& diagnostics;
+    std::vector<Diagnostic>& warnings;
     std::vector<std::string> declared; // multi-letter module names, longest first
     ProductionSet* section = nullptr;
     std::optional<std::vector<SymbolId>> considered;
@@ -518,8 +519,27 @@ struct Parser {
         }
     }
 
+    // A successor whose brackets do not balance leaves a branch open or
+    // closes one it did not open: legal, but seldom meant.
+    void warnOfUnbalancedBrackets(const ProductionSet& set) {
+        for (const Production& production : set.productions) {
+            int opened = 0, closed = 0;
+            for (const SuccessorModule& module : production.successor) {
+                opened += module.symbol == kPush;
+                closed += module.symbol == kPop;
+            }
+            if (opened != closed)
+                warnings.push_back({file(), production.line, 1,
+                                    "the successor's brackets do not balance (" + std::to_string(opened) + " '[' and " +
+                                        std::to_string(closed) + " ']')",
+                                    {}, {}, Severity::Warning});
+        }
+    }
+
     void finish() {
         for (auto& [name, value] : options.defines) grammar.constants[name] = value;
+        for (const ProductionSet* set : {&grammar.rules, &grammar.decomposition, &grammar.interpretation})
+            warnOfUnbalancedBrackets(*set);
         formStochasticGroups(grammar.rules);
         formStochasticGroups(grammar.decomposition);
         formStochasticGroups(grammar.interpretation);
@@ -538,7 +558,7 @@ ParseResult parseLsystem(std::string_view source, const ParseOptions& options) {
     ParseResult result;
     result.grammar.file = options.file;
     for (auto& [name, value] : options.defines) result.grammar.constants[name] = value;
-    Parser parser{result.grammar, options, result.diagnostics};
+    Parser parser{result.grammar, options, result.diagnostics, result.warnings};
     std::string text = blankComments(source, options.file, result.diagnostics);
     std::vector<std::string_view> lines = splitLines(text);
     for (size_t i = 0; i < lines.size(); ++i) {
@@ -553,6 +573,7 @@ ParseResult parseLsystem(std::string_view source, const ParseOptions& options) {
     if (!parser.sawAxiom && result.diagnostics.empty())
         result.diagnostics.push_back({options.file, 1, 1, "no axiom", "an 'Axiom:' line"});
     sortBySourcePosition(result.diagnostics);
+    sortBySourcePosition(result.warnings);
     return result;
 }
 

@@ -19,6 +19,7 @@ struct ParseOptions {
 struct ParseResult {
     Grammar grammar;
     std::vector<Diagnostic> diagnostics; // every problem found, in source order
+    std::vector<Diagnostic> warnings;    // what may not mean what it says, though the file reads (Severity::Warning)
     bool ok() const { return diagnostics.empty(); }
 };
 

@@ -136,4 +136,35 @@ struct Cpfg {
 
 Translation translateCpfg(const Source& source) { return Cpfg{source}.run(); }
 
+std::vector<Diagnostic> cpfgCommentWarnings(std::string_view source, const std::string& file) {
+    std::vector<Diagnostic> warnings;
+    int line = 1;
+    bool inBlockComment = false;
+    for (size_t begin = 0; begin <= source.size(); ++line) {
+        const size_t end = std::min(source.find('\n', begin), source.size());
+        const std::string_view text = source.substr(begin, end - begin);
+        const size_t arrow = text.find("->");
+        for (size_t i = 0; i + 1 < text.size(); ++i) {
+            if (inBlockComment) {
+                if (text.substr(i, 2) == "*/") inBlockComment = false, ++i;
+                continue;
+            }
+            if (text.substr(i, 2) == "/*") {
+                inBlockComment = true;
+                ++i;
+                continue;
+            }
+            if (text.substr(i, 2) != "//") continue;
+            if (arrow != std::string_view::npos && arrow < i && i > 0 && text[i - 1] != ' ' && text[i - 1] != '\t')
+                warnings.push_back({file, line, static_cast<int>(i) + 1,
+                                    "'//' starts a comment here, as in cpfg: the rest of the line is not part of the "
+                                    "production (write '/ /' for two rolls)",
+                                    {}, {}, Severity::Warning});
+            break; // the rest of the line is a comment
+        }
+        begin = end + 1;
+    }
+    return warnings;
+}
+
 } // namespace lsys

@@ -100,6 +100,7 @@ ParseResult parseTranslated(Dialect dialect, std::string_view source, const Pars
                       [](const Diagnostic& diagnostic) { return diagnostic.message == "no axiom"; });
     result.diagnostics.insert(result.diagnostics.end(), translation.diagnostics.begin(), translation.diagnostics.end());
     sortBySourcePosition(result.diagnostics);
+    mapToSource(translation, source, result.warnings);
     return result;
 }
 
@@ -124,6 +125,12 @@ ParseResult parseCpfg(std::string_view source, const ParseOptions& options) {
     native.defines.clear(); // already expanded
     result = parseTranslated(Dialect::Cpfg, preprocessed.text, native);
     mapToFiles(preprocessed, result.diagnostics);
+    mapToFiles(preprocessed, result.warnings);
+    std::vector<Diagnostic> comments = cpfgCommentWarnings(source, options.file);
+    result.warnings.insert(result.warnings.begin(), comments.begin(), comments.end());
+    std::stable_sort(result.warnings.begin(), result.warnings.end(), [](const Diagnostic& a, const Diagnostic& b) {
+        return a.file == b.file && (a.line != b.line ? a.line < b.line : a.column < b.column);
+    });
     return result;
 }
 

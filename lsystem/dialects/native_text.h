@@ -99,4 +99,9 @@ Translation translateRobbins(const Source& source);
 Translation translatePlantlang(const Source& source);
 Translation translateCpfg(const Source& source);
 
+// cpfg's preprocessor takes "//" for a comment wherever it stands, which
+// silently cuts ABOP's roll runs ("F/////F" is "F/"): a warning at each "//"
+// that follows a module on a production's line.
+std::vector<Diagnostic> cpfgCommentWarnings(std::string_view source, const std::string& file);
+
 } // namespace lsys

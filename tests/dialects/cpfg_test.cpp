@@ -111,3 +111,29 @@ TEST(Cpfg, ExpressionsUseCpfgsArithmetic) {
 
 } // namespace
 } // namespace lsys::test
+
+namespace lsys::test {
+namespace {
+
+// "//" is a comment in cpfg too, which cuts ABOP's roll runs: a warning says
+// so where it happens; unbalanced brackets in a successor get one as well.
+TEST(Cpfg, WarningsForCommentsThatCutAProductionAndUnbalancedBrackets) {
+    const ParseResult result = parseDialect(Dialect::Cpfg,
+                                            "Axiom: A\n"
+                                            "A --> F/////F // this comment is fine\n"
+                                            "B --> F[+F\n"
+                                            "/* // */ C --> D\n",
+                                            {"rolls.l"});
+    ASSERT_TRUE(result.ok()) << formatDiagnostics(result.diagnostics, "");
+    EXPECT_EQ(derived(result.grammar, 1), "F");
+    ASSERT_EQ(result.warnings.size(), 2u) << formatDiagnostics(result.warnings, "");
+    EXPECT_EQ(result.warnings[0].line, 2);
+    EXPECT_EQ(result.warnings[0].column, 8);
+    EXPECT_NE(formatDiagnostic(result.warnings[0], "").find("rolls.l:2:8: warning: '//' starts a comment"),
+              std::string::npos);
+    EXPECT_EQ(result.warnings[1].line, 3);
+    EXPECT_NE(result.warnings[1].message.find("brackets do not balance (1 '[' and 0 ']')"), std::string::npos);
+}
+
+} // namespace
+} // namespace lsys::test

@@ -40,6 +40,8 @@ printf 'Axiom: A(1)\nA(x) --> F(x)[+A(x/2)]A(x*2)\n' > "$WORK/cpfg.l"
 "$LSYS" derive "$WORK/cpfg.l" -n 3 --print --format cpfg > "$WORK/cpfg.str"
 printf 'F(1)[+F(0.5)[+F(0.25)[+A(0.125)]A(0.5)]F(1)[+A(0.5)]A(2)]F(2)[+F(1)[+A(0.5)\n]A(2)]F(4)[+A(2)]A(8)\n' > "$WORK/cpfg.expected"
 cmp -s "$WORK/cpfg.str" "$WORK/cpfg.expected" || fail "format cpfg: $(cat "$WORK/cpfg.str")"
+printf 'Axiom: A\nA --> F[+F\n' > "$WORK/open.lsys"
+expect_run warning 0 'open.lsys:2:1: warning: the successor.s brackets do not balance' -- "$LSYS" check "$WORK/open.lsys"
 expect_run format-unknown 2 'xml not in' -- "$LSYS" derive "$WORK/cpfg.l" --print --format xml
 
 expect_run dialect-header 0 '"F":1330' -- "$LSYS" derive "$DATA/plants/dialects/gravity_tree_2d.crankshaw" --json

@@ -84,6 +84,7 @@ std::optional<lsys::Grammar> load(const Arguments& arguments) {
     }
     lsys::ParseResult result =
         lsys::parseDialect(lsys::dialectOfFile(arguments.dialect, source, arguments.file), source, options);
+    std::cerr << lsys::formatDiagnostics(result.warnings, source);
     if (!result.ok()) {
         std::cerr << lsys::formatDiagnostics(result.diagnostics, source);
         std::cerr << result.diagnostics.size() << (result.diagnostics.size() == 1 ? " error\n" : " errors\n");
