@@ -1,8 +1,8 @@
 #pragma once
 // Diagnostics for malformed input and errors raised while deriving.
 
-#include <stdexcept>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>

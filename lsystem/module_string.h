@@ -5,8 +5,10 @@
 // traffic of plain D0L systems.
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "lsystem/buffer.h"
@@ -48,6 +50,14 @@ std::string toString(const ModuleString& string, const SymbolTable& symbols);
 // characters are on the line (its commas uncounted, as cpfg counts), and one
 // at the end.
 std::string toCpfgString(const ModuleString& string, const SymbolTable& symbols);
+
+// Where `text` — a string as toString or toCpfgString write it, or as cpfg
+// writes one (line breaks are ignored) — first differs from `string`, module
+// for module, parameters compared within `tolerance` relative (1e-6 absolute
+// near 0); nullopt when they agree. The message names the module's index and
+// both sides.
+std::optional<std::string> firstDifference(const ModuleString& string, const SymbolTable& symbols,
+                                           std::string_view text, double tolerance = 1e-4);
 
 // Index of the matching bracket for every '[' and ']'; -1 for other modules and
 // for an unmatched ']'; size() for an unclosed '['.

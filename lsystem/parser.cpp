@@ -529,10 +529,14 @@ struct Parser {
                 closed += module.symbol == kPop;
             }
             if (opened != closed)
-                warnings.push_back({file(), production.line, 1,
+                warnings.push_back({file(),
+                                    production.line,
+                                    1,
                                     "the successor's brackets do not balance (" + std::to_string(opened) + " '[' and " +
                                         std::to_string(closed) + " ']')",
-                                    {}, {}, Severity::Warning});
+                                    {},
+                                    {},
+                                    Severity::Warning});
         }
     }
 

@@ -156,10 +156,14 @@ std::vector<Diagnostic> cpfgCommentWarnings(std::string_view source, const std::
             }
             if (text.substr(i, 2) != "//") continue;
             if (arrow != std::string_view::npos && arrow < i && i > 0 && text[i - 1] != ' ' && text[i - 1] != '\t')
-                warnings.push_back({file, line, static_cast<int>(i) + 1,
+                warnings.push_back({file,
+                                    line,
+                                    static_cast<int>(i) + 1,
                                     "'//' starts a comment here, as in cpfg: the rest of the line is not part of the "
                                     "production (write '/ /' for two rolls)",
-                                    {}, {}, Severity::Warning});
+                                    {},
+                                    {},
+                                    Severity::Warning});
             break; // the rest of the line is a comment
         }
         begin = end + 1;

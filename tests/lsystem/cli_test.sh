@@ -42,6 +42,8 @@ printf 'F(1)[+F(0.5)[+F(0.25)[+A(0.125)]A(0.5)]F(1)[+A(0.5)]A(2)]F(2)[+F(1)[+A(0
 cmp -s "$WORK/cpfg.str" "$WORK/cpfg.expected" || fail "format cpfg: $(cat "$WORK/cpfg.str")"
 printf 'Axiom: A\nA --> F[+F\n' > "$WORK/open.lsys"
 expect_run warning 0 'open.lsys:2:1: warning: the successor.s brackets do not balance' -- "$LSYS" check "$WORK/open.lsys"
+expect_run compare-same 0 'is the same string: 36 modules' -- "$LSYS" derive "$WORK/cpfg.l" -n 3 --compare "$WORK/cpfg.expected"
+expect_run compare-differs 1 'differs: module 9: another module: derived F(0.125), the text has A(0.125)' -- "$LSYS" derive "$WORK/cpfg.l" -n 4 --compare "$WORK/cpfg.expected"
 expect_run format-unknown 2 'xml not in' -- "$LSYS" derive "$WORK/cpfg.l" --print --format xml
 
 expect_run dialect-header 0 '"F":1330' -- "$LSYS" derive "$DATA/plants/dialects/gravity_tree_2d.crankshaw" --json

@@ -1,6 +1,9 @@
 // The rewriter: thread-count independence, the D0L fast path against the
 // general path, decomposition, interpretation and the module budget.
 
+#include <cmath>
+#include <cstdio>
+
 #include "lsystem/error.h"
 #include "test_support.h"
 
@@ -43,6 +46,52 @@ INSTANTIATE_TEST_SUITE_P(
         name = name.substr(name.find('/') + 1);
         return name.substr(0, name.find('.'));
     });
+
+// Parameters print as printf's "%g" prints them (cpfg's string files do), for
+// every kind of float: the text must be byte-comparable with cpfg's.
+TEST(LsysModuleText, ParametersPrintAsPrintfG) {
+    std::vector<float> values{0.0f, -0.0f,       1e-5f,     1e-4f,   100000.0f, 1e6f,
+                              0.1f, 1.0f / 3.0f, 123456.5f, 3.4e38f, -2.5e-7f};
+    RandomStream random = RandomStream::forModule(7, 0, 0);
+    for (int i = 0; i < 2000; ++i)
+        values.push_back(static_cast<float>((random.uniform() - 0.5) * std::pow(10.0, 12.0 * random.uniform() - 6.0)));
+    ModuleString string;
+    for (float value : values) string.push(kPush, std::span<const float>(&value, 1));
+    SymbolTable symbols;
+    std::string expected;
+    char buffer[64];
+    for (float value : values) {
+        std::snprintf(buffer, sizeof buffer, "[(%g)", static_cast<double>(value));
+        expected += buffer;
+    }
+    EXPECT_EQ(toString(string, symbols), expected);
+}
+
+// lsys derive --compare: a derived string against one written by cpfg.
+TEST(LsysModuleText, FirstDifferenceFromAStringFile) {
+    Grammar grammar = parseOk("Axiom: A(1)\nA(x) --> F(x)[+A(x/3)]A(x*2)\n");
+    const ModuleString string = derive(grammar, stepsOf(3));
+    const std::string text = toCpfgString(string, grammar.symbols);
+    ASSERT_NE(text.find('\n'), text.size() - 1); // a line break inside, as cpfg writes long strings
+    EXPECT_EQ(firstDifference(string, grammar.symbols, text), std::nullopt);
+    // Within 1e-4 relative: cpfg's float arithmetic may round differently in the last digits.
+    std::string close = toString(string, grammar.symbols);
+    close.replace(close.find("0.333333"), 8, "0.333334");
+    EXPECT_EQ(firstDifference(string, grammar.symbols, close), std::nullopt);
+    std::string far = toString(string, grammar.symbols);
+    far.replace(far.find("0.333333"), 8, "0.334");
+    std::optional<std::string> difference = firstDifference(string, grammar.symbols, far);
+    ASSERT_TRUE(difference);
+    EXPECT_NE(difference->find("another parameter value: derived F(0.333333), the text has F(0.334)["),
+              std::string::npos)
+        << *difference;
+    difference = firstDifference(string, grammar.symbols, toString(string, grammar.symbols) + "B");
+    ASSERT_TRUE(difference);
+    EXPECT_NE(difference->find("the text goes on"), std::string::npos);
+    difference = firstDifference(string, grammar.symbols, "F(1)[+F");
+    ASSERT_TRUE(difference);
+    EXPECT_NE(difference->find("module 3: another parameter count"), std::string::npos) << *difference;
+}
 
 TEST(LsysRewriter, RandomParametersDoNotDependOnThreads) {
     Grammar grammar = parseOk("Axiom: A(1)\nA(x) --> A(x+ran(1))[B(nran(0,1))]A(ran(x))\n");

@@ -1,5 +1,6 @@
 // lsys: derive, check and instance (b-grammar statistics of) .lsys files from the command line.
-//   lsys derive FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--print [--format text|cpfg]] [--json]
+//   lsys derive FILE [-n STEPS] [--seed S] [-D NAME=VALUE]... [--dialect D] [--print [--format text|cpfg]] [--compare
+//   STRINGFILE] [--json]
 //   [--max-modules N] lsys check FILE [-D NAME=VALUE]... [--dialect D] lsys instance FILE [-n STEPS] [--seed S] [-D
 //   NAME=VALUE]... [--dialect D] [--randomness K] [--json] lsys export FILE [-n STEPS] [--seed S] [-D NAME=VALUE]...
 //   [--dialect D] -o OUT.gltf|.glb|.obj [--flat|--instanced]
@@ -43,6 +44,7 @@ struct Arguments {
     std::optional<lsys::Dialect> dialect; // none: the file's "dialect:" line, else cpfg for a .l file, else native
     bool print = false;
     std::string printFormat = "text"; // --format: "text" or "cpfg"
+    std::string compareWith;          // --compare: a string file to compare the derived string with
     bool json = false;
     size_t maxModules = 50'000'000;
     lsys::MemoryBudget memory; // --memory-budget
@@ -112,6 +114,23 @@ lsys::DeriveOptions deriveOptions(const Arguments& arguments) {
     return options;
 }
 
+// --compare: the derived string against a string file (cpfg's -str output, or --print's).
+int compare(const Arguments& arguments, const lsys::Grammar& grammar, const lsys::ModuleString& string) {
+    std::string problem;
+    const std::string text = lsys::readTextFile(arguments.compareWith, problem);
+    if (!problem.empty()) {
+        std::cerr << arguments.compareWith << ": error: cannot read file: it " << problem << "\n";
+        return kBadInput;
+    }
+    if (std::optional<std::string> difference = lsys::firstDifference(string, grammar.symbols, text)) {
+        std::cout << arguments.compareWith << " differs: " << *difference << "\n";
+        return 1;
+    }
+    std::cout << arguments.compareWith << " is the same string: " << string.size()
+              << " modules, parameters within 1e-4 relative\n";
+    return 0;
+}
+
 int derive(const Arguments& arguments) {
     std::optional<lsys::Grammar> grammar = load(arguments);
     if (!grammar) return kBadInput;
@@ -126,6 +145,7 @@ int derive(const Arguments& arguments) {
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     int steps = options.steps.value_or(grammar->derivationLength);
 
+    if (!arguments.compareWith.empty()) return compare(arguments, *grammar, string);
     if (arguments.print) {
         const std::string text = arguments.printFormat == "cpfg" ? lsys::toCpfgString(string, grammar->symbols)
                                                                  : lsys::toString(string, grammar->symbols) + '\n';
@@ -336,6 +356,9 @@ int main(int argc, char** argv) {
                      "How --print writes the string: text (on one line) or cpfg (as cpfg's -str writes it: a line "
                      "break before a module once 70 characters are on the line)")
         ->check(CLI::IsMember({"text", "cpfg"}));
+    deriveCommand->add_option("--compare", arguments.compareWith,
+                              "Compare the derived string with a string file (cpfg's -str output, or --print's): "
+                              "module for module, parameters within 1e-4 relative; exit status 1 when they differ");
     deriveCommand->add_flag("--json", arguments.json,
                             "Print {\"modules\", \"steps\", \"counts\", \"seconds\"} as JSON");
     deriveCommand->add_option("--max-modules", arguments.maxModules, "Module budget; exceeding it is an error")
