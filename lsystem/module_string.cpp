@@ -57,26 +57,39 @@ size_t appendModule(std::string& out, const ModuleString& string, const SymbolTa
 
 } // namespace
 
-std::string toString(const ModuleString& string, const SymbolTable& symbols) {
+void writeText(const ModuleString& string, const SymbolTable& symbols, TextLayout layout,
+               const std::function<void(std::string_view)>& write) {
+    constexpr size_t kLineLength = 70; // cpfg's
+    constexpr size_t kChunk = size_t(1) << 20;
     std::string out;
-    out.reserve(string.size());
-    for (size_t i = 0; i < string.size(); ++i) appendModule(out, string, symbols, i);
-    return out;
-}
-
-std::string toCpfgString(const ModuleString& string, const SymbolTable& symbols) {
-    constexpr size_t kLineLength = 70;
-    std::string out;
-    out.reserve(string.size() + string.size() / kLineLength + 1);
+    out.reserve(kChunk + 4096);
     size_t onLine = 0;
     for (size_t i = 0; i < string.size(); ++i) {
-        if (onLine >= kLineLength) {
+        if (layout == TextLayout::Cpfg && onLine >= kLineLength) {
             out += '\n';
             onLine = 0;
         }
         onLine += appendModule(out, string, symbols, i);
+        if (out.size() >= kChunk) {
+            write(out);
+            out.clear();
+        }
     }
-    out += '\n';
+    if (layout == TextLayout::Cpfg) out += '\n';
+    write(out);
+}
+
+std::string toString(const ModuleString& string, const SymbolTable& symbols) {
+    std::string out;
+    out.reserve(string.size());
+    writeText(string, symbols, TextLayout::OneLine, [&](std::string_view chunk) { out += chunk; });
+    return out;
+}
+
+std::string toCpfgString(const ModuleString& string, const SymbolTable& symbols) {
+    std::string out;
+    out.reserve(string.size() + string.size() / 70 + 1);
+    writeText(string, symbols, TextLayout::Cpfg, [&](std::string_view chunk) { out += chunk; });
     return out;
 }
 

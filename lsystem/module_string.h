@@ -5,6 +5,7 @@
 // traffic of plain D0L systems.
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -50,6 +51,12 @@ std::string toString(const ModuleString& string, const SymbolTable& symbols);
 // characters are on the line (its commas uncounted, as cpfg counts), and one
 // at the end.
 std::string toCpfgString(const ModuleString& string, const SymbolTable& symbols);
+
+enum class TextLayout { OneLine, Cpfg };
+// The text of toString or toCpfgString handed to `write` a megabyte at a
+// time, so that a long string is written without being held whole.
+void writeText(const ModuleString& string, const SymbolTable& symbols, TextLayout layout,
+               const std::function<void(std::string_view)>& write);
 
 // Where `text` — a string as toString or toCpfgString write it, or as cpfg
 // writes one (line breaks are ignored) — first differs from `string`, module

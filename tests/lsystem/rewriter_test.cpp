@@ -1,6 +1,7 @@
 // The rewriter: thread-count independence, the D0L fast path against the
 // general path, decomposition, interpretation and the module budget.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -65,6 +66,33 @@ TEST(LsysModuleText, ParametersPrintAsPrintfG) {
         expected += buffer;
     }
     EXPECT_EQ(toString(string, symbols), expected);
+}
+
+// lsys derive --print writes a long string a megabyte at a time; cpfg's
+// line layout runs on across the chunks.
+TEST(LsysModuleText, LongStringsAreWrittenInChunksWithCpfgsLines) {
+    Grammar grammar = parseOk("Axiom: A(1)\nA(x) --> F(x)[+A(x/3)]A(x*2)\n");
+    const ModuleString string = derive(grammar, stepsOf(17)); // about 5 MB of text
+    std::vector<std::string> chunks;
+    writeText(string, grammar.symbols, TextLayout::Cpfg, [&](std::string_view chunk) { chunks.emplace_back(chunk); });
+    ASSERT_GE(chunks.size(), 3u);
+    std::string joined;
+    for (const std::string& chunk : chunks) {
+        EXPECT_LE(chunk.size(), (size_t(1) << 20) + 64);
+        joined += chunk;
+    }
+    size_t lines = 0;
+    for (size_t begin = 0; begin < joined.size();) {
+        const size_t end = joined.find('\n', begin);
+        ASSERT_NE(end, std::string::npos);
+        const std::string_view line(joined.data() + begin, end - begin);
+        const size_t counted = line.size() - static_cast<size_t>(std::count(line.begin(), line.end(), ','));
+        if (end + 1 < joined.size()) EXPECT_GE(counted, 70u) << "line " << lines;
+        EXPECT_LT(counted, 70u + 40u) << "line " << lines;
+        begin = end + 1;
+        ++lines;
+    }
+    EXPECT_GT(lines, 1000u);
 }
 
 // lsys derive --compare: a derived string against one written by cpfg.

@@ -147,9 +147,10 @@ int derive(const Arguments& arguments) {
 
     if (!arguments.compareWith.empty()) return compare(arguments, *grammar, string);
     if (arguments.print) {
-        const std::string text = arguments.printFormat == "cpfg" ? lsys::toCpfgString(string, grammar->symbols)
-                                                                 : lsys::toString(string, grammar->symbols) + '\n';
-        std::fwrite(text.data(), 1, text.size(), stdout);
+        const bool cpfg = arguments.printFormat == "cpfg";
+        lsys::writeText(string, grammar->symbols, cpfg ? lsys::TextLayout::Cpfg : lsys::TextLayout::OneLine,
+                        [](std::string_view chunk) { std::fwrite(chunk.data(), 1, chunk.size(), stdout); });
+        if (!cpfg) std::fputc('\n', stdout);
     }
     if (arguments.json) {
         std::vector<size_t> counts(grammar->symbols.size(), 0);
