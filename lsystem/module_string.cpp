@@ -151,6 +151,15 @@ std::optional<std::string> firstDifference(const ModuleString& string, const Sym
     return std::nullopt;
 }
 
+size_t endOfBranch(const ModuleString& string, size_t i) {
+    int depth = 0;
+    for (; i < string.size(); ++i) {
+        if (string.symbols[i] == kPush) ++depth;
+        if (string.symbols[i] == kPop && depth-- == 0) return i;
+    }
+    return i;
+}
+
 void computeBracketPartners(const ModuleString& string, std::vector<int32_t>& partners) {
     const size_t n = string.size();
     partners.assign(n, -1);

@@ -66,6 +66,10 @@ void writeText(const ModuleString& string, const SymbolTable& symbols, TextLayou
 std::optional<std::string> firstDifference(const ModuleString& string, const SymbolTable& symbols,
                                            std::string_view text, double tolerance = 1e-4);
 
+// Index of the ']' closing the branch that contains position i, or size()
+// when none does: where a cut ('%') at i - 1 stops.
+size_t endOfBranch(const ModuleString& string, size_t i);
+
 // Index of the matching bracket for every '[' and ']'; -1 for other modules and
 // for an unmatched ']'; size() for an unclosed '['.
 void computeBracketPartners(const ModuleString& string, std::vector<int32_t>& partners);

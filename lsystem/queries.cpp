@@ -70,11 +70,7 @@ void answerQueries(const Grammar& grammar, ModuleString& string) {
         }
         const TurtleCommand& command = commands[symbol];
         if (command.action == TurtleAction::Cut) { // the rest of the branch is not there: skip to its ']'
-            for (int open = 0; i + 1 < string.size(); ++i) {
-                const SymbolId next = string.symbols[i + 1];
-                if (next == kPop && open == 0) break;
-                open += next == kPush ? 1 : next == kPop ? -1 : 0;
-            }
+            i = endOfBranch(string, i + 1) - 1;
             continue;
         }
         if (command.action == TurtleAction::Surface) continue; // no geometry is kept: no mesh is read

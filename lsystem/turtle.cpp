@@ -9,20 +9,6 @@
 
 namespace lsys {
 
-namespace {
-
-// Index of the ']' closing the branch that contains position i (or the end).
-size_t endOfBranch(const ModuleString& string, size_t i) {
-    int depth = 0;
-    for (; i < string.size(); ++i) {
-        if (string.symbols[i] == kPush) ++depth;
-        if (string.symbols[i] == kPop && depth-- == 0) return i;
-    }
-    return i;
-}
-
-} // namespace
-
 TurtleSettings turtleSettings(const Grammar& grammar) {
     TurtleSettings settings;
     settings.angle = static_cast<float>(grammar.angle);

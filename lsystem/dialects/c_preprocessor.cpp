@@ -96,19 +96,36 @@ int parseInt(std::string_view text) {
     return value;
 }
 
-// Line `line` (1-based) of `text`, empty past its end.
-std::string_view lineOfText(std::string_view text, int line) {
-    size_t begin = 0;
-    for (int at = 1; at < line && begin != std::string_view::npos; ++at) {
-        begin = text.find('\n', begin);
-        if (begin != std::string_view::npos) ++begin;
+// The files' lines, found once per file: the preprocessor's output is
+// matched to its source line by line, and a rescan per line would make
+// reading a long file quadratic.
+class SourceLines {
+public:
+    explicit SourceLines(const std::vector<std::string>& texts) : texts_(texts) {}
+
+    // Line `line` (1-based) of file `file`, empty past its end.
+    std::string_view line(uint32_t file, int line) {
+        if (starts_.size() <= file) starts_.resize(file + 1);
+        std::vector<size_t>& starts = starts_[file];
+        const std::string_view text = texts_[file];
+        if (starts.empty()) {
+            starts.push_back(0);
+            for (size_t i = 0; i < text.size(); ++i)
+                if (text[i] == '\n') starts.push_back(i + 1);
+        }
+        if (line < 1 || static_cast<size_t>(line) > starts.size()) return {};
+        const size_t begin = starts[static_cast<size_t>(line) - 1];
+        return text.substr(begin, std::min(text.find('\n', begin), text.size()) - begin);
     }
-    if (begin == std::string_view::npos || begin > text.size()) return {};
-    return text.substr(begin, std::min(text.find('\n', begin), text.size()) - begin);
-}
+
+private:
+    const std::vector<std::string>& texts_;
+    std::vector<std::vector<size_t>> starts_; // per file, where each line begins
+};
 
 struct Reader {
     PreprocessedText& out;
+    SourceLines lines{out.fileTexts};
 
     uint32_t fileIndex(const std::string& name) {
         const std::string shown = name == kStandardInput ? out.files[0] : name;
@@ -120,9 +137,7 @@ struct Reader {
         return static_cast<uint32_t>(out.files.size() - 1);
     }
 
-    std::string_view sourceLine(PreprocessedText::Origin origin) const {
-        return lineOfText(out.fileTexts[origin.file], origin.line);
-    }
+    std::string_view sourceLine(PreprocessedText::Origin origin) { return lines.line(origin.file, origin.line); }
 
     // '# 12 "name" 1 2': the next line is line 12 of "name". (A line "# 12"
     // without a name is the user's, passed on as text.)
@@ -260,10 +275,11 @@ PreprocessedText runCPreprocessor(std::string_view source, const std::string& fi
 
 void mapToFiles(const PreprocessedText& preprocessed, std::vector<Diagnostic>& diagnostics) {
     const std::vector<std::string_view> outputLines = splitLines(preprocessed.text);
+    SourceLines lines(preprocessed.fileTexts);
     for (Diagnostic& diagnostic : diagnostics) {
         if (diagnostic.line < 1 || static_cast<size_t>(diagnostic.line) > preprocessed.lines.size()) continue;
         const PreprocessedText::Origin origin = preprocessed.lines[static_cast<size_t>(diagnostic.line) - 1];
-        const std::string_view sourceLine = lineOfText(preprocessed.fileTexts[origin.file], origin.line);
+        const std::string_view sourceLine = lines.line(origin.file, origin.line);
         const size_t at = static_cast<size_t>(std::max(diagnostic.column, 1)) - 1;
         diagnostic.column =
             static_cast<int>(alignedOffset(outputLines[static_cast<size_t>(diagnostic.line) - 1], sourceLine, at)) + 1;

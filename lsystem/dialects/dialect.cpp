@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <numeric>
+#include <tuple>
 
 #include "lsystem/dialects/c_preprocessor.h"
 #include "lsystem/dialects/native_text.h"
@@ -129,7 +130,7 @@ ParseResult parseCpfg(std::string_view source, const ParseOptions& options) {
     std::vector<Diagnostic> comments = cpfgCommentWarnings(source, options.file);
     result.warnings.insert(result.warnings.begin(), comments.begin(), comments.end());
     std::stable_sort(result.warnings.begin(), result.warnings.end(), [](const Diagnostic& a, const Diagnostic& b) {
-        return a.file == b.file && (a.line != b.line ? a.line < b.line : a.column < b.column);
+        return std::tie(a.file, a.line, a.column) < std::tie(b.file, b.line, b.column);
     });
     return result;
 }
