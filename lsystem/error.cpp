@@ -44,9 +44,11 @@ std::string_view windowAround(std::string_view text, int& column, bool& cutBefor
 }
 
 std::string formatWithLine(const Diagnostic& diagnostic, std::string_view text) {
-    std::string out = diagnostic.file + ":" + std::to_string(diagnostic.line) + ":" +
-                      std::to_string(diagnostic.column) +
-                      (diagnostic.severity == Severity::Warning ? ": warning: " : ": error: ") + diagnostic.message;
+    std::string out = diagnostic.file;
+    // Line 0 is the file as a whole (it cannot be read, a folder lacks it).
+    if (diagnostic.line > 0)
+        out.append(":").append(std::to_string(diagnostic.line)).append(":").append(std::to_string(diagnostic.column));
+    out.append(diagnostic.severity == Severity::Warning ? ": warning: " : ": error: ").append(diagnostic.message);
     if (!diagnostic.expected.empty()) out += " (expected " + diagnostic.expected + ")";
     out += '\n';
     if (diagnostic.line > 0 && (!text.empty() || diagnostic.column > 0)) {

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace lsys {
 
@@ -31,14 +32,45 @@ constexpr Function kCpfgFunctions[] = {
     {"trunc", Op::Round, 1},      {"srand", Op::Srand, 1},
 };
 
+// cpfg's func(id, x): the id-th function of the object's function files at
+// x (Měch 2005, "CPFG Version 4.0 User's Manual", §5.5 and §8.1.6). Known
+// only where the scope has a table of them.
+constexpr Function kFunc{"func", Op::Func, 2};
+
 // cpfg's functions that need what plantfield does not have: files, sound,
-// a window, contours and functions from the object's files, a communicating
-// environment program, or its other random distributions.
+// a window, contours from the object's files, a communicating environment
+// program, or its other random distributions.
 constexpr std::string_view kUnsupportedCpfgFunctions[] = {
-    "fopen",  "fclose", "fflush",  "fprintf",  "fscanf", "play",           "display",        "stop",   "inblob",
-    "curveX", "curveY", "curveZ",  "curveGAL", "func",   "vvxmin",         "vvxmax",         "vvymin", "vvymax",
-    "vvzmin", "vvzmax", "vvscale", "bran",     "biran",  "setDerivLength", "getDerivLength",
+    "fopen",  "fclose", "fflush", "fprintf", "fscanf",   "play",   "display",        "stop",
+    "inblob", "curveX", "curveY", "curveZ",  "curveGAL", "vvxmin", "vvxmax",         "vvymin",
+    "vvymax", "vvzmin", "vvzmax", "vvscale", "bran",     "biran",  "setDerivLength", "getDerivLength",
 };
+
+// Whether code computes the same value every time: no parameters, globals,
+// random draws or function files.
+bool isConstantCode(std::span<const Instruction> code) {
+    return std::none_of(code.begin(), code.end(), [](const Instruction& instruction) {
+        switch (instruction.op) {
+        case Op::Var:
+        case Op::Global:
+        case Op::Element:
+        case Op::Ran:
+        case Op::NRan:
+        case Op::Srand:
+        case Op::Func: return true;
+        default: return false;
+        }
+    });
+}
+
+// cpfg's SplineFuncValue (splinefun.cpp): the id is converted to int and
+// counts from 1; an id outside the table gives 0.
+double callFunction(const FunctionTable& table, double id, double x) {
+    if (!table || !std::isfinite(id)) return 0.0;
+    const double index = std::trunc(id) - 1.0;
+    if (index < 0.0 || index >= static_cast<double>(table->size())) return 0.0;
+    return vlab::evaluateFunction((*table)[static_cast<size_t>(index)], x);
+}
 
 const Function* findFunction(std::string_view name, Arithmetic arithmetic) {
     if (arithmetic == Arithmetic::Cpfg)
@@ -117,6 +149,25 @@ struct Compiler {
         if (instruction.op == Op::Var || instruction.op == Op::Ran || instruction.op == Op::NRan ||
             instruction.op == Op::Global || instruction.op == Op::Element || instruction.op == Op::Srand)
             usesVariablesOrRandom = true;
+        if (instruction.op == Op::Func) out.functions = scope.functions;
+    }
+
+    bool hasFunctions() const { return scope.functions && !scope.functions->empty(); }
+
+    // A func id that is the same every time must name one of the functions.
+    void checkFunctionId(size_t begin, size_t at) {
+        const std::span<const Instruction> code(out.code.begin() + static_cast<std::ptrdiff_t>(begin), out.code.end());
+        if (!isConstantCode(code)) return;
+        RandomStream unused;
+        const double id = evaluate(Expression{{code.begin(), code.end()}, nullptr}, nullptr, unused);
+        const size_t count = scope.functions->size();
+        if (std::isfinite(id) && std::trunc(id) >= 1.0 && std::trunc(id) <= static_cast<double>(count)) return;
+        cursor.pos = at;
+        char shown[32];
+        std::snprintf(shown, sizeof shown, "%g", id);
+        fail(std::string("func(") + shown + ", x) names no function: the object's view file names " +
+                 std::to_string(count) + " function" + (count == 1 ? "" : "s"),
+             "an id from 1 to " + std::to_string(count));
     }
 
     void fail(std::string message, std::string expected = {}) {
@@ -224,7 +275,10 @@ struct Compiler {
                                     std::to_string(function.arity) + " arguments",
                                 "','");
             }
+            cursor.skipSpaces();
+            const size_t begin = out.code.size(), at = cursor.pos;
             expression(nesting + 1);
+            if (!failed && function.op == Op::Func && argument == 0) checkFunctionId(begin, at);
             if (failed) return;
         }
         cursor.skipSpaces();
@@ -275,6 +329,7 @@ struct Compiler {
             size_t begin = cursor.pos;
             std::string name(cursor.identifier());
             if (const Function* function = findFunction(name, scope.arithmetic)) return call(*function, nesting);
+            if (name == kFunc.name && hasFunctions()) return call(kFunc, nesting);
             for (size_t i = 0; i < scope.variables.size(); ++i)
                 if (scope.variables[i] == name) return emit({Op::Var, static_cast<uint16_t>(i)});
             if (scope.globals)
@@ -283,6 +338,9 @@ struct Compiler {
                 if (auto found = scope.constants->find(name); found != scope.constants->end())
                     return emit({Op::Const, 0, 0, found->second});
             cursor.pos = begin;
+            if (name == kFunc.name)
+                return fail("func(id, x) reads the object's function files, and no function files are given",
+                            "a vlab object whose view file names them ('function: FILE')");
             for (std::string_view unsupported : kUnsupportedCpfgFunctions)
                 if (unsupported == name) return fail("cpfg's function '" + name + "' is not supported");
             fail("unknown name '" + name + "'", "a parameter of this production, a #define constant or a function");
@@ -305,7 +363,7 @@ std::optional<Expression> parseExpression(Cursor& cursor, const ExpressionScope&
     if (!compiler.usesVariablesOrRandom && compiler.out.code.size() > 1) {
         RandomStream unused;
         double value = evaluate(compiler.out, nullptr, unused);
-        compiler.out.code = {{Op::Const, 0, 0, value}};
+        compiler.out = {{{Op::Const, 0, 0, value}}, nullptr};
     }
     return std::move(compiler.out);
 }
@@ -476,6 +534,10 @@ double evaluate(const Expression& expression, const double* variables, RandomStr
             random =
                 RandomStream::forModule(static_cast<uint64_t>(static_cast<int64_t>(std::isfinite(t) ? t : 0.0)), 0, 0);
             t = 0.0;
+            break;
+        case Op::Func:
+            a = callFunction(expression.functions, a, t);
+            --top;
             break;
         }
     }

@@ -4,6 +4,7 @@
 // evaluation time, which happens once per parameter per rewritten module.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -12,6 +13,7 @@
 
 #include "lsystem/lexer.h"
 #include "lsystem/random.h"
+#include "lsystem/vlab/function_file.h"
 
 namespace lsys {
 
@@ -70,7 +72,12 @@ enum class Op : uint8_t {
     Sign,
     Round, // cpfg's trunc(x): floor(x + 0.5)
     Srand, // reseeds the random stream with (integer) t; yields 0
+    Func,  // cpfg's func(id, x): function (int)id of the expression's table at x; 0 for an id not in it
 };
+
+// The functions cpfg's func(id, x) reads, in the order the view file names
+// them (func(1, x) is the first); shared by every expression that calls func.
+using FunctionTable = std::shared_ptr<const std::vector<vlab::VlabFunction>>;
 
 struct Instruction {
     Op op;
@@ -85,6 +92,7 @@ inline constexpr int kMaxVariables = 64; // formal parameters of one production
 
 struct Expression {
     std::vector<Instruction> code;
+    FunctionTable functions; // set when the code calls func, which evaluate() then reads
     bool isConstant() const { return code.size() == 1 && code[0].op == Op::Const; }
 };
 
@@ -119,6 +127,7 @@ struct ExpressionScope {
     const std::unordered_map<std::string, double>* constants = nullptr;
     const GlobalTable* globals = nullptr;
     Arithmetic arithmetic = Arithmetic::Native;
+    FunctionTable functions; // func(id, x) is known only with a non-empty table
 };
 
 // Parses an expression starting at the cursor. Stops before the first

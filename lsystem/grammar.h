@@ -8,7 +8,10 @@
 #include <unordered_map>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "lsystem/expression.h"
+#include "lsystem/plant_asset.h"
 #include "lsystem/statements.h"
 #include "lsystem/symbols.h"
 
@@ -61,6 +64,24 @@ struct ProductionSet {
     bool empty() const { return productions.empty(); }
 };
 
+// How the turtle draws beyond angle, step and width: ABOP's turtle unless a
+// vlab object's view and colour files say otherwise (lsystem/vlab/object.h).
+struct TurtleStyle {
+    double widthFactor = 0.7;    // a bare ! multiplies the width by it, a bare # divides by it,
+    double widthIncrement = 0.0; // then ! subtracts this and # adds it (cpfg's "line width increment")
+    int colourIncrement = 1;     // a bare ; adds it to the material index, a bare , subtracts it
+    uint32_t material = 0;       // the material index the plant starts with
+    glm::vec3 tropism{0.0f, -1.0f, 0.0f};
+    double elasticity = 0.0;
+    // Widths are cpfg's screen pixels ("initial line width: 2 pixels"):
+    // interpretPlant turns them into lengths (widenPixelLines, lsystem/turtle.h).
+    bool pixelLines = false;
+    // G and g are cpfg's drawing and moving without a polygon vertex (read
+    // from cpfg's files); elsewhere they are ordinary modules.
+    bool cpfgModules = false;
+    PlantLook look;
+};
+
 // The most derivation steps a file's 'derivation length:' or a tool's -n asks for.
 inline constexpr int kMaxDerivationLength = 1'000'000;
 
@@ -70,9 +91,10 @@ struct Grammar {
     std::unordered_map<std::string, double> constants;
     uint64_t seed = 0;
     int derivationLength = 0;
-    double angle = 45.0;                // degrees, default for bare + - & ^ \ /
-    double step = 1.0;                  // default length for bare F f
-    double width = 1.0;                 // initial width
+    double angle = 45.0; // degrees, default for bare + - & ^ \ /
+    double step = 1.0;   // default length for bare F f
+    double width = 1.0;  // initial width
+    TurtleStyle style;
     std::vector<SuccessorModule> axiom; // evaluated when a derivation starts, with its seed
     std::vector<uint8_t> ignored;       // per symbol: 1 when skipped while matching context
     ProductionSet rules;

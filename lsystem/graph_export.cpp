@@ -9,6 +9,7 @@
 #include "lsystem/export_detail.h"
 #include "lsystem/gltf_builder.h"
 #include "lsystem/output_file.h"
+#include "lsystem/turtle.h"
 #include "lsystem/turtle_builder.h"
 
 namespace lsys {
@@ -21,7 +22,7 @@ using export_detail::GltfBuilder;
 // segment itself (so generalised cylinders chain within the object) and the
 // base otherwise. The builder also gives the materials the turtle would.
 PlantAsset directPrimitives(const InstanceGraph& graph, uint32_t object, const SurfaceLibrary& surfaces) {
-    PlantAssetBuilder builder(surfaces);
+    PlantAssetBuilder builder(surfaces, graph.look);
     std::unordered_map<JointRef, int32_t> localJoint;
     const auto local = [&](JointRef ref) {
         const auto found = localJoint.find(ref);
@@ -44,7 +45,9 @@ PlantAsset directPrimitives(const InstanceGraph& graph, uint32_t object, const S
             break;
         }
     }
-    return builder.finish();
+    PlantAsset direct = builder.finish();
+    if (graph.pixelLines) scaleLineRadii(direct, worldPerPixel(graph.objects[graph.root].bounds));
+    return direct;
 }
 
 // Every object's table holds the palette up to the largest index it uses, so

@@ -4,6 +4,7 @@
 
 #include "lsystem/error.h"
 #include "lsystem/instance_graph.h"
+#include "lsystem/turtle.h"
 #include "lsystem/turtle_builder.h"
 
 namespace lsys {
@@ -14,11 +15,13 @@ namespace {
 // order, so joints, shapes, bounds and materials come out as the turtle's.
 class Flattener {
 public:
-    Flattener(const InstanceGraph& graph, const SurfaceLibrary& surfaces) : graph_(graph), out_(surfaces) {}
+    Flattener(const InstanceGraph& graph, const SurfaceLibrary& surfaces) : graph_(graph), out_(surfaces, graph.look) {}
 
     PlantAsset run() {
         if (!graph_.objects.empty()) walk(graph_.root, Frame{}, -1);
-        return out_.finish();
+        PlantAsset plant = out_.finish();
+        if (graph_.pixelLines) widenPixelLines(plant);
+        return plant;
     }
 
 private:

@@ -90,6 +90,10 @@ struct InstanceGraph {
     std::vector<std::string> surfaceNames; // of GraphPrimitive::shape for surfaces
     size_t nodes = 0;                      // of the b-grammar
     uint32_t root = 0;                     // the axiom's object, interpreted from the plant's start
+    PlantLook look;                        // the grammar's TurtleStyle::look, which flattening and export apply
+    // The grammar's TurtleStyle::pixelLines: flattening widens the plant as
+    // the turtle's does; export scales each object's lines by the root's bounds.
+    bool pixelLines = false;
 
     std::span<const GraphItem> itemsOf(uint32_t object) const {
         return {items.data() + objects[object].itemStart, objects[object].itemCount};

@@ -78,14 +78,17 @@ public:
     GraphBuilder(const BGrammar& bgrammar, const Grammar& grammar, const InstanceGraphOptions& options,
                  const SurfaceLibrary& surfaces)
         : bgrammar_(bgrammar), options_(options), surfaces_(surfaces), settings_(turtleSettings(grammar)),
-          commands_(turtleCommands(grammar.symbols)), summaries_(summarise(bgrammar, commands_)),
-          lookup_(bgrammar.nodes.size()) {}
+          commands_(turtleCommands(grammar.symbols, grammar.style.cpfgModules)),
+          summaries_(summarise(bgrammar, commands_)), lookup_(bgrammar.nodes.size()) {}
 
     InstanceGraph build() {
         graph_.nodes = bgrammar_.nodes.size();
+        graph_.look = settings_.look;
+        graph_.pixelLines = settings_.pixelLines;
         if (bgrammar_.nodes.empty()) return std::move(graph_);
         ObjectEntry start{initialTurtleState(settings_), glm::quat(1.0f, 0.0f, 0.0f, 0.0f), false};
         graph_.root = buildObject(bgrammar_.axiom(), start);
+        if (settings_.pixelLines) growForPixelLines();
         return std::move(graph_);
     }
 
@@ -105,6 +108,22 @@ public:
     }
 
     uint32_t buildObject(uint32_t node, const ObjectEntry& entry);
+
+    // Lines drawn pixels wide become wider when flattened or exported
+    // (InstanceGraph::pixelLines): every box grows by the widest of them, at
+    // least what the flat plant's own bounds (within the root's) give.
+    void growForPixelLines() {
+        const float perPixel = worldPerPixel(graph_.objects[graph_.root].bounds);
+        float widest = 0.0f;
+        for (const GraphPrimitive& primitive : graph_.primitives)
+            if (primitive.kind == PrimitiveKind::Segment)
+                widest = std::max({widest, primitive.startRadius * perPixel, primitive.endRadius * perPixel});
+        for (GraphObject& object : graph_.objects)
+            if (!object.bounds.empty()) {
+                object.bounds.min -= glm::vec3(widest);
+                object.bounds.max += glm::vec3(widest);
+            }
+    }
 
     // Throws MemoryBudgetError when the graph with `primitives` more
     // primitives (and their items) would be past the budget: what it holds,
@@ -136,7 +155,7 @@ class ObjectInterpreter {
 public:
     ObjectInterpreter(GraphBuilder& builder, const ObjectEntry& entry)
         : b_(builder), entry_(entry), state_(entry.style), provenance_(Provenance::pristine()),
-          chunk_(builder.surfaces_) {
+          chunk_(builder.surfaces_, builder.settings_.look) {
         state_.position = glm::vec3(0.0f);
         state_.heading = {0.0f, 1.0f, 0.0f};
         state_.left = {-1.0f, 0.0f, 0.0f};
@@ -209,7 +228,7 @@ private:
             provenanceStack_.pop_back();
         }
         updateProvenance(command, p, open, provenance_);
-        if (command.action == TurtleAction::Draw && open == 0) {
+        if (drawsSegment(command.action, open)) {
             // The builder numbered the joint within the chunk; it is the subtree's next.
             chunkSegments_.push_back(handleFor(joints_++));
             state_.joint = chunkSegments_.back();

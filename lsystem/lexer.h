@@ -3,6 +3,7 @@
 // compiler. Sources are handled one line at a time (after comments are blanked
 // out), so an error never costs more than the rest of its line.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,5 +42,22 @@ bool isIdentifierChar(char c);
 
 // Builds a diagnostic at the cursor's current position.
 Diagnostic errorAt(const Cursor& cursor, const std::string& file, std::string message, std::string expected = {});
+
+// Where a line-by-line reader of a file reports its errors (the vlab
+// object's function and surface files).
+struct ErrorReport {
+    std::string file;
+    std::vector<Diagnostic>& diagnostics;
+
+    // Appends an error at the cursor; false, for `return fail(...)`.
+    bool fail(const Cursor& at, std::string message, std::string expected) const {
+        diagnostics.push_back(errorAt(at, file, std::move(message), std::move(expected)));
+        return false;
+    }
+    std::nullopt_t failed(const Cursor& at, std::string message, std::string expected) const {
+        fail(at, std::move(message), std::move(expected));
+        return std::nullopt;
+    }
+};
 
 } // namespace lsys

@@ -105,11 +105,15 @@ struct Parser {
     }
 
     ExpressionScope scopeFor(std::span<const std::string> variables) const {
-        return {variables, &grammar.constants, &grammar.globals, grammar.arithmetic};
+        return {variables, &grammar.constants, &grammar.globals, grammar.arithmetic, options.functions};
+    }
+
+    BlockScope blockScope(std::vector<std::string>* locals, bool arrayDefinitions) {
+        return {locals, &grammar.globals, &grammar.constants, grammar.arithmetic, arrayDefinitions, options.functions};
     }
 
     std::optional<double> constantExpression(Cursor& cursor) {
-        ExpressionScope scope{{}, &grammar.constants, nullptr, grammar.arithmetic};
+        ExpressionScope scope{{}, &grammar.constants, nullptr, grammar.arithmetic, options.functions};
         std::optional<Expression> expression = parseExpression(cursor, scope, file(), diagnostics);
         if (!expression) return std::nullopt;
         RandomStream random = RandomStream::forModule(grammar.seed, ~0ull, 0);
@@ -281,7 +285,7 @@ struct Parser {
 
     // "start: { ... }" and the like; "define: { array ...; }" (into = null) only defines arrays.
     void globalBlock(Cursor& cursor, Block* into) {
-        BlockScope scope{nullptr, &grammar.globals, &grammar.constants, grammar.arithmetic, into == nullptr};
+        BlockScope scope = blockScope(nullptr, into == nullptr);
         std::optional<Block> block = parseBlock(cursor, scope, file(), diagnostics);
         if (!block || !expectLineEnd(cursor)) return;
         if (into) into->insert(into->end(), block->begin(), block->end());
@@ -291,7 +295,7 @@ struct Parser {
     bool productionBlock(Cursor& cursor, Production& production, Block& into) {
         cursor.skipSpaces();
         if (cursor.peek() != '{') return true;
-        BlockScope scope{&production.variables, &grammar.globals, &grammar.constants, grammar.arithmetic, false};
+        BlockScope scope = blockScope(&production.variables, false);
         std::optional<Block> block = parseBlock(cursor, scope, file(), diagnostics);
         if (!block) return false;
         into = std::move(*block);

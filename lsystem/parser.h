@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "lsystem/error.h"
+#include "lsystem/expression.h"
 #include "lsystem/grammar.h"
 
 namespace lsys {
@@ -14,6 +15,9 @@ namespace lsys {
 struct ParseOptions {
     std::string file = "<input>";                    // name used in diagnostics
     std::unordered_map<std::string, double> defines; // override (or add) #define constants
+    // What cpfg's func(id, x) reads: a vlab object's function files, in the
+    // order its view file names them. Without (or with none), func is an error.
+    FunctionTable functions;
 };
 
 struct ParseResult {

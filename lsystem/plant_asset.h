@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,9 @@ struct SurfaceMesh {
     std::vector<glm::vec3> normals;
     std::vector<glm::vec2> uvs;
     std::vector<uint32_t> indices;
+    // Where the turtle stands after drawing it at scale 1 (cpfg's END POINT
+    // of a .s file); the origin for the built-in and glTF surfaces.
+    glm::vec3 endPoint{0.0f};
 };
 
 // A `{ . . . }` polygon: its outline, in plant space, as the turtle traced it.
@@ -88,6 +92,15 @@ struct Material {
     std::string name;
     glm::vec3 albedo{0.5f};
     bool twoSided = false; // leaves and petals are seen from both sides
+};
+
+// What a plant brings besides its grammar (a vlab object's colour map and
+// surface files): the meaning of its material indices, and surfaces that ~
+// finds before the SurfaceLibrary's. Null: the default palette
+// (lsystem/turtle_builder.h) and the library's surfaces only.
+struct PlantLook {
+    std::shared_ptr<const std::vector<Material>> palette;
+    std::shared_ptr<const std::vector<SurfaceMesh>> surfaces;
 };
 
 struct PlantAsset {

@@ -53,7 +53,7 @@ void answerQueries(const Grammar& grammar, ModuleString& string) {
     const std::optional<SymbolId> question = grammar.symbols.find("?");
     if (!question || !string.hasParameters()) return;
     const std::vector<uint8_t> kinds = queryKinds(grammar.symbols);
-    const std::vector<TurtleCommand> commands = turtleCommands(grammar.symbols);
+    const std::vector<TurtleCommand> commands = turtleCommands(grammar.symbols, grammar.style.cpfgModules);
     const TurtleSettings settings = turtleSettings(grammar);
     const SurfaceLibrary noSurfaces;
     PlantAssetBuilder builder(noSurfaces);

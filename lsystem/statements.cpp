@@ -27,7 +27,7 @@ struct BlockParser {
 
     ExpressionScope expressionScope() const {
         static const std::vector<std::string> none;
-        return {scope.locals ? *scope.locals : none, scope.constants, scope.globals, scope.arithmetic};
+        return {scope.locals ? *scope.locals : none, scope.constants, scope.globals, scope.arithmetic, scope.functions};
     }
 
     bool expression(Expression& out) {
@@ -240,7 +240,7 @@ struct BlockParser {
     }
 
     std::optional<double> constant() {
-        ExpressionScope constants{{}, scope.constants, nullptr, scope.arithmetic};
+        ExpressionScope constants{{}, scope.constants, nullptr, scope.arithmetic, scope.functions};
         std::optional<Expression> parsed = parseExpression(cursor, constants, file, diagnostics);
         if (!parsed) return std::nullopt;
         RandomStream random;

@@ -45,6 +45,7 @@ struct BlockScope {
     const std::unordered_map<std::string, double>* constants = nullptr;
     Arithmetic arithmetic = Arithmetic::Native;
     bool arrayDefinitions = false; // cpfg's define: block, "array a[2][3] = {...};"
+    FunctionTable functions;       // what func(id, x) reads (ParseOptions::functions)
 };
 
 // Parses "{ statements }" at the cursor. On error appends a diagnostic and

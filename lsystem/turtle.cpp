@@ -1,5 +1,6 @@
 #include "lsystem/turtle.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/quaternion.hpp>
@@ -14,6 +15,16 @@ TurtleSettings turtleSettings(const Grammar& grammar) {
     settings.angle = static_cast<float>(grammar.angle);
     settings.step = static_cast<float>(grammar.step);
     settings.width = static_cast<float>(grammar.width);
+    const TurtleStyle& style = grammar.style;
+    settings.widthFactor = static_cast<float>(style.widthFactor);
+    settings.widthIncrement = static_cast<float>(style.widthIncrement);
+    settings.colourIncrement = style.colourIncrement;
+    settings.material = style.material;
+    settings.tropism = style.tropism;
+    settings.elasticity = static_cast<float>(style.elasticity);
+    settings.pixelLines = style.pixelLines;
+    settings.cpfgModules = style.cpfgModules;
+    settings.look = style.look;
     return settings;
 }
 
@@ -24,6 +35,7 @@ TurtleState initialTurtleState(const TurtleSettings& settings) {
     state.angle = settings.angle;
     state.tropism = settings.tropism;
     state.elasticity = settings.elasticity;
+    state.material = settings.material;
     return state;
 }
 
@@ -61,14 +73,16 @@ uint64_t turtleBytes(const ModuleString& string, std::span<const TurtleCommand> 
     std::vector<uint64_t> perSymbol(commands.size(), 0);
     for (size_t symbol = 0; symbol < commands.size(); ++symbol) {
         switch (commands[symbol].action) {
-        case TurtleAction::Draw: perSymbol[symbol] = sizeof(Primitive) + sizeof(Joint); break;
+        case TurtleAction::Draw:
+        case TurtleAction::DrawWithoutVertex: perSymbol[symbol] = sizeof(Primitive) + sizeof(Joint); break;
         case TurtleAction::Sphere:
         case TurtleAction::Surface: perSymbol[symbol] = sizeof(Primitive); break;
         case TurtleAction::PolygonBegin:
             perSymbol[symbol] = sizeof(Primitive) + sizeof(PolygonShape) + sizeof(OpenPolygon);
             break;
         case TurtleAction::PolygonVertex:
-        case TurtleAction::Move: perSymbol[symbol] = sizeof(glm::vec3); break;
+        case TurtleAction::Move:
+        case TurtleAction::MoveWithoutVertex: perSymbol[symbol] = sizeof(glm::vec3); break;
         case TurtleAction::Push: perSymbol[symbol] = sizeof(TurtleState); break;
         default: break;
         }
@@ -80,13 +94,43 @@ uint64_t turtleBytes(const ModuleString& string, std::span<const TurtleCommand> 
 
 PlantAsset interpretPlant(const ModuleString& string, const SymbolTable& symbols, const TurtleSettings& settings,
                           const SurfaceLibrary& surfaces, const MemoryBudget& memory) {
-    const std::vector<TurtleCommand> commands = turtleCommands(symbols);
+    const std::vector<TurtleCommand> commands = turtleCommands(symbols, settings.cpfgModules);
     need(memory, "turtle", turtleBytes(string, commands));
-    PlantAssetBuilder builder(surfaces);
+    PlantAssetBuilder builder(surfaces, settings.look);
     TurtleState state = initialTurtleState(settings);
     TurtleStack stack;
     interpretModules(string, commands, settings, state, stack, builder);
-    return builder.finish();
+    PlantAsset plant = builder.finish();
+    if (settings.pixelLines) widenPixelLines(plant);
+    return plant;
+}
+
+float worldPerPixel(const Bounds& bounds) {
+    if (bounds.empty()) return 0.0f;
+    const glm::vec3 extent = bounds.max - bounds.min;
+    return std::max(extent.x, extent.y) / kPixelsAcrossPlant;
+}
+
+float scaleLineRadii(PlantAsset& plant, float factor) {
+    float widest = 0.0f;
+    for (Primitive& primitive : plant.primitives) {
+        if (primitive.kind != PrimitiveKind::Segment) continue;
+        primitive.startRadius *= factor;
+        primitive.endRadius *= factor;
+        widest = std::max({widest, primitive.startRadius, primitive.endRadius});
+    }
+    for (Joint& joint : plant.joints) {
+        joint.startRadius *= factor;
+        joint.endRadius *= factor;
+    }
+    return widest;
+}
+
+void widenPixelLines(PlantAsset& plant) {
+    if (plant.bounds.empty()) return;
+    const float widest = scaleLineRadii(plant, worldPerPixel(plant.bounds));
+    plant.bounds.min -= glm::vec3(widest);
+    plant.bounds.max += glm::vec3(widest);
 }
 
 PlantAsset plantFromGrammar(const Grammar& grammar, const ModuleString& derived, const SurfaceLibrary& surfaces,

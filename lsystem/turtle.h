@@ -43,12 +43,18 @@ struct TurtleSettings {
     float angle = 45.0f; // degrees
     float step = 1.0f;
     float width = 1.0f;
-    float widthFactor = 0.7f;             // for a bare '!'
+    float widthFactor = 0.7f;    // a bare ! multiplies by it, a bare # divides by it,
+    float widthIncrement = 0.0f; // then ! subtracts this and # adds it
+    int colourIncrement = 1;     // of a bare ; (up) and , (down)
+    uint32_t material = 0;
     glm::vec3 tropism{0.0f, -1.0f, 0.0f}; // gravity
     float elasticity = 0.0f;
+    bool pixelLines = false;  // widths are screen pixels (widenPixelLines)
+    bool cpfgModules = false; // G and g are commands (turtleCommands)
+    PlantLook look;
 };
 
-// The defaults written in the grammar header (angle:, step:, width:).
+// The defaults written in the grammar header (angle:, step:, width:) and its style.
 TurtleSettings turtleSettings(const Grammar& grammar);
 
 struct TurtleState {
@@ -104,6 +110,24 @@ uint64_t turtleBytes(const ModuleString& string, std::span<const TurtleCommand> 
 // Throws MemoryBudgetError (stage "turtle") when turtleBytes() is past `memory`.
 PlantAsset interpretPlant(const ModuleString& string, const SymbolTable& symbols, const TurtleSettings& settings,
                           const SurfaceLibrary& surfaces, const MemoryBudget& memory = machineMemoryBudget());
+
+// cpfg draws lines `pixels` wide on a window that its plant fills
+// (InitializeParameters' auto window): a pixel is this fraction of the
+// plant's larger extent across the view, the default window's 320 x 240
+// pixels seen at the larger side.
+inline constexpr float kPixelsAcrossPlant = 320.0f;
+
+// The length of a pixel for a plant of these bounds: its larger extent in
+// x and y over kPixelsAcrossPlant.
+float worldPerPixel(const Bounds& bounds);
+
+// Multiplies every segment's and joint's radii by `factor`; returns the widest segment radius after.
+float scaleLineRadii(PlantAsset& plant, float factor);
+
+// Makes a plant interpreted with pixel widths (TurtleSettings::pixelLines)
+// what cpfg shows: every segment's and joint's radii times worldPerPixel,
+// and bounds grown by the widest new radius.
+void widenPixelLines(PlantAsset& plant);
 
 // Applies the grammar's interpretation (homomorphism) rules, then the turtle
 // with the header's settings: what a renderer calls after derive(). Both

@@ -39,6 +39,13 @@ const std::vector<Material>& defaultPalette() {
     return palette;
 }
 
+const SurfaceMesh& PlantAssetBuilder::surfaceNamed(const std::string& name) const {
+    if (look_.surfaces)
+        for (const SurfaceMesh& mesh : *look_.surfaces)
+            if (mesh.name == name) return mesh;
+    return surfaces_.surface(name);
+}
+
 void PlantAssetBuilder::markTwoSided(uint32_t material) {
     if (twoSided_.size() <= material) twoSided_.resize(material + 1);
     twoSided_[material] = true;
@@ -61,12 +68,12 @@ void PlantAssetBuilder::addSphere(const Frame& centre, float radius, uint32_t ma
     asset_.bounds.extend(centre.position + glm::vec3(std::abs(radius)));
 }
 
-void PlantAssetBuilder::addSurface(const std::string& name, const Frame& frame, float scale, uint32_t material,
-                                   int32_t joint) {
+glm::vec3 PlantAssetBuilder::addSurface(const std::string& name, const Frame& frame, float scale, uint32_t material,
+                                        int32_t joint) {
     auto [found, added] = surfaceIndex_.try_emplace(name, static_cast<uint32_t>(asset_.surfaces.size()));
     if (added) {
         try {
-            asset_.surfaces.push_back(surfaces_.surface(name));
+            asset_.surfaces.push_back(surfaceNamed(name));
         } catch (...) {
             surfaceIndex_.erase(found);
             throw;
@@ -79,12 +86,14 @@ void PlantAssetBuilder::addSurface(const std::string& name, const Frame& frame, 
 
     // The corners of the surface's local box, scaled and placed, bound it.
     const Bounds& local = surfaceBounds_[shape];
-    if (local.empty()) return;
+    const glm::vec3 endPoint = asset_.surfaces[shape].endPoint;
+    if (local.empty()) return endPoint;
     for (int corner = 0; corner < 8; ++corner) {
         const glm::vec3 p{corner & 1 ? local.max.x : local.min.x, corner & 2 ? local.max.y : local.min.y,
                           corner & 4 ? local.max.z : local.min.z};
         asset_.bounds.extend(frame.position + frame.rotation * (p * scale));
     }
+    return endPoint;
 }
 
 void PlantAssetBuilder::addPolygon(const Frame& start, std::vector<glm::vec3> outline, uint32_t material,
@@ -97,12 +106,14 @@ void PlantAssetBuilder::addPolygon(const Frame& start, std::vector<glm::vec3> ou
 }
 
 PlantAsset PlantAssetBuilder::finish() {
-    const std::vector<Material>& palette = defaultPalette();
+    const bool given = look_.palette && !look_.palette->empty();
+    const std::vector<Material>& palette = given ? *look_.palette : defaultPalette();
     size_t count = palette.size();
     for (const Primitive& primitive : asset_.primitives) count = std::max<size_t>(count, primitive.material + 1);
     asset_.materials.clear();
     for (size_t i = 0; i < count; ++i) {
-        Material material = palette[i % palette.size()];
+        // The default palette repeats; a given one (all 256 of a colour map) has nothing past its end.
+        Material material = palette[given ? (i < palette.size() ? i : 0) : i % palette.size()];
         if (i >= palette.size()) material.name.append(1, ' ').append(std::to_string(i));
         if (i < twoSided_.size() && twoSided_[i]) material.twoSided = true;
         asset_.materials.push_back(std::move(material));

@@ -24,14 +24,18 @@ const std::vector<Material>& defaultPalette();
 
 class PlantAssetBuilder {
 public:
-    explicit PlantAssetBuilder(const SurfaceLibrary& surfaces) : surfaces_(surfaces) {}
+    // A look's palette replaces defaultPalette() (indices past its end
+    // become its first entry's); its surfaces come before the library's.
+    explicit PlantAssetBuilder(const SurfaceLibrary& surfaces, PlantLook look = {})
+        : surfaces_(surfaces), look_(std::move(look)) {}
 
     // A segment and its joint; returns the joint's index.
     int32_t addSegment(const Frame& base, float length, float startRadius, float endRadius, uint32_t material,
                        int32_t parentJoint, float stiffness);
     void addSphere(const Frame& centre, float radius, uint32_t material, int32_t joint);
     // Throws SurfaceError when the library has no surface of that name.
-    void addSurface(const std::string& name, const Frame& frame, float scale, uint32_t material, int32_t joint);
+    // Returns the surface's SurfaceMesh::endPoint, in its own space.
+    glm::vec3 addSurface(const std::string& name, const Frame& frame, float scale, uint32_t material, int32_t joint);
     void addPolygon(const Frame& start, std::vector<glm::vec3> outline, uint32_t material, int32_t joint);
 
     // The asset with its material table; the builder is left empty.
@@ -39,8 +43,10 @@ public:
 
 private:
     void markTwoSided(uint32_t material);
+    const SurfaceMesh& surfaceNamed(const std::string& name) const; // the look's, else the library's
 
     const SurfaceLibrary& surfaces_;
+    PlantLook look_;
     PlantAsset asset_;
     std::unordered_map<std::string, uint32_t> surfaceIndex_; // name -> asset_.surfaces index
     std::vector<Bounds> surfaceBounds_;                      // local bounds per asset_.surfaces entry

@@ -43,9 +43,25 @@ void bendTowardTropism(TurtleState& s) {
     rotate(s, axis / sine, glm::degrees(s.elasticity * sine));
 }
 
-// cpfg's colour map has 256 entries; parameters are arbitrary floats, and
-// negative, huge or NaN indices become 0.
-uint32_t materialIndex(float value) { return value >= 0.0f && value < 256.0f ? static_cast<uint32_t>(value) : 0; }
+// cpfg's colour map has 256 entries and its index wraps around it (interpret.c,
+// ';' and ','): 256 is 0 and -1 is 255. Parameters are arbitrary floats,
+// truncated as C converts them; applyModule() has already refused NaN.
+uint32_t materialIndex(float value) {
+    const double wrapped = std::fmod(std::trunc(static_cast<double>(value)), 256.0);
+    return static_cast<uint32_t>(wrapped < 0.0 ? wrapped + 256.0 : wrapped);
+}
+
+// A bare ! or # (direction -1 or +1): ABOP's factor, then cpfg's increment;
+// never below 0.
+float stepWidth(const TurtleStep& t, float direction) {
+    const float factor = direction < 0.0f ? t.settings.widthFactor : 1.0f / t.settings.widthFactor;
+    return std::max(0.0f, t.state.width * factor + direction * t.settings.widthIncrement);
+}
+
+// A bare ; or , (direction +1 or -1) steps the index by the colour increment.
+float stepMaterial(const TurtleStep& t, int direction) {
+    return static_cast<float>(static_cast<int64_t>(t.state.material) + direction * t.settings.colourIncrement);
+}
 
 // A segment drawn backwards (negative length) faces the other way.
 Frame segmentFrame(const TurtleState& s, float length) {
@@ -98,317 +114,346 @@ void changeNothing(const TurtleStep&) {}
 // Widths are diameters and angles degrees; bare modules of the @ families
 // change nothing, which their defaults (x = 1, x = 0, x = the field) say.
 // An entry left out does not compile: TurtleReads and StyleChange have no default.
-constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {{
-    {.action = TurtleAction::None,
-     .symbol = "@Oc",
-     .documentation = "nothing (cpfg's unfilled screen-space circle), as every module not listed here",
-     .reads = {kReadsNothing},
-     .changes = kChangesNoStyle,
-     .stacks = kKeepsStacks,
-     .apply = changeNothing},
-    // Its joint's parent is the joint the turtle is on (TurtleState::joint);
-    // a negative l draws backwards, turned 180 degrees about U.
-    {.action = TurtleAction::Draw,
-     .symbol = "F",
-     .parameters = "l = length, w = width",
-     .documentation = "draw a segment (a joint) of length l tapering from the width to w, then bend by tropism; "
-                      "in a polygon, f",
-     .reads = {kReadsWidth | kReadsMaterial | kReadsStiffness | kReadsElasticity | kReadsPolygonOpen, kReadsLength,
-               kReadsTropism},
-     .changes = {StyleField::Width, FieldChange::Set, FieldChange::Keep},
-     // cpfg and lpfg trace a polygon's outline with F too: Robbins' {+F-F-F} is a triangle.
-     .stacks = kKeepsStacks,
-     .inPolygon = TurtleAction::Move,
-     .apply = drawSegment},
-    {.action = TurtleAction::Move,
-     .symbol = "f",
-     .parameters = "l = length",
-     .documentation = "move by l without drawing; in a polygon, record where it ends as a vertex",
-     .reads = {kReadsPolygonOpen, kReadsLength},
-     .changes = kChangesNoStyle,
-     .stacks = kKeepsStacks,
-     .apply = move},
-    {.action = TurtleAction::Yaw,
-     .symbol = "+",
-     .parameters = "a = angle",
-     .documentation = "yaw by a degrees about U, towards L",
-     .reads = {kReadsNothing, kReadsAngle},
-     .changes = kChangesNoStyle,
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, turnAngle(t)); }},
-    {.action = TurtleAction::YawBack,
-     .symbol = "-",
-     .parameters = "a = angle",
-     .documentation = "yaw by a degrees about U, away from L",
-     .reads = {kReadsNothing, kReadsAngle},
-     .changes = kChangesNoStyle,
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, -turnAngle(t)); }},
-    {.action = TurtleAction::Pitch,
-     .symbol = "&",
-     .parameters = "a = angle",
-     .documentation = "pitch down by a degrees about L",
-     .reads = {kReadsNothing, kReadsAngle},
-     .changes = kChangesNoStyle,
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.left, turnAngle(t)); }},
-    {.action = TurtleAction::PitchBack,
-     .symbol = "^",
-     .parameters = "a = angle",
-     .documentation = "pitch up by a degrees about L",
-     .reads = {kReadsNothing, kReadsAngle},
-     .changes = kChangesNoStyle,
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.left, -turnAngle(t)); }},
-    {.action = TurtleAction::Roll,
-     .symbol = "\\",
-     .parameters = "a = angle",
-     .documentation = "roll left by a degrees about H",
-     .reads = {kReadsNothing, kReadsAngle},
-     .changes = kChangesNoStyle,
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.heading, turnAngle(t)); }},
-    {.action = TurtleAction::RollBack,
-     .symbol = "/",
-     .parameters = "a = angle",
-     .documentation = "roll right by a degrees about H",
-     .reads = {kReadsNothing, kReadsAngle},
-     .changes = kChangesNoStyle,
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.heading, -turnAngle(t)); }},
-    {.action = TurtleAction::TurnAround,
-     .symbol = "|",
-     .documentation = "turn 180 degrees about U",
-     .reads = {kReadsNothing},
-     .changes = kChangesNoStyle,
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, 180.0f); }},
-    {.action = TurtleAction::RollHorizontal,
-     .symbol = "$",
-     .alias = "@v", // cpfg's name (its $ ends a sub-L-system)
-     .documentation = "roll about H until L is horizontal (ABOP: L = V x H / |V x H|, V = +Y)",
-     .reads = {kReadsWorldUp},
-     .changes = kChangesNoStyle,
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { rollHorizontal(t.state); }},
-    // Only the branch stack: open polygons are not popped (ABOP Fig 5.6's
-    // [+A{.].C.} closes after the branch a polygon opened in it).
-    {.action = TurtleAction::Push,
-     .symbol = "[",
-     .documentation = "push the turtle state",
-     .reads = {kReadsNothing},
-     .changes = kChangesNoStyle,
-     .stacks = {1, 0},
-     .apply = [](const TurtleStep& t) { t.stack.branches.push_back(t.state); }},
-    {.action = TurtleAction::Pop,
-     .symbol = "]",
-     .documentation = "pop the turtle state (with nothing pushed, nothing happens)",
-     .reads = {kReadsNothing},
-     .changes = kChangesNoStyle,
-     .stacks = {-1, 0},
-     .apply = popBranch},
-    {.action = TurtleAction::Width,
-     .symbol = "!",
-     .parameters = "w = width * 0.7",
-     .documentation = "set the width to w (0.7 is TurtleSettings::widthFactor)",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Width, FieldChange::Set, FieldChange::Derive},
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { t.state.width = t.parameterOr(0, t.state.width * t.settings.widthFactor); }},
-    {.action = TurtleAction::Widen,
-     .symbol = "#",
-     .parameters = "w = width / 0.7",
-     .documentation = "set the width to w (cpfg's width increase: a bare # undoes a bare !)",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Width, FieldChange::Set, FieldChange::Derive},
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { t.state.width = t.parameterOr(0, t.state.width / t.settings.widthFactor); }},
-    {.action = TurtleAction::Material,
-     .symbol = ";",
-     .alias = "'",
-     .parameters = "i = material + 1",
-     .documentation = "set the material index to i; outside 0..255 (cpfg's colour map) it becomes 0",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Material, FieldChange::Set, FieldChange::Derive},
-     .stacks = kKeepsStacks,
-     .apply =
-         [](const TurtleStep& t) {
-             t.state.material = materialIndex(t.parameterOr(0, static_cast<float>(t.state.material) + 1.0f));
-         }},
-    {.action = TurtleAction::MaterialDown,
-     .symbol = ",",
-     .parameters = "i = material - 1",
-     .documentation = "set the material index to i (cpfg's colour decrement); outside 0..255 it becomes 0",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Material, FieldChange::Set, FieldChange::Derive},
-     .stacks = kKeepsStacks,
-     .apply =
-         [](const TurtleStep& t) {
-             t.state.material = materialIndex(t.parameterOr(0, static_cast<float>(t.state.material) - 1.0f));
-         }},
-    // A string-level operation, not a state transition: interpretModules()
-    // skips to the ] (and the rewriter already removes % produced by rules).
-    {.action = TurtleAction::Cut,
-     .symbol = "%",
-     .documentation = "cut the rest of the branch, up to its ]",
-     .reads = {kReadsNothing},
-     .changes = kChangesNoStyle,
-     .stacks = {0, 0, true},
-     .apply = changeNothing},
-    {.action = TurtleAction::ScaleLength,
-     .symbol = "@Lm",
-     .parameters = "x = 1",
-     .documentation = "multiply the length of a bare F or f by x",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Length, FieldChange::Derive, FieldChange::Keep},
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { t.state.length *= t.parameterOr(0, 1.0f); }},
-    {.action = TurtleAction::AddLength,
-     .symbol = "@La",
-     .parameters = "x = 0",
-     .documentation = "add x to the length of a bare F or f",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Length, FieldChange::Derive, FieldChange::Keep},
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { t.state.length += t.parameterOr(0, 0.0f); }},
-    {.action = TurtleAction::SetLength,
-     .symbol = "@Ls",
-     .parameters = "x = length",
-     .documentation = "set the length of a bare F or f to x",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Length, FieldChange::Set, FieldChange::Keep},
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { t.state.length = t.parameterOr(0, t.state.length); }},
-    {.action = TurtleAction::ScaleAngle,
-     .symbol = "@Am",
-     .parameters = "x = 1",
-     .documentation = "multiply the angle of a bare turn by x",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Angle, FieldChange::Derive, FieldChange::Keep},
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { t.state.angle *= t.parameterOr(0, 1.0f); }},
-    {.action = TurtleAction::AddAngle,
-     .symbol = "@Aa",
-     .parameters = "x = 0",
-     .documentation = "add x to the angle of a bare turn",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Angle, FieldChange::Derive, FieldChange::Keep},
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { t.state.angle += t.parameterOr(0, 0.0f); }},
-    {.action = TurtleAction::SetAngle,
-     .symbol = "@As",
-     .parameters = "x = angle",
-     .documentation = "set the angle of a bare turn to x",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Angle, FieldChange::Set, FieldChange::Keep},
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { t.state.angle = t.parameterOr(0, t.state.angle); }},
-    {.action = TurtleAction::ScaleWidth,
-     .symbol = "@Wm",
-     .parameters = "x = 1",
-     .documentation = "multiply the width by x",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Width, FieldChange::Derive, FieldChange::Keep},
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { t.state.width *= t.parameterOr(0, 1.0f); }},
-    {.action = TurtleAction::AddWidth,
-     .symbol = "@Wa",
-     .parameters = "x = 0",
-     .documentation = "add x to the width",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Width, FieldChange::Derive, FieldChange::Keep},
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { t.state.width += t.parameterOr(0, 0.0f); }},
-    {.action = TurtleAction::AddMaterial,
-     .symbol = "@Ca",
-     .parameters = "x = 0",
-     .documentation = "add x to the material index, kept in 0..255 as by ;",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Material, FieldChange::Derive, FieldChange::Keep},
-     .stacks = kKeepsStacks,
-     .apply =
-         [](const TurtleStep& t) {
-             t.state.material = materialIndex(static_cast<float>(t.state.material) + t.parameterOr(0, 0.0f));
-         }},
-    // Crankshaw's F(l,k) arrives as @K(k)F(l) through the dialect's interpretation rules.
-    {.action = TurtleAction::Stiffness,
-     .symbol = "@K",
-     .parameters = "k = stiffness",
-     .documentation = "set the spring stiffness of the following segments' joints (0: from beam theory)",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Stiffness, FieldChange::Set, FieldChange::Keep},
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { t.state.stiffness = t.parameterOr(0, t.state.stiffness); }},
-    // |T| scales the bend, e < 0 bends away, e = 0 (the default) does not bend.
-    {.action = TurtleAction::Elasticity,
-     .symbol = "@Ts",
-     .parameters = "e = elasticity",
-     .documentation = "set the elasticity: after each segment H turns toward T by e*|H x T| radians (ABOP section 2.4)",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Elasticity, FieldChange::Set, FieldChange::Keep},
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { t.state.elasticity = t.parameterOr(0, t.state.elasticity); }},
-    {.action = TurtleAction::TropismVector,
-     .symbol = "@Tv",
-     .parameters = "x, y, z",
-     .documentation = "set the tropism vector T, in plant space (with fewer parameters, nothing happens)",
-     .reads = {kReadsNothing},
-     .changes = {StyleField::Tropism, FieldChange::SetInPlant, FieldChange::Keep},
-     .stacks = kKeepsStacks,
-     .apply =
-         [](const TurtleStep& t) {
-             if (t.parameters.size() >= 3) t.state.tropism = {t.parameters[0], t.parameters[1], t.parameters[2]};
-         }},
-    {.action = TurtleAction::Sphere,
-     .symbol = "@O",
-     .parameters = "d = width",
-     .documentation = "draw a sphere of diameter d",
-     .reads = {kReadsMaterial, kReadsWidth},
-     .changes = kChangesNoStyle,
-     .stacks = kKeepsStacks,
-     .apply =
-         [](const TurtleStep& t) {
-             t.out.addSphere(frameOf(t.state), 0.5f * t.parameterOr(0, t.state.width), t.state.material, t.state.joint);
-         }},
-    // A surface grows from its origin along H, spreads along L and faces U.
-    {.action = TurtleAction::Surface,
-     .symbol = "~",
-     .symbolIsPrefix = true,
-     .parameters = "s = 1",
-     .documentation = "draw the surface `name` scaled by s: leaf, petal, or a mesh of data/meshes",
-     .reads = {kReadsMaterial},
-     .changes = kChangesNoStyle,
-     .stacks = kKeepsStacks,
-     .apply =
-         [](const TurtleStep& t) {
-             t.out.addSurface(t.command.surface, frameOf(t.state), t.parameterOr(0, 1.0f), t.state.material,
-                              t.state.joint);
-         }},
-    {.action = TurtleAction::PolygonBegin,
-     .symbol = "{",
-     .documentation = "open a polygon with the frame, material and joint here",
-     .reads = {kReadsMaterial},
-     .changes = kChangesNoStyle,
-     .stacks = {0, 1},
-     .apply =
-         [](const TurtleStep& t) {
-             t.stack.polygons.push_back({frameOf(t.state), t.state.material, t.state.joint, {}});
-         }},
-    {.action = TurtleAction::PolygonVertex,
-     .symbol = ".",
-     .documentation = "record the position as a vertex of the innermost open polygon",
-     .reads = {kReadsPolygonOpen},
-     .changes = kChangesNoStyle,
-     .stacks = kKeepsStacks,
-     .apply = [](const TurtleStep& t) { addVertex(t.stack, t.state.position); }},
-    {.action = TurtleAction::PolygonEnd,
-     .symbol = "}",
-     .documentation = "close the innermost polygon, drawn when it has 3 or more distinct vertices",
-     .reads = {kReadsNothing},
-     .changes = kChangesNoStyle,
-     .stacks = {0, -1},
-     .apply = closePolygon},
-}};
+constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {
+    {
+        {.action = TurtleAction::None,
+         .symbol = "@Oc",
+         .documentation = "nothing (cpfg's unfilled screen-space circle), as every module not listed here",
+         .reads = {kReadsNothing},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply = changeNothing},
+        // Its joint's parent is the joint the turtle is on (TurtleState::joint);
+        // a negative l draws backwards, turned 180 degrees about U.
+        {.action = TurtleAction::Draw,
+         .symbol = "F",
+         .parameters = "l = length, w = width",
+         .documentation = "draw a segment (a joint) of length l tapering from the width to w, then bend by tropism; "
+                          "in a polygon, f",
+         .reads = {kReadsWidth | kReadsMaterial | kReadsStiffness | kReadsElasticity | kReadsPolygonOpen, kReadsLength,
+                   kReadsTropism},
+         .changes = {StyleField::Width, FieldChange::Set, FieldChange::Keep},
+         // cpfg and lpfg trace a polygon's outline with F too: Robbins' {+F-F-F} is a triangle.
+         .stacks = kKeepsStacks,
+         .inPolygon = TurtleAction::Move,
+         .apply = drawSegment},
+        {.action = TurtleAction::Move,
+         .symbol = "f",
+         .parameters = "l = length",
+         .documentation = "move by l without drawing; in a polygon, record where it ends as a vertex",
+         .reads = {kReadsPolygonOpen, kReadsLength},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply = move},
+        // cpfg's G and g (interpret.c): as F and f, but inside a polygon they
+        // record no vertex, so ABOP Fig 5.5's leaf edge G G G spans one side.
+        {.action = TurtleAction::DrawWithoutVertex,
+         .symbol = "G",
+         .cpfgOnly = true,
+         .parameters = "l = length, w = width",
+         .documentation = "(cpfg files) as F, but in a polygon it moves without recording a vertex",
+         .reads = {kReadsWidth | kReadsMaterial | kReadsStiffness | kReadsElasticity | kReadsPolygonOpen, kReadsLength,
+                   kReadsTropism},
+         .changes = {StyleField::Width, FieldChange::Set, FieldChange::Keep},
+         .stacks = kKeepsStacks,
+         .inPolygon = TurtleAction::MoveWithoutVertex,
+         .apply = drawSegment},
+        {.action = TurtleAction::MoveWithoutVertex,
+         .symbol = "g",
+         .cpfgOnly = true,
+         .parameters = "l = length",
+         .documentation = "(cpfg files) move by l without drawing or recording a vertex",
+         // It acts for G inside a polygon, where G draws nothing: what it does
+         // then depends on the polygon being open (an InstanceGraph key reads it).
+         .reads = {kReadsPolygonOpen, kReadsLength},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.position += t.state.heading * t.parameterOr(0, t.state.length); }},
+        {.action = TurtleAction::Yaw,
+         .symbol = "+",
+         .parameters = "a = angle",
+         .documentation = "yaw by a degrees about U, towards L",
+         .reads = {kReadsNothing, kReadsAngle},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, turnAngle(t)); }},
+        {.action = TurtleAction::YawBack,
+         .symbol = "-",
+         .parameters = "a = angle",
+         .documentation = "yaw by a degrees about U, away from L",
+         .reads = {kReadsNothing, kReadsAngle},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, -turnAngle(t)); }},
+        {.action = TurtleAction::Pitch,
+         .symbol = "&",
+         .parameters = "a = angle",
+         .documentation = "pitch down by a degrees about L",
+         .reads = {kReadsNothing, kReadsAngle},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { rotate(t.state, t.state.left, turnAngle(t)); }},
+        {.action = TurtleAction::PitchBack,
+         .symbol = "^",
+         .parameters = "a = angle",
+         .documentation = "pitch up by a degrees about L",
+         .reads = {kReadsNothing, kReadsAngle},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { rotate(t.state, t.state.left, -turnAngle(t)); }},
+        {.action = TurtleAction::Roll,
+         .symbol = "\\",
+         .parameters = "a = angle",
+         .documentation = "roll left by a degrees about H",
+         .reads = {kReadsNothing, kReadsAngle},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { rotate(t.state, t.state.heading, turnAngle(t)); }},
+        {.action = TurtleAction::RollBack,
+         .symbol = "/",
+         .parameters = "a = angle",
+         .documentation = "roll right by a degrees about H",
+         .reads = {kReadsNothing, kReadsAngle},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { rotate(t.state, t.state.heading, -turnAngle(t)); }},
+        {.action = TurtleAction::TurnAround,
+         .symbol = "|",
+         .documentation = "turn 180 degrees about U",
+         .reads = {kReadsNothing},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { rotate(t.state, t.state.up, 180.0f); }},
+        {.action = TurtleAction::RollHorizontal,
+         .symbol = "$",
+         .alias = "@v", // cpfg's name (its $ ends a sub-L-system)
+         .documentation = "roll about H until L is horizontal (ABOP: L = V x H / |V x H|, V = +Y)",
+         .reads = {kReadsWorldUp},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { rollHorizontal(t.state); }},
+        // Only the branch stack: open polygons are not popped (ABOP Fig 5.6's
+        // [+A{.].C.} closes after the branch a polygon opened in it).
+        {.action = TurtleAction::Push,
+         .symbol = "[",
+         .documentation = "push the turtle state",
+         .reads = {kReadsNothing},
+         .changes = kChangesNoStyle,
+         .stacks = {1, 0},
+         .apply = [](const TurtleStep& t) { t.stack.branches.push_back(t.state); }},
+        {.action = TurtleAction::Pop,
+         .symbol = "]",
+         .documentation = "pop the turtle state (with nothing pushed, nothing happens)",
+         .reads = {kReadsNothing},
+         .changes = kChangesNoStyle,
+         .stacks = {-1, 0},
+         .apply = popBranch},
+        // A vlab object's view file sets cpfg's increments (TurtleSettings): its
+        // bare ! subtracts the line width increment instead.
+        {.action = TurtleAction::Width,
+         .symbol = "!",
+         .parameters = "w = width * 0.7",
+         .documentation = "set the width to w (0.7 is TurtleSettings::widthFactor; a vlab object's bare ! subtracts "
+                          "its line width increment)",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Width, FieldChange::Set, FieldChange::Derive},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.width = t.parameterOr(0, stepWidth(t, -1.0f)); }},
+        {.action = TurtleAction::Widen,
+         .symbol = "#",
+         .parameters = "w = width / 0.7",
+         .documentation = "set the width to w (cpfg's width increase: a bare # undoes a bare !)",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Width, FieldChange::Set, FieldChange::Derive},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.width = t.parameterOr(0, stepWidth(t, 1.0f)); }},
+        {.action = TurtleAction::Material,
+         .symbol = ";",
+         .alias = "'",
+         .parameters = "i = material + 1",
+         .documentation = "set the material index to i, modulo 256 (cpfg's colour map; a vlab object's bare ; adds "
+                          "its colour increment)",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Material, FieldChange::Set, FieldChange::Derive},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.material = materialIndex(t.parameterOr(0, stepMaterial(t, 1))); }},
+        {.action = TurtleAction::MaterialDown,
+         .symbol = ",",
+         .parameters = "i = material - 1",
+         .documentation = "set the material index to i, modulo 256 (cpfg's colour decrement)",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Material, FieldChange::Set, FieldChange::Derive},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.material = materialIndex(t.parameterOr(0, stepMaterial(t, -1))); }},
+        // A string-level operation, not a state transition: interpretModules()
+        // skips to the ] (and the rewriter already removes % produced by rules).
+        {.action = TurtleAction::Cut,
+         .symbol = "%",
+         .documentation = "cut the rest of the branch, up to its ]",
+         .reads = {kReadsNothing},
+         .changes = kChangesNoStyle,
+         .stacks = {0, 0, true},
+         .apply = changeNothing},
+        {.action = TurtleAction::ScaleLength,
+         .symbol = "@Lm",
+         .parameters = "x = 1",
+         .documentation = "multiply the length of a bare F or f by x",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Length, FieldChange::Derive, FieldChange::Keep},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.length *= t.parameterOr(0, 1.0f); }},
+        {.action = TurtleAction::AddLength,
+         .symbol = "@La",
+         .parameters = "x = 0",
+         .documentation = "add x to the length of a bare F or f",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Length, FieldChange::Derive, FieldChange::Keep},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.length += t.parameterOr(0, 0.0f); }},
+        {.action = TurtleAction::SetLength,
+         .symbol = "@Ls",
+         .parameters = "x = length",
+         .documentation = "set the length of a bare F or f to x",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Length, FieldChange::Set, FieldChange::Keep},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.length = t.parameterOr(0, t.state.length); }},
+        {.action = TurtleAction::ScaleAngle,
+         .symbol = "@Am",
+         .parameters = "x = 1",
+         .documentation = "multiply the angle of a bare turn by x",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Angle, FieldChange::Derive, FieldChange::Keep},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.angle *= t.parameterOr(0, 1.0f); }},
+        {.action = TurtleAction::AddAngle,
+         .symbol = "@Aa",
+         .parameters = "x = 0",
+         .documentation = "add x to the angle of a bare turn",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Angle, FieldChange::Derive, FieldChange::Keep},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.angle += t.parameterOr(0, 0.0f); }},
+        {.action = TurtleAction::SetAngle,
+         .symbol = "@As",
+         .parameters = "x = angle",
+         .documentation = "set the angle of a bare turn to x",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Angle, FieldChange::Set, FieldChange::Keep},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.angle = t.parameterOr(0, t.state.angle); }},
+        {.action = TurtleAction::ScaleWidth,
+         .symbol = "@Wm",
+         .parameters = "x = 1",
+         .documentation = "multiply the width by x",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Width, FieldChange::Derive, FieldChange::Keep},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.width *= t.parameterOr(0, 1.0f); }},
+        {.action = TurtleAction::AddWidth,
+         .symbol = "@Wa",
+         .parameters = "x = 0",
+         .documentation = "add x to the width",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Width, FieldChange::Derive, FieldChange::Keep},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.width += t.parameterOr(0, 0.0f); }},
+        {.action = TurtleAction::AddMaterial,
+         .symbol = "@Ca",
+         .parameters = "x = 0",
+         .documentation = "add x to the material index, modulo 256 as by ;",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Material, FieldChange::Derive, FieldChange::Keep},
+         .stacks = kKeepsStacks,
+         .apply =
+             [](const TurtleStep& t) {
+                 t.state.material = materialIndex(static_cast<float>(t.state.material) + t.parameterOr(0, 0.0f));
+             }},
+        // Crankshaw's F(l,k) arrives as @K(k)F(l) through the dialect's interpretation rules.
+        {.action = TurtleAction::Stiffness,
+         .symbol = "@K",
+         .parameters = "k = stiffness",
+         .documentation = "set the spring stiffness of the following segments' joints (0: from beam theory)",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Stiffness, FieldChange::Set, FieldChange::Keep},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.stiffness = t.parameterOr(0, t.state.stiffness); }},
+        // |T| scales the bend, e < 0 bends away, e = 0 (the default) does not bend.
+        {.action = TurtleAction::Elasticity,
+         .symbol = "@Ts",
+         .parameters = "e = elasticity",
+         .documentation =
+             "set the elasticity: after each segment H turns toward T by e*|H x T| radians (ABOP section 2.4)",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Elasticity, FieldChange::Set, FieldChange::Keep},
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { t.state.elasticity = t.parameterOr(0, t.state.elasticity); }},
+        {.action = TurtleAction::TropismVector,
+         .symbol = "@Tv",
+         .parameters = "x, y, z",
+         .documentation = "set the tropism vector T, in plant space (with fewer parameters, nothing happens)",
+         .reads = {kReadsNothing},
+         .changes = {StyleField::Tropism, FieldChange::SetInPlant, FieldChange::Keep},
+         .stacks = kKeepsStacks,
+         .apply =
+             [](const TurtleStep& t) {
+                 if (t.parameters.size() >= 3) t.state.tropism = {t.parameters[0], t.parameters[1], t.parameters[2]};
+             }},
+        {.action = TurtleAction::Sphere,
+         .symbol = "@O",
+         .parameters = "d = width",
+         .documentation = "draw a sphere of diameter d",
+         .reads = {kReadsMaterial, kReadsWidth},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply =
+             [](const TurtleStep& t) {
+                 t.out.addSphere(frameOf(t.state), 0.5f * t.parameterOr(0, t.state.width), t.state.material,
+                                 t.state.joint);
+             }},
+        // A surface grows from its origin along H, spreads along L and faces U.
+        {.action = TurtleAction::Surface,
+         .symbol = "~",
+         .symbolIsPrefix = true,
+         .parameters = "s = 1",
+         .documentation = "draw the surface `name` scaled by s: leaf, petal, a mesh of data/meshes or a vlab object's "
+                          ".s file (which moves the turtle to its end point)",
+         .reads = {kReadsMaterial},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply =
+             [](const TurtleStep& t) {
+                 const float scale = t.parameterOr(0, 1.0f);
+                 // cpfg leaves the turtle at the surface's end point (patches.c).
+                 const glm::vec3 end =
+                     t.out.addSurface(t.command.surface, frameOf(t.state), scale, t.state.material, t.state.joint);
+                 t.state.position += (-end.x * t.state.left + end.y * t.state.heading + end.z * t.state.up) * scale;
+             }},
+        {.action = TurtleAction::PolygonBegin,
+         .symbol = "{",
+         .documentation = "open a polygon with the frame, material and joint here",
+         .reads = {kReadsMaterial},
+         .changes = kChangesNoStyle,
+         .stacks = {0, 1},
+         .apply =
+             [](const TurtleStep& t) {
+                 t.stack.polygons.push_back({frameOf(t.state), t.state.material, t.state.joint, {}});
+             }},
+        {.action = TurtleAction::PolygonVertex,
+         .symbol = ".",
+         .documentation = "record the position as a vertex of the innermost open polygon",
+         .reads = {kReadsPolygonOpen},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { addVertex(t.stack, t.state.position); }},
+        {.action = TurtleAction::PolygonEnd,
+         .symbol = "}",
+         .documentation = "close the innermost polygon, drawn when it has 3 or more distinct vertices",
+         .reads = {kReadsNothing},
+         .changes = kChangesNoStyle,
+         .stacks = {0, -1},
+         .apply = closePolygon},
+    }};
 
 constexpr std::array<std::string_view, 2> symbolsOf(const TurtleCommandDefinition& definition) {
     return {definition.symbol, definition.alias};
@@ -459,7 +504,11 @@ size_t parameterCount(const TurtleCommandDefinition& definition) {
     return list.empty() ? 0 : static_cast<size_t>(std::count(list.begin(), list.end(), ',')) + 1;
 }
 
-TurtleCommand turtleCommand(const std::string& name) {
+bool drawsSegment(TurtleAction action, size_t openPolygons) {
+    return openPolygons == 0 && (action == TurtleAction::Draw || action == TurtleAction::DrawWithoutVertex);
+}
+
+TurtleCommand turtleCommand(const std::string& name, bool cpfgModules) {
     static const std::unordered_map<std::string_view, TurtleAction> exact = [] {
         std::unordered_map<std::string_view, TurtleAction> actions;
         for (const TurtleCommandDefinition& definition : kDefinitions)
@@ -474,13 +523,14 @@ TurtleCommand turtleCommand(const std::string& name) {
             return {definition.action, name.substr(prefix.size())};
     }
     const auto found = exact.find(name);
-    return {found == exact.end() ? TurtleAction::None : found->second, {}};
+    if (found == exact.end() || (turtleCommandDefinition(found->second).cpfgOnly && !cpfgModules)) return {};
+    return {found->second, {}};
 }
 
-std::vector<TurtleCommand> turtleCommands(const SymbolTable& symbols) {
+std::vector<TurtleCommand> turtleCommands(const SymbolTable& symbols, bool cpfgModules) {
     std::vector<TurtleCommand> commands;
     commands.reserve(symbols.size());
-    for (const std::string& name : symbols.names) commands.push_back(turtleCommand(name));
+    for (const std::string& name : symbols.names) commands.push_back(turtleCommand(name, cpfgModules));
     return commands;
 }
 

@@ -30,6 +30,8 @@ enum class TurtleAction : uint8_t {
     None,
     Draw,
     Move,
+    DrawWithoutVertex,
+    MoveWithoutVertex,
     Yaw,
     YawBack,
     Pitch,
@@ -71,9 +73,14 @@ struct TurtleCommand {
     std::string surface; // the name after ~ for TurtleAction::Surface
 };
 
-TurtleCommand turtleCommand(const std::string& moduleName);
+// `cpfgModules`: the commands only cpfg's files have (G and g, which native
+// grammars use as ordinary modules) are commands too.
+TurtleCommand turtleCommand(const std::string& moduleName, bool cpfgModules = false);
 // turtleCommand() of every symbol, indexed by SymbolId.
-std::vector<TurtleCommand> turtleCommands(const SymbolTable& symbols);
+std::vector<TurtleCommand> turtleCommands(const SymbolTable& symbols, bool cpfgModules = false);
+
+// Whether the command draws a segment (a joint) with this many polygons open.
+bool drawsSegment(TurtleAction action, size_t openPolygons);
 
 // The style fields of TurtleState: what it holds besides the frame and the joint.
 enum class StyleField : uint8_t { Width, Length, Angle, Material, Stiffness, Elasticity, Tropism };
@@ -162,6 +169,7 @@ struct TurtleCommandDefinition {
     std::string_view symbol;        // its module name
     std::string_view alias;         // another, if any
     bool symbolIsPrefix = false;    // ~leaf is the command ~ of the surface leaf
+    bool cpfgOnly = false;          // a command in cpfg's files only (turtleCommand's cpfgModules)
     std::string_view parameters;    // "name" or "name = what it is when left out", joined by ", "
     std::string_view documentation; // one line
     TurtleReads reads;

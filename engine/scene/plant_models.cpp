@@ -4,13 +4,13 @@
 
 #include "engine/scene/joint_params.h"
 
-#include "lsystem/dialects/dialect.h"
 #include "lsystem/error.h"
 #include "lsystem/parser.h"
 #include "lsystem/primitive_mesh.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"
+#include "lsystem/vlab/object.h"
 
 #include <glm/geometric.hpp>
 
@@ -325,17 +325,13 @@ float scaleToHeight(std::array<ClassMeshes, kMeshLodCount>& lods, float height) 
 }
 
 lsys::Grammar parseSpecies(const Species& species) {
-    const std::string path = species.lsystem.string();
-    std::string problem;
-    const std::string source = lsys::readTextFile(path, problem);
-    if (!problem.empty()) throw SceneError("species '" + species.name + "': " + path + " " + problem);
     lsys::ParseOptions options;
-    options.file = path;
     options.defines.insert(species.defines.begin(), species.defines.end());
-    lsys::ParseResult result = lsys::parseDialect(lsys::dialectOfFile(std::nullopt, source, path), source, options);
-    if (!result.ok())
-        throw SceneError("species '" + species.name + "': " + lsys::formatDiagnostics(result.diagnostics, source));
-    return std::move(result.grammar);
+    lsys::vlab::PlantFile plant = lsys::vlab::loadPlant(species.lsystem, std::nullopt, options);
+    if (!plant.parsed.ok())
+        throw SceneError("species '" + species.name +
+                         "': " + lsys::formatDiagnostics(plant.parsed.diagnostics, plant.source));
+    return std::move(plant.parsed.grammar);
 }
 
 lsys::PlantAsset derivePlant(const Species& species, const lsys::Grammar& grammar, const lsys::SurfaceLibrary& surfaces,

@@ -13,13 +13,17 @@ namespace {
 
 const Range kColour = atLeast(0.0); // linear RGB; above 1 is allowed for bright light
 
-std::filesystem::path existingFile(const JsonNode& node, const std::filesystem::path& sceneFolder) {
+// A file (or, where `folders` allows, a folder: a vlab object) that exists,
+// relative to the scene file's folder.
+std::filesystem::path existingFile(const JsonNode& node, const std::filesystem::path& sceneFolder,
+                                   bool folders = false) {
     const std::string name = readString(node);
     if (name.empty()) failAt(node, "must be a file name");
     const std::filesystem::path path = (sceneFolder / name).lexically_normal();
     std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error))
-        failAt(node, "names a file that does not exist: " + path.string() + " (paths are relative to the scene file)");
+    if (!std::filesystem::is_regular_file(path, error) && !(folders && std::filesystem::is_directory(path, error)))
+        failAt(node, std::string("names a ") + (folders ? "file or folder" : "file") +
+                         " that does not exist: " + path.string() + " (paths are relative to the scene file)");
     return path;
 }
 
@@ -193,7 +197,8 @@ Species readSpecies(const JsonNode& node, const std::filesystem::path& sceneFold
     Species species;
     species.name = readString(requireMember(node, "name", "a name for the species"));
     if (species.name.empty()) failAt(*member(node, "name"), "must not be empty");
-    species.lsystem = existingFile(requireMember(node, "lsystem", "the L-system file"), sceneFolder);
+    species.lsystem =
+        existingFile(requireMember(node, "lsystem", "the L-system file or vlab object folder"), sceneFolder, true);
     if (auto defines = member(node, "defines")) species.defines = readDefines(*defines);
     readField(node, "steps", species.steps, between(0, 1000));
     readField(node, "variants", species.variants, between(1, 1024));

@@ -125,6 +125,7 @@ ParseResult parseCpfg(std::string_view source, const ParseOptions& options) {
     ParseOptions native = options;
     native.defines.clear(); // already expanded
     result = parseTranslated(Dialect::Cpfg, preprocessed.text, native);
+    result.grammar.style.cpfgModules = true; // cpfg's turtle draws G and moves by g
     mapToFiles(preprocessed, result.diagnostics);
     mapToFiles(preprocessed, result.warnings);
     std::vector<Diagnostic> comments = cpfgCommentWarnings(source, options.file);

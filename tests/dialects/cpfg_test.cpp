@@ -4,8 +4,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 
 #include "dialect_test_support.h"
+#include "lsystem/vlab/function_file.h"
 
 namespace lsys::test {
 namespace {
@@ -133,6 +135,60 @@ TEST(Cpfg, WarningsForCommentsThatCutAProductionAndUnbalancedBrackets) {
               std::string::npos);
     EXPECT_EQ(result.warnings[1].line, 3);
     EXPECT_NE(result.warnings[1].message.find("brackets do not balance (1 '[' and 0 ']')"), std::string::npos);
+}
+
+} // namespace
+} // namespace lsys::test
+
+namespace lsys::test {
+namespace {
+
+// cpfg's func(id, x) with the functions a view file names ("function:
+// length.func 100", "function: pos.func"): in a production's block and
+// successor, its id a #define, computed as cpfg computes it. The expected
+// string is cpfg's own (cpfg 6.6, -str), its numbers printed with %g.
+TEST(Cpfg, FuncReadsTheObjectsFunctionFiles) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "plantfield_cpfg_func";
+    std::filesystem::create_directories(folder);
+    // vlab's TexturedSurfaces/leaf-length.func and LeafPosition/int-pos.func.
+    std::ofstream(folder / "length.func") << "range: 0.000000 1.000000\npoints: 4\n0.000000 0.000000\n"
+                                             "0.298370 0.004547\n0.304622 0.998629\n1.000000 1.003176\n";
+    std::ofstream(folder / "pos.func") << "fver 1 1\nname: int-pos\nsamples: 10\nflip: off\npoints: 4\n"
+                                          "0.000000 1.013734 1\n0.230453 0.561893 1\n0.778895 0.452828 1\n"
+                                          "1.000000 0.209768 1\n";
+    auto table = std::make_shared<std::vector<vlab::VlabFunction>>();
+    for (const auto& [file, samples] : {std::pair{"length.func", 100}, std::pair{"pos.func", -1}})
+        table->push_back(vlab::readFunctionFile(folder / file, samples).function);
+    std::filesystem::remove_all(folder);
+    const std::string source = "#define POSITION 2\n"
+                               "Lsystem: 1\n"
+                               "derivation length: 4\n"
+                               "Axiom: A(0)\n"
+                               "A(x) : { y = func(1, x) * 10; } 1 --> F(y) B(func(POSITION, x), func(1, 1 - x)) "
+                               "A(x + 0.3)\n"
+                               "endlsystem\n";
+    ParseOptions options;
+    options.file = "plant.l";
+    options.functions = table;
+    const ParseResult result = parseDialect(Dialect::Cpfg, source, options);
+    ASSERT_TRUE(result.ok()) << formatDiagnostics(result.diagnostics, source);
+    const char* const cpfg = "F(0.000161505)B(1.01241,1.00317)F(3.95827)B(0.669997,0.924674)F(8.52323)"
+                             "B(0.478295,0.593562)F(9.95227)B(0.296165,0.0434781)A(1.2)";
+    const std::optional<std::string> difference =
+        firstDifference(deriveSteps(result.grammar, 4), result.grammar.symbols, cpfg, 1e-5);
+    EXPECT_FALSE(difference) << *difference;
+
+    // Without the table func is an error at its place; so is an id past its end.
+    const ParseResult none = parseDialect(Dialect::Cpfg, source, {"plant.l"});
+    ASSERT_FALSE(none.ok());
+    EXPECT_EQ(none.diagnostics[0].line, 5);
+    EXPECT_EQ(none.diagnostics[0].column, 14);
+    options.functions = std::make_shared<std::vector<vlab::VlabFunction>>(1);
+    const ParseResult tooFew = parseDialect(Dialect::Cpfg, source, options);
+    ASSERT_FALSE(tooFew.ok());
+    EXPECT_EQ(tooFew.diagnostics[0].line, 5);
+    EXPECT_NE(tooFew.diagnostics[0].message.find("names 1 function"), std::string::npos)
+        << tooFew.diagnostics[0].message;
 }
 
 } // namespace

@@ -11,6 +11,7 @@
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/module_string.h"
 #include "lsystem/rewriter.h"
+#include "lsystem/vlab/object.h"
 
 namespace lsys::test {
 
@@ -18,11 +19,9 @@ inline std::string dataPath(const std::string& relative) { return std::string(PL
 
 // Loads a file of any dialect (named by its header line); fails the test on any diagnostic.
 inline Grammar loadOk(const std::string& relative) {
-    ParseResult result = loadDialectFile(dataPath(relative), std::nullopt);
-    std::string problem;
-    std::string source = readTextFile(dataPath(relative), problem);
-    EXPECT_TRUE(result.ok()) << relative << ":\n" << formatDiagnostics(result.diagnostics, source);
-    return std::move(result.grammar);
+    vlab::PlantFile plant = vlab::loadPlant(dataPath(relative));
+    EXPECT_TRUE(plant.parsed.ok()) << relative << ":\n" << formatDiagnostics(plant.parsed.diagnostics, plant.source);
+    return std::move(plant.parsed.grammar);
 }
 
 inline Grammar parseOk(Dialect dialect, const std::string& source) {

@@ -11,16 +11,16 @@
 
 #include "../lsystem/test_support.h"
 #include "lsystem/bgrammar.h"
+#include "lsystem/vlab/object.h"
 
 namespace lsys::test {
 
-// Every file of data/plants and data/plants/dialects, relative to data/.
+// Every plant of data/plants and its folders (files and vlab objects), relative to data/.
 inline std::vector<std::string> allPlantFiles() {
     const std::filesystem::path root = dataPath("");
     std::vector<std::string> files;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(root / "plants"))
-        if (entry.is_regular_file()) files.push_back(entry.path().lexically_relative(root).string());
-    std::sort(files.begin(), files.end());
+    for (const std::filesystem::path& plant : vlab::findPlants(root / "plants"))
+        files.push_back(plant.lexically_relative(root).string());
     return files;
 }
 

@@ -79,7 +79,9 @@ expect_run instance-budget 2 'b-grammar budget exceeded: more than 3 nodes' -- "
 expect_run instance-word-budget 2 'module budget exceeded' -- "$LSYS" instance "$DATA/plants/context_benchmark.lsys" --max-modules 1000
 expect_run instance-bad 2 'bad.lsys:2:12' -- "$LSYS" instance "$WORK/bad.lsys"
 expect_run instance-missing 2 'cannot read file' -- "$LSYS" instance "$WORK/does-not-exist.lsys"
-expect_run check-folder 2 'is a folder, not a plant file' -- "$LSYS" check "$WORK"
+# A folder is read as a vlab object: without a .l it is an error naming the folder.
+mkdir "$WORK/empty"
+expect_run check-folder 2 'empty: error: the vlab object holds no cpfg L-system' -- "$LSYS" check "$WORK/empty"
 expect_run check-endless-device 2 'is larger than 64 MiB' -- "$LSYS" check /dev/zero
 expect_run instance-bad-randomness 2 'randomness' -- "$LSYS" instance "$DATA/plants/stochastic.lsys" --randomness -1
 expect_run instance-help 0 'instances = references to objects' -- "$LSYS" instance --help
@@ -122,11 +124,21 @@ expect_run derive-help 0 '--max-modules' -- "$LSYS" derive --help
 expect_run help-lists-turtle 0 '--help-turtle' -- "$LSYS" --help
 expect_run help-turtle 0 '^F  *l = length, w = width  *draw a segment' -- "$LSYS" --help-turtle
 # A row for every symbol of the turtle's commands (lsystem/turtle_commands.cpp), first on its line.
-for symbol in F f + - '&' '^' '\' / '|' '$' '[' ']' '!' ';' "'" % @Lm @La @Ls @Am @Aa @As @Wm @Wa @Ca @K @Ts @Tv \
+for symbol in F f G g + - '&' '^' '\' / '|' '$' '[' ']' '!' ';' "'" % @Lm @La @Ls @Am @Aa @As @Wm @Wa @Ca @K @Ts @Tv \
     @O '~name' '{' . '}' @Oc; do
     SYMBOL=$symbol awk '$1 == ENVIRON["SYMBOL"] { found = 1 } END { exit !found }' "$WORK/out" ||
         fail "help-turtle: no row for $symbol: $(cat "$WORK/out")"
 done
+# A vlab object folder is one plant: its specifications name the .l and the view file.
+OBJECT="$DATA/plants/abop/fig2_6a_monopodial_tree"
+expect_run object-derive 0 '"modules":7162' -- "$LSYS" derive "$OBJECT" --json
+expect_run object-export 0 'object.glb: 1023 primitives' -- "$LSYS" export "$OBJECT" -o "$WORK/object.glb"
+expect_run object-instanced 0 'instanced.glb: 1023 primitives' -- "$LSYS" export "$OBJECT" --instanced -o "$WORK/instanced.glb"
+mkdir "$WORK/object"
+printf 'Lsystem: 1\nAxiom: F\nendlsystem\n' > "$WORK/object/plant.l"
+printf 'angle increment: 30\ninitial line width: thin\n' > "$WORK/object/plant.v"
+expect_run object-bad-view 2 'plant.v:2:21: error: ' -- "$LSYS" check "$WORK/object"
+expect_run object-bad-view-line 2 '^  initial line width: thin$' -- "$LSYS" check "$WORK/object"
 expect_run no-command 2 'subcommand' -- "$LSYS"
 expect_run bad-option 2 'steps' -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" -n many
 

@@ -5,18 +5,18 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "lsystem/vlab/object.h"
 #include "test_support.h"
 
 namespace lsys::test {
 namespace {
 
-// Paths relative to data/plants.
+// Paths relative to data/plants: plant files and vlab object folders.
 std::vector<std::string> plantFiles() {
     const std::filesystem::path root = dataPath("plants");
     std::vector<std::string> files;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(root))
-        if (entry.is_regular_file()) files.push_back(entry.path().lexically_relative(root).string());
-    std::sort(files.begin(), files.end());
+    for (const std::filesystem::path& plant : vlab::findPlants(root))
+        files.push_back(plant.lexically_relative(root).string());
     return files;
 }
 
@@ -25,9 +25,9 @@ TEST(LsysDataFiles, ThereAreEnough) { EXPECT_GE(plantFiles().size(), 20u); }
 TEST(LsysDataFiles, EveryPlantLoadsAndDerives) {
     for (const std::string& file : plantFiles()) {
         SCOPED_TRACE(file);
-        ParseResult result = loadDialectFile(dataPath("plants/" + file));
-        std::string problem;
-        std::string source = readTextFile(dataPath("plants/" + file), problem);
+        const vlab::PlantFile plant = vlab::loadPlant(dataPath("plants/" + file));
+        const ParseResult& result = plant.parsed;
+        const std::string& source = plant.source;
         ASSERT_TRUE(result.ok()) << formatDiagnostics(result.diagnostics, source);
         EXPECT_TRUE(source.find("//") != std::string::npos || source.find("/*") != std::string::npos)
             << "each plant file documents where it comes from";

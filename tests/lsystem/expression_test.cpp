@@ -181,5 +181,73 @@ TEST(LsysExpression, LongFlatExpressionStaysWithinTheStack) {
     EXPECT_NE(result.diagnostics[0].message.find("too complex"), std::string::npos);
 }
 
+// cpfg's func(id, x) reads a table of the object's function files. These
+// functions are given by their samples: func(1, x) interpolates 0, 0.5, 2
+// and func(2, x) is 3 throughout.
+FunctionTable twoFunctions() {
+    vlab::VlabFunction rising, flat;
+    rising.samples = {0.0, 0.5, 2.0};
+    flat.samples = {3.0, 3.0};
+    return std::make_shared<const std::vector<vlab::VlabFunction>>(std::vector{rising, flat});
+}
+
+std::optional<double> withFunctions(std::string_view text, std::vector<Diagnostic>& diagnostics, double x = 0) {
+    const std::vector<std::string> variables{"x", "i"};
+    const std::unordered_map<std::string, double> constants{{"FLAT", 2.0}};
+    Cursor cursor{text, 0, 3};
+    const std::optional<Expression> expression =
+        parseExpression(cursor, ExpressionScope{variables, &constants, nullptr, Arithmetic::Cpfg, twoFunctions()},
+                        "plant.l", diagnostics);
+    if (!expression) return std::nullopt;
+    RandomStream random;
+    const double values[] = {x, 1.9};
+    return evaluate(*expression, values, random);
+}
+
+TEST(LsysExpression, FuncReadsTheFunctionTable) {
+    std::vector<Diagnostic> diagnostics;
+    EXPECT_DOUBLE_EQ(withFunctions("func(1, x)", diagnostics, 0.75).value_or(NAN), 1.25);
+    EXPECT_DOUBLE_EQ(withFunctions("func(1, x)", diagnostics, 7).value_or(NAN), 2.0); // x is clamped to [0, 1]
+    EXPECT_DOUBLE_EQ(withFunctions("func(FLAT, 0.2) + func(i, 0.25)", diagnostics).value_or(NAN), 3.25);
+    // A computed id is converted to int, as cpfg converts it; one outside the table gives 0.
+    EXPECT_DOUBLE_EQ(withFunctions("func(i + 1, x)", diagnostics).value_or(NAN), 3.0);
+    EXPECT_DOUBLE_EQ(withFunctions("func(i * 2, x)", diagnostics).value_or(NAN), 0.0);
+    EXPECT_TRUE(diagnostics.empty()) << diagnostics[0].message;
+}
+
+TEST(LsysExpression, FuncOfConstantsIsFolded) {
+    std::vector<Diagnostic> diagnostics;
+    const std::unordered_map<std::string, double> constants;
+    Cursor cursor{"func(1, 0.5) * 2", 0, 1};
+    const std::optional<Expression> expression = parseExpression(
+        cursor, ExpressionScope{{}, &constants, nullptr, Arithmetic::Cpfg, twoFunctions()}, "t", diagnostics);
+    ASSERT_TRUE(expression);
+    ASSERT_TRUE(expression->isConstant());
+    EXPECT_DOUBLE_EQ(expression->code[0].value, 1.0);
+}
+
+TEST(LsysExpression, FuncNamesAFunctionThatExists) {
+    const std::pair<const char*, int> cases[] = {{"func(3, x)", 6}, {"func( 0.5, x)", 7}, {"func(FLAT + 1, x)", 6}};
+    for (const auto& [text, column] : cases) {
+        std::vector<Diagnostic> diagnostics;
+        EXPECT_FALSE(withFunctions(text, diagnostics)) << text;
+        ASSERT_EQ(diagnostics.size(), 1u) << text;
+        EXPECT_EQ(diagnostics[0].file, "plant.l");
+        EXPECT_EQ(diagnostics[0].line, 3);
+        EXPECT_EQ(diagnostics[0].column, column) << text;
+        EXPECT_NE(diagnostics[0].message.find("the object's view file names 2 functions"), std::string::npos)
+            << diagnostics[0].message;
+        EXPECT_EQ(diagnostics[0].expected, "an id from 1 to 2");
+    }
+}
+
+TEST(LsysExpression, FuncWithoutFunctionFilesIsAnError) {
+    Evaluated result = evaluateText("2 * func(1, 0.5)");
+    EXPECT_FALSE(result.value);
+    ASSERT_EQ(result.diagnostics.size(), 1u);
+    EXPECT_EQ(result.diagnostics[0].column, 5);
+    EXPECT_NE(result.diagnostics[0].message.find("no function files are given"), std::string::npos);
+}
+
 } // namespace
 } // namespace lsys::test

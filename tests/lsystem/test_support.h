@@ -10,6 +10,7 @@
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/parser.h"
 #include "lsystem/rewriter.h"
+#include "lsystem/vlab/object.h"
 
 namespace lsys::test {
 
@@ -22,9 +23,11 @@ inline Grammar parseOk(const std::string& source, const ParseOptions& options = 
     return std::move(result.grammar);
 }
 
+// A plant of data/ (a file, or a vlab object folder) that must load.
 inline Grammar loadOk(const std::string& relative) {
-    ParseResult result = loadDialectFile(dataPath(relative));
-    EXPECT_TRUE(result.ok()) << relative << ": " << (result.diagnostics.empty() ? "" : result.diagnostics[0].message);
+    vlab::PlantFile plant = vlab::loadPlant(dataPath(relative));
+    ParseResult& result = plant.parsed;
+    EXPECT_TRUE(result.ok()) << relative << ": " << formatDiagnostics(result.diagnostics, plant.source);
     return std::move(result.grammar);
 }
 

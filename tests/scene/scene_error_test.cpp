@@ -53,7 +53,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "/sky/colour is an unknown key (expected one of \"zenith\", \"horizon\")"},
         BadScene{"missing_lsystem_file",
                  "{\n  \"species\": [\n    { \"name\": \"a\", \"lsystem\": \"no_such_plant.lsys\" }\n  ]\n}",
-                 "\"no_such_plant.lsys\"", "/species/0/lsystem names a file that does not exist"},
+                 "\"no_such_plant.lsys\"", "/species/0/lsystem names a file or folder that does not exist"},
         BadScene{"empty_species", "{\n  \"seed\": 2,\n  \"species\": []\n}", "[]",
                  "/species must list at least one species"},
         BadScene{"missing_species", "{\n  \"seed\": 2\n}", "{", "the scene needs \"species\""},

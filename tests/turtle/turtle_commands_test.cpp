@@ -17,8 +17,10 @@ TEST(LsysTurtleCommands, EveryDefinedSymbolNamesItsCommand) {
         for (std::string_view symbol : {definition.symbol, definition.alias}) {
             if (symbol.empty()) continue;
             const std::string name = std::string(symbol) + (definition.symbolIsPrefix ? "leaf" : "");
-            const TurtleCommand command = turtleCommand(name);
+            const TurtleCommand command = turtleCommand(name, true);
             EXPECT_EQ(command.action, definition.action) << name;
+            // cpfg's own commands are ordinary modules elsewhere.
+            EXPECT_EQ(turtleCommand(name).action, definition.cpfgOnly ? TurtleAction::None : definition.action) << name;
             EXPECT_EQ(command.surface, definition.symbolIsPrefix ? "leaf" : "") << name;
         }
     }

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "lsystem/dialects/dialect.h"
+#include "lsystem/vlab/object.h"
 #include "turtle_test_support.h"
 
 namespace lsys::test {
@@ -36,15 +37,13 @@ void expectFinite(const PlantAsset& plant) {
 
 TEST(LsysTurtleDataFiles, EveryPlantInterpretsWithoutNaN) {
     const std::filesystem::path root = dataPath("plants");
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(root))
-        if (entry.is_regular_file()) files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
+    const std::vector<std::filesystem::path> files = vlab::findPlants(root);
     ASSERT_GE(files.size(), 20u);
     size_t drawn = 0;
     for (const std::filesystem::path& file : files) {
         SCOPED_TRACE(file.string());
-        ParseResult parsed = loadDialectFile(file.string());
+        const vlab::PlantFile loaded = vlab::loadPlant(file);
+        const ParseResult& parsed = loaded.parsed;
         ASSERT_TRUE(parsed.ok());
         const ModuleString derived = derive(parsed.grammar);
         if (derived.size() > 2'000'000) continue; // the benchmark-sized systems

@@ -150,7 +150,7 @@ TEST(LsysTurtle, AddToWidth) {
 
 // Never below 0.
 TEST(LsysTurtle, AddToMaterialIndex) {
-    EXPECT_EQ(materialsOf("Axiom: @Ca(2)F@Ca(-1)F@Ca(-5)F\n"), (std::vector<uint32_t>{2, 1, 0}));
+    EXPECT_EQ(materialsOf("Axiom: @Ca(2)F@Ca(-1)F@Ca(-5)F\n"), (std::vector<uint32_t>{2, 1, 252})); // modulo 256
 }
 
 TEST(LsysTurtle, CutSkipsTheRestOfTheBranch) {
@@ -170,8 +170,65 @@ TEST(LsysTurtle, FrameStaysOrthonormalOverManyTurns) {
     for (const Span& segment : segments) ASSERT_NEAR(glm::distance(segment.start, segment.end), 1.0f, 1e-4f);
 }
 
-TEST(LsysTurtle, MaterialIndicesStayInTheColourMap) {
-    EXPECT_EQ(materialsOf("Axiom: ;(255)F;F;(300)F;(-2)F\n"), (std::vector<uint32_t>{255, 0, 0, 0}));
+// cpfg's colour index wraps around its 256-entry map (interpret.c, ';' and ','):
+// 255 + 1 is 0, 300 is 44, -2 is 254, and a bare , below 0 is 255.
+TEST(LsysTurtle, MaterialIndicesWrapAroundTheColourMap) {
+    EXPECT_EQ(materialsOf("Axiom: ;(255)F;F;(300)F;(-2)F;(0),F;(2.9)F\n"),
+              (std::vector<uint32_t>{255, 0, 44, 254, 255, 2}));
+}
+
+// A grammar's TurtleStyle (set from a vlab object's view file) steps the
+// bare width and colour modules by cpfg's increments instead of ABOP's factor.
+TEST(LsysTurtle, StyleIncrementsStepBareWidthAndColour) {
+    ParseResult parsed = parseLsystem("width: 5\nAxiom: F!F!F#F;F;F,F\n");
+    ASSERT_TRUE(parsed.ok());
+    parsed.grammar.style.widthFactor = 1.0;
+    parsed.grammar.style.widthIncrement = 2.0;
+    parsed.grammar.style.colourIncrement = 3;
+    parsed.grammar.style.material = 254;
+    const std::vector<Span> spans = spansOf(plantFromGrammar(parsed.grammar, derive(parsed.grammar)));
+    ASSERT_EQ(spans.size(), 7u);
+    const float radii[] = {2.5f, 1.5f, 0.5f, 1.5f, 1.5f, 1.5f, 1.5f};
+    const uint32_t materials[] = {254, 254, 254, 254, 1, 4, 1};
+    for (size_t i = 0; i < spans.size(); ++i) {
+        EXPECT_FLOAT_EQ(spans[i].startRadius, radii[i]) << i;
+        EXPECT_EQ(spans[i].material, materials[i]) << i;
+    }
+    // A bare ! never makes a width negative.
+    ParseResult thin = parseLsystem("width: 1\nAxiom: !F\n");
+    thin.grammar.style = parsed.grammar.style;
+    EXPECT_FLOAT_EQ(spansOf(plantFromGrammar(thin.grammar, derive(thin.grammar))).at(0).startRadius, 0.0f);
+}
+
+// cpfg's G and g (read from cpfg files only): G draws as F and g moves as f,
+// but inside a polygon neither records a vertex.
+TEST(LsysTurtle, CpfgsGAndgRecordNoPolygonVertex) {
+    ParseResult parsed = parseLsystem("angle: 90\nAxiom: FGg{.f+G+f.}{.f+g+f.}\n");
+    ASSERT_TRUE(parsed.ok());
+    PlantAsset plant = plantFromGrammar(parsed.grammar, derive(parsed.grammar));
+    EXPECT_EQ(spansOf(plant).size(), 1u); // natively G and g are ordinary modules, and F inside { } moves
+    parsed.grammar.style.cpfgModules = true;
+    plant = plantFromGrammar(parsed.grammar, derive(parsed.grammar));
+    EXPECT_EQ(spansOf(plant).size(), 2u); // F and G
+    ASSERT_EQ(plant.polygons.size(), 2u);
+    // The corner G or g reaches is no vertex: (0,3) (0,4) [(-1,4)] (-1,3), then (-1,3) (-1,2) [(0,2)] (0,3).
+    for (const PolygonShape& polygon : plant.polygons) ASSERT_EQ(polygon.outline.size(), 3u);
+    expectNear(plant.polygons[0].outline[2], {-1, 3, 0});
+    expectNear(plant.polygons[1].outline[2], {0, 3, 0});
+}
+
+// Pixel widths (a view file's "initial line width: 2 pixels") become a
+// fraction of the plant's extent: 320 pixels across its larger side.
+TEST(LsysTurtle, PixelLinesAreAFractionOfThePlant) {
+    ParseResult parsed = parseLsystem("width: 4\nAxiom: F(32)+(90)F(16)\n");
+    ASSERT_TRUE(parsed.ok());
+    parsed.grammar.style.pixelLines = true;
+    const PlantAsset plant = plantFromGrammar(parsed.grammar, derive(parsed.grammar));
+    // Interpreted in pixels the plant spans 18 in x and 34 in y (the second
+    // segment's end disc, 2 pixels in radius, reaches y = 34): a pixel is 34/320.
+    ASSERT_EQ(plant.joints.size(), 2u);
+    EXPECT_FLOAT_EQ(plant.joints[0].startRadius, 2.0f * 34.0f / 320.0f);
+    EXPECT_FLOAT_EQ(plant.primitives[1].endRadius, 2.0f * 34.0f / 320.0f);
 }
 
 TEST(LsysTurtle, UnmatchedPopIsIgnored) {

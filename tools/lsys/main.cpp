@@ -30,6 +30,7 @@
 #include "lsystem/rewriter.h"
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"
+#include "lsystem/vlab/object.h"
 #include "tools/memory_budget_option.h"
 
 namespace {
@@ -73,22 +74,17 @@ bool parseDefines(const std::vector<std::string>& items, std::unordered_map<std:
     return true;
 }
 
-// Parses the file; on problems prints them all and returns nullopt.
+// Parses the plant (a file, or a vlab object: lsystem/vlab/object.h); on
+// problems prints them all and returns nullopt.
 std::optional<lsys::Grammar> load(const Arguments& arguments) {
     lsys::ParseOptions options;
     options.file = arguments.file;
     if (!parseDefines(arguments.defines, options.defines)) return std::nullopt;
-    std::string problem;
-    std::string source = lsys::readTextFile(arguments.file, problem);
-    if (!problem.empty()) {
-        std::cerr << arguments.file << ": error: cannot read file: it " << problem << "\n";
-        return std::nullopt;
-    }
-    lsys::ParseResult result =
-        lsys::parseDialect(lsys::dialectOfFile(arguments.dialect, source, arguments.file), source, options);
-    std::cerr << lsys::formatDiagnostics(result.warnings, source);
+    lsys::vlab::PlantFile plant = lsys::vlab::loadPlant(arguments.file, arguments.dialect, options);
+    lsys::ParseResult& result = plant.parsed;
+    std::cerr << lsys::formatDiagnostics(result.warnings, plant.source);
     if (!result.ok()) {
-        std::cerr << lsys::formatDiagnostics(result.diagnostics, source);
+        std::cerr << lsys::formatDiagnostics(result.diagnostics, plant.source);
         std::cerr << result.diagnostics.size() << (result.diagnostics.size() == 1 ? " error\n" : " errors\n");
         return std::nullopt;
     }
@@ -303,7 +299,7 @@ void addDialectOption(CLI::App& command, Arguments& arguments) {
 
 // FILE, -n, --seed, -D and --dialect: what every command that derives takes.
 void addDerivationOptions(CLI::App& command, Arguments& arguments) {
-    command.add_option("FILE", arguments.file, ".lsys file")->required();
+    command.add_option("FILE", arguments.file, "plant file (.lsys, .l, any dialect) or vlab object folder")->required();
     command.add_option("-n,--steps", arguments.steps, "Derivation steps (default: the file's 'derivation length:')")
         ->check(CLI::Range(0, lsys::kMaxDerivationLength));
     command.add_option("--seed", arguments.seed, "Random seed (default: the file's 'seed:')");
@@ -367,7 +363,8 @@ int main(int argc, char** argv) {
     deriveCommand->add_option("--threads", arguments.threads, "Rewriting threads")->check(CLI::Range(1, 64));
 
     CLI::App* checkCommand = app.add_subcommand("check", "Parse a file and report every problem without deriving");
-    checkCommand->add_option("FILE", arguments.file, ".lsys file")->required();
+    checkCommand->add_option("FILE", arguments.file, "plant file (.lsys, .l, any dialect) or vlab object folder")
+        ->required();
     checkCommand->add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
     addDialectOption(*checkCommand, arguments);
 

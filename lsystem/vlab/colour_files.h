@@ -1,0 +1,39 @@
+#pragma once
+// cpfg's colours: a colour map (.map, 256 RGB byte triples, index i at bytes
+// 3i..3i+2) or a material file (.mat, records of 15 bytes: the index, then
+// transparency, ambient RGB, diffuse RGB, emissive RGB, specular RGB and
+// shininess, each a byte), read as cpfg's irisGL.c reads them. Either gives
+// the 256 entries the turtle's ; and , index.
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "lsystem/error.h"
+
+namespace lsys::vlab {
+
+struct ColourEntry {
+    glm::vec3 diffuse{0.0f}; // the colour a colour map gives; a material's diffuse
+    glm::vec3 ambient{0.0f}; // of a material; a colour map's entry has its colour here too
+    glm::vec3 emissive{0.0f};
+    glm::vec3 specular{0.0f};
+    float shininess = 0.0f;
+    float opacity = 1.0f; // 1 - transparency / 255
+    bool defined = false; // a material file may leave indices out
+};
+
+using ColourTable = std::array<ColourEntry, 256>;
+
+struct ColourReadResult {
+    ColourTable colours{};
+    std::optional<Diagnostic> error; // the file and what is wrong with it
+};
+
+ColourReadResult readColourMap(const std::filesystem::path& path);
+ColourReadResult readMaterialFile(const std::filesystem::path& path);
+
+} // namespace lsys::vlab

@@ -1,0 +1,148 @@
+// vlab objects (lsystem/vlab/object.h): finding an object's files from its
+// specifications or beside its L-system, and the grammar a loaded object
+// gives: the view file's turtle, the colour map's palette, located errors.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "lsystem/rewriter.h"
+#include "lsystem/turtle.h"
+#include "lsystem/vlab/object.h"
+
+namespace lsys::vlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh folder per test, removed afterwards.
+class VlabObject : public ::testing::Test {
+protected:
+    void SetUp() override {
+        folder_ = fs::temp_directory_path() /
+                  ("plantfield_vlab_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(folder_);
+        fs::create_directories(folder_);
+    }
+    void TearDown() override { fs::remove_all(folder_); }
+
+    fs::path write(const std::string& name, const std::string& text) const {
+        const fs::path path = folder_ / name;
+        std::ofstream(path, std::ios::binary) << text;
+        return path;
+    }
+
+    // A colour map whose entry i is (i, 255 - i, 7).
+    fs::path writeColourMap(const std::string& name) const {
+        std::string bytes;
+        for (int i = 0; i < 256; ++i) bytes += {static_cast<char>(i), static_cast<char>(255 - i), 7};
+        return write(name, bytes);
+    }
+
+    fs::path folder_;
+};
+
+constexpr const char* kLsystem = "Lsystem: 1\nderivation length: 1\nAxiom: A\nA --> F+F;F!F\nendlsystem\n";
+
+TEST_F(VlabObject, SpecificationsNameTheFiles) {
+    write("plant.l", kLsystem);
+    write("other.l", kLsystem);
+    write("specifications", "ignore:\n*.swp\n*\nmodel:\n\tgenerate:\n\t\tcpfg -w 300 500 -m colours.map -e env.e "
+                            "plant.l view.v anim.a\n\nL-system:\n\tEDIT plant.l\n");
+    std::string problem;
+    const std::optional<ObjectFiles> files = findObjectFiles(folder_, problem);
+    ASSERT_TRUE(files) << problem;
+    EXPECT_EQ(files->lsystem, folder_ / "plant.l");
+    EXPECT_EQ(files->view, folder_ / "view.v");
+    EXPECT_EQ(files->colourMap, folder_ / "colours.map");
+    EXPECT_TRUE(files->materials.empty());
+    EXPECT_EQ(files->ignored, (std::vector<std::string>{"-e env.e", "anim.a"}));
+}
+
+TEST_F(VlabObject, WithoutSpecificationsTheFilesBesideTheLsystem) {
+    write("tree.l", kLsystem);
+    write("tree.v", "angle increment: 30\n");
+    write("other.v", "angle increment: 60\n");
+    write("tree.mat", "");
+    std::string problem;
+    std::optional<ObjectFiles> files = findObjectFiles(folder_, problem);
+    ASSERT_TRUE(files) << problem;
+    EXPECT_EQ(files->lsystem, folder_ / "tree.l");
+    EXPECT_EQ(files->view, folder_ / "tree.v"); // its stem's, among two
+    EXPECT_EQ(files->materials, folder_ / "tree.mat");
+    EXPECT_TRUE(files->colourMap.empty());
+    EXPECT_TRUE(isVlabObject(folder_ / "tree.l"));
+
+    write("second.l", kLsystem);
+    files = findObjectFiles(folder_, problem);
+    EXPECT_FALSE(files);
+    EXPECT_NE(problem.find("second.l, tree.l"), std::string::npos) << problem;
+    files = findObjectFiles(folder_ / "second.l", problem); // a .l named: its own files
+    ASSERT_TRUE(files);
+    EXPECT_EQ(files->lsystem, folder_ / "second.l");
+    EXPECT_TRUE(files->view.empty()); // two view files, none of its stem
+}
+
+TEST_F(VlabObject, AFolderWithoutLsystemIsAnError) {
+    const PlantFile plant = loadObject(folder_);
+    ASSERT_EQ(plant.parsed.diagnostics.size(), 1u);
+    EXPECT_NE(plant.parsed.diagnostics[0].message.find("holds no cpfg L-system"), std::string::npos);
+}
+
+TEST_F(VlabObject, TheViewFileDrivesTheTurtle) {
+    write("plant.l", kLsystem);
+    write("plant.v", "angle factor: 4\ninitial line width: 3\nline width increment: 1\n"
+                     "initial color: 10\ncolor increment: 5\ntropism direction: 0,0,-2\n"
+                     "initial elasticity: 0.25\n");
+    writeColourMap("plant.map");
+    const PlantFile plant = loadObject(folder_);
+    ASSERT_TRUE(plant.parsed.ok()) << formatDiagnostics(plant.parsed.diagnostics, plant.source);
+    const Grammar& grammar = plant.parsed.grammar;
+    EXPECT_DOUBLE_EQ(grammar.angle, 90.0);
+    EXPECT_DOUBLE_EQ(grammar.width, 3.0);
+    EXPECT_DOUBLE_EQ(grammar.style.widthFactor, 1.0);
+    EXPECT_DOUBLE_EQ(grammar.style.widthIncrement, 1.0);
+    EXPECT_EQ(grammar.style.colourIncrement, 5);
+    EXPECT_EQ(grammar.style.material, 10u);
+    EXPECT_EQ(grammar.style.tropism, glm::vec3(0.0f, 0.0f, -1.0f));
+    EXPECT_DOUBLE_EQ(grammar.style.elasticity, 0.25);
+    EXPECT_FALSE(grammar.style.pixelLines); // a width without "pixels" is in lengths
+    ASSERT_TRUE(grammar.style.look.palette);
+    ASSERT_EQ(grammar.style.look.palette->size(), 256u);
+
+    // F+F;F!F: the second F turned 90 degrees, the third in colour 15, the last one 2 wide.
+    const PlantAsset drawn = plantFromGrammar(grammar, derive(grammar));
+    ASSERT_EQ(drawn.primitives.size(), 4u);
+    EXPECT_EQ(drawn.primitives[2].material, 15u);
+    EXPECT_FLOAT_EQ(drawn.primitives[3].startRadius, 1.0f);
+    EXPECT_EQ(drawn.materials.at(15).albedo, glm::vec3(15.0f / 255.0f, 240.0f / 255.0f, 7.0f / 255.0f));
+    EXPECT_EQ(drawn.materials.at(10).albedo, glm::vec3(10.0f / 255.0f, 245.0f / 255.0f, 7.0f / 255.0f));
+}
+
+TEST_F(VlabObject, ErrorsInTheObjectsFilesAreLocatedThere) {
+    write("plant.l", kLsystem);
+    write("plant.v", "angle increment: 30\n\ninitial line width: wide\n");
+    const PlantFile plant = loadObject(folder_);
+    ASSERT_FALSE(plant.parsed.ok());
+    const Diagnostic& error = plant.parsed.diagnostics.front();
+    EXPECT_EQ(error.file, (folder_ / "plant.v").string());
+    EXPECT_EQ(error.line, 3);
+    EXPECT_GT(error.column, 0);
+    EXPECT_EQ(error.sourceLine, "initial line width: wide"); // quoted, since it is not the L-system's line
+    EXPECT_NE(formatDiagnostics(plant.parsed.diagnostics, plant.source).find("plant.v:3:"), std::string::npos);
+}
+
+TEST_F(VlabObject, APlainPlantFileIsNoObject) {
+    const fs::path file = write("plant.lsys", "angle: 30\nAxiom: F\n");
+    EXPECT_FALSE(isVlabObject(file));
+    const PlantFile plant = loadPlant(file);
+    ASSERT_TRUE(plant.parsed.ok());
+    EXPECT_DOUBLE_EQ(plant.parsed.grammar.angle, 30.0);
+    EXPECT_DOUBLE_EQ(plant.parsed.grammar.style.widthFactor, 0.7); // ABOP's turtle
+    EXPECT_FALSE(plant.parsed.grammar.style.look.palette);
+}
+
+} // namespace
+} // namespace lsys::vlab
