@@ -46,20 +46,25 @@ constexpr std::string_view kUnsupportedCpfgFunctions[] = {
     "vvymax", "vvzmin", "vvzmax", "vvscale", "bran",     "biran",  "setDerivLength", "getDerivLength",
 };
 
-// Whether code computes the same value every time: no parameters, globals,
-// random draws or function files.
+// Whether an instruction reads what may change from one evaluation to the
+// next: parameters, globals, random draws (folding stops at it).
+bool readsVaryingValues(Op op) {
+    switch (op) {
+    case Op::Var:
+    case Op::Global:
+    case Op::Element:
+    case Op::Ran:
+    case Op::NRan:
+    case Op::Srand: return true;
+    default: return false;
+    }
+}
+
+// Whether code computes the same value every time without the function
+// files: no varying value and no func.
 bool isConstantCode(std::span<const Instruction> code) {
     return std::none_of(code.begin(), code.end(), [](const Instruction& instruction) {
-        switch (instruction.op) {
-        case Op::Var:
-        case Op::Global:
-        case Op::Element:
-        case Op::Ran:
-        case Op::NRan:
-        case Op::Srand:
-        case Op::Func: return true;
-        default: return false;
-        }
+        return readsVaryingValues(instruction.op) || instruction.op == Op::Func;
     });
 }
 
@@ -146,9 +151,7 @@ struct Compiler {
         out.code.push_back(instruction);
         depth += stackEffect(instruction.op);
         maxDepth = std::max(maxDepth, depth);
-        if (instruction.op == Op::Var || instruction.op == Op::Ran || instruction.op == Op::NRan ||
-            instruction.op == Op::Global || instruction.op == Op::Element || instruction.op == Op::Srand)
-            usesVariablesOrRandom = true;
+        if (readsVaryingValues(instruction.op)) usesVariablesOrRandom = true;
         if (instruction.op == Op::Func) out.functions = scope.functions;
     }
 

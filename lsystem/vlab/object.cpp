@@ -249,6 +249,26 @@ std::vector<fs::path> findPlants(const fs::path& root) {
     return plants;
 }
 
+namespace {
+
+// Reads plant.file and parses it in `dialect` (else the one its text or name
+// says), keeping what is already in plant.parsed (the object's other files'
+// diagnostics) after the file's own.
+void readAndParse(PlantFile& plant, std::optional<Dialect> dialect, const ParseOptions& options) {
+    std::string problem;
+    plant.source = readTextFile(plant.file, problem);
+    ParseResult parsed;
+    if (!problem.empty())
+        parsed.diagnostics.push_back({plant.file, 0, 0, "cannot read file: it " + problem});
+    else
+        parsed = parseDialect(dialectOfFile(dialect, plant.source, plant.file), plant.source, options);
+    append(parsed.diagnostics, std::move(plant.parsed.diagnostics));
+    append(parsed.warnings, std::move(plant.parsed.warnings));
+    plant.parsed = std::move(parsed);
+}
+
+} // namespace
+
 PlantFile loadObject(const fs::path& path, ParseOptions options) {
     PlantFile plant;
     plant.file = path.string();
@@ -262,16 +282,7 @@ PlantFile loadObject(const fs::path& path, ParseOptions options) {
     const ObjectLook object = readObjectLook(*files, plant);
     options.file = plant.file;
     options.functions = object.functions;
-    std::string sourceProblem;
-    plant.source = readTextFile(plant.file, sourceProblem);
-    if (!sourceProblem.empty()) {
-        plant.parsed.diagnostics.push_back({plant.file, 0, 0, "cannot read file: it " + sourceProblem});
-        return plant;
-    }
-    ParseResult parsed = parseDialect(dialectOfFile(std::nullopt, plant.source, plant.file), plant.source, options);
-    append(parsed.diagnostics, std::move(plant.parsed.diagnostics));
-    append(parsed.warnings, std::move(plant.parsed.warnings));
-    plant.parsed = std::move(parsed);
+    readAndParse(plant, std::nullopt, options);
     applyView(object.view, plant.parsed.grammar);
     plant.parsed.grammar.style.look = object.look;
     quoteOtherFiles(plant.parsed.diagnostics, plant.file);
@@ -284,13 +295,7 @@ PlantFile loadPlant(const fs::path& path, std::optional<Dialect> dialect, ParseO
     PlantFile plant;
     plant.file = path.string();
     if (options.file == "<input>") options.file = plant.file;
-    std::string problem;
-    plant.source = readTextFile(plant.file, problem);
-    if (!problem.empty()) {
-        plant.parsed.diagnostics.push_back({plant.file, 0, 0, "cannot read file: it " + problem});
-        return plant;
-    }
-    plant.parsed = parseDialect(dialectOfFile(dialect, plant.source, plant.file), plant.source, options);
+    readAndParse(plant, dialect, options);
     return plant;
 }
 
