@@ -324,13 +324,15 @@ float scaleToHeight(std::array<ClassMeshes, kMeshLodCount>& lods, float height) 
     return scale;
 }
 
-lsys::Grammar parseSpecies(const Species& species) {
+// The species' grammar; its warnings are appended to `warnings`.
+lsys::Grammar parseSpecies(const Species& species, std::string& warnings) {
     lsys::ParseOptions options;
     options.defines.insert(species.defines.begin(), species.defines.end());
     lsys::vlab::PlantFile plant = lsys::vlab::loadPlant(species.lsystem, std::nullopt, options);
-    if (!plant.parsed.ok())
-        throw SceneError("species '" + species.name +
-                         "': " + lsys::formatDiagnostics(plant.parsed.diagnostics, plant.source));
+    const std::string which = "species '" + species.name + "': ";
+    if (!plant.parsed.ok()) throw SceneError(which + lsys::formatDiagnostics(plant.parsed.diagnostics, plant.source));
+    if (!plant.parsed.warnings.empty())
+        warnings += which + lsys::formatDiagnostics(plant.parsed.warnings, plant.source);
     return std::move(plant.parsed.grammar);
 }
 
@@ -429,7 +431,7 @@ PlantModelPool buildPlantModels(const Scene& scene, const ModelProgress& progres
     for (const Species& species : scene.species) total += species.variants;
     PlantModelPool pool;
     for (uint32_t s = 0; s < scene.species.size(); ++s) {
-        const lsys::Grammar grammar = parseSpecies(scene.species[s]);
+        const lsys::Grammar grammar = parseSpecies(scene.species[s], pool.warnings);
         const lsys::SurfaceLibrary surfaces(lsys::meshDirectoriesFor(scene.species[s].lsystem));
         pool.firstModel.push_back(uint32_t(pool.models.size()));
         for (uint32_t variant = 0; variant < scene.species[s].variants; ++variant) {

@@ -53,6 +53,10 @@ struct PlantModelPool {
     std::vector<gpu::JointParams> joints;
     std::vector<PlantModelInfo> models; // species by species, variants in order
     std::vector<uint32_t> firstModel;   // per species: index of its variant 0 in models
+    // The species' L-system warnings (a `//` that cuts a cpfg production, a
+    // view-file label plantfield ignores …), each line naming the species and
+    // file:line:column; empty when there are none. The tools print them.
+    std::string warnings;
     uint32_t modelOf(uint32_t species, uint32_t variant) const { return firstModel[species] + variant; }
 };
 

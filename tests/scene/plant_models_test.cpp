@@ -157,6 +157,16 @@ TEST(PlantModels, ASpeciesCpfgFileIsReadAsCpfg) {
     EXPECT_GT(pool.models[0].meshes[LOD_FULL][DRAW_BARK].indexCount, 0u);
 }
 
+// A species' warnings reach the pool with the species' name and the file's
+// line and column; a plant without any leaves the pool's warnings empty.
+TEST(PlantModels, ASpeciesWarningsNameTheSpeciesFileLineAndColumn) {
+    const std::filesystem::path cut = writePlant("cut_probe.l", "derivation length: 1\nAxiom: A\nA --> F//turn\n");
+    const pf::PlantModelPool pool = pf::buildPlantModels(sceneOf(cut, 1));
+    EXPECT_NE(pool.warnings.find("species 'probe': " + cut.string() + ":3:"), std::string::npos) << pool.warnings;
+    EXPECT_NE(pool.warnings.find("warning:"), std::string::npos) << pool.warnings;
+    EXPECT_EQ(defaultPool().warnings, "");
+}
+
 TEST(PlantModels, LeafySpeciesHaveFoliageAtBothLods) {
     const pf::PlantModelPool& pool = defaultPool();
     for (const pf::PlantModelInfo& model : pool.models) {

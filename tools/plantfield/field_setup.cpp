@@ -46,6 +46,7 @@ FieldContent loadFieldContent(const PlantfieldOptions& o) {
                  o.scenePath.c_str(), content.plants.size(), content.scene.species.size(), content.scene.terrain.size,
                  content.scene.terrain.size, content.models.models.size(), seconds);
     if (!content.note.empty()) std::fprintf(stderr, "plantfield: note: %s\n", content.note.c_str());
+    std::fputs(content.models.warnings.c_str(), stderr);
     return content;
 }
 
