@@ -1,9 +1,10 @@
 #!/bin/sh
 # End-to-end checks of the lsys command line: output formats, exit codes and
-# error messages. Usage: cli_test.sh LSYS DATA_DIR
+# error messages. Usage: cli_test.sh LSYS DATA_DIR VERSION
 set -u
 LSYS=$1
 DATA=$2
+VERSION=$3
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 failures=0
@@ -120,6 +121,7 @@ expect_run zero-memory-budget 2 "'0' is not a size" -- "$LSYS" instance "$DATA/p
 expect_run memory-budget-help 0 '--memory-budget SIZE' -- "$LSYS" export --help
 expect_run derive-negative-steps 2 'steps' -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" -n -1
 expect_run help 0 'derive' -- "$LSYS" --help
+expect_run version 0 "^lsys $VERSION\$" -- "$LSYS" --version
 expect_run derive-help 0 '--max-modules' -- "$LSYS" derive --help
 expect_run help-lists-turtle 0 '--help-turtle' -- "$LSYS" --help
 expect_run help-turtle 0 '^F  *l = length, w = width  *draw a segment' -- "$LSYS" --help-turtle

@@ -412,6 +412,17 @@ TEST(PlantbenchCli, UnwritableOutputLeavesExistingFileUntouched) {
     }
 }
 
+// --version prints the CMake project's version, and nothing else runs; the
+// physics benchmark (Google Benchmark's flags) answers it alike.
+TEST(PlantbenchCli, VersionIsTheProjectsVersion) {
+    const CommandResult bench = runCommand(kPlantbench + " --version");
+    EXPECT_EQ(bench.exitCode, 0);
+    EXPECT_EQ(bench.output, std::string("plantbench ") + PLANTFIELD_VERSION + "\n");
+    const CommandResult physics = runCommand(std::string(PHYSICS_BENCH_BIN) + " --version");
+    EXPECT_EQ(physics.exitCode, 0);
+    EXPECT_EQ(physics.output, std::string("physics_bench ") + PLANTFIELD_VERSION + "\n");
+}
+
 TEST(PlantbenchCli, HelpListsEveryOption) {
     const CommandResult r = runCommand(kPlantbench + " --help");
     EXPECT_EQ(r.exitCode, 0);

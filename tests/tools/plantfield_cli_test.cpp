@@ -224,6 +224,13 @@ TEST(PlantfieldCli, SpeciesThatDrawNothingRenderTheTerrain) {
     EXPECT_EQ(readPng(out.string()).width, 64u);
 }
 
+// --version prints the CMake project's version, and nothing else runs.
+TEST(PlantfieldCli, VersionIsTheProjectsVersion) {
+    const CommandResult r = runCommand(kPlantfield + " --version");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.output, std::string("plantfield ") + PLANTFIELD_VERSION + "\n");
+}
+
 TEST(PlantfieldCli, HelpListsEveryOption) {
     const CommandResult r = runCommand(kPlantfield + " --help");
     EXPECT_EQ(r.exitCode, 0);

@@ -19,6 +19,7 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+#include <plantfield_version.h>
 
 #include "lsystem/bgrammar.h"
 #include "lsystem/dialects/dialect.h"
@@ -334,6 +335,7 @@ int check(const Arguments& arguments) {
 int main(int argc, char** argv) {
     CLI::App app{"lsys: derive, check, instance and export L-systems written in the .lsys notation or a dialect "
                  "(docs/DIALECTS.md)"};
+    app.set_version_flag("--version", std::string("lsys ") + pf::kPlantfieldVersion);
     app.require_subcommand(1);
     // Printed from the commands' definitions, so it cannot fall behind the turtle.
     app.add_flag_callback(

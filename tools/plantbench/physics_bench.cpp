@@ -16,9 +16,11 @@
 #include "engine/vk/gpu_timer.h"
 
 #include <benchmark/benchmark.h>
+#include <plantfield_version.h>
 
 #include <chrono>
 #include <cstdio>
+#include <string_view>
 
 namespace pf {
 namespace {
@@ -136,6 +138,12 @@ BENCHMARK(BM_CpuReference)->Arg(10000)->Arg(100000)->Arg(1000000)->UseRealTime()
 } // namespace pf
 
 int main(int argc, char** argv) {
+    // Google Benchmark's flags have no --version; every tool of the project answers it alike.
+    for (int i = 1; i < argc; ++i)
+        if (std::string_view(argv[i]) == "--version") {
+            std::printf("physics_bench %s\n", pf::kPlantfieldVersion);
+            return 0;
+        }
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::RunSpecifiedBenchmarks();

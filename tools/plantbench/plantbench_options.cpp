@@ -8,6 +8,7 @@
 #include "tools/memory_budget_option.h"
 
 #include <CLI/CLI.hpp>
+#include <plantfield_version.h>
 
 #include <charconv>
 #include <cstdlib>
@@ -87,6 +88,7 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     CLI::App app{"plantbench: measures how the GPU-driven field frame's cost grows with the number of plants\n"
                  "(docs/PLANTBENCH.md). For each count it builds the scene's field with that many plants, renders\n"
                  "warm-up frames, then times the measured frames: GPU ms per pass, frame wall time, plants per LOD."};
+    app.set_version_flag("--version", std::string("plantbench ") + kPlantfieldVersion);
     app.footer("Examples:\n"
                "  plantbench --counts 1000,10000,100000 --compare naive\n"
                "  plantbench data/scenes/valley.json --counts 1000000 --path 8   the worst frame along the path\n"

@@ -6,6 +6,7 @@
 #include "tools/memory_budget_option.h"
 
 #include <CLI/CLI.hpp>
+#include <plantfield_version.h>
 
 #include <charconv>
 #include <cmath>
@@ -113,6 +114,7 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
 
     CLI::App app{"plantfield: renders a field of L-system plants (a scene file, docs/SCENE_FORMAT.md), in a window\n"
                  "or headless to PNG."};
+    app.set_version_flag("--version", std::string("plantfield ") + kPlantfieldVersion);
     app.footer("Examples:\n"
                "  plantfield --capture frame.png                      the default forest at 1280x720\n"
                "  plantfield data/scenes/default.json --window        fly through it (docs/WINDOW.md)\n"
