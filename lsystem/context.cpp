@@ -12,6 +12,23 @@ bool bindIfMatches(const ContextView& view, const PatternModule& module, size_t 
     return true;
 }
 
+// In a ring a context that reaches an end of the string goes on from the
+// other end, once per pattern module: a second time round finds nothing the
+// first did not, where cpfg (generate.c) would go round for ever.
+bool wrapsRound(const ContextView& view, bool& wrapped) {
+    if (!view.ring || wrapped) return false;
+    wrapped = true;
+    return true;
+}
+
+// Whether a right context's search goes on at j: past the end only in a ring, from its first module.
+bool goesOnRight(const ContextView& view, size_t& j, bool& wrapped) {
+    if (j < view.string.size()) return true;
+    if (!wrapsRound(view, wrapped)) return false;
+    j = 0;
+    return true;
+}
+
 // Matches pattern[k..] against the string from position j onwards. Recursion
 // happens only at a '[' of the pattern, so its depth is bounded by the pattern.
 bool matchRightFrom(const ContextView& view, std::span<const PatternModule> pattern, size_t k, size_t j,
@@ -22,11 +39,12 @@ bool matchRightFrom(const ContextView& view, std::span<const PatternModule> patt
         const SymbolId wanted = pattern[k].symbol;
         if (wanted == kPush) {
             // The pattern enters a lateral branch: try each branch starting here.
-            while (j < n && view.ignored[symbols[j]]) ++j;
-            while (j < n && symbols[j] == kPush) {
+            bool wrapped = false;
+            while (goesOnRight(view, j, wrapped) && view.ignored[symbols[j]]) ++j;
+            while (goesOnRight(view, j, wrapped) && symbols[j] == kPush) {
                 if (matchRightFrom(view, pattern, k + 1, j + 1, variables)) return true;
                 j = static_cast<size_t>(view.partners[j]) + 1;
-                while (j < n && view.ignored[symbols[j]]) ++j;
+                while (goesOnRight(view, j, wrapped) && view.ignored[symbols[j]]) ++j;
             }
             return false;
         }
@@ -43,8 +61,9 @@ bool matchRightFrom(const ContextView& view, std::span<const PatternModule> patt
             if (j < n) ++j;
             continue;
         }
+        bool wrapped = false;
         while (true) {
-            if (j >= n) return false;
+            if (!goesOnRight(view, j, wrapped)) return false;
             const SymbolId symbol = symbols[j];
             if (symbol == kPush) {
                 j = static_cast<size_t>(view.partners[j]) + 1; // a lateral branch the pattern does not mention
@@ -79,8 +98,12 @@ bool matchLeft(const ContextView& view, std::span<const PatternModule> pattern, 
     const SymbolId* symbols = view.string.symbols.data();
     ptrdiff_t j = static_cast<ptrdiff_t>(position) - 1;
     for (size_t k = pattern.size(); k-- > 0;) {
+        bool wrapped = false;
         while (true) {
-            if (j < 0) return false;
+            if (j < 0) {
+                if (!wrapsRound(view, wrapped)) return false;
+                j = static_cast<ptrdiff_t>(view.string.size()) - 1; // the ring goes on from the last module
+            }
             const SymbolId symbol = symbols[j];
             if (symbol == kPop) {
                 const int32_t open = view.partners[j];

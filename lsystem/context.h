@@ -10,6 +10,14 @@
 // search (the branch is over). A '[' in the pattern descends into a lateral
 // branch (trying each branch at that node in turn); a ']' in the pattern skips
 // the rest of the branch it is in.
+//
+// Ring L-systems (cpfg generate.c, LconDiff and RconDiff): the string's ends
+// are joined, so a left context that reaches the start goes on from the last
+// module and a right context that reaches the end goes on from the first,
+// skipping brackets and ignored symbols there as anywhere. A context may come
+// round onto the module itself, and a long one round the ring more than once.
+// Where cpfg would go round for ever (no module of the ring can be read, all
+// ignored or in branches) the context does not match.
 
 #include <cstdint>
 #include <span>
@@ -23,6 +31,7 @@ struct ContextView {
     const ModuleString& string;
     const int32_t* partners; // computeBracketPartners of string
     const uint8_t* ignored;  // per symbol
+    bool ring = false;       // Grammar::ring
 };
 
 // On success the parameters of the context modules are written to variables

@@ -97,6 +97,10 @@ struct Grammar {
     TurtleStyle style;
     std::vector<SuccessorModule> axiom; // evaluated when a derivation starts, with its seed
     std::vector<uint8_t> ignored;       // per symbol: 1 when skipped while matching context
+    // cpfg's ring L-system ("ring lsystem"): the string's last module
+    // precedes its first, so contexts wrap round its ends (cpfg generate.c,
+    // LconDiff and RconDiff; lsystem/context.h).
+    bool ring = false;
     ProductionSet rules;
     ProductionSet decomposition;
     ProductionSet interpretation;

@@ -138,6 +138,7 @@ struct Parser {
             return;
         }
         if (acceptHeader(cursor, "lsystem")) return; // lpfg's "lsystem: 1" names the system; nothing to do
+        if (acceptHeader(cursor, "ring lsystem", false)) return void(grammar.ring = expectLineEnd(cursor));
         if (Cursor header = cursor;
             acceptHeader(cursor, "dialect")) // a valid header line never gets here (parseDialect blanks it)
             return error(header, "unknown or misplaced dialect line",
@@ -304,7 +305,6 @@ struct Parser {
 
     void beginSection(Cursor& cursor, ProductionSet& set) {
         section = &set;
-        cursor.skipSpaces();
         if (acceptHeader(cursor, "maximum depth")) return maximumDepth(cursor);
         expectLineEnd(cursor);
     }

@@ -176,7 +176,7 @@ Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const 
     uint32_t parameterEnd = out.parameterBase;
     size_t applied = 0;
 
-    const ContextView view{in, partners, grammar.ignored.data()};
+    const ContextView view{in, partners, grammar.ignored.data(), grammar.ring};
     double variables[kMaxVariables];
     double* globals = sequential ? sequential->globals.data() : nullptr;
     RandomStream ownStream;

@@ -4,6 +4,8 @@
 
 #include "test_support.h"
 
+#include "lsystem/bgrammar.h"
+
 namespace lsys::test {
 namespace {
 
@@ -166,6 +168,122 @@ TEST(LsysMatching, ProductionsAreTriedInFileOrder) {
 TEST(LsysMatching, ContextIsReadFromThePreviousWord) {
     // Parallel rewriting: every module sees the word before this step.
     EXPECT_EQ(derived("Axiom: BAA\nB < A --> B\n", 1), "BBA");
+}
+
+// cpfg's ring L-systems: the string's ends are joined, so contexts wrap round
+// them (cpfg generate.c, LconDiff and RconDiff). The expected words are
+// cpfg's, from cpfg-str.sh on the same systems.
+TEST(LsysRing, ContextsWrapRoundTheEnds) {
+    const std::string rules = "B < A --> X\nB > A --> Y";
+    // The first module's left context is the last module, the last one's right context the first.
+    EXPECT_EQ(once("ring lsystem\n", "ACB", rules), "XCY");
+    EXPECT_EQ(once("ring lsystem\n", "A(1)B(2)", "B(y) < A(x) --> X(x,y)\nB(y) > A(x) --> Y(x,y)"), "X(1,2)Y(1,2)");
+    // Branches and ignored modules at the ends are skipped as anywhere else.
+    EXPECT_EQ(once("ring lsystem\n", "[E]ACB[D]", rules), "[E]XCY[D]");
+    EXPECT_EQ(once("ring lsystem\nignore: F\n", "FACBF", rules), "FXCYF");
+    EXPECT_EQ(once("ring lsystem\n", "[C]BA", "A > [C]B --> X"), "[C]BX");
+    // A left context climbs out of the first branch and wraps; a right context still ends at a ']'.
+    EXPECT_EQ(once("ring lsystem\n", "[A]CB", "B < A --> X"), "[X]CB");
+    EXPECT_EQ(once("ring lsystem\n", "A[CB]", "B > A --> Y"), "A[CB]");
+    // A context may come round onto the module itself, and round the ring more than once.
+    EXPECT_EQ(once("ring lsystem\n", "A", "A < A --> X"), "X");
+    EXPECT_EQ(once("ring lsystem\n", "A[B]", "A > A --> X"), "X[B]");
+    EXPECT_EQ(once("ring lsystem\n", "AB", "BABAB < A --> X"), "XB");
+    EXPECT_EQ(once("ring lsystem\n", "AB", "A > BABAB --> X"), "XB");
+}
+
+TEST(LsysRing, WithoutTheHeaderNothingWraps) {
+    EXPECT_EQ(once("", "ACB", "B < A --> X\nB > A --> Y"), "ACB");
+    EXPECT_EQ(once("", "[E]ACB[D]", "B < A --> X\nB > A --> Y"), "[E]ACB[D]");
+    EXPECT_EQ(once("", "A", "A < A --> X\nA > A --> Y"), "A");
+    EXPECT_EQ(once("", "AB", "BABAB < A --> X"), "AB");
+}
+
+// Where no module of the ring can be read cpfg goes round for ever; here the context does not match.
+TEST(LsysRing, ARingWithNothingToReadDoesNotMatch) {
+    EXPECT_EQ(once("ring lsystem\n", "[A]", "A < A --> X"), "[A]");
+    EXPECT_EQ(once("ring lsystem\nignore: C\n", "C", "C > C --> X\nC < C --> Y"), "C");
+    EXPECT_EQ(once("ring lsystem\nignore: C\n", "C", "C > [C] --> X"), "C");
+}
+
+TEST(LsysRing, HeaderAsCpfgSpellsIt) {
+    EXPECT_TRUE(parseOk("Ring Lsystem\nAxiom: A\n").ring);
+    EXPECT_TRUE(parseOk("ring lsystem\nAxiom: A\n").ring);
+    EXPECT_FALSE(parseOk("Axiom: A\n").ring);
+    EXPECT_FALSE(parseLsystem("ring lsystem: 1\nAxiom: A\n").ok());
+    EXPECT_FALSE(parseLsystem("ring\nAxiom: A\n").ok());
+}
+
+// Every way of deriving wraps: on several threads, and in a b-grammar (derived, then compressed).
+TEST(LsysRing, EveryDerivationPathWraps) {
+    const Grammar grammar = parseOk("ring lsystem\nAxiom: ACB[E]ACB\nB < A --> X\nB > A --> Y\n");
+    DeriveOptions options = stepsOf(1);
+    options.threads = 4;
+    options.parallelThreshold = 1;
+    EXPECT_EQ(toString(derive(grammar, options), grammar.symbols), "XCY[E]XCY");
+    BGrammarOptions bgrammar;
+    bgrammar.steps = 1;
+    EXPECT_EQ(toString(expand(buildBGrammar(grammar, bgrammar)), grammar.symbols), "XCY[E]XCY");
+}
+
+// vlab's own ring example (oofs, 10-manuals/11-CPFG/Ring/ring.l): 32 cells,
+// one A, passed each step to the B on its right (dir 0) or on its left
+// (dir 1), round the ring. A Start: block makes it derive sequentially.
+constexpr std::string_view kVlabRing = R"(#define dir 0
+#define NR 32
+
+Lsystem: 0
+ring lsystem
+derivation length: 1
+Start: {ang = 180/NR;}
+Axiom: X(NR)
+
+A < B : dir==0 --> A
+B > A : dir==1 --> A
+A --> B
+
+decomposition
+maximum depth: 1000
+
+X(n) : n>1 --> X(n-1)B
+X(n) : n==1 --> A
+
+homomorphism
+maximum depth: 2
+
+A --> ;(1)S
+B --> ;(2)S
+S --> [+(90)F(5)]-(ang)f-(ang)
+
+endlsystem
+)";
+
+// The word cpfg derives with the given derivation length. cpfg does not
+// decompose the axiom (generate.c decomposes a step's successors only) where
+// lsys does (docs/LSYS_FORMAT.md, "Decomposition and interpretation"): cpfg's
+// first step only decomposes X(32) into the ring, so its step n is lsys's n - 1.
+std::string vlabRing(int cpfgLength, double dir) {
+    ParseOptions options;
+    options.defines["dir"] = dir;
+    ParseResult parsed = parseDialect(Dialect::Cpfg, kVlabRing, options);
+    EXPECT_TRUE(parsed.ok()) << formatDiagnostics(parsed.diagnostics, std::string(kVlabRing));
+    EXPECT_TRUE(parsed.grammar.ring);
+    return toString(derive(parsed.grammar, stepsOf(cpfgLength - 1)), parsed.grammar.symbols);
+}
+
+// cpfg's strings: cpfg-str.sh ring.l (derivation length 1), then with its derivation length and dir changed.
+TEST(LsysRing, VlabRingExampleDerivesCpfgsString) {
+    EXPECT_EQ(vlabRing(1, 0), "ABBBBBBBBBBBBBBBBBBBBBBBBBBBBBBB");
+    EXPECT_EQ(vlabRing(2, 0), "BABBBBBBBBBBBBBBBBBBBBBBBBBBBBBB");
+    // The A reaches the last cell; then the first B's left context is that A.
+    EXPECT_EQ(vlabRing(32, 0), "BBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBA");
+    EXPECT_EQ(vlabRing(33, 0), "ABBBBBBBBBBBBBBBBBBBBBBBBBBBBBBB");
+    EXPECT_EQ(vlabRing(40, 0), "BBBBBBBABBBBBBBBBBBBBBBBBBBBBBBB");
+    // Leftwards, the last B's right context is the A in the first cell.
+    EXPECT_EQ(vlabRing(2, 1), "BBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBA");
+    EXPECT_EQ(vlabRing(32, 1), "BABBBBBBBBBBBBBBBBBBBBBBBBBBBBBB");
+    EXPECT_EQ(vlabRing(33, 1), "ABBBBBBBBBBBBBBBBBBBBBBBBBBBBBBB");
+    EXPECT_EQ(vlabRing(34, 1), "BBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBA");
 }
 
 } // namespace
