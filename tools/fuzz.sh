@@ -4,12 +4,15 @@
 #   lsys   the dialect-aware .lsys parser, the rewriter and the turtle
 #   scene  the scene loader (JSON, validation, paths, placement rules)
 #   gltf   the glTF surface loader (tinygltf behind our own checks)
+#   view, func, surface, colour   a vlab object's readers (lsystem/vlab): the
+#          view file, function files and sets, surface files, colour maps
+#          and material files; seeded from their corpus alone
 # It works on a scratch corpus in build-fuzz/run-TARGET seeded from
 # tests/fuzz/corpus/TARGET and the shipped files of that kind, then merges
 # what adds coverage back into tests/fuzz/corpus/TARGET, which the regular
 # test suite replays. A crash leaves build-fuzz/crash-*: fix it, then add the
 # input to tests/fuzz/crashers/TARGET.
-# Usage: tools/fuzz.sh [lsys|scene|gltf] [SECONDS]
+# Usage: tools/fuzz.sh [lsys|scene|gltf|view|func|surface|colour] [SECONDS]
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 target=${1:-lsys}
@@ -18,7 +21,9 @@ case "$target" in
   lsys) seeds=("$root/data/plants") options=(-dict="$root/tests/fuzz/lsys.dict" -max_len=4096) ;;
   scene) seeds=("$root/data/scenes") options=(-dict="$root/tests/fuzz/scene.dict" -max_len=8192) ;;
   gltf) seeds=("$root/data/meshes") options=(-dict="$root/tests/fuzz/gltf.dict" -max_len=16384) ;;
-  *) echo "fuzz.sh: unknown target '$target' (known: lsys, scene, gltf)" >&2; exit 2 ;;
+  view | func | surface) seeds=() options=(-dict="$root/tests/fuzz/$target.dict" -max_len=4096) ;;
+  colour) seeds=() options=(-max_len=4096) ;;
+  *) echo "fuzz.sh: unknown target '$target' (known: lsys, scene, gltf, view, func, surface, colour)" >&2; exit 2 ;;
 esac
 build=$root/build-fuzz
 "$root/tools/deps.sh" fuzz

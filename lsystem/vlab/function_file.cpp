@@ -189,24 +189,26 @@ double bisect(const VlabFunction& function, double x) {
 }
 
 // cpfg precomputes `samples` values when there are more than 2 and
-// otherwise evaluates the curve on every call.
-void prepare(VlabFunction& function, int samples) {
-    if (samples <= 2) return;
+// otherwise evaluates the curve on every call. Every sample is a bisection,
+// so a file, or a set's functions together, may ask for kMaxFunctionSamples
+// at most: `budget` is what is left of them (a set of a thousand functions
+// of 65536 samples each would take many minutes).
+bool prepare(Lines& lines, const Cursor& at, VlabFunction& function, int samples, int& budget) {
+    if (samples <= 2) return true;
+    if (samples > budget)
+        return lines.fail(at, "the function asks for " + std::to_string(samples) + " samples, too many",
+                          "at most " + std::to_string(kMaxFunctionSamples) +
+                              " for a file, or a set's functions in all");
+    budget -= samples;
     function.samples.resize(samples);
     for (int i = 0; i < samples; ++i) function.samples[i] = bisect(function, double(i) / double(samples - 1));
-}
-
-bool validSamples(Lines& lines, const Cursor& at, int samples) {
-    return samples <= kMaxFunctionSamples ||
-           lines.fail(at, "the view file asks for " + std::to_string(samples) + " samples, too many",
-                      "at most " + std::to_string(kMaxFunctionSamples));
+    return true;
 }
 
 // "range: a b" (already read; cpfg ignores the range), "points: n", n points.
-std::optional<VlabFunction> rangeFormat(Lines& lines, const Cursor& first, int samples) {
+std::optional<VlabFunction> rangeFormat(Lines& lines, const Cursor& first, int samples, int& budget) {
     VlabFunction function;
-    if (!points(lines, function, false) || !validSamples(lines, first, samples)) return std::nullopt;
-    prepare(function, samples);
+    if (!points(lines, function, false) || !prepare(lines, first, function, samples, budget)) return std::nullopt;
     return function;
 }
 
@@ -229,7 +231,7 @@ bool editorLines(Lines& lines) {
 }
 
 // "fver 1 1" (already read), "name: n", "samples: s", editor lines, points.
-std::optional<VlabFunction> fverFormat(Lines& lines) {
+std::optional<VlabFunction> fverFormat(Lines& lines, int& budget) {
     VlabFunction function;
     std::optional<Cursor> name = labelled(lines, "name:");
     if (!name) return std::nullopt;
@@ -239,21 +241,24 @@ std::optional<VlabFunction> fverFormat(Lines& lines) {
     function.name = std::string(name->text.substr(begin, name->pos - begin)); // cpfg's "name: %s"
     if (function.name.empty()) return lines.failed(*name, "missing function name", "a name");
     std::optional<Cursor> samplesAt = labelled(lines, "samples:");
-    std::optional<int> samples =
-        samplesAt ? count(lines, *samplesAt, "'samples:' value", 0, kMaxFunctionSamples) : std::nullopt;
-    if (!samples || !editorLines(lines) || !points(lines, function, true)) return std::nullopt;
-    prepare(function, *samples);
+    if (!samplesAt) return std::nullopt;
+    samplesAt->skipSpaces();
+    Cursor value = *samplesAt;
+    const std::optional<int> samples = count(lines, value, "'samples:' value", 0, kMaxFunctionSamples);
+    if (!samples || !editorLines(lines) || !points(lines, function, true) ||
+        !prepare(lines, *samplesAt, function, *samples, budget))
+        return std::nullopt;
     return function;
 }
 
 // One function in either format, starting at the next line.
-std::optional<VlabFunction> function(Lines& lines, int samples) {
+std::optional<VlabFunction> function(Lines& lines, int samples, int& budget) {
     std::optional<Cursor> first = lines.next("'range:' or 'fver 1 1'");
     if (!first) return std::nullopt;
     if (first->accept("range:")) {
         Cursor range = *first;
         if (!number(range) || !number(range)) return lines.failed(range, "malformed range", "two numbers");
-        return rangeFormat(lines, *first, samples);
+        return rangeFormat(lines, *first, samples, budget);
     }
     if (!first->accept("fver")) return lines.failed(*first, "not a function file", "'range:' or 'fver 1 1'");
     Cursor version = *first;
@@ -261,7 +266,7 @@ std::optional<VlabFunction> function(Lines& lines, int samples) {
     const std::optional<double> minor = major ? number(version) : std::nullopt;
     if (!minor || *major != 1 || *minor != 1)
         return lines.failed(*first, "unsupported function file version", "'fver 1 1'");
-    return fverFormat(lines);
+    return fverFormat(lines, budget);
 }
 
 std::optional<std::string> readText(const std::filesystem::path& path, std::vector<Diagnostic>& diagnostics) {
@@ -293,7 +298,8 @@ FunctionReadResult readFunctionFile(const std::filesystem::path& path, int sampl
     std::optional<std::string> text = readText(path, result.diagnostics);
     if (!text) return result;
     Lines lines(*text, path.string(), result.diagnostics);
-    if (std::optional<VlabFunction> read = function(lines, samples)) result.function = std::move(*read);
+    int budget = kMaxFunctionSamples;
+    if (std::optional<VlabFunction> read = function(lines, samples, budget)) result.function = std::move(*read);
     if (result.function.name.empty()) result.function.name = path.stem().string();
     return result;
 }
@@ -311,8 +317,9 @@ FunctionSetReadResult readFunctionSet(const std::filesystem::path& path) {
         return result;
     }
     const std::optional<int> items = labelledCount(lines, "items:", 0, kMaxSetItems);
+    int budget = kMaxFunctionSamples; // shared by the set's functions
     for (int i = 0; items && i < *items; ++i) {
-        std::optional<VlabFunction> read = function(lines, kSetSamples);
+        std::optional<VlabFunction> read = function(lines, kSetSamples, budget);
         if (!read) return result;
         result.functions.push_back(std::move(*read));
     }

@@ -54,7 +54,8 @@ struct FunctionSetReadResult {
 FunctionSetReadResult readFunctionSet(const std::filesystem::path& path);
 
 // Most points a function may have (multiplicities included), and most
-// samples it may be prepared with.
+// samples one file, or all the functions of a set together, may be
+// prepared with.
 inline constexpr size_t kMaxFunctionPoints = 4096;
 inline constexpr int kMaxFunctionSamples = 1 << 16;
 

@@ -1,7 +1,9 @@
 #include "lsystem/vlab/object.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -152,7 +154,56 @@ struct ObjectLook {
     ViewFile view;
     PlantLook look;
     std::shared_ptr<const std::vector<VlabFunction>> functions;
+    std::map<std::string, int> functionNames; // the set's names and their ids, for the preprocessor
 };
+
+// A warning at `line` of the view file.
+void warnInView(PlantFile& plant, const ObjectFiles& files, int line, std::string message) {
+    plant.parsed.warnings.push_back({files.view.string(), line, 1, std::move(message), {}, {}, Severity::Warning});
+}
+
+// Whether a file the view file names at `line` is missing, which a warning
+// then says. cpfg reads on without it: it skips a surface file that is not
+// there (interpret.c, "surface:", access(F_OK)), makes a function file it
+// cannot open a curve of 0 (splinefun.cpp, SplineFunction::_Default) and a
+// function set it cannot open no functions (splinearr.cpp, ReadGallery).
+bool missing(const std::string& named, const ObjectFiles& files, int line, const std::string& what,
+             const std::string& instead, PlantFile& plant) {
+    std::error_code error;
+    if (fs::exists(files.lsystem.parent_path() / named, error)) return false;
+    warnInView(plant, files, line, "the " + what + " file '" + named + "' does not exist: " + instead + ", as in cpfg");
+    return true;
+}
+
+bool isIdentifier(const std::string& name) {
+    auto identifierChar = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    return !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
+           std::all_of(name.begin(), name.end(), identifierChar);
+}
+
+// The set's functions, named for the L-system as cpfg names them: it
+// preprocesses the .l with -DNAME=i for the i-th function (generate.c,
+// PreprocessLsystem). cpfg's preprocessor rejects a -D whose name is no C
+// identifier, which then names nothing.
+void readSet(const ViewFunctionSet& set, const ObjectFiles& files, ObjectLook& object,
+             std::vector<VlabFunction>& functions, PlantFile& plant) {
+    if (missing(set.file, files, set.line, "function set", "it adds no functions", plant)) return;
+    FunctionSetReadResult read = readFunctionSet(files.lsystem.parent_path() / set.file);
+    append(plant.parsed.diagnostics, std::move(read.diagnostics));
+    for (VlabFunction& function : read.functions) {
+        functions.push_back(std::move(function));
+        const std::string& name = functions.back().name;
+        const int id = static_cast<int>(functions.size());
+        if (!set.names || name.empty()) continue;
+        if (isIdentifier(name))
+            object.functionNames[name] = id; // a name given twice: the later -D wins, as in cpp
+        else
+            warnInView(plant, files, set.line,
+                       "the function set's function '" + name + "' (func(" + std::to_string(id) +
+                           ", x)) has a name that is no C identifier: cpfg's preprocessor rejects it, so it names "
+                           "nothing");
+    }
+}
 
 ObjectLook readObjectLook(const ObjectFiles& files, PlantFile& plant) {
     ObjectLook object;
@@ -165,16 +216,27 @@ ObjectLook readObjectLook(const ObjectFiles& files, PlantFile& plant) {
     }
     const fs::path folder = files.lsystem.parent_path();
     auto functions = std::make_shared<std::vector<VlabFunction>>();
+    if (object.view.functionSet) readSet(*object.view.functionSet, files, object, *functions, plant);
     for (const ViewFunction& function : object.view.functions) {
-        FunctionReadResult read = readFunctionFile(folder / function.file, function.samples);
+        const fs::path path = folder / function.file;
+        if (missing(function.file, files, function.line, "function", "its function is 0 everywhere", plant)) {
+            functions->push_back(VlabFunction{.name = path.stem().string()});
+            continue;
+        }
+        FunctionReadResult read = readFunctionFile(path, function.samples);
         append(errors, std::move(read.diagnostics));
         functions->push_back(std::move(read.function));
     }
     object.functions = std::move(functions);
     auto surfaces = std::make_shared<std::vector<SurfaceMesh>>();
     for (const ViewSurface& surface : object.view.surfaces) {
+        const fs::path path = folder / surface.file;
+        if (missing(surface.file, files, surface.line, "surface", "~" + surface.id + " draws nothing", plant)) {
+            surfaces->push_back(SurfaceMesh{.name = surface.id}); // found before the library's, and empty
+            continue;
+        }
         SurfaceReadResult read =
-            readSurfaceFile(folder / surface.file, surface.id, surface.scale, surface.sPrecision, surface.tPrecision);
+            readSurfaceFile(path, surface.id, surface.scale, surface.sPrecision, surface.tPrecision);
         append(errors, std::move(read.diagnostics));
         read.mesh.endPoint = read.endPoint;
         surfaces->push_back(std::move(read.mesh));
@@ -282,6 +344,8 @@ PlantFile loadObject(const fs::path& path, ParseOptions options) {
     const ObjectLook object = readObjectLook(*files, plant);
     options.file = plant.file;
     options.functions = object.functions;
+    // The tool's own -D (the user's) wins over a function's name.
+    for (const auto& [name, id] : object.functionNames) options.defines.try_emplace(name, id);
     readAndParse(plant, std::nullopt, options);
     applyView(object.view, plant.parsed.grammar);
     plant.parsed.grammar.style.look = object.look;

@@ -261,6 +261,13 @@ void surface(Reader& r, const Values& v) {
 
 void function(Reader& r, const Values& v) {
     r.view().functions.push_back({std::string(v[0].text), v.size() > 1 ? int(v[1].number) : -1, r.labelLine()});
+    if (r.view().functionSet) r.view().functionSet->names = false;
+}
+
+// cpfg's ReadFunctionSet empties its table of functions first (splinefun.cpp).
+void functionSet(Reader& r, const Values& v) {
+    r.view().functions.clear();
+    r.view().functionSet = ViewFunctionSet{std::string(v[0].text), r.labelLine()};
 }
 
 void contour(Reader& r, const Values& v) {
@@ -314,7 +321,8 @@ constexpr LabelFormat kRead[] = {
     {"viewing angle:", " %f", numberInto<&V::viewingAngle>, "45"},
     {"initial scale:", " %f", numberInto<&V::initialScale, true>, "1"},
     {"scale multiplier:", " %f", numberInto<&V::scaleMultiplier, true>, "0.9"},
-    {"function:", " %s| %d", function, "internode.func 100"}};
+    {"function:", " %s| %d", function, "internode.func 100"},
+    {"function set:", " %s", functionSet, "functions.fset"}};
 // those of cpfg's window and renderer, accepted quietly (one per line),
 constexpr std::string_view kQuiet = "\nfront distance:\nback distance:\nz buffer:\ncue range:\nshade mode:\n"
                                     "diffuse reflection:\nsurface ambient:\nsurface diffuse:\nbackground color:\n"
@@ -324,7 +332,7 @@ constexpr std::string_view kQuiet = "\nfront distance:\nback distance:\nz buffer
                                     "generate on view change:\nwinfont:\nconcave polygons:\nshadow map:\nPS linecap:\n";
 // and those whose absence changes the plant: read, but not drawn (warned of).
 constexpr std::string_view kNotDrawn = "\nline:\nblob:\ntropism:\ntorque:\ntexture:\nbackground scene:\ntsurface:\n"
-                                       "curve:\nfunction set:\n";
+                                       "curve:\n";
 
 bool listed(std::string_view list, std::string_view label) {
     return list.find(std::string("\n").append(label) + "\n") != std::string_view::npos;
@@ -387,12 +395,13 @@ ViewReadResult readViewFile(const std::filesystem::path& path) {
     ViewReadResult result = parseViewFile(preprocessed.text, name);
     mapToFiles(preprocessed, result.diagnostics);
     mapToFiles(preprocessed, result.warnings);
-    auto mapLines = [&](auto& items) { // to the lines of the file they came from
-        for (auto& item : items)
-            if (item.line >= 1 && size_t(item.line) <= preprocessed.lines.size())
-                item.line = preprocessed.lines[size_t(item.line) - 1].line;
+    auto mapLine = [&](int& line) { // to the line of the file it came from
+        if (line >= 1 && size_t(line) <= preprocessed.lines.size()) line = preprocessed.lines[size_t(line) - 1].line;
     };
-    mapLines(result.view.surfaces), mapLines(result.view.functions), mapLines(result.view.contours);
+    for (ViewSurface& surface : result.view.surfaces) mapLine(surface.line);
+    for (ViewFunction& function : result.view.functions) mapLine(function.line);
+    for (ViewContour& contour : result.view.contours) mapLine(contour.line);
+    if (result.view.functionSet) mapLine(result.view.functionSet->line);
     return result;
 }
 

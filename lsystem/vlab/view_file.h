@@ -43,6 +43,16 @@ struct ViewFunction {
     int line = 0;
 };
 
+// "function set: functions.fset": func(i, x) reads the set's i-th function
+// (function_file.h, readFunctionSet), before those of any "function:" line.
+struct ViewFunctionSet {
+    std::string file;
+    int line = 0;
+    // Whether cpfg names the set's functions for the L-system: a "function:"
+    // line after the set turns that off (interpret.c, SetFunctionsFromGallery).
+    bool names = true;
+};
+
 // "contour: 1 leaf.con".
 struct ViewContour {
     int id = 0;
@@ -85,7 +95,10 @@ struct ViewFile {
     std::optional<ViewBox> box;
     glm::vec3 lightDirection{1.0f, 0.0f, 0.0f}; // normalised
     std::vector<ViewSurface> surfaces;
-    std::vector<ViewFunction> functions; // in file order: func(1, x) is the first
+    // cpfg's functions: a "function set:" line drops those named before it and
+    // its own come first; "function:" lines add theirs after, in file order.
+    std::optional<ViewFunctionSet> functionSet;
+    std::vector<ViewFunction> functions;
     std::vector<ViewContour> contours;
 };
 

@@ -1,9 +1,10 @@
 // Replays every fuzz corpus input (crashers the fuzzers found included, once
 // fixed) and every shipped file of each kind through its fuzz target: plant
 // files through parser, rewriter and turtle, scene files through the scene
-// loader, glTF files through the surface loader. Under the regular build this
-// proves none of them crash or hang any more; under the sanitizer build
-// (tools/sanitize.sh) that none reads or writes out of bounds.
+// loader, glTF files through the surface loader, a vlab object's view,
+// function, surface and colour files through their readers. Under the
+// regular build this proves none of them crash or hang any more; under the
+// sanitizer build (tools/sanitize.sh) that none reads or writes out of bounds.
 #include "fuzz_targets.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -19,16 +21,17 @@ namespace {
 namespace fs = std::filesystem;
 using Target = void (*)(const uint8_t*, size_t);
 
-std::vector<fs::path> inputsUnder(const fs::path& dir) {
+// The files under `dir` (those ending in `extension`, when given).
+std::vector<fs::path> inputsUnder(const fs::path& dir, std::string_view extension) {
     std::vector<fs::path> files;
     for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir))
-        if (e.is_regular_file()) files.push_back(e.path());
+        if (e.is_regular_file() && (extension.empty() || e.path().extension() == extension)) files.push_back(e.path());
     std::sort(files.begin(), files.end());
     return files;
 }
 
-void replay(Target target, const fs::path& dir, size_t atLeast) {
-    const std::vector<fs::path> files = inputsUnder(dir);
+void replay(Target target, const fs::path& dir, size_t atLeast, std::string_view extension = {}) {
+    const std::vector<fs::path> files = inputsUnder(dir, extension);
     ASSERT_GE(files.size(), atLeast) << dir;
     for (const fs::path& file : files) {
         SCOPED_TRACE(file.string());
@@ -56,5 +59,29 @@ TEST(FuzzCorpus, EveryGltfCorpusInputRunsToCompletion) { replay(pf::fuzz::runGlt
 TEST(FuzzCorpus, EveryPastGltfCrasherRunsToCompletion) { replay(pf::fuzz::runGltfInput, kFuzz / "crashers/gltf", 1); }
 
 TEST(FuzzCorpus, EveryShippedMeshRunsToCompletion) { replay(pf::fuzz::runGltfInput, kData / "meshes", 2); }
+
+TEST(FuzzCorpus, EveryViewCorpusInputRunsToCompletion) { replay(pf::fuzz::runViewInput, kFuzz / "corpus/view", 20); }
+
+TEST(FuzzCorpus, EveryShippedViewFileRunsToCompletion) { replay(pf::fuzz::runViewInput, kData / "plants", 10, ".v"); }
+
+TEST(FuzzCorpus, EveryFunctionCorpusInputRunsToCompletion) {
+    replay(pf::fuzz::runFuncInput, kFuzz / "corpus/func", 20);
+}
+
+TEST(FuzzCorpus, EveryPastFunctionCrasherRunsToCompletion) {
+    replay(pf::fuzz::runFuncInput, kFuzz / "crashers/func", 1);
+}
+
+TEST(FuzzCorpus, EverySurfaceCorpusInputRunsToCompletion) {
+    replay(pf::fuzz::runSurfaceInput, kFuzz / "corpus/surface", 10);
+}
+
+TEST(FuzzCorpus, EveryColourCorpusInputRunsToCompletion) {
+    replay(pf::fuzz::runColourInput, kFuzz / "corpus/colour", 10);
+}
+
+TEST(FuzzCorpus, EveryShippedColourMapRunsToCompletion) {
+    replay(pf::fuzz::runColourInput, kData / "plants", 10, ".map");
+}
 
 } // namespace

@@ -18,5 +18,12 @@ void runLsysInput(const uint8_t* data, size_t size);
 void runSceneInput(const uint8_t* data, size_t size);
 // Load as a glTF surface mesh (.glb when it starts with the binary magic).
 void runGltfInput(const uint8_t* data, size_t size);
+// The readers of a vlab object's files (lsystem/vlab, docs/VLAB.md): a view
+// file's text; a function file in either format and as a function set,
+// evaluated; a surface file, tessellated; a colour map and a material file.
+void runViewInput(const uint8_t* data, size_t size);
+void runFuncInput(const uint8_t* data, size_t size);
+void runSurfaceInput(const uint8_t* data, size_t size);
+void runColourInput(const uint8_t* data, size_t size);
 
 } // namespace pf::fuzz

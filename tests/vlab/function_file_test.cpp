@@ -189,6 +189,20 @@ TEST(FunctionFile, TooManySamplesFromTheViewFileAreRefused) {
     EXPECT_NE(read.diagnostics[0].message.find("asks for 65537 samples, too many"), std::string::npos);
 }
 
+// Each sample is a bisection: a set's functions share the bound, or a
+// 4 KiB set of 65536-sample functions would take minutes.
+TEST(FunctionFile, ASetsFunctionsShareTheBoundOnSamples) {
+    const std::string function = "fver 1 1\nname: f\nsamples: 40000\nflip: off\npoints: 4\n0 0\n0 1\n1 1\n1 0\n";
+    TempFunction set("big.fset", "funcgalleryver 1 1\nitems: 2\n" + function + function);
+    const FunctionSetReadResult read = readFunctionSet(set.path);
+    ASSERT_EQ(read.diagnostics.size(), 1u);
+    EXPECT_EQ(read.diagnostics[0].line, 14); // the second function's "samples:"
+    EXPECT_EQ(read.diagnostics[0].column, 10);
+    EXPECT_NE(read.diagnostics[0].message.find("40000 samples, too many"), std::string::npos);
+    ASSERT_EQ(read.functions.size(), 1u);
+    EXPECT_EQ(read.functions[0].samples.size(), 40000u);
+}
+
 TEST(FunctionFile, AMissingFileIsNamed) {
     const std::filesystem::path missing = std::filesystem::temp_directory_path() / "plantfield_no_such.func";
     const FunctionReadResult read = readFunctionFile(missing);

@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 
+#include "lsystem/module_string.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/turtle.h"
 #include "lsystem/vlab/object.h"
@@ -142,6 +144,95 @@ TEST_F(VlabObject, APlainPlantFileIsNoObject) {
     EXPECT_DOUBLE_EQ(plant.parsed.grammar.angle, 30.0);
     EXPECT_DOUBLE_EQ(plant.parsed.grammar.style.widthFactor, 0.7); // ABOP's turtle
     EXPECT_FALSE(plant.parsed.grammar.style.look.palette);
+}
+
+// Two functions cpfg evaluates to 0.25 and 0.75 everywhere, named WIDTH and BEND.
+constexpr const char* kFunctionSet = "funcgalleryver 1 1\nitems: 2\n"
+                                     "fver 1 1\nname: WIDTH\nsamples: 10\nflip: off\npoints: 4\n"
+                                     "0 0.25\n0.3 0.25\n0.6 0.25\n1 0.25\n"
+                                     "fver 1 1\nname: BEND\nsamples: 10\nflip: off\npoints: 4\n"
+                                     "0 0.75\n0.3 0.75\n0.6 0.75\n1 0.75\n";
+// A function file of 0.5 everywhere.
+constexpr const char* kHalf = "range: 0 1\npoints: 4\n0 0.5\n0.3 0.5\n0.6 0.5\n1 0.5\n";
+
+// The L-system with `production` for A, derived one step, against `expected`.
+void expectDerived(const PlantFile& plant, const std::string& expected) {
+    ASSERT_TRUE(plant.parsed.ok()) << formatDiagnostics(plant.parsed.diagnostics, plant.source);
+    const Grammar& grammar = plant.parsed.grammar;
+    const std::optional<std::string> difference = firstDifference(derive(grammar), grammar.symbols, expected);
+    EXPECT_FALSE(difference) << *difference;
+}
+
+std::string lsystemWith(const std::string& production) {
+    return "Lsystem: 1\nderivation length: 1\nAxiom: A\nA --> " + production + "\nendlsystem\n";
+}
+
+// cpfg defines a set's names as macros for the L-system (generate.c,
+// PreprocessLsystem); the set drops a function named before it.
+TEST_F(VlabObject, AFunctionSetNamesItsFunctionsForTheLsystem) {
+    write("plant.l", lsystemWith("B(func(WIDTH, 0.5), func(BEND, 0.1), func(2, 1))"));
+    write("plant.v", "function: half.func\nfunction set: shapes.fset\n");
+    write("half.func", kHalf);
+    write("shapes.fset", kFunctionSet);
+    expectDerived(loadObject(folder_), "B(0.25,0.75,0.75)");
+    // The tool's own -D wins over a function's name.
+    expectDerived(loadObject(folder_, {.defines = {{"BEND", 1.0}}}), "B(0.25,0.25,0.75)");
+}
+
+TEST_F(VlabObject, AFunctionLineAfterTheSetAddsItsFunctionButUnnamesTheSet) {
+    write("plant.l", "#ifdef WIDTH\n#define NAMED 1\n#else\n#define NAMED 0\n#endif\n" +
+                         lsystemWith("B(NAMED, func(1, 0.5), func(3, 0.5))"));
+    write("plant.v", "function set: shapes.fset\nfunction: half.func\n");
+    write("half.func", kHalf);
+    write("shapes.fset", kFunctionSet);
+    expectDerived(loadObject(folder_), "B(0,0.25,0.5)");
+}
+
+// cpfg's preprocessor rejects -Dleaf-width=1, so the function has only its number.
+TEST_F(VlabObject, AFunctionNamedByNoIdentifierIsReadByItsNumber) {
+    write("plant.l", lsystemWith("B(func(1, 0.5))"));
+    write("plant.v", "\nfunction set: shapes.fset\n");
+    write("shapes.fset", "funcgalleryver 1 1\nitems: 1\nfver 1 1\nname: leaf-width\nsamples: 10\nflip: off\n"
+                         "points: 4\n0 0.25\n0.3 0.25\n0.6 0.25\n1 0.25\n");
+    const PlantFile plant = loadObject(folder_);
+    expectDerived(plant, "B(0.25)");
+    ASSERT_EQ(plant.parsed.warnings.size(), 1u);
+    EXPECT_EQ(plant.parsed.warnings[0].line, 2);
+    EXPECT_NE(plant.parsed.warnings[0].message.find("'leaf-width' (func(1, x))"), std::string::npos)
+        << plant.parsed.warnings[0].message;
+}
+
+// cpfg skips a surface file that is not there and reads a function file it
+// cannot open as 0; plantfield warns of both at the view file's line.
+TEST_F(VlabObject, MissingFilesOfTheViewAreWarnedOfAndDrawNothing) {
+    write("plant.l", lsystemWith("F~l(2)FB(func(1, 0.5), func(2, 0.5))"));
+    write("plant.v", "function set: lost.fset\nsurface: l nowhere.s 1\n\nfunction: gone.func\nfunction: half.func\n");
+    write("half.func", kHalf);
+    const PlantFile plant = loadObject(folder_);
+    expectDerived(plant, "F~l(2)FB(0,0.5)");
+    const std::vector<Diagnostic>& warnings = plant.parsed.warnings;
+    ASSERT_EQ(warnings.size(), 3u);
+    auto warningOf = [&](const std::string& file) { // the one naming the file, else none
+        for (const Diagnostic& warning : warnings)
+            if (warning.message.find("'" + file + "'") != std::string::npos) return warning;
+        return Diagnostic{};
+    };
+    const std::pair<const char*, int> expected[] = {{"lost.fset", 1}, {"nowhere.s", 2}, {"gone.func", 4}};
+    for (const auto& [file, line] : expected) {
+        const Diagnostic& warning = warningOf(file);
+        EXPECT_EQ(std::tie(warning.file, warning.line, warning.severity),
+                  std::tuple((folder_ / "plant.v").string(), line, Severity::Warning));
+    }
+    EXPECT_NE(warningOf("nowhere.s").message.find("~l draws nothing"), std::string::npos);
+    EXPECT_EQ(warningOf("gone.func").sourceLine, "function: gone.func"); // quoted: not the L-system's line
+
+    // ~l leaves the turtle where it is, as cpfg's determine_end_point does for an id without a surface.
+    const Grammar& grammar = plant.parsed.grammar;
+    const PlantAsset drawn = plantFromGrammar(grammar, derive(grammar));
+    ASSERT_EQ(drawn.primitives.size(), 3u);
+    EXPECT_EQ(drawn.primitives[1].kind, PrimitiveKind::Surface);
+    EXPECT_TRUE(drawn.surfaces.at(drawn.primitives[1].shape).positions.empty());
+    EXPECT_NEAR(glm::length(drawn.primitives[2].frame.position - drawn.primitives[0].frame.position), 1.0f, 1e-6f);
 }
 
 } // namespace

@@ -187,6 +187,23 @@ TEST(ViewFile, SurfacesFunctionsAndContoursAreListedInOrder) {
               std::tuple(2, "stripe.con"s, 8));
 }
 
+// cpfg's ReadFunctionSet empties the table of functions, and a "function:"
+// line after the set adds to it but stops cpfg naming the set's functions.
+TEST(ViewFile, AFunctionSetReplacesTheFunctionsBeforeIt) {
+    using namespace std::string_literals;
+    const ViewFile named = parsedOk("function: a.func\nfunction set: shapes.fset\n");
+    ASSERT_TRUE(named.functionSet);
+    EXPECT_EQ(std::tie(named.functionSet->file, named.functionSet->line, named.functionSet->names),
+              std::tuple("shapes.fset"s, 2, true));
+    EXPECT_TRUE(named.functions.empty());
+
+    const ViewFile unnamed = parsedOk("function set: shapes.fset\nfunction: b.func 20\n");
+    ASSERT_TRUE(unnamed.functionSet);
+    EXPECT_FALSE(unnamed.functionSet->names);
+    ASSERT_EQ(unnamed.functions.size(), 1u);
+    EXPECT_EQ(unnamed.functions[0].file, "b.func");
+}
+
 TEST(ViewFile, SurfaceIdIsOneCharacterAsCpfgReadsIt) {
     const ViewReadResult result = parseViewFile("surface: leaf.s 1 6 12\n", "plant.v");
     EXPECT_TRUE(result.ok());
@@ -200,13 +217,13 @@ TEST(ViewFile, SurfaceIdIsOneCharacterAsCpfgReadsIt) {
 TEST(ViewFile, LabelsNotDrawnAreNamedInWarningsAtTheirPosition) {
     const ViewReadResult result = parseViewFile(
         "angle factor: 8\n  texture: F: leaf.png E: m R: 1.6\ntropism: T: 0,1,0 E: 0.2\ntorque: T: 0.0 1.0 0.0\n"
-        "blob: field.dat 1 1 1\ntsurface: s leaf.t 1\ncurve: profile.con\nfunction set: functions.fset\n"
+        "blob: field.dat 1 1 1\ntsurface: s leaf.t 1\ncurve: profile.con\n"
         "background scene: background.dat\nline: L line.s .01\nangle increment: 30\n",
         "plant.v");
     EXPECT_TRUE(result.ok());
     EXPECT_EQ(result.view.angleIncrement, 30.0f); // what follows their values is read on
-    const char* labels[] = {"texture:", "tropism:",      "torque:",           "blob:", "tsurface:",
-                            "curve:",   "function set:", "background scene:", "line:"};
+    const char* labels[] = {
+        "texture:", "tropism:", "torque:", "blob:", "tsurface:", "curve:", "background scene:", "line:"};
     ASSERT_EQ(result.warnings.size(), std::size(labels));
     for (size_t i = 0; i < std::size(labels); ++i) {
         EXPECT_EQ(result.warnings[i].severity, Severity::Warning);
