@@ -128,7 +128,7 @@ public:
     BGrammar build() {
         const int steps = std::max(0, options_.steps.value_or(grammar_.derivationLength));
         ModuleString axiom = axiomString(grammar_, seed_);
-        passesToFixpoint(grammar_.decomposition, 1, 0, axiom);
+        if (grammar_.decomposeAxiom) passesToFixpoint(grammar_.decomposition, 1, 0, axiom);
         const uint64_t axiomKey = splitmix64(seed_);
         std::vector<BodyItem> body;
         for (size_t i = 0; i < axiom.size(); ++i) {

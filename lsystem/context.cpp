@@ -29,6 +29,14 @@ bool goesOnRight(const ContextView& view, size_t& j, bool& wrapped) {
     return true;
 }
 
+// The ']' that ends the branch j is in (or the string's end), passing over the branches inside it.
+size_t branchEnd(const ContextView& view, size_t j) {
+    const size_t n = view.string.size();
+    while (j < n && view.string.symbols[j] != kPop)
+        j = view.string.symbols[j] == kPush ? static_cast<size_t>(view.partners[j]) + 1 : j + 1;
+    return j;
+}
+
 // Matches pattern[k..] against the string from position j onwards. Recursion
 // happens only at a '[' of the pattern, so its depth is bounded by the pattern.
 bool matchRightFrom(const ContextView& view, std::span<const PatternModule> pattern, size_t k, size_t j,
@@ -49,15 +57,12 @@ bool matchRightFrom(const ContextView& view, std::span<const PatternModule> patt
             return false;
         }
         if (wanted == kSkipBranch) {
-            // Skip to the end of the current branch, stopping at its ']'.
-            while (j < n && symbols[j] != kPop)
-                j = symbols[j] == kPush ? static_cast<size_t>(view.partners[j]) + 1 : j + 1;
+            j = branchEnd(view, j); // stopping at the branch's ']'
             continue;
         }
         if (wanted == kPop) {
             // The pattern leaves its branch: skip whatever remains of it.
-            while (j < n && symbols[j] != kPop)
-                j = symbols[j] == kPush ? static_cast<size_t>(view.partners[j]) + 1 : j + 1;
+            j = branchEnd(view, j);
             if (j < n) ++j;
             continue;
         }
@@ -81,9 +86,38 @@ bool matchRightFrom(const ContextView& view, std::span<const PatternModule> patt
     return true;
 }
 
+// cpfg's right context (generate.c, RconDiff), from position j: each module
+// of the pattern, '[' and ']' too, is compared with the next module that is
+// neither ignored nor the start of a lateral branch (a '[' of the pattern
+// meets the '[' itself); '=' goes on from the ']' that ends the branch.
+bool matchRightCpfg(const ContextView& view, std::span<const PatternModule> pattern, size_t j, double* variables) {
+    const SymbolId* symbols = view.string.symbols.data();
+    for (const PatternModule& wanted : pattern) {
+        bool wrapped = false;
+        if (wanted.symbol == kSkipBranch) {
+            if (goesOnRight(view, j, wrapped)) j = branchEnd(view, j);
+            continue;
+        }
+        while (true) {
+            if (!goesOnRight(view, j, wrapped)) return false;
+            const SymbolId symbol = symbols[j];
+            if (view.ignored[symbol])
+                ++j; // brackets too, when ignored
+            else if (symbol == kPush && wanted.symbol != kPush)
+                j = static_cast<size_t>(view.partners[j]) + 1;
+            else
+                break;
+        }
+        if (!bindIfMatches(view, wanted, j, variables)) return false;
+        ++j;
+    }
+    return true;
+}
+
 } // namespace
 
 bool matchRight(const ContextView& view, std::span<const PatternModule> pattern, size_t position, double* variables) {
+    if (view.cpfg) return matchRightCpfg(view, pattern, position + 1, variables);
     return matchRightFrom(view, pattern, 0, position + 1, variables);
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Context matching with lpfg's bracket rules.
+// Context matching with lpfg's bracket rules, or with cpfg's.
 //
 // Left context: walks leftwards from the module, skipping ignored symbols,
 // skipping whole bracketed branches "[...]" that lie before it on the same
@@ -10,6 +10,18 @@
 // search (the branch is over). A '[' in the pattern descends into a lateral
 // branch (trying each branch at that node in turn); a ']' in the pattern skips
 // the rest of the branch it is in.
+//
+// cpfg's rules (Grammar::cpfgContexts; cpfg generate.c, RconDiff and
+// LconDiff) differ in the right context only. The pattern is read module for
+// module, each after the ignored modules and the lateral branches before it:
+// a '[' of the pattern must be the next module, so it enters the first
+// lateral branch only, and a ']' must be, so the branch has to end right
+// after the modules the pattern names ('=' skips the rest of a branch). An
+// ignored '[' or ']' (consider: without brackets) is read past like any
+// ignored module, so the context runs on into a branch or out of one. The
+// left context skips branches and climbs at '[' whatever is ignored, as
+// lpfg's does, and a bracket in its pattern never matches: the walk never
+// stops on one.
 //
 // Ring L-systems (cpfg generate.c, LconDiff and RconDiff): the string's ends
 // are joined, so a left context that reaches the start goes on from the last
@@ -32,6 +44,7 @@ struct ContextView {
     const int32_t* partners; // computeBracketPartners of string
     const uint8_t* ignored;  // per symbol
     bool ring = false;       // Grammar::ring
+    bool cpfg = false;       // Grammar::cpfgContexts
 };
 
 // On success the parameters of the context modules are written to variables

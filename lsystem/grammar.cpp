@@ -60,6 +60,12 @@ void finalizeGrammar(Grammar& grammar) {
     index(grammar.decomposition, grammar.symbols.size());
     index(grammar.interpretation, grammar.symbols.size());
     grammar.ignored.resize(grammar.symbols.size(), 0);
+    grammar.localCount = 0;
+    for (ProductionSet* set : {&grammar.rules, &grammar.decomposition, &grammar.interpretation})
+        for (Production& production : set->productions) {
+            production.firstLocal = grammar.localCount;
+            grammar.localCount += static_cast<uint32_t>(production.variables.size() - production.formalCount);
+        }
     grammar.sequential = sequential(grammar);
     grammar.queries = hasQueries(grammar);
 }

@@ -40,8 +40,11 @@ struct Production {
     std::vector<PatternModule> strictTail;
     std::vector<PatternModule> right;   // right context, may contain [ and ]
     std::vector<std::string> variables; // formal parameters, then the blocks' local variables
-    uint16_t formalCount = 0;           // of variables; the locals start at 0 on every application
-    Block before;                       // cpfg's statements before the condition, when the predecessor matches
+    uint16_t formalCount = 0;           // of variables; the rest are locals
+    // Where a derivation keeps the locals from one application to the next
+    // (cpfg's rule): their first index into its Grammar::localCount values.
+    uint32_t firstLocal = 0;
+    Block before; // cpfg's statements before the condition, when the predecessor matches
     std::optional<Expression> condition;
     Block after; // and after it, when it holds
     std::vector<SuccessorModule> successor;
@@ -76,8 +79,10 @@ struct TurtleStyle {
     // Widths are cpfg's screen pixels ("initial line width: 2 pixels"):
     // interpretPlant turns them into lengths (widenPixelLines, lsystem/turtle.h).
     bool pixelLines = false;
-    // G and g are cpfg's drawing and moving without a polygon vertex (read
-    // from cpfg's files); elsewhere they are ordinary modules.
+    // cpfg's turtle ("turtle modules: cpfg", which cpfg's files set): G and g
+    // draw and move without a polygon vertex and @M and @R place the turtle
+    // (elsewhere all four are ordinary modules), tropism bends as cpfg's, ?U
+    // answers cpfg's up vector.
     bool cpfgModules = false;
     PlantLook look;
 };
@@ -101,9 +106,19 @@ struct Grammar {
     // precedes its first, so contexts wrap round its ends (cpfg generate.c,
     // LconDiff and RconDiff; lsystem/context.h).
     bool ring = false;
+    // cpfg's context rules ("context: cpfg", lsystem/context.h): a right
+    // context reads the pattern's brackets module for module and ignored
+    // brackets like any ignored module; a bracket in a left context never
+    // matches. Otherwise lpfg's rules (docs/LSYS_FORMAT.md).
+    bool cpfgContexts = false;
     ProductionSet rules;
     ProductionSet decomposition;
     ProductionSet interpretation;
+    // Whether the decomposition rules rewrite the axiom before the first
+    // step, as lpfg's do (lderive.cpp, LEngine::Axiom), or only what each step
+    // makes, as cpfg's do ("decompose axiom: no"; generate.c, ApplyProd).
+    bool decomposeAxiom = true;
+    uint32_t localCount = 0; // the productions' local variables (Production::firstLocal)
     Arithmetic arithmetic = Arithmetic::Native;
     // When a '%' cuts its branch: after the step that produced it (lpfg's
     // rule, "cut: this step"), or while the next step reads the string, so

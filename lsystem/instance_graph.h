@@ -17,6 +17,8 @@
 //   orientation only through world vectors seen from the local frame; keying
 //   on those shares subtrees whose entry orientations differ by a rotation
 //   about the vector (the thesis' Theorem 5.1), within a granularity pi/G.
+// - Commands that place the turtle in plant space (cpfg's @M and @R) make
+//   the graph one object: the root interprets the whole word.
 // - Joints: an object's primitives refer to the joints of its own subtree, in
 //   drawing order, or to the joint current when the instance starts.
 // - Every object carries its local bounds, so a renderer can cull a subtree.

@@ -61,6 +61,16 @@ std::vector<NodeSummary> summarise(const BGrammar& bgrammar, std::span<const Tur
     return summaries;
 }
 
+// Whether a module of the word places the turtle in plant space (cpfg's @M
+// and @R, kReadsPlantFrame): what follows it depends on where the instance
+// holding it stands in the plant, not on its entry frame alone, so the root
+// interprets the whole word as the turtle does, one object with no instances.
+bool placesInPlant(const BGrammar& bgrammar, std::span<const TurtleCommand> commands) {
+    for (const TerminalModule& module : bgrammar.modules)
+        if (turtleCommandDefinition(commands[module.symbol].action).reads.always & kReadsPlantFrame) return true;
+    return false;
+}
+
 // Per object, what building its parents needs and the graph does not keep.
 struct BuiltObject {
     uint16_t reads = 0;
@@ -79,7 +89,8 @@ public:
                  const SurfaceLibrary& surfaces)
         : bgrammar_(bgrammar), options_(options), surfaces_(surfaces), settings_(turtleSettings(grammar)),
           commands_(turtleCommands(grammar.symbols, grammar.style.cpfgModules)),
-          summaries_(summarise(bgrammar, commands_)), lookup_(bgrammar.nodes.size()) {}
+          summaries_(summarise(bgrammar, commands_)), oneObject_(placesInPlant(bgrammar, commands_)),
+          lookup_(bgrammar.nodes.size()) {}
 
     InstanceGraph build() {
         graph_.nodes = bgrammar_.nodes.size();
@@ -143,6 +154,7 @@ public:
     const TurtleSettings settings_;
     const std::vector<TurtleCommand> commands_;
     const std::vector<NodeSummary> summaries_;
+    const bool oneObject_;                          // every node is interpreted inline (placesInPlant)
     std::vector<std::vector<KeyedObjects>> lookup_; // per node
     std::vector<BuiltObject> built_;                // per object
     std::unordered_map<std::string, uint32_t> surfaceIndex_;
@@ -170,7 +182,7 @@ public:
             if (!item.isNode()) {
                 const TerminalModule& module = b_.bgrammar_.modules[item.index];
                 applyTerminal(b_.commands_[module.symbol], b_.bgrammar_.parametersOf(module));
-            } else if (b_.summaries_[item.index].object()) {
+            } else if (b_.summaries_[item.index].object() && !b_.oneObject_) {
                 placeInstance(item.index);
             } else {
                 interpretBody(item.index);

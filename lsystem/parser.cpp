@@ -9,6 +9,7 @@
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/file_reader.h"
 #include "lsystem/lexer.h"
+#include "lsystem/production_checks.h"
 
 namespace lsys {
 
@@ -46,6 +47,22 @@ std::string withoutSpaces(std::string_view text) {
         if (!std::isspace(static_cast<unsigned char>(c))) out += c;
     return out;
 }
+
+// Headers that choose one of two ways, the first the default (docs/LSYS_FORMAT.md).
+struct Choice {
+    std::string_view header, first, second;
+    void (*set)(Grammar&, bool second);
+};
+constexpr Choice kChoices[] = {
+    // How the expressions after it compute.
+    {"arithmetic", "native", "cpfg",
+     [](Grammar& g, bool cpfg) { g.arithmetic = cpfg ? Arithmetic::Cpfg : Arithmetic::Native; }},
+    {"cut", "this step", "next step", [](Grammar& g, bool next) { g.cutInNextStep = next; }},
+    {"decompose axiom", "yes", "no", [](Grammar& g, bool no) { g.decomposeAxiom = !no; }},
+    {"turtle modules", "native", "cpfg", [](Grammar& g, bool cpfg) { g.style.cpfgModules = cpfg; }},
+    // Before the productions it governs (a bracket in a left context).
+    {"context", "native", "cpfg", [](Grammar& g, bool cpfg) { g.cpfgContexts = cpfg; }},
+};
 
 struct Parser {
     Grammar& grammar;
@@ -131,7 +148,10 @@ struct Parser {
         cursor.skipSpaces();
         if (cursor.atEnd() || ended) return;
         if (cursor.accept("#define")) return define(cursor);
-        if (cursor.peek() == '#') return error(cursor, "unknown directive", "'#define'");
+        // Any other line that begins with '#' is a production of the width
+        // module when it has an arrow (cpfg's preprocessor passes it on as text).
+        if (cursor.peek() == '#' && cursor.text.find("->") == std::string_view::npos)
+            return error(cursor, "unknown directive", "'#define'");
         if (acceptHeader(cursor, "endlsystem", false)) {
             expectLineEnd(cursor);
             ended = true;
@@ -151,8 +171,8 @@ struct Parser {
         if (acceptHeader(cursor, "ignore")) return contextSymbols(cursor, false);
         if (acceptHeader(cursor, "consider")) return contextSymbols(cursor, true);
         if (acceptHeader(cursor, "axiom")) return axiom(cursor);
-        if (acceptHeader(cursor, "arithmetic")) return arithmetic(cursor);
-        if (acceptHeader(cursor, "cut")) return cutTiming(cursor);
+        for (const Choice& choice : kChoices)
+            if (acceptHeader(cursor, choice.header)) return choose(cursor, choice);
         if (acceptHeader(cursor, "define")) return globalBlock(cursor, nullptr);
         if (acceptHeader(cursor, "start each") || acceptHeader(cursor, "starteach"))
             return globalBlock(cursor, &grammar.startEachBlock);
@@ -210,8 +230,10 @@ struct Parser {
         if (!value || !expectLineEnd(cursor)) return;
         if (!section || section == &grammar.rules)
             return error(start, "'maximum depth:' outside a decomposition or interpretation section");
-        if (!(*value >= 1) || *value != std::floor(*value) || *value > 1000)
-            return error(start, "invalid maximum depth", "an integer from 1 to 1000");
+        // vlab's objects ask for up to 3000 passes (LilyLeaf); each pass ends
+        // the section early once no production applies.
+        if (!(*value >= 1) || *value != std::floor(*value) || *value > 10000)
+            return error(start, "invalid maximum depth", "an integer from 1 to 10000");
         section->maxDepth = static_cast<int>(*value);
     }
 
@@ -259,29 +281,16 @@ struct Parser {
                          [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
     }
 
-    // "arithmetic: cpfg" or "arithmetic: native", before the expressions it governs.
-    void arithmetic(Cursor& cursor) {
+    // "header: value", one of the two values a Choice names.
+    void choose(Cursor& cursor, const Choice& choice) {
         cursor.skipSpaces();
-        Cursor start = cursor;
-        const std::string_view name = cursor.identifier();
-        if (name == "cpfg")
-            grammar.arithmetic = Arithmetic::Cpfg;
-        else if (name == "native")
-            grammar.arithmetic = Arithmetic::Native;
-        else
-            return error(start, "unknown arithmetic", "'native' or 'cpfg'");
-        expectLineEnd(cursor);
-    }
-
-    // "cut: this step" (the default) or "cut: next step".
-    void cutTiming(Cursor& cursor) {
-        if (acceptHeader(cursor, "this step", false))
-            grammar.cutInNextStep = false;
-        else if (acceptHeader(cursor, "next step", false))
-            grammar.cutInNextStep = true;
-        else
-            return error(cursor, "unknown cut timing", "'this step' or 'next step'");
-        expectLineEnd(cursor);
+        for (const bool second : {false, true})
+            if (acceptHeader(cursor, second ? choice.second : choice.first, false)) {
+                if (expectLineEnd(cursor)) choice.set(grammar, second);
+                return;
+            }
+        error(cursor, "unknown " + std::string(choice.header) + " setting",
+              "'" + std::string(choice.first) + "' or '" + std::string(choice.second) + "'");
     }
 
     // "start: { ... }" and the like; "define: { array ...; }" (into = null) only defines arrays.
@@ -446,15 +455,28 @@ struct Parser {
         production.right = std::move(after);
         if (strict.empty())
             return error(cursor, "predecessor has no strict module", "a module, with optional '<' and '>' contexts");
+        // cpfg matches a strict predecessor of several modules module for
+        // module from where it starts, a bracket like any other (generate.c).
         for (const PatternModule& module : strict)
-            if (module.symbol == kPush || module.symbol == kPop)
+            if ((module.symbol == kPush || module.symbol == kPop) && !(grammar.cpfgContexts && strict.size() > 1))
                 return error(cursor, "brackets are not allowed in a strict predecessor", "modules only");
         production.strict = strict[0];
         production.strictTail.assign(strict.begin() + 1, strict.end());
-        for (const PatternModule& module : production.left)
-            if (module.symbol == kPush || module.symbol == kPop)
+        for (const PatternModule& module : production.left) {
+            if (module.symbol != kPush && module.symbol != kPop) continue;
+            if (!grammar.cpfgContexts)
                 return error(leftMark, "brackets are not allowed in a left context",
                              "modules only; the left context climbs branches by itself");
+            // cpfg accepts it, and its left context never stops on a bracket (generate.c, LconDiff).
+            warnings.push_back({file(),
+                                production.line,
+                                1,
+                                "a bracket in a left context never matches: the production never applies",
+                                {},
+                                {},
+                                Severity::Warning});
+            break;
+        }
         std::string signature = withoutSpaces(cursor.text.substr(predecessorStart, cursor.pos - predecessorStart));
 
         production.formalCount = static_cast<uint16_t>(production.variables.size());
@@ -493,68 +515,17 @@ struct Parser {
         signaturesOf(section).push_back(std::move(signature));
     }
 
-    // Consecutive stochastic productions with the same predecessor (contexts
-    // and condition included) form a group whose probabilities sum to 1.
-    void formStochasticGroups(ProductionSet& set) {
-        std::vector<std::string>& signature = signaturesOf(&set);
-        std::vector<Production>& productions = set.productions;
-        for (size_t i = 0; i < productions.size();) {
-            if (!productions[i].stochastic) {
-                ++i;
-                continue;
-            }
-            size_t end = i + 1;
-            double sum = productions[i].probability;
-            while (end < productions.size() && productions[end].stochastic && signature[end] == signature[i]) {
-                sum += productions[end].probability;
-                productions[end].groupSize = 0;
-                ++end;
-            }
-            productions[i].groupSize = static_cast<uint32_t>(end - i);
-            if (std::fabs(sum - 1.0) > 1e-6) {
-                char text[64];
-                std::snprintf(text, sizeof text, "%.9g", sum);
-                diagnostics.push_back(
-                    {file(), productions[i].line, 1,
-                     "probabilities of the stochastic group for '" + signature[i] + "' sum to " + text,
-                     "a sum of 1 over consecutive productions with the same predecessor"});
-            }
-            i = end;
-        }
-    }
-
-    // A successor whose brackets do not balance leaves a branch open or
-    // closes one it did not open: legal, but seldom meant.
-    void warnOfUnbalancedBrackets(const ProductionSet& set) {
-        for (const Production& production : set.productions) {
-            int opened = 0, closed = 0;
-            for (const SuccessorModule& module : production.successor) {
-                opened += module.symbol == kPush;
-                closed += module.symbol == kPop;
-            }
-            if (opened != closed)
-                warnings.push_back({file(),
-                                    production.line,
-                                    1,
-                                    "the successor's brackets do not balance (" + std::to_string(opened) + " '[' and " +
-                                        std::to_string(closed) + " ']')",
-                                    {},
-                                    {},
-                                    Severity::Warning});
-        }
-    }
-
     void finish() {
         for (auto& [name, value] : options.defines) grammar.constants[name] = value;
-        for (const ProductionSet* set : {&grammar.rules, &grammar.decomposition, &grammar.interpretation})
-            warnOfUnbalancedBrackets(*set);
-        formStochasticGroups(grammar.rules);
-        formStochasticGroups(grammar.decomposition);
-        formStochasticGroups(grammar.interpretation);
+        for (ProductionSet* set : {&grammar.rules, &grammar.decomposition, &grammar.interpretation}) {
+            warnOfUnbalancedBrackets(*set, file(), warnings);
+            formStochasticGroups(*set, signaturesOf(set), file(), diagnostics);
+        }
         finalizeGrammar(grammar);
         if (considered) {
             std::fill(grammar.ignored.begin(), grammar.ignored.end(), 1);
-            grammar.ignored[kPush] = grammar.ignored[kPop] = 0;
+            // lpfg's consider: counts the brackets; cpfg's ignores them unless listed (lsys_input.y).
+            if (!grammar.cpfgContexts) grammar.ignored[kPush] = grammar.ignored[kPop] = 0;
             for (SymbolId symbol : *considered) grammar.ignored[symbol] = 0;
         }
     }

@@ -15,9 +15,11 @@ namespace lsys {
 // Whether the axiom or any successor holds a query (a '?' followed by P, H, L or U).
 bool hasQueries(const Grammar& grammar);
 
-// Interprets `string` with the turtle of the grammar's header settings (the
-// interpretation rules are not applied; surfaces are not built) and writes
-// each query's answer into the first three parameters of its P, H, L or U.
+// Interprets `string` with the turtle of the grammar's header settings,
+// through its interpretation rules as cpfg's turtle reads it through the
+// homomorphism (surfaces are not built), and writes each query's answer into
+// the first three parameters of its P, H, L or U. A cpfg file's ?U answers
+// cpfg's up vector, L x H (TurtleStyle::cpfgModules; lsystem/turtle_frame.h).
 void answerQueries(const Grammar& grammar, ModuleString& string);
 
 } // namespace lsys

@@ -113,17 +113,29 @@ struct Written {
     bool withinBudget = true;
 };
 
+// The state a sequential grammar's derivation carries from module to module
+// and step to step: its global variables, its one random stream and every
+// production's local variables, which keep their values from one application
+// to the next (cpfg: each production has its own symbol table, lsys_input.y).
+struct SequentialState {
+    std::vector<double> globals;
+    RandomStream random;
+    std::vector<double> locals; // Production::firstLocal indexes it
+};
+
 // The production that rewrites a module, or null when none applies. The
 // module's parameters are bound to the formal variables; contexts are matched
 // in view (which may be null for a context-free set). random is (re)started
 // from source for every candidate that draws, as derive() always has, unless
-// the grammar is sequential: then it is the derivation's one stream, and the
-// candidate's statement blocks run around its condition (cpfg's order: the
-// block before it once the predecessor matches, the one after it when it holds).
+// the grammar is sequential (state is set): then it is the derivation's one
+// stream, and the candidate's statement blocks run around its condition
+// (cpfg's order: the block before it once the predecessor matches, the one
+// after it when it holds) with its kept local variables.
 inline const Production* selectProduction(const ProductionSet& set, const ContextView* view, size_t position,
                                           SymbolId symbol, std::span<const float> parameters,
                                           const RandomSource& source, double* variables, RandomStream& random,
-                                          double* globals, bool sequential) {
+                                          SequentialState* state) {
+    double* globals = state ? state->globals.data() : nullptr;
     const uint32_t inputCount = static_cast<uint32_t>(parameters.size());
     for (uint32_t index : set.bySymbol[symbol]) {
         const Production& production = set.productions[index];
@@ -135,14 +147,18 @@ inline const Production* selectProduction(const ProductionSet& set, const Contex
         if (!production.right.empty() &&
             !matchRight(*view, production.right, position + production.strictTail.size(), variables))
             continue;
-        if (production.usesRandom && !sequential)
+        if (production.usesRandom && !state)
             random = RandomStream::forModule(source.seed, source.pass, source.position);
-        if (sequential) {
-            std::fill(variables + production.formalCount, variables + production.variables.size(), 0.0);
-            runBlock(production.before, variables, globals, random);
-        }
+        double* kept = state ? state->locals.data() + production.firstLocal : nullptr;
+        const size_t localCount = production.variables.size() - production.formalCount;
+        auto runKeepingLocals = [&](const Block& block) {
+            std::copy_n(kept, localCount, variables + production.formalCount);
+            runBlock(block, variables, globals, random);
+            std::copy_n(variables + production.formalCount, localCount, kept);
+        };
+        if (state) runKeepingLocals(production.before);
         if (production.condition && evaluate(*production.condition, variables, random, globals) == 0.0) continue;
-        if (sequential) runBlock(production.after, variables, globals, random);
+        if (state) runKeepingLocals(production.after);
         const Production* chosen = &production;
         if (production.groupSize > 1) {
             // Pick an alternative by cumulative probability; the last absorbs rounding.
@@ -157,13 +173,6 @@ inline const Production* selectProduction(const ProductionSet& set, const Contex
     return nullptr;
 }
 
-// The state a sequential grammar's derivation carries from module to module
-// and step to step: its global variables and its one random stream.
-struct SequentialState {
-    std::vector<double> globals;
-    RandomStream random;
-};
-
 Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const ModuleString& in,
                      const int32_t* partners, Range range, uint64_t seed, uint64_t pass, size_t budget, Output out,
                      SequentialState* sequential) {
@@ -176,7 +185,7 @@ Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const 
     uint32_t parameterEnd = out.parameterBase;
     size_t applied = 0;
 
-    const ContextView view{in, partners, grammar.ignored.data(), grammar.ring};
+    const ContextView view{in, partners, grammar.ignored.data(), grammar.ring, grammar.cpfgContexts};
     double variables[kMaxVariables];
     double* globals = sequential ? sequential->globals.data() : nullptr;
     RandomStream ownStream;
@@ -186,7 +195,7 @@ Written rewriteRange(const Grammar& grammar, const PreparedSet& prepared, const 
         const uint32_t inputCount = in.paramCount(i);
         const float* inputParameters = in.paramData(i);
         const Production* chosen = selectProduction(set, &view, i, symbol, {inputParameters, inputCount},
-                                                    {seed, pass, i}, variables, random, globals, sequential);
+                                                    {seed, pass, i}, variables, random, sequential);
         if (!chosen) { // no production applies: copy the module
             symbols[written++] = symbol;
             if (withParameters) {
@@ -415,7 +424,7 @@ bool rewriteModule(const ProductionSet& set, SymbolId symbol, std::span<const fl
     double variables[kMaxVariables];
     RandomStream random;
     const Production* chosen =
-        selectProduction(set, nullptr, 0, symbol, parameters, source, variables, random, nullptr, false);
+        selectProduction(set, nullptr, 0, symbol, parameters, source, variables, random, nullptr);
     if (!chosen) {
         out.push(symbol, parameters);
         return false;
@@ -460,7 +469,8 @@ ModuleString withinMemory(Work work) {
 // before the axiom is evaluated); empty for other grammars.
 std::optional<SequentialState> startState(const Grammar& grammar, uint64_t seed) {
     if (!grammar.sequential) return std::nullopt;
-    SequentialState state{grammar.globals.initial, RandomStream::forModule(seed, kAxiomPass, ~0ull)};
+    SequentialState state{grammar.globals.initial, RandomStream::forModule(seed, kAxiomPass, ~0ull),
+                          std::vector<double>(grammar.localCount, 0.0)};
     runBlock(grammar.startBlock, nullptr, state.globals.data(), state.random);
     return state;
 }
@@ -483,7 +493,8 @@ ModuleString deriveUnguarded(const Grammar& grammar, const DeriveOptions& option
     ModuleString current = axiomString(grammar, seed, state ? state->globals.data() : nullptr);
     if (current.size() > options.maxModules) budgetExceeded(options.maxModules, 0);
     ModuleString next;
-    if (!grammar.decomposition.empty()) rewriter.passesToFixpoint(decomposition, 1, current, next);
+    if (!grammar.decomposition.empty() && grammar.decomposeAxiom)
+        rewriter.passesToFixpoint(decomposition, 1, current, next);
     for (int step = 1; step <= steps; ++step) {
         const uint64_t passNumber = static_cast<uint64_t>(step) * kPassesPerStep;
         runGlobalBlock(grammar.startEachBlock, state);

@@ -47,9 +47,10 @@ std::optional<SymbolId> producedCut(const Grammar& grammar);
 // global variables, of a grammar that has them, are read from `globals`).
 ModuleString axiomString(const Grammar& grammar, uint64_t seed, const double* globals = nullptr);
 
-// Axiom, then decomposition, then for each step: rules, decomposition, and
-// the removal of branches cut by '%'. A sequential grammar (Grammar::sequential)
-// is rewritten as cpfg rewrites: on one thread, left to right, with one
+// Axiom, then decomposition (unless Grammar::decomposeAxiom is false), then
+// for each step: rules, decomposition, and the removal of branches cut by
+// '%'. A sequential grammar (Grammar::sequential) is rewritten as cpfg
+// rewrites: on one thread, left to right, with one
 // random stream and its global variables, its Start: block run before the
 // axiom is evaluated, StartEach: and EndEach: around each step and End:
 // after the last.

@@ -3,7 +3,8 @@
 // (primitives, joint skeleton, materials, bounds; lsystem/plant_asset.h).
 //
 // Frame: heading H, left L, up U, right-handed (H x L = U), kept orthonormal.
-// The turtle starts at the origin with H = +Y, L = -X, U = +Z.
+// The turtle starts at the origin with H = +Y, L = -X, U = +Z. (cpfg's turtle
+// turns the same way but calls -U its up vector: lsystem/turtle_frame.h.)
 //
 // The core is a per-module state transition, so that an InstanceGraph can
 // interpret a node's body from any entry state and compose the results (its
@@ -50,7 +51,7 @@ struct TurtleSettings {
     glm::vec3 tropism{0.0f, -1.0f, 0.0f}; // gravity
     float elasticity = 0.0f;
     bool pixelLines = false;  // widths are screen pixels (widenPixelLines)
-    bool cpfgModules = false; // G and g are commands (turtleCommands)
+    bool cpfgModules = false; // cpfg's turtle: G, g, @M and @R are commands (turtleCommands), cpfg's tropism bend
     PlantLook look;
 };
 
@@ -70,6 +71,12 @@ struct TurtleState {
     glm::vec3 tropism{0.0f, -1.0f, 0.0f};
     float elasticity = 0.0f;
     int32_t joint = -1; // the last segment drawn on the current path; -1: the plant's base
+    // H and U where the last segment (F, G) ended, or the start's: what
+    // cpfg's @R turns the up vector from (prev_heading and prev_up, cpfg
+    // turtle.c, adjust_up_and_left). The InstanceGraph does not carry them
+    // across instances: only @R reads them, and a word holding @R is one object.
+    glm::vec3 segmentHeading{0.0f, 1.0f, 0.0f};
+    glm::vec3 segmentUp{0.0f, 0.0f, 1.0f};
 };
 
 // The start of a plant: the settings' width, step, angle, tropism and elasticity.

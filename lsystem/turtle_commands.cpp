@@ -8,40 +8,14 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "lsystem/turtle.h"
+#include "lsystem/turtle_frame.h"
 
 namespace lsys {
 
 namespace {
 
-// Rotates the two frame vectors other than axis by degrees about axis, then
-// re-orthonormalises so rounding does not accumulate.
-void rotate(TurtleState& s, glm::vec3 axis, float degrees) {
-    const glm::quat rotation = glm::angleAxis(glm::radians(degrees), axis);
-    s.heading = glm::normalize(rotation * s.heading);
-    const glm::vec3 left = rotation * s.left;
-    s.left = glm::normalize(left - glm::dot(left, s.heading) * s.heading);
-    s.up = glm::cross(s.heading, s.left);
-}
-
 // The angle of a turn: its parameter, or the current angle.
 float turnAngle(const TurtleStep& t) { return t.parameterOr(0, t.state.angle); }
-
-// ABOP's $: L = V x H / |V x H| with V the world up (+Y).
-void rollHorizontal(TurtleState& s) {
-    const glm::vec3 horizontalLeft = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), s.heading);
-    if (glm::length(horizontalLeft) < 1e-6f) return; // heading vertical: any roll is horizontal
-    s.left = glm::normalize(horizontalLeft);
-    s.up = glm::cross(s.heading, s.left);
-}
-
-// ABOP §2.4: after a segment, H turns toward T by e * |H x T| about H x T.
-void bendTowardTropism(TurtleState& s) {
-    if (s.elasticity == 0.0f) return;
-    const glm::vec3 axis = glm::cross(s.heading, s.tropism);
-    const float sine = glm::length(axis);
-    if (!(sine > 1e-6f)) return; // parallel to T (or NaN): no defined bend
-    rotate(s, axis / sine, glm::degrees(s.elasticity * sine));
-}
 
 // cpfg's colour map has 256 entries and its index wraps around it (interpret.c,
 // ';' and ','): 256 is 0 and -1 is 255. Parameters are arbitrary floats,
@@ -89,7 +63,9 @@ void drawSegment(const TurtleStep& t) {
     s.joint = t.out.addSegment(segmentFrame(s, length), std::abs(length), startWidth * 0.5f, s.width * 0.5f, s.material,
                                s.joint, s.stiffness);
     s.position += s.heading * length;
-    bendTowardTropism(s);
+    bendTowardTropism(s, t.settings.cpfgModules);
+    s.segmentHeading = s.heading;
+    s.segmentUp = s.up;
 }
 
 void popBranch(const TurtleStep& t) {
@@ -232,6 +208,33 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {
          .changes = kChangesNoStyle,
          .stacks = kKeepsStacks,
          .apply = [](const TurtleStep& t) { rollHorizontal(t.state); }},
+        // cpfg's @M and @R (blackbox.c, 'M' and 'R'): the point and the
+        // heading are in plant space; neither records a polygon vertex.
+        {.action = TurtleAction::MoveTo,
+         .symbol = "@M",
+         .cpfgOnly = true,
+         .parameters = "x, y, z = 0",
+         .documentation = "(cpfg files) move to the point (x, y, z) without drawing (with fewer than 2 parameters, "
+                          "nothing happens)",
+         .reads = {kReadsPlantFrame},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply =
+             [](const TurtleStep& t) {
+                 if (t.parameters.size() >= 2)
+                     t.state.position = {t.parameters[0], t.parameters[1], t.parameterOr(2, 0)};
+             }},
+        {.action = TurtleAction::SetHeading,
+         .symbol = "@R",
+         .cpfgOnly = true,
+         .parameters = "hx, hy, hz = 0, ux, uy, uz",
+         .documentation = "(cpfg files) set H to (hx, hy, hz) normalised, and U to -(ux, uy, uz) (cpfg's up is L x H) "
+                          "if that is perpendicular to H, else to the last segment's U turned as H turned from the "
+                          "last segment's (with fewer than 2 parameters, nothing happens)",
+         .reads = {kReadsPlantFrame},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply = [](const TurtleStep& t) { setHeadingAsCpfg(t.state, t.parameters); }},
         // Only the branch stack: open polygons are not popped (ABOP Fig 5.6's
         // [+A{.].C.} closes after the branch a polygon opened in it).
         {.action = TurtleAction::Push,
@@ -382,8 +385,8 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {
         {.action = TurtleAction::Elasticity,
          .symbol = "@Ts",
          .parameters = "e = elasticity",
-         .documentation =
-             "set the elasticity: after each segment H turns toward T by e*|H x T| radians (ABOP section 2.4)",
+         .documentation = "set the elasticity: after each segment H turns toward T by e*|H x T| radians (ABOP section "
+                          "2.4); in cpfg files by asin(e T.U) toward U, then by asin(e T.L) toward L (cpfg's bend)",
          .reads = {kReadsNothing},
          .changes = {StyleField::Elasticity, FieldChange::Set, FieldChange::Keep},
          .stacks = kKeepsStacks,

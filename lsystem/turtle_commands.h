@@ -40,6 +40,8 @@ enum class TurtleAction : uint8_t {
     RollBack,
     TurnAround,
     RollHorizontal,
+    MoveTo,
+    SetHeading,
     Push,
     Pop,
     Width,
@@ -101,6 +103,10 @@ inline constexpr uint16_t kReadsElasticity = readBit(StyleField::Elasticity);
 inline constexpr uint16_t kReadsTropism = readBit(StyleField::Tropism);
 inline constexpr uint16_t kReadsWorldUp = 1 << kStyleFields;           // the frame against the world's +Y
 inline constexpr uint16_t kReadsPolygonOpen = 1 << (kStyleFields + 1); // whether a vertex is recorded
+// The frame itself in plant space, not relative to where the turtle started
+// (cpfg's @M and @R): an InstanceGraph whose word holds such a command is one
+// object (lsystem/instance_graph_build.cpp).
+inline constexpr uint16_t kReadsPlantFrame = 1 << (kStyleFields + 2);
 
 // Reads that depend on the module and the state: a parameter left out is
 // taken from a field, and a zero elasticity skips the tropism bend (ABOP

@@ -66,8 +66,9 @@ std::vector<std::string> commandLine(const std::string& file, const PreprocessOp
                                      const std::vector<std::pair<std::string, std::string>>& macros) {
     // GNU C89 is cccp's language: // comments, no digraphs (so "%:" is two
     // modules, not "#") and no trigraphs. As assembler source, a line that
-    // starts with '#' but no directive (a tab-continued "#(0.1) F") is
-    // passed on as text, as vlabcpp passes it on after its complaint. No
+    // starts with '#' but no directive (a tab-continued "#(0.1) F", a
+    // production "#(w) --> ...") is passed on as text, as vlabcpp passes it
+    // on after its complaint (Reader::nonDirective). No
     // predefined macros ("unix", "linux" are not modules' parameters), no
     // system headers, and "$" — a turtle module — ends a name so that a
     // macro before it still expands.
@@ -153,6 +154,28 @@ struct Reader {
         return true;
     }
 
+    // A line of the user's that begins with '#' but is no directive (a
+    // production of the width module, "#(w) --> #(w + 1)") comes out as it
+    // went in: cpp reads assembler here, and cpfg's vlabcpp reports the line
+    // as an invalid preprocessing directive but passes it on too, so that
+    // cpfg reads it as a production. A warning says so.
+    void nonDirective(std::string_view text, PreprocessedText::Origin origin) {
+        auto firstIsHash = [](std::string_view line) {
+            const size_t first = line.find_first_not_of(" \t");
+            return first != std::string_view::npos && line[first] == '#';
+        };
+        const std::string_view source = sourceLine(origin);
+        if (!firstIsHash(text) || !firstIsHash(source)) return;
+        out.warnings.push_back({out.files[origin.file],
+                                origin.line,
+                                static_cast<int>(source.find('#')) + 1,
+                                "'#' begins a line but no directive: cpfg's preprocessor reports an invalid "
+                                "preprocessing directive here and passes the line on as text, as it is read here",
+                                {},
+                                origin.file != 0 ? std::string(source) : std::string(),
+                                Severity::Warning});
+    }
+
     void read(std::string_view output) {
         PreprocessedText::Origin next{0, 1};
         for (std::string_view line : splitLines(output)) {
@@ -164,6 +187,7 @@ struct Reader {
                 const size_t indent = text.find_first_not_of(' ');
                 text = '\t' + (indent == std::string::npos ? std::string() : text.substr(indent));
             }
+            nonDirective(text, next);
             if (!out.lines.empty()) out.text += '\n';
             out.text += text;
             out.lines.push_back(next);

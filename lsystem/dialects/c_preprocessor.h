@@ -33,6 +33,7 @@ struct PreprocessedText {
     std::vector<std::string> files;      // files[0] is the main file, as diagnostics name it
     std::vector<std::string> fileTexts;  // each file's text, for columns and quoted lines
     std::vector<Diagnostic> diagnostics; // the preprocessor's own errors, in the user's files
+    std::vector<Diagnostic> warnings;    // lines cpfg's preprocessor complains of but passes on
 };
 
 // Preprocesses `source`, the text of `file`. A line that began with a tab

@@ -13,8 +13,11 @@
 //     or define:, or around a production's condition) may span lines: its
 //     lines are joined into one native statement, as cpfg's grammar lets
 //     blank lines and statements follow each other inside the braces.
-//   - Expressions compute as cpfg's do, and a '%' cuts its branch when the
-//     next step reads it: "arithmetic: cpfg" and "cut: next step" come first.
+//   - Expressions compute as cpfg's do, a '%' cuts its branch when the next
+//     step reads it, and contexts match by cpfg's rules: "arithmetic: cpfg",
+//     "cut: next step" and "context: cpfg" come first; so do "turtle
+//     modules: cpfg" (cpfg's turtle's G, g and '@') and "decompose axiom:
+//     no" (cpfg decomposes what each step makes, not the axiom).
 // The other constructs of cpfg's language are the native parser's to
 // accept or reject (docs/DIALECTS.md, "cpfg").
 
@@ -108,7 +111,8 @@ struct Cpfg {
 
     Translation run() {
         const std::string& text = source.text;
-        for (std::string_view setting : {"arithmetic: cpfg", "cut: next step"}) {
+        for (std::string_view setting :
+             {"arithmetic: cpfg", "cut: next step", "context: cpfg", "turtle modules: cpfg", "decompose axiom: no"}) {
             Statement header = out.start(0);
             header.emit(setting, 0);
             out.addFirst(std::move(header));

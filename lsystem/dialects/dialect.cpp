@@ -125,11 +125,11 @@ ParseResult parseCpfg(std::string_view source, const ParseOptions& options) {
     ParseOptions native = options;
     native.defines.clear(); // already expanded
     result = parseTranslated(Dialect::Cpfg, preprocessed.text, native);
-    result.grammar.style.cpfgModules = true; // cpfg's turtle draws G and moves by g
     mapToFiles(preprocessed, result.diagnostics);
     mapToFiles(preprocessed, result.warnings);
     std::vector<Diagnostic> comments = cpfgCommentWarnings(source, options.file);
     result.warnings.insert(result.warnings.begin(), comments.begin(), comments.end());
+    result.warnings.insert(result.warnings.end(), preprocessed.warnings.begin(), preprocessed.warnings.end());
     std::stable_sort(result.warnings.begin(), result.warnings.end(), [](const Diagnostic& a, const Diagnostic& b) {
         return std::tie(a.file, a.line, a.column) < std::tie(b.file, b.line, b.column);
     });

@@ -111,6 +111,45 @@ TEST(Cpfg, ExpressionsUseCpfgsArithmetic) {
     EXPECT_EQ(derived(parseOk(Dialect::Cpfg, "Axiom: A\nA --> B(sin(30), 2/0, 7%4)\n"), 1), "B(0.5,2,3)");
 }
 
+// cpfg's preprocessor reports a line that begins with '#' but no directive
+// and passes it on as text, and cpfg reads it as a production: so is it read
+// here, with a warning at its place. A malformed directive is still an error.
+TEST(Cpfg, ALineBeginningWithHashButNoDirectiveIsPassedOn) {
+    const std::string source = "#define W 1\nAxiom: #(W) A\n#(w) --> #(w + W)\nA --> B\n\t# F\n";
+    const ParseResult result = parseDialect(Dialect::Cpfg, source, {"width.l"});
+    ASSERT_TRUE(result.ok()) << formatDiagnostics(result.diagnostics, source);
+    EXPECT_EQ(derived(result.grammar, 2), "#(3)B#F");
+    ASSERT_EQ(result.warnings.size(), 2u) << formatDiagnostics(result.warnings, source);
+    const std::string warning = formatDiagnostic(result.warnings[0], source);
+    EXPECT_NE(warning.find("width.l:3:1: warning: '#' begins a line but no directive"), std::string::npos) << warning;
+    EXPECT_EQ(result.warnings[1].line, 5);
+    EXPECT_EQ(result.warnings[1].column, 2);
+    EXPECT_FALSE(parseDialect(Dialect::Cpfg, "#define\nAxiom: A\n").ok());
+}
+
+// cpfg matches a strict predecessor of several modules module for module,
+// a bracket like any other (generate.c): "B [" rewrites a B with a branch
+// right after it, bracket included, and the successor's "[" replaces it, so
+// the brackets balance. Natively brackets are no part of a strict predecessor.
+TEST(Cpfg, AStrictPredecessorMayHoldABracket) {
+    const std::string source = "Axiom: B[A]B A B[[A]]\nB [ --> C [ -\nA ] --> D ]\n";
+    const ParseResult result = parseDialect(Dialect::Cpfg, source);
+    ASSERT_TRUE(result.ok()) << formatDiagnostics(result.diagnostics, source);
+    EXPECT_TRUE(result.warnings.empty()) << formatDiagnostics(result.warnings, source);
+    EXPECT_EQ(derived(result.grammar, 1), "C[-D]BAC[-[D]]");
+    EXPECT_FALSE(parseDialect(Dialect::Native, source).ok());
+}
+
+// cpfg decomposes what each step makes, never the axiom (generate.c,
+// ApplyProd): at 0 steps the axiom is as written.
+TEST(Cpfg, TheAxiomIsNotDecomposed) {
+    const Grammar grammar = parseOk(Dialect::Cpfg, "Axiom: R(2)\ndecomposition\nmaximum depth: 5\n"
+                                                   "R(n) : n > 0 --> R(n - 1) C(n)\n");
+    EXPECT_FALSE(grammar.decomposeAxiom);
+    EXPECT_EQ(derived(grammar, 0), "R(2)");
+    EXPECT_EQ(derived(grammar, 1), "R(0)C(1)C(2)");
+}
+
 } // namespace
 } // namespace lsys::test
 

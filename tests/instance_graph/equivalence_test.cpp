@@ -84,10 +84,27 @@ TEST(InstanceGraphEquivalence, OrientationDependentCommands) {
         "Axiom: &(60)A\nA --> F[+$A]F[&(30)$A]/(40)F\n",   // $ levels against the world's vertical
         "Axiom: A\nA --> @Ts(-0.4)F[+(30)A]@Tv(0,0,-1)F[-(30)A]@Ts(0)F\n",
         "Axiom: @Ts(0.3)A\nA --> F[+A]@Tv(1,0)F[-A]@Tv F\n", // @Tv without three parameters changes nothing
+        // cpfg's bend, toward U then toward L (a cpfg file's turtle)
+        "turtle modules: cpfg\nAxiom: @Ts(0.3)@Tv(1,0,1)A\nA --> F[+A]F[&A]/(40)F\n",
     };
     for (const char* source : sources) {
         SCOPED_TRACE(source);
         expectFlattensToTurtle(parseOk(source), 4);
+    }
+}
+
+// cpfg's @M and @R place the turtle in plant space, wherever the instance
+// holding them stands: the root interprets the whole word, one object.
+TEST(InstanceGraphEquivalence, PlantSpaceCommandsMakeOneObject) {
+    const char* sources[] = {
+        "turtle modules: cpfg\nAxiom: A(1)\nA(n) --> F[+A(n+1)]F[-@M(n,2*n)A(n+1)]/(40)F\n",
+        "turtle modules: cpfg\nAxiom: A\nA --> F[+A]F[-@R(1,1,0)A]F[@R(0,1,1,1,0,0)A]F\n",
+    };
+    for (const char* source : sources) {
+        SCOPED_TRACE(source);
+        const Grammar grammar = parseOk(source);
+        expectFlattensToTurtle(grammar, 3);
+        EXPECT_EQ(graphOf(grammar, 3).objects.size(), 1u);
     }
 }
 

@@ -127,7 +127,7 @@ expect_run help-lists-turtle 0 '--help-turtle' -- "$LSYS" --help
 expect_run help-turtle 0 '^F  *l = length, w = width  *draw a segment' -- "$LSYS" --help-turtle
 # A row for every symbol of the turtle's commands (lsystem/turtle_commands.cpp), first on its line.
 for symbol in F f G g + - '&' '^' '\' / '|' '$' '[' ']' '!' ';' "'" % @Lm @La @Ls @Am @Aa @As @Wm @Wa @Ca @K @Ts @Tv \
-    @O '~name' '{' . '}' @Oc; do
+    @M @R @O '~name' '{' . '}' @Oc; do
     SYMBOL=$symbol awk '$1 == ENVIRON["SYMBOL"] { found = 1 } END { exit !found }' "$WORK/out" ||
         fail "help-turtle: no row for $symbol: $(cat "$WORK/out")"
 done

@@ -1,4 +1,4 @@
-// Context matching with lpfg's bracket rules (docs/LSYS_FORMAT.md). Each case rewrites
+// Context matching with lpfg's bracket rules and cpfg's (docs/LSYS_FORMAT.md). Each case rewrites
 // the module A to X when its context matches, and checks the whole word after
 // one step, so a wrong match anywhere in the word shows up.
 
@@ -258,17 +258,17 @@ S --> [+(90)F(5)]-(ang)f-(ang)
 endlsystem
 )";
 
-// The word cpfg derives with the given derivation length. cpfg does not
-// decompose the axiom (generate.c decomposes a step's successors only) where
-// lsys does (docs/LSYS_FORMAT.md, "Decomposition and interpretation"): cpfg's
-// first step only decomposes X(32) into the ring, so its step n is lsys's n - 1.
+// The word cpfg derives with the given derivation length. Its first step
+// only decomposes X(32) into the ring: cpfg does not decompose the axiom
+// (generate.c decomposes a step's successors only), nor does the cpfg
+// dialect ("decompose axiom: no").
 std::string vlabRing(int cpfgLength, double dir) {
     ParseOptions options;
     options.defines["dir"] = dir;
     ParseResult parsed = parseDialect(Dialect::Cpfg, kVlabRing, options);
     EXPECT_TRUE(parsed.ok()) << formatDiagnostics(parsed.diagnostics, std::string(kVlabRing));
     EXPECT_TRUE(parsed.grammar.ring);
-    return toString(derive(parsed.grammar, stepsOf(cpfgLength - 1)), parsed.grammar.symbols);
+    return toString(derive(parsed.grammar, stepsOf(cpfgLength)), parsed.grammar.symbols);
 }
 
 // cpfg's strings: cpfg-str.sh ring.l (derivation length 1), then with its derivation length and dir changed.
@@ -284,6 +284,78 @@ TEST(LsysRing, VlabRingExampleDerivesCpfgsString) {
     EXPECT_EQ(vlabRing(32, 1), "BABBBBBBBBBBBBBBBBBBBBBBBBBBBBBB");
     EXPECT_EQ(vlabRing(33, 1), "ABBBBBBBBBBBBBBBBBBBBBBBBBBBBBBB");
     EXPECT_EQ(vlabRing(34, 1), "BBBBBBBBBBBBBBBBBBBBBBBBBBBBBBBA");
+}
+
+// cpfg's context rules ("context: cpfg", which the cpfg dialect sets; cpfg
+// generate.c, RconDiff and LconDiff). The expected words are cpfg's, from
+// cpfg-str.sh on the same systems.
+std::string onceCpfg(const std::string& header, const std::string& axiom, const std::string& rule) {
+    return once("context: cpfg\n" + header, axiom, rule);
+}
+
+TEST(CpfgRightContext, ABracketOfThePatternMustComeNext) {
+    // '[' meets the first lateral branch only.
+    EXPECT_EQ(onceCpfg("", "A[C][B]", "A > [B] --> X"), "A[C][B]");
+    EXPECT_EQ(onceCpfg("", "A[B][C]", "A > [B] --> X"), "X[B][C]");
+    // ']' must come right after the branch's last named module; '=' skips the rest.
+    EXPECT_EQ(onceCpfg("", "A[BD[E]]C A[BD]E A[B]C", "A > [B]C --> X"), "A[BD[E]]CA[BD]EX[B]C");
+    EXPECT_EQ(onceCpfg("", "A[BCD[E]F]G", "A > [B=]G --> X"), "X[BCD[E]F]G");
+    // A ']' of the pattern reads out of the module's own branch, past lateral branches.
+    EXPECT_EQ(onceCpfg("", "[A]B [A[C]]D", "A > ]B --> X\nA > ] --> Y"), "[X]B[Y[C]]D");
+}
+
+TEST(CpfgRightContext, BranchesTheContextDoesNotNameAreSkippedAsLpfgSkipsThem) {
+    EXPECT_EQ(onceCpfg("", "A[C][D[E]]B", "A > B --> X"), "X[C][D[E]]B");
+    EXPECT_EQ(onceCpfg("", "C[A]B", "A > B --> X"), "C[A]B");
+    EXPECT_EQ(onceCpfg("", "A(1)[E]C(3)", "A(y) > C(z) --> A(y*10+z)"), "A(13)[E]C(3)");
+}
+
+// cpfg's consider: ignores the brackets it does not list (lsys_input.y), and
+// RconDiff reads past an ignored module before it looks for a branch.
+TEST(CpfgRightContext, IgnoredBracketsAreReadPast) {
+    // Into a lateral branch and out of the module's own; a '[' of the pattern then never matches.
+    EXPECT_EQ(onceCpfg("consider: A B D\n", "A[B]D [A]BD A[C[B]]D CA]]]BD", "A > B --> X"),
+              "X[B]D[X]BDX[C[B]]DCX]]]BD");
+    EXPECT_EQ(onceCpfg("consider: A B\n", "A[B]", "A > [B] --> X"), "A[B]");
+    EXPECT_EQ(onceCpfg("consider: A B D\n", "A(1)[B(2)]D(3)", "A(a) > B(b) D(d) --> X(a+b+d)"), "X(6)[B(2)]D(3)");
+    // One bracket listed, the other not.
+    EXPECT_EQ(onceCpfg("consider: A B D ]\n", "A[B]D [A]BD A[C]B", "A > B --> X"), "X[B]D[A]BDA[C]B");
+    EXPECT_EQ(onceCpfg("consider: A B D [\n", "A[B]D [A]BD A]B", "A > B --> X"), "A[B]D[X]BDX]B");
+    EXPECT_EQ(onceCpfg("ignore: ]\n", "[A]B [A[C]]B", "A > B --> X"), "[X]B[X[C]]B");
+    // In a ring, out of the last branch and round to the first module.
+    EXPECT_EQ(onceCpfg("ring lsystem\nconsider: A B\n", "A[CB]", "B > A --> Y"), "A[CY]");
+}
+
+TEST(CpfgLeftContext, SkipsBranchesWhateverIsIgnored) {
+    EXPECT_EQ(onceCpfg("consider: A B D\n", "B[A] B[C]A B[A[C]] D[B]A", "B < A --> X"), "B[X]B[C]XB[X[C]]D[B]A");
+}
+
+// cpfg reads a bracket in a left context as a module to compare, but its
+// left context never stops on a bracket: such a production never applies.
+TEST(CpfgLeftContext, ABracketInThePatternNeverMatches) {
+    const std::string source = "Axiom: A(1)[B(2)C]B(3)C[C]D[B(4)[C]]C\n"
+                               "[B(c) < C --> X(c)\n"
+                               "]B(c) < C --> Y(c)\n"
+                               "B(c)[ < C --> Z(c)\n"
+                               "B(c) < C --> W(c)\n";
+    EXPECT_FALSE(parseLsystem(source).ok()); // lpfg's rules reject it
+    const ParseResult parsed = parseLsystem("context: cpfg\n" + source);
+    ASSERT_TRUE(parsed.ok()) << formatDiagnostics(parsed.diagnostics, source);
+    EXPECT_EQ(parsed.warnings.size(), 3u);
+    EXPECT_EQ(toString(derive(parsed.grammar, stepsOf(1)), parsed.grammar.symbols),
+              "A(1)[B(2)W(2)]B(3)W(3)[C]D[B(4)[W(4)]]C");
+}
+
+TEST(CpfgContexts, TheHeaderAndTheCpfgDialectChooseThem) {
+    EXPECT_TRUE(parseOk("context: cpfg\nAxiom: A\n").cpfgContexts);
+    EXPECT_FALSE(parseOk("context: cpfg\ncontext: native\nAxiom: A\n").cpfgContexts);
+    EXPECT_FALSE(parseOk("Axiom: A\n").cpfgContexts);
+    EXPECT_FALSE(parseLsystem("context: lpfg\nAxiom: A\n").ok());
+    const ParseResult cpfg = parseDialect(Dialect::Cpfg, "Lsystem: 1\nAxiom: A\nendlsystem\n", {});
+    ASSERT_TRUE(cpfg.ok());
+    EXPECT_TRUE(cpfg.grammar.cpfgContexts);
+    // Without cpfg's rules consider: counts the brackets (lpfg).
+    EXPECT_EQ(once("consider: A B\n", "A[B]", "A > B --> X"), "A[B]");
 }
 
 } // namespace

@@ -69,6 +69,27 @@ TEST(LsysParser, PrefixedModuleNames) {
     EXPECT_EQ(names, (std::vector<std::string>{"@o", "@c", "F", "@mo", "@bc", "f", "@#", "@!", "@;", "@,", "#", ","}));
 }
 
+// cpfg's preprocessor passes a line that begins with '#' but no directive
+// on as text; natively too such a line with an arrow is a production.
+TEST(LsysParser, ALineBeginningWithHashIsAProductionOfTheWidthModule) {
+    EXPECT_EQ(derived("Axiom: #(1) #\n#(w) --> #(w + 1)\n  # --> #(1)\n", 2), "#(3)#(2)");
+}
+
+// Headers that choose one of two ways: the first is the default.
+TEST(LsysParser, ChoiceHeadersSetTheirWay) {
+    const Grammar native = parseOk("Axiom: A\n");
+    const Grammar chosen = parseOk("arithmetic: cpfg\ncut: next step\ndecompose axiom: no\nturtle modules: cpfg\n"
+                                   "Axiom: A\n");
+    EXPECT_EQ(native.arithmetic, Arithmetic::Native);
+    EXPECT_EQ(chosen.arithmetic, Arithmetic::Cpfg);
+    EXPECT_FALSE(native.cutInNextStep);
+    EXPECT_TRUE(chosen.cutInNextStep);
+    EXPECT_TRUE(native.decomposeAxiom);
+    EXPECT_FALSE(chosen.decomposeAxiom);
+    EXPECT_FALSE(native.style.cpfgModules);
+    EXPECT_TRUE(chosen.style.cpfgModules);
+}
+
 TEST(LsysParser, LabelsAndStarCondition) {
     EXPECT_EQ(derived("Axiom: A(1)\np1: A(x) : * --> B(x)\np2 : B(x) : x > 0 -> C\n", 2), "C");
 }
@@ -78,11 +99,11 @@ TEST(LsysParser, EmptySuccessor) { EXPECT_EQ(derived("Axiom: ABA\nA -->\nB --> *
 TEST(LsysParser, SectionsAndMaximumDepth) {
     Grammar grammar = parseOk("Axiom: A\nA --> AS\n"
                               "decomposition:\nmaximum depth: 5\nS --> T\nT --> U\n"
-                              "homomorphism: maximum depth: 2\nU --> F\n");
+                              "homomorphism: maximum depth: 3000\nU --> F\n");
     EXPECT_EQ(grammar.decomposition.productions.size(), 2u);
     EXPECT_EQ(grammar.decomposition.maxDepth, 5);
     EXPECT_EQ(grammar.interpretation.productions.size(), 1u);
-    EXPECT_EQ(grammar.interpretation.maxDepth, 2);
+    EXPECT_EQ(grammar.interpretation.maxDepth, 3000); // vlab's LilyLeaf asks for 3000
 }
 
 TEST(LsysParser, EveryProblemIsReported) {
@@ -163,10 +184,14 @@ INSTANTIATE_TEST_SUITE_P(
                       Malformed{"Axiom: A\nA --> B : 1.5\n", 2, 11, "probability out of range"},
                       Malformed{"Axiom: A\nA --> B <\n", 2, 9, "unexpected '<'"},
                       Malformed{"Axiom: A\n#include foo\n", 2, 1, "unknown directive"},
+                      Malformed{"Axiom: A\ncut: never\n", 2, 6, "unknown cut setting"},
+                      Malformed{"Axiom: A\ndecompose axiom: maybe\n", 2, 18, "unknown decompose axiom setting"},
+                      Malformed{"Axiom: A\nturtle modules: lpfg\n", 2, 17, "unknown turtle modules setting"},
                       Malformed{"Axiom: A\n#define\n", 2, 8, "missing constant name"},
                       Malformed{"Axiom: A\nseed: -1\n", 2, 7, "invalid seed"},
                       Malformed{"Axiom: A\nderivation length: 2.5\n", 2, 20, "invalid derivation length"},
                       Malformed{"Axiom: A\nmaximum depth: 3\n", 2, 16, "outside a decomposition"},
+                      Malformed{"Axiom: A\nhomomorphism:\nmaximum depth: 10001\n", 3, 16, "invalid maximum depth"},
                       Malformed{"Axiom: A\nangle: 10 20\n", 2, 11, "unexpected '2'"},
                       Malformed{"Axiom: A /* never closed\n", 1, 10, "unterminated comment"},
                       Malformed{"Axiom: A\nmodule 3D\n", 2, 8, "unexpected '3'"},

@@ -162,6 +162,17 @@ TEST(LsysRewriter, DecompositionAppliesToTheAxiom) {
     EXPECT_EQ(derived("Axiom: S\ndecomposition:\nS --> F(1)F(2)\n", 0), "F(1)F(2)");
 }
 
+// cpfg decomposes only what each step makes (generate.c, ApplyProd), so the
+// axiom's S unfolds during the first step, and the C made then is rewritten
+// by one step fewer than natively.
+TEST(LsysRewriter, DecomposeAxiomNoLeavesTheAxiomToTheFirstStep) {
+    const std::string rules = "Axiom: S\nC(n) --> C(n + 1)\ndecomposition:\nS --> C(0)\n";
+    EXPECT_EQ(derived("decompose axiom: no\n" + rules, 0), "S");
+    EXPECT_EQ(derived("decompose axiom: no\n" + rules, 2), "C(1)");
+    EXPECT_EQ(derived("decompose axiom: yes\n" + rules, 2), "C(2)");
+    EXPECT_EQ(derived(rules, 2), "C(2)");
+}
+
 TEST(LsysRewriter, RecursiveDecompositionStopsAtMaximumDepth) {
     EXPECT_EQ(derived("Axiom: S\ndecomposition:\nmaximum depth: 3\nS --> FS\n", 0), "FFFS");
 }

@@ -52,8 +52,20 @@ TEST(Statements, IfElseWhileAndDo) {
     EXPECT_EQ(derived(source, 1), "B(15,1,1)");
 }
 
-TEST(Statements, LocalsStartAtZeroOnEveryApplication) {
-    EXPECT_EQ(derived("Axiom: A A\nA : {k = k + 1;} * --> B(k)\n", 1), "B(1)B(1)");
+// A local keeps its value from one application of its production to the
+// next, across modules and steps, as in cpfg (each production has its own
+// symbol table, lsys_input.y); each production has its own, and a block
+// before a condition that fails still keeps what it assigned.
+TEST(Statements, LocalsKeepTheirValueFromOneApplicationToTheNext) {
+    EXPECT_EQ(derived("Axiom: A A\nA : {k = k + 1;} * --> B(k) A\n", 2), "B(1)B(3)AB(2)B(4)A");
+    EXPECT_EQ(derived("Axiom: A C A C\nA : {k = k + 1;} * --> B(k)\nC : {k = k + 10;} * --> D(k)\n", 1),
+              "B(1)D(10)B(2)D(20)");
+    EXPECT_EQ(derived("Axiom: A(1) A(0) A(5) A(3)\nA(x) : {seen = seen + 1;} x > 2 {last = x;} --> B(seen, last)\n", 1),
+              "A(1)A(0)B(3,5)B(4,3)");
+    // Each derivation starts them at 0 again.
+    const Grammar grammar = parseOk("Axiom: A\nA : {k = k + 1;} * --> B(k)\n");
+    EXPECT_EQ(toString(derive(grammar, stepsOf(1)), grammar.symbols), "B(1)");
+    EXPECT_EQ(toString(derive(grammar, stepsOf(1)), grammar.symbols), "B(1)");
 }
 
 TEST(Statements, DefineArraysAndTheirElements) {

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/vec3.hpp>
+
 #include "lsystem/parser.h"
 #include "lsystem/rewriter.h"
 
@@ -39,6 +41,41 @@ TEST(QueryModules, TheTurtleAnswersPositionHeadingLeftAndUp) {
     expectAt(12, {0, 0, 1});  // up
     expectAt(14, {-1});       // fewer parameters take the first coordinates
     EXPECT_FALSE(parsed("Axiom: F?X(0)\n").queries);
+}
+
+// cpfg's turtle draws as ours but calls -U its up vector (L x H, starting at
+// (0,0,-1)): a cpfg file's ?U answers that one; ?H and ?L are the same.
+TEST(QueryModules, ACpfgFilesUpIsLCrossH) {
+    Grammar grammar = parsed("turtle modules: cpfg\nangle: 90\nAxiom: &?H(0,0,0)?L(0,0,0)?U(0,0,0)\nB --> B\n");
+    const ModuleString string = deriveText(grammar, 0);
+    auto expectAt = [&](size_t module, glm::vec3 expected) {
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(string.parameters(module)[k], expected[k], 1e-6f) << module << " " << k;
+    };
+    // & pitched H from +Y down to -Z; L stays -X; H x L is +Y, L x H is -Y.
+    expectAt(2, {0, 0, -1});
+    expectAt(4, {-1, 0, 0});
+    expectAt(6, {0, -1, 0});
+}
+
+// cpfg's turtle reads the string through the homomorphism, module by module,
+// and a '?' reads its queried module from the string itself (interpret.c,
+// InterpretHomomorphism): the answers see what the interpretation rules draw.
+TEST(QueryModules, TheTurtleReadsTheStringThroughTheInterpretationRules) {
+    Grammar grammar = parsed("Axiom: F(1)?P(0,0,0)I?P(0,0,0)[%F?P(0,0,0)]?U(0,0,0)\nB --> B\n"
+                             "interpretation:\nmaximum depth: 2\nF(l) --> F(l)F(l)\nI --> F(1)?P(0,0,0)-\n"
+                             "U(a,b,c) --> F\n");
+    const ModuleString string = deriveText(grammar, 0);
+    auto expectAt = [&](size_t module, glm::vec3 expected) {
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(string.parameters(module)[k], expected[k], 1e-6f) << module << " " << k;
+    };
+    // F(1) ? P I ? P [ % F ? P ] ? U: F(1) is four segments (two levels), I
+    // two and a turn (its own ?P keeps no answer), the cut ?P is not answered
+    // and U is not rewritten after its '?'.
+    ASSERT_EQ(string.size(), 14u);
+    expectAt(2, {0, 4, 0});
+    expectAt(5, {0, 6, 0});
+    expectAt(10, {0, 0, 0});
+    expectAt(13, {0, 0, 1});
 }
 
 // The answers come before each step, so conditions and contexts read where

@@ -131,6 +131,22 @@ TEST(LsysTurtleAbop, TropismFromTheSettings) {
     expectNear(spans[1].end - spans[1].start, {-std::cos(0.3f), std::sin(0.3f), 0});
 }
 
+// cpfg's bend (interpret.c, bend) for cpfg files: H turns toward U by
+// asin(e T.U), then toward L by asin(e T.L), where ABOP turns it by e|H x T|
+// toward T. With T = (1,0,1) and e = 0.5 the two turns have sines 0.5 and
+// -0.5 (L = -X): H = (0, cos 30, sin 30), then cos 30 H - 0.5 L.
+TEST(LsysTurtleAbop, CpfgFilesBendAsCpfg) {
+    const float c = std::sqrt(0.75f);
+    std::vector<Span> spans = spansOf("turtle modules: cpfg\nAxiom: @Tv(1,0,0)@Ts(0.5)FF\n");
+    ASSERT_EQ(spans.size(), 2u);
+    expectNear(spans[1].end - spans[1].start, {0.5f, c, 0});
+    spans = spansOf("Axiom: @Tv(1,0,0)@Ts(0.5)FF\n");
+    expectNear(spans.at(1).end - spans[1].start, {std::sin(0.5f), std::cos(0.5f), 0});
+    // Toward U first, then toward L (the other order would end at (c/2, 0.75, 0.5)).
+    spans = spansOf("turtle modules: cpfg\nAxiom: @Tv(1,0,1)@Ts(0.5)FF\n");
+    expectNear(spans.at(1).end - spans[1].start, {0.5f, 0.75f, 0.5f * c});
+}
+
 TEST(LsysTurtleAbop, HeadingAlongTropismDoesNotBend) {
     const std::vector<Span> spans = spansOf("Axiom: |@Ts(0.5)FF\n");
     ASSERT_EQ(spans.size(), 2u);

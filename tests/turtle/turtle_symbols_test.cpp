@@ -217,6 +217,42 @@ TEST(LsysTurtle, CpfgsGAndgRecordNoPolygonVertex) {
     expectNear(plant.polygons[1].outline[2], {0, 3, 0});
 }
 
+// cpfg's @M and @R (blackbox.c, read from cpfg files only): @M moves to a
+// point and @R sets the heading, both in plant space; with fewer than two
+// parameters neither does anything, and @R(0,0,0) heads along +Y.
+TEST(LsysTurtle, CpfgsAtMMovesToAPointAndAtRSetsTheHeading) {
+    const char* axiom = "Axiom: F@M(2,3)F@M(1)F@M(0,0,5)@R(1,0,0)F@R(0)F@R(0,0,0)F\n";
+    expectNear(spansOf(plantOf(axiom)).back().end, {0, 6, 0}); // natively ordinary modules
+    const PlantAsset plant = plantOf(std::string("turtle modules: cpfg\n") + axiom);
+    const std::vector<Span> spans = spansOf(plant);
+    ASSERT_EQ(spans.size(), 6u);
+    expectNear(spans[1].start, {2, 3, 0});
+    expectNear(spans[2].start, {2, 4, 0});
+    expectNear(spans[3].start, {0, 0, 5});
+    expectNear(spans[3].end, {1, 0, 5});
+    expectNear(spans[4].end, {2, 0, 5});
+    expectNear(spans[5].end, {2, 1, 5});
+    // The up vector is the last segment's, turned as the heading turned: +Z about Z.
+    expectNear(leftOf(plant.primitives[3].frame), {0, 1, 0});
+}
+
+// @R's up vector is cpfg's, L x H (ours is H x L): U is its opposite when it
+// is perpendicular to the heading; otherwise U is the last segment's turned
+// with the heading (cpfg turtle.c, adjust_up_and_left), not the current one.
+TEST(LsysTurtle, CpfgsAtRTakesAnUpVectorOrKeepsTheSegmentsFromTwisting) {
+    const float a = std::sqrt(0.5f);
+    PlantAsset plant = plantOf("turtle modules: cpfg\nAxiom: @R(0,1,1,1,0,0)F\n");
+    ASSERT_EQ(plant.primitives.size(), 1u);
+    expectNear(headingOf(plant.primitives[0].frame), {0, a, a});
+    expectNear(leftOf(plant.primitives[0].frame), {0, a, -a});
+    expectNear(plant.primitives[0].frame.rotation * glm::vec3(0, 0, 1), {-1, 0, 0});
+    // After the pitch U is +Y; the up given is not perpendicular to H = +X.
+    plant = plantOf("turtle modules: cpfg\nAxiom: F&(90)@R(1,0,0,1,1,0)F\n");
+    ASSERT_EQ(plant.primitives.size(), 2u);
+    expectNear(headingOf(plant.primitives[1].frame), {1, 0, 0});
+    expectNear(leftOf(plant.primitives[1].frame), {0, 1, 0});
+}
+
 // Pixel widths (a view file's "initial line width: 2 pixels") become a
 // fraction of the plant's extent: 320 pixels across its larger side.
 TEST(LsysTurtle, PixelLinesAreAFractionOfThePlant) {
