@@ -2,11 +2,14 @@
 // the npm `lindenmayer` library (v1.5.4) deriving the same three systems as
 // data/plants/fractal_bush.lsys, decreasing_tree.lsys and
 // context_benchmark.lsys. Prints the module count so runs can be checked
-// against lsys; hyperfine times the whole process.
-// Usage: node lindenmayer_bench.mjs bush|tree|context STEPS
+// against lsys; hyperfine times the whole process. With a third argument it
+// also appends the seconds spent in iterate() alone (its in-process time,
+// without node's start and the module's loading) to that file, a line a run.
+// Usage: node lindenmayer_bench.mjs bush|tree|context STEPS [IN_PROCESS_FILE]
+import {appendFileSync} from 'node:fs';
 import LSystem from 'lindenmayer';
 
-const [system, stepsText] = process.argv.slice(2);
+const [system, stepsText, inProcessFile] = process.argv.slice(2);
 const steps = Number(stepsText);
 
 const systems = {
@@ -28,9 +31,12 @@ const systems = {
 };
 
 if (!(system in systems) || !Number.isInteger(steps) || steps < 0) {
-    console.error('usage: node lindenmayer_bench.mjs bush|tree|context STEPS');
+    console.error('usage: node lindenmayer_bench.mjs bush|tree|context STEPS [IN_PROCESS_FILE]');
     process.exit(2);
 }
+const start = performance.now();
 const lsystem = systems[system]();
 lsystem.iterate(steps);
+const seconds = (performance.now() - start) / 1000;
+if (inProcessFile) appendFileSync(inProcessFile, `${seconds}\n`);
 console.log(JSON.stringify({system, steps, modules: lsystem.axiom.length}));
