@@ -1,4 +1,4 @@
-// The peer of the rewriter benchmark (tools/bench/rewriter_vs_lindenmayer.sh):
+// The peer of the rewriter benchmark (tools/bench/rewriter_vs_peers.sh):
 // the npm `lindenmayer` library (v1.5.4) deriving the same three systems as
 // data/plants/fractal_bush.lsys, decreasing_tree.lsys and
 // context_benchmark.lsys. Prints the module count so runs can be checked
