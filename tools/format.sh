@@ -17,9 +17,7 @@ case "${1:-}" in
   *) echo "format.sh: unknown argument '$1' (usage: tools/format.sh [--check])" >&2; exit 2 ;;
 esac
 command -v clang-format >/dev/null || "$root/tools/deps.sh"
-# The fuzz corpora and the cpfg systems' included files (cpfg's L-system
-# syntax in a .h, which clang-format would turn '-->' into '-- >') are data.
-mapfile -t files < <(git ls-files '*.h' '*.cpp' | grep -v '^tests/fuzz/corpus/\|^tests/dialects/cpfg_systems/')
+mapfile -t files < <(git ls-files '*.h' '*.cpp' | grep -v '^tests/fuzz/corpus/')
 if [ "$check" -eq 0 ]; then
   clang-format -i --style=file "${files[@]}"
   exit 0
