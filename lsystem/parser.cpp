@@ -519,6 +519,7 @@ struct Parser {
         for (auto& [name, value] : options.defines) grammar.constants[name] = value;
         for (ProductionSet* set : {&grammar.rules, &grammar.decomposition, &grammar.interpretation}) {
             warnOfUnbalancedBrackets(*set, file(), warnings);
+            warnOfCpfgAtModules(grammar, *set, file(), warnings);
             formStochasticGroups(*set, signaturesOf(set), file(), diagnostics);
         }
         finalizeGrammar(grammar);

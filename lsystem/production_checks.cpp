@@ -54,4 +54,26 @@ void warnOfUnbalancedBrackets(const ProductionSet& set, const std::string& file,
     }
 }
 
+void warnOfCpfgAtModules(const Grammar& grammar, const ProductionSet& set, const std::string& file,
+                         std::vector<Diagnostic>& warnings) {
+    if (!grammar.style.cpfgModules) return;
+    for (const Production& production : set.productions) {
+        std::vector<SymbolId> replaced{production.strict.symbol};
+        for (const PatternModule& module : production.strictTail) replaced.push_back(module.symbol);
+        for (SymbolId symbol : replaced) {
+            const std::string& name = grammar.symbols.name(symbol);
+            if (name.empty() || name[0] == '@' || !grammar.symbols.find("@" + name)) continue;
+            warnings.push_back({file,
+                                production.line,
+                                1,
+                                "cpfg reads '@" + name + "' as two modules, '@' and '" + name +
+                                    "', so in cpfg this production also rewrites the '" + name + "' of every '@" +
+                                    name + "'; here '@" + name + "' is one module, which it leaves alone",
+                                {},
+                                {},
+                                Severity::Warning});
+        }
+    }
+}
+
 } // namespace lsys

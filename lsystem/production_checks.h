@@ -1,7 +1,8 @@
 #pragma once
 // What the parser does with a section's productions once the whole file is
 // read: it groups stochastic alternatives and warns of successors whose
-// brackets do not balance.
+// brackets do not balance and of cpfg productions that would rewrite more in
+// cpfg than here.
 
 #include <span>
 #include <string>
@@ -23,5 +24,14 @@ void formStochasticGroups(ProductionSet& set, std::span<const std::string> signa
 // the strict predecessor it replaces, cpfg's "B [ --> C ["): it leaves a
 // branch open or closes one it did not open, legal but seldom meant.
 void warnOfUnbalancedBrackets(const ProductionSet& set, const std::string& file, std::vector<Diagnostic>& warnings);
+
+// cpfg's lexer reads every module name as one character (lsys_input.l), so
+// its `@o(1)` is the two modules `@` and `o(1)`, joined only by its turtle
+// (interpret.c, call_blackbox): a production of `o` rewrites the `o` of
+// `@o(1)` too. Here `@o` is one module, which only its own productions
+// rewrite. A warning, in files read with cpfg's turtle modules, for each
+// production of a module X when `@X` occurs in the file.
+void warnOfCpfgAtModules(const Grammar& grammar, const ProductionSet& set, const std::string& file,
+                         std::vector<Diagnostic>& warnings);
 
 } // namespace lsys

@@ -230,5 +230,21 @@ TEST(Cpfg, FuncReadsTheObjectsFunctionFiles) {
         << tooFew.diagnostics[0].message;
 }
 
+// cpfg reads '@!(6)' as the modules '@' and '!(6)' (lsys_input.l reads one
+// character per name), so its production of '!' rewrites the '!' of '@!(6)'
+// too; here '@!' is one module. The difference is warned of at the
+// production, never silent; a file without '@!' gets no warning.
+TEST(Cpfg, AProductionOfAModuleThatAnAtModuleEndsWithIsWarnedOf) {
+    const std::string source = "Axiom: !(2) @!(6) F\n!(w) --> !(w - 1)\nF --> FF\n";
+    const ParseResult result = parseDialect(Dialect::Cpfg, source, {"at.l"});
+    ASSERT_TRUE(result.ok()) << formatDiagnostics(result.diagnostics, source);
+    EXPECT_EQ(derived(result.grammar, 1), "!(1)@!(6)FF");
+    ASSERT_EQ(result.warnings.size(), 1u) << formatDiagnostics(result.warnings, source);
+    const std::string warning = formatDiagnostic(result.warnings[0], source);
+    EXPECT_NE(warning.find("at.l:2:1: warning: cpfg reads '@!' as two modules, '@' and '!'"), std::string::npos)
+        << warning;
+    EXPECT_TRUE(parseDialect(Dialect::Cpfg, "Axiom: !(2) F\n!(w) --> !(w - 1)\n").warnings.empty());
+}
+
 } // namespace
 } // namespace lsys::test
