@@ -123,7 +123,7 @@ MeshSize graphMeshSize(const InstanceGraph& graph, const SurfaceLibrary& surface
     for (const GraphPrimitive& p : graph.primitives) {
         MeshSize shape;
         if (p.kind == PrimitiveKind::Surface) {
-            const SurfaceMesh& surface = surfaces.surface(graph.surfaceNames[p.shape]);
+            const SurfaceMesh& surface = surfaceOfLook(graph.look, surfaces, graph.surfaceNames[p.shape]);
             shape = {surface.positions.size(), surface.indices.size()};
         }
         if (p.kind == PrimitiveKind::Polygon) shape.vertices = graph.polygons[p.shape].outline.size();

@@ -39,11 +39,11 @@ const std::vector<Material>& defaultPalette() {
     return palette;
 }
 
-const SurfaceMesh& PlantAssetBuilder::surfaceNamed(const std::string& name) const {
-    if (look_.surfaces)
-        for (const SurfaceMesh& mesh : *look_.surfaces)
+const SurfaceMesh& surfaceOfLook(const PlantLook& look, const SurfaceLibrary& surfaces, const std::string& name) {
+    if (look.surfaces)
+        for (const SurfaceMesh& mesh : *look.surfaces)
             if (mesh.name == name) return mesh;
-    return surfaces_.surface(name);
+    return surfaces.surface(name);
 }
 
 void PlantAssetBuilder::markTwoSided(uint32_t material) {
@@ -73,7 +73,7 @@ glm::vec3 PlantAssetBuilder::addSurface(const std::string& name, const Frame& fr
     auto [found, added] = surfaceIndex_.try_emplace(name, static_cast<uint32_t>(asset_.surfaces.size()));
     if (added) {
         try {
-            asset_.surfaces.push_back(surfaceNamed(name));
+            asset_.surfaces.push_back(surfaceOfLook(look_, surfaces_, name));
         } catch (...) {
             surfaceIndex_.erase(found);
             throw;

@@ -22,6 +22,11 @@ class SurfaceLibrary;
 
 const std::vector<Material>& defaultPalette();
 
+// The surface a plant of `look` draws for `name`: the look's own (a vlab
+// object's .s files) before the library's. Throws SurfaceError when neither
+// has it.
+const SurfaceMesh& surfaceOfLook(const PlantLook& look, const SurfaceLibrary& surfaces, const std::string& name);
+
 class PlantAssetBuilder {
 public:
     // A look's palette replaces defaultPalette() (indices past its end
@@ -43,7 +48,6 @@ public:
 
 private:
     void markTwoSided(uint32_t material);
-    const SurfaceMesh& surfaceNamed(const std::string& name) const; // the look's, else the library's
 
     const SurfaceLibrary& surfaces_;
     PlantLook look_;

@@ -106,6 +106,25 @@ TEST_F(GraphExport, EveryPrimitiveKindDrawsWhatTheFlatFormDraws) {
     expectSameDrawingAsFlat(plantfield::test::sampleGraph(), lsys::SurfaceLibrary{}, dir);
 }
 
+// A vlab object's own surfaces (its .s files) come with the grammar's look,
+// not from the library: the instanced export draws them as the flat one does.
+TEST_F(GraphExport, AnObjectsOwnSurfacesDrawWhatTheFlatFormDraws) {
+    lsys::Grammar grammar = lsys::test::parseOk("derivation length: 3\nAxiom: A\nA --> F[+~s(0.5)]A\n");
+    lsys::SurfaceMesh triangle;
+    triangle.name = "s";
+    triangle.positions = {{-0.2f, 0.0f, 0.0f}, {0.2f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
+    triangle.normals.assign(3, {0.0f, 0.0f, 1.0f});
+    triangle.uvs = {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.5f, 1.0f}};
+    triangle.indices = {0, 1, 2};
+    grammar.style.look.surfaces = std::make_shared<std::vector<lsys::SurfaceMesh>>(1, triangle);
+    lsys::BGrammarOptions options;
+    options.interpreted = true;
+    const lsys::SurfaceLibrary noMeshFiles;
+    const lsys::InstanceGraph graph =
+        lsys::buildInstanceGraph(lsys::buildBGrammar(grammar, options), grammar, {}, noMeshFiles);
+    expectSameDrawingAsFlat(graph, noMeshFiles, dir);
+}
+
 // Without caps a tube has 2·sides triangles per segment however the chains
 // are cut, so cutting them at instances keeps the count.
 TEST_F(GraphExport, GeneralizedCylindersWithoutCapsDrawTheSameTriangles) {
