@@ -23,4 +23,25 @@ FileBytes readFileUpTo(const std::filesystem::path& path, size_t maxBytes) {
     return file;
 }
 
+std::string fileProblemText(FileProblem problem, size_t maxBytes) {
+    switch (problem) {
+    case FileProblem::None: return {};
+    case FileProblem::Folder: return "is a folder";
+    case FileProblem::CannotOpen: return "is missing or cannot be opened";
+    case FileProblem::TooLarge: return "is larger than " + std::to_string(maxBytes >> 20) + " MiB";
+    case FileProblem::CannotRead: return "cannot be read";
+    }
+    return {};
+}
+
+std::optional<std::string> readTextFileOf(std::string_view kind, const std::filesystem::path& path, size_t maxBytes,
+                                          std::vector<Diagnostic>& diagnostics) {
+    FileBytes read = readFileUpTo(path, maxBytes);
+    if (read.problem == FileProblem::None) return std::move(read.bytes);
+    diagnostics.push_back(
+        {path.string(), 0, 0,
+         "the " + std::string(kind) + " file '" + path.string() + "' " + fileProblemText(read.problem, maxBytes)});
+    return std::nullopt;
+}
+
 } // namespace lsys

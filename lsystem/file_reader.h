@@ -6,7 +6,12 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
+
+#include "lsystem/error.h"
 
 namespace lsys {
 
@@ -21,5 +26,15 @@ struct FileBytes {
 // refused from its size, anything else (a device, a fifo) is read in pieces
 // and refused once it passes the limit, so /dev/zero stops there.
 FileBytes readFileUpTo(const std::filesystem::path& path, size_t maxBytes);
+
+// What is wrong with a file readFileUpTo(path, maxBytes) refused, to follow
+// its name: "is a folder", "is missing or cannot be opened", "is larger than 4 MiB",
+// "cannot be read"; empty for FileProblem::None.
+std::string fileProblemText(FileProblem problem, size_t maxBytes);
+
+// The text of a `kind` file ("surface", "function", "view"), or nullopt with
+// a diagnostic in `diagnostics`: "the surface file 'PATH' is larger than 4 MiB".
+std::optional<std::string> readTextFileOf(std::string_view kind, const std::filesystem::path& path, size_t maxBytes,
+                                          std::vector<Diagnostic>& diagnostics);
 
 } // namespace lsys

@@ -559,13 +559,8 @@ ParseResult parseLsystem(std::string_view source, const ParseOptions& options) {
 
 std::string readTextFile(const std::string& path, std::string& problem) {
     FileBytes file = readFileUpTo(path, kMaxSourceBytes);
-    switch (file.problem) {
-    case FileProblem::None: problem.clear(); break;
-    case FileProblem::Folder: problem = "is a folder, not a plant file"; break;
-    case FileProblem::CannotOpen: problem = "cannot be opened"; break;
-    case FileProblem::TooLarge: problem = "is larger than " + std::to_string(kMaxSourceBytes >> 20) + " MiB"; break;
-    case FileProblem::CannotRead: problem = "cannot be read"; break;
-    }
+    problem = file.problem == FileProblem::Folder ? "is a folder, not a plant file"
+                                                  : fileProblemText(file.problem, kMaxSourceBytes);
     return std::move(file.bytes);
 }
 

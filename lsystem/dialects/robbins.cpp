@@ -45,21 +45,21 @@ constexpr std::array kRules = {
     SymbolRule{"t", "@Ts(0.2)", "@Ts"}, // gravity
 };
 
-struct Setting {
+struct RobbinsSetting {
     std::string_view keyword;
     int values;
     std::string_view native; // header written with the value; empty: kept as a comment
 };
 
-constexpr std::array kSettings = {
-    Setting{"iterations", 1, "derivation length: "},
-    Setting{"angle", 1, "angle: "},
-    Setting{"length", 1, "step: "},
-    Setting{"thickness", 1, "width: "},
-    Setting{"startpoint", 3, ""},
-    Setting{"forward", 3, ""},
-    Setting{"left", 3, ""},
-    Setting{"up", 3, ""},
+constexpr std::array kRobbinsSettings = {
+    RobbinsSetting{"iterations", 1, "derivation length: "},
+    RobbinsSetting{"angle", 1, "angle: "},
+    RobbinsSetting{"length", 1, "step: "},
+    RobbinsSetting{"thickness", 1, "width: "},
+    RobbinsSetting{"startpoint", 3, ""},
+    RobbinsSetting{"forward", 3, ""},
+    RobbinsSetting{"left", 3, ""},
+    RobbinsSetting{"up", 3, ""},
 };
 
 struct Robbins {
@@ -98,8 +98,8 @@ struct Robbins {
             look.skipWhitespace();
             size_t at = look.pos;
             std::string_view word = look.identifier();
-            const Setting* setting = nullptr;
-            for (const Setting& candidate : kSettings)
+            const RobbinsSetting* setting = nullptr;
+            for (const RobbinsSetting& candidate : kRobbinsSettings)
                 if (candidate.keyword == word) setting = &candidate;
             if (!setting || atProduction(s)) return;
             s.pos = look.pos;

@@ -19,15 +19,13 @@ glm::vec3 rgb(std::string_view bytes, size_t at) { return {unit(bytes, at), unit
 std::optional<std::string> readBytes(const std::filesystem::path& path, std::string_view kind,
                                      ColourReadResult& result) {
     FileBytes file = readFileUpTo(path, kMaxColourFileBytes);
-    constexpr std::string_view kProblems[] = {"", "is a folder", "cannot be opened", "is larger than 1 MiB",
-                                              "cannot be read"}; // FileProblem's values
     if (file.problem == FileProblem::None) return std::move(file.bytes);
-    result.error = Diagnostic{path.string(),
-                              0,
-                              0,
-                              std::string(kind) + " " + path.string() + " " +
-                                  std::string(kProblems[static_cast<int>(file.problem)]),
-                              {}};
+    result.error =
+        Diagnostic{path.string(),
+                   0,
+                   0,
+                   std::string(kind) + " " + path.string() + " " + fileProblemText(file.problem, kMaxColourFileBytes),
+                   {}};
     return std::nullopt;
 }
 

@@ -13,7 +13,7 @@ namespace lsys::vlab {
 
 namespace {
 
-constexpr size_t kMaxFileBytes = size_t(4) << 20; // funcedit writes a few hundred bytes per function
+constexpr size_t kMaxFunctionFileBytes = size_t(4) << 20; // funcedit writes a few hundred bytes per function
 constexpr int kMaxSetItems = 1024;
 // cpfg's bisection stops once the curve's x is within this of the x asked
 // for (splinefun.cpp, SplineFunction::_Value, MaxError).
@@ -269,16 +269,6 @@ std::optional<VlabFunction> function(Lines& lines, int samples, int& budget) {
     return fverFormat(lines, budget);
 }
 
-std::optional<std::string> readText(const std::filesystem::path& path, std::vector<Diagnostic>& diagnostics) {
-    static const char* const kProblems[] = {"", "is a folder", "is missing or cannot be opened", "is over 4 MiB",
-                                            "cannot be read"}; // by FileProblem
-    FileBytes read = readFileUpTo(path, kMaxFileBytes);
-    if (read.problem == FileProblem::None) return std::move(read.bytes);
-    diagnostics.push_back({path.string(), 0, 0,
-                           "the function file '" + path.string() + "' " + kProblems[static_cast<int>(read.problem)]});
-    return std::nullopt;
-}
-
 } // namespace
 
 double evaluateFunction(const VlabFunction& function, double x) {
@@ -295,7 +285,7 @@ double evaluateFunction(const VlabFunction& function, double x) {
 
 FunctionReadResult readFunctionFile(const std::filesystem::path& path, int samples) {
     FunctionReadResult result;
-    std::optional<std::string> text = readText(path, result.diagnostics);
+    std::optional<std::string> text = readTextFileOf("function", path, kMaxFunctionFileBytes, result.diagnostics);
     if (!text) return result;
     Lines lines(*text, path.string(), result.diagnostics);
     int budget = kMaxFunctionSamples;
@@ -306,7 +296,7 @@ FunctionReadResult readFunctionFile(const std::filesystem::path& path, int sampl
 
 FunctionSetReadResult readFunctionSet(const std::filesystem::path& path) {
     FunctionSetReadResult result;
-    std::optional<std::string> text = readText(path, result.diagnostics);
+    std::optional<std::string> text = readTextFileOf("function", path, kMaxFunctionFileBytes, result.diagnostics);
     if (!text) return result;
     Lines lines(*text, path.string(), result.diagnostics);
     std::optional<Cursor> header = lines.next("'funcgalleryver 1 1'");

@@ -17,8 +17,8 @@ namespace lsys::vlab {
 
 namespace {
 
-constexpr size_t kMaxFileBytes = size_t(4) << 20; // a full 64-patch file is some 40 KiB
-constexpr int kDefaultPrecision = 5;              // cpfg's S_COUNT / 2, without a PRECISION line
+constexpr size_t kMaxSurfaceFileBytes = size_t(4) << 20; // a full 64-patch file is some 40 KiB
+constexpr int kDefaultPrecision = 5;                     // cpfg's S_COUNT / 2, without a PRECISION line
 
 // Reads as cpfg's fscanf calls do: literals and values separated by any
 // white space, line ends included; a problem is reported at its line and
@@ -350,23 +350,13 @@ void append(SurfaceMesh& mesh, const Grid& grid) {
         }
 }
 
-std::optional<std::string> readText(const std::filesystem::path& path, std::vector<Diagnostic>& diagnostics) {
-    static const char* const kProblems[] = {"", "is a folder", "is missing or cannot be opened", "is over 4 MiB",
-                                            "cannot be read"}; // by FileProblem
-    FileBytes read = readFileUpTo(path, kMaxFileBytes);
-    if (read.problem == FileProblem::None) return std::move(read.bytes);
-    diagnostics.push_back(
-        {path.string(), 0, 0, "the surface file '" + path.string() + "' " + kProblems[static_cast<int>(read.problem)]});
-    return std::nullopt;
-}
-
 } // namespace
 
 SurfaceReadResult readSurfaceFile(const std::filesystem::path& path, const std::string& name, float scale,
                                   int sPrecision, int tPrecision) {
     SurfaceReadResult result;
     result.mesh.name = name;
-    const std::optional<std::string> text = readText(path, result.diagnostics);
+    const std::optional<std::string> text = readTextFileOf("surface", path, kMaxSurfaceFileBytes, result.diagnostics);
     if (!text) return result;
     Scanner in(*text, path.string(), result.diagnostics);
     const std::optional<Placement> placement = header(in, scale);

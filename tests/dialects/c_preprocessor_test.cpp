@@ -12,10 +12,6 @@
 namespace lsys::test {
 namespace {
 
-std::string derived(const Grammar& grammar, int steps) {
-    return toString(deriveSteps(grammar, steps), grammar.symbols);
-}
-
 // A fresh folder of files for one test, removed afterwards.
 struct Folder {
     std::filesystem::path path;

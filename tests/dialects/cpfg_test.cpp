@@ -12,10 +12,6 @@
 namespace lsys::test {
 namespace {
 
-std::string derived(const Grammar& grammar, int steps) {
-    return toString(deriveSteps(grammar, steps), grammar.symbols);
-}
-
 // cpfg's lexer reads a newline followed by a tab as white space: the
 // production goes on over its tab-indented lines.
 TEST(Cpfg, ALineStartingWithATabContinuesTheStatementAbove) {

@@ -37,6 +37,10 @@ inline ModuleString deriveSteps(const Grammar& grammar, int steps, uint64_t seed
     return derive(grammar, options);
 }
 
+inline std::string derived(const Grammar& grammar, int steps) {
+    return toString(deriveSteps(grammar, steps), grammar.symbols);
+}
+
 inline std::map<std::string, size_t> countsOf(const ModuleString& string, const Grammar& grammar) {
     std::map<std::string, size_t> counts;
     for (size_t i = 0; i < string.size(); ++i) ++counts[grammar.symbols.name(string.symbols[i])];

@@ -25,6 +25,10 @@ struct View {
     glm::vec3 target;
 };
 
+// Where the camera paths of the cull tests start, and a view 6.7 m on, turned 45°.
+inline const View kStart{{0.0f, 1.7f, 0.0f}, {0.0f, 1.7f, 1.0f}};
+inline const View kMoved{{3.0f, 1.9f, 6.0f}, {4.0f, 1.8f, 7.0f}};
+
 // A 16:9 perspective over kFovY, near 0.1 m, far 1000 m, and the view and
 // projection it is made of.
 glm::mat4 viewProj(const View& v);

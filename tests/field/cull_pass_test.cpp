@@ -50,9 +50,6 @@ std::vector<gpu::FieldInstance> makeField(uint32_t n, uint32_t seed, const std::
     });
 }
 
-const View kStart{{0.0f, 1.7f, 0.0f}, {0.0f, 1.7f, 1.0f}};
-const View kMoved{{3.0f, 1.9f, 6.0f}, {4.0f, 1.8f, 7.0f}};
-
 Field randomField(uint32_t n, uint32_t seed) {
     std::vector<gpu::PlantModel> models = makeModels();
     std::vector<gpu::FieldInstance> instances =

@@ -5,12 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include "sun_fixture.h"
+
 namespace pf {
 namespace {
 
-const glm::vec3 kSun = glm::normalize(glm::vec3(0.4f, 0.62f, -0.5f));
-constexpr float kRadius = 60.0f;
-constexpr uint32_t kTexels = 1024;
+using test::kRadius;
+using test::kSun;
+using test::kTexels;
 constexpr float kTexel = 2.0f * kRadius / float(kTexels);
 
 ShadowView viewFrom(const glm::vec3& camera, const glm::vec3& focus) {

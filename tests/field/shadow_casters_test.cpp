@@ -69,8 +69,6 @@ bool ambiguous(const gpu::FieldInstance& inst, const gpu::PlantModel& model, con
     return false;
 }
 
-const View kStart{{0.0f, 1.7f, 0.0f}, {0.0f, 1.7f, 1.0f}};
-const View kMoved{{3.0f, 1.9f, 6.0f}, {4.0f, 1.8f, 7.0f}}; // 6.7 m on, turned 45°
 const View kAhead{{2.0f, 2.2f, 5.5f}, {2.0f, 2.0f, 6.5f}}; // 5.9 m on: one the cache still serves
 
 // Random instances unambiguous in both passes of every case, the last

@@ -7,12 +7,14 @@
 
 #include <random>
 
+#include "sun_fixture.h"
+
 namespace pf {
 namespace {
 
-const glm::vec3 kSun = glm::normalize(glm::vec3(0.4f, 0.62f, -0.5f));
-constexpr float kRadius = 60.0f;
-constexpr uint32_t kTexels = 1024;
+using test::kRadius;
+using test::kSun;
+using test::kTexels;
 constexpr float kDepthRadius = 250.0f;
 
 // Where the map sees a world point: inside its square and before its far

@@ -148,14 +148,14 @@ TEST(FunctionFile, ACurveShortOfXStillEvaluates) {
     EXPECT_NEAR(evaluateFunction(read.function, 0.9), 3.0, 1e-6); // the curve's end
 }
 
-struct Malformed {
+struct MalformedFunctionFile {
     const char* text;
     int line, column;
     const char* message; // a part of the diagnostic's message
 };
 
 TEST(FunctionFile, MalformedFilesAreReportedWhereTheyGoWrong) {
-    const Malformed cases[] = {
+    const MalformedFunctionFile cases[] = {
         {"points: 4\n", 1, 1, "not a function file"},
         {"fver 2 0\nname: a\n", 1, 5, "unsupported function file version"},
         {"range: 0 1\npoints: 3\n0 0\n0.5 1\n1 0\n", 2, 9, "malformed number of points"},
@@ -169,7 +169,7 @@ TEST(FunctionFile, MalformedFilesAreReportedWhereTheyGoWrong) {
         {"fver 1 1\nname: a\nsamples: 1\nflip: off\npoints: 4\n0 0 9999\n", 6, 5, "too many points"},
         {"range: 0 1\npoints: 4\n0 nan\n", 3, 3, "malformed point"},
     };
-    for (const Malformed& bad : cases) {
+    for (const MalformedFunctionFile& bad : cases) {
         TempFunction file("bad.func", bad.text);
         const FunctionReadResult read = readFunctionFile(file.path, 100);
         ASSERT_FALSE(read.ok()) << bad.text;

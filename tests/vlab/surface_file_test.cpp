@@ -169,7 +169,7 @@ TEST(SurfaceFile, NeighboursShareTheirEdgesNormals) {
     EXPECT_GT(glm::length(mesh.normals[12] - mesh.normals[16]), 0.01f);
 }
 
-struct Malformed {
+struct MalformedSurfaceFile {
     std::string text;
     int line, column;
     const char* message; // a part of the diagnostic's message
@@ -179,7 +179,7 @@ TEST(SurfaceFile, MalformedFilesAreReportedWhereTheyGoWrong) {
     const std::string patch = flatPatch("P");
     std::string many = header();
     for (int i = 0; i <= kMaxSurfacePatches; ++i) many += flatPatch("P" + std::to_string(i));
-    const Malformed cases[] = {
+    const MalformedSurfaceFile cases[] = {
         {"", 1, 1, "malformed bounding box"},
         {"0 1 0 1 0 x\n", 1, 11, "malformed bounding box"},
         {"0 1 0 1 0 1\nCONTACT X: 0\n", 2, 9, "expected 'CONTACT POINT'"},
@@ -194,7 +194,7 @@ TEST(SurfaceFile, MalformedFilesAreReportedWhereTheyGoWrong) {
         {header() + patch + "Q\nTOP COLOR: 1 DIFFUSE: 1 BOTTOM\n", 18, 1, "expected 'COLOR:'"},
         {many, 7 + 9 * kMaxSurfacePatches, 1, "too many patches"},
     };
-    for (const Malformed& bad : cases) {
+    for (const MalformedSurfaceFile& bad : cases) {
         TempSurface file(bad.text);
         const SurfaceReadResult read = readSurfaceFile(file.path, "l");
         ASSERT_EQ(read.diagnostics.size(), 1u) << bad.text;
