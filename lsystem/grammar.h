@@ -67,6 +67,22 @@ struct ProductionSet {
     bool empty() const { return productions.empty(); }
 };
 
+// cpfg's movements (Měch's tropisms, cpfg movements.c), a vlab view file's
+// `tropism:` and `torque:` lines: before every F, G, f and g a tropism turns
+// the heading toward its direction T (or, at an angle γ, toward the cone of
+// headings at γ from T) by its elasticity, all tropisms together; a twist
+// (torque) turns the up vector toward T about the heading. Each turtle state
+// carries the movements' current elasticities, which @Ti, @Td and @Ts change.
+inline constexpr size_t kMaxMovements = 10; // cpfg's MAXMOVEMENTS
+enum class MovementKind : uint8_t { Tropism, Twist };
+struct Movement {
+    MovementKind kind = MovementKind::Tropism;
+    glm::vec3 direction{0.0f, 1.0f, 0.0f}; // T: unit length times the intensity (I:, at most 1)
+    float angle = 0.0f;                    // γ (A:), degrees: 0 toward T, 90 perpendicular to it
+    float elasticity = 0.0f;               // at the start of the plant (E:)
+    float increment = 0.0f;                // of @Ti and @Td without a value (S:)
+};
+
 // How the turtle draws beyond angle, step and width: ABOP's turtle unless a
 // vlab object's view and colour files say otherwise (lsystem/vlab/object.h).
 struct TurtleStyle {
@@ -84,6 +100,7 @@ struct TurtleStyle {
     // (elsewhere all four are ordinary modules), tropism bends as cpfg's, ?U
     // answers cpfg's up vector.
     bool cpfgModules = false;
+    std::vector<Movement> movements; // at most kMaxMovements
     PlantLook look;
 };
 

@@ -89,7 +89,8 @@ public:
                  const SurfaceLibrary& surfaces)
         : bgrammar_(bgrammar), options_(options), surfaces_(surfaces), settings_(turtleSettings(grammar)),
           commands_(turtleCommands(grammar.symbols, grammar.style.cpfgModules)),
-          summaries_(summarise(bgrammar, commands_)), oneObject_(placesInPlant(bgrammar, commands_)),
+          summaries_(summarise(bgrammar, commands_)),
+          oneObject_(placesInPlant(bgrammar, commands_) || !settings_.movements.empty()),
           lookup_(bgrammar.nodes.size()) {}
 
     InstanceGraph build() {
@@ -154,7 +155,10 @@ public:
     const TurtleSettings settings_;
     const std::vector<TurtleCommand> commands_;
     const std::vector<NodeSummary> summaries_;
-    const bool oneObject_;                          // every node is interpreted inline (placesInPlant)
+    // Every node is interpreted inline: a module places the turtle in plant
+    // space (placesInPlant), or the view file's movements bend it in plant
+    // space by elasticities that are no StyleField.
+    const bool oneObject_;
     std::vector<std::vector<KeyedObjects>> lookup_; // per node
     std::vector<BuiltObject> built_;                // per object
     std::unordered_map<std::string, uint32_t> surfaceIndex_;

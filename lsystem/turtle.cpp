@@ -24,6 +24,7 @@ TurtleSettings turtleSettings(const Grammar& grammar) {
     settings.elasticity = static_cast<float>(style.elasticity);
     settings.pixelLines = style.pixelLines;
     settings.cpfgModules = style.cpfgModules;
+    settings.movements = style.movements;
     settings.look = style.look;
     return settings;
 }
@@ -36,6 +37,8 @@ TurtleState initialTurtleState(const TurtleSettings& settings) {
     state.tropism = settings.tropism;
     state.elasticity = settings.elasticity;
     state.material = settings.material;
+    for (size_t i = 0; i < settings.movements.size() && i < kMaxMovements; ++i)
+        state.movementElasticity[i] = settings.movements[i].elasticity;
     return state;
 }
 

@@ -23,6 +23,7 @@
 // A segment of negative length l is drawn backwards: its frame is the
 // turtle's turned 180 degrees about U and its length is |l|.
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -52,6 +53,7 @@ struct TurtleSettings {
     float elasticity = 0.0f;
     bool pixelLines = false;  // widths are screen pixels (widenPixelLines)
     bool cpfgModules = false; // cpfg's turtle: G, g, @M and @R are commands (turtleCommands), cpfg's tropism bend
+    std::vector<Movement> movements;
     PlantLook look;
 };
 
@@ -77,6 +79,8 @@ struct TurtleState {
     // across instances: only @R reads them, and a word holding @R is one object.
     glm::vec3 segmentHeading{0.0f, 1.0f, 0.0f};
     glm::vec3 segmentUp{0.0f, 0.0f, 1.0f};
+    // The current elasticity of each of the settings' movements (Movement).
+    std::array<float, kMaxMovements> movementElasticity{};
 };
 
 // The start of a plant: the settings' width, step, angle, tropism and elasticity.

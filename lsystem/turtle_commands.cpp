@@ -50,13 +50,22 @@ void addVertex(TurtleStack& stack, glm::vec3 position) {
 }
 
 // Moves along H; inside a polygon the new position is one of its vertices.
-void move(const TurtleStep& t) {
+// cpfg's g (and f in a polygon); cpfg turns by its movements before any step (interpret.c, f and g).
+void moveWithoutVertex(const TurtleStep& t) {
+    adjustForMovements(t.state, t.settings.movements);
     t.state.position += t.state.heading * t.parameterOr(0, t.state.length);
+}
+
+void move(const TurtleStep& t) {
+    moveWithoutVertex(t);
     addVertex(t.stack, t.state.position);
 }
 
+// cpfg turns by its movements before the segment, by the tropism of
+// "tropism direction:" after it (interpret.c, F).
 void drawSegment(const TurtleStep& t) {
     TurtleState& s = t.state;
+    adjustForMovements(s, t.settings.movements);
     const float length = t.parameterOr(0, s.length);
     const float startWidth = s.width;
     s.width = t.parameterOr(1, s.width);
@@ -144,7 +153,7 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {
          .reads = {kReadsPolygonOpen, kReadsLength},
          .changes = kChangesNoStyle,
          .stacks = kKeepsStacks,
-         .apply = [](const TurtleStep& t) { t.state.position += t.state.heading * t.parameterOr(0, t.state.length); }},
+         .apply = moveWithoutVertex},
         {.action = TurtleAction::Yaw,
          .symbol = "+",
          .parameters = "a = angle",
@@ -382,15 +391,26 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {
          .stacks = kKeepsStacks,
          .apply = [](const TurtleStep& t) { t.state.stiffness = t.parameterOr(0, t.state.stiffness); }},
         // |T| scales the bend, e < 0 bends away, e = 0 (the default) does not bend.
+        // In cpfg files the elasticity it declares it sets stays the view
+        // file's for the whole plant (cpfg's @Ts sets a movement's), so no
+        // InstanceGraph key can differ by it.
         {.action = TurtleAction::Elasticity,
          .symbol = "@Ts",
          .parameters = "e = elasticity",
-         .documentation = "set the elasticity: after each segment H turns toward T by e*|H x T| radians (ABOP section "
-                          "2.4); in cpfg files by asin(e T.U) toward U, then by asin(e T.L) toward L (cpfg's bend)",
+         .documentation =
+             "set the elasticity: after each segment H turns toward T by e*|H x T| radians (ABOP section "
+             "2.4); in cpfg files by asin(e T.U) toward U, then by asin(e T.L) toward L (cpfg's bend), "
+             "and there @Ts(k, e = 0) sets the elasticity of the view file's k-th tropism or torque instead",
          .reads = {kReadsNothing},
          .changes = {StyleField::Elasticity, FieldChange::Set, FieldChange::Keep},
          .stacks = kKeepsStacks,
-         .apply = [](const TurtleStep& t) { t.state.elasticity = t.parameterOr(0, t.state.elasticity); }},
+         .apply =
+             [](const TurtleStep& t) {
+                 if (t.settings.cpfgModules)
+                     changeMovementElasticity(t.state, t.settings.movements, ElasticityChange::Set, t.parameters);
+                 else
+                     t.state.elasticity = t.parameterOr(0, t.state.elasticity);
+             }},
         {.action = TurtleAction::TropismVector,
          .symbol = "@Tv",
          .parameters = "x, y, z",
@@ -401,6 +421,32 @@ constexpr std::array<TurtleCommandDefinition, kTurtleActions> kDefinitions = {
          .apply =
              [](const TurtleStep& t) {
                  if (t.parameters.size() >= 3) t.state.tropism = {t.parameters[0], t.parameters[1], t.parameters[2]};
+             }},
+        // A movement's elasticity is no StyleField: a plant with movements is
+        // one object of the InstanceGraph (lsystem/instance_graph_build.cpp).
+        {.action = TurtleAction::MovementElasticityUp,
+         .symbol = "@Ti",
+         .cpfgOnly = true,
+         .parameters = "k, d = increment",
+         .documentation = "(cpfg files) add d to the elasticity of the view file's k-th tropism or torque",
+         .reads = {kReadsNothing},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply =
+             [](const TurtleStep& t) {
+                 changeMovementElasticity(t.state, t.settings.movements, ElasticityChange::Increase, t.parameters);
+             }},
+        {.action = TurtleAction::MovementElasticityDown,
+         .symbol = "@Td",
+         .cpfgOnly = true,
+         .parameters = "k, d = increment",
+         .documentation = "(cpfg files) subtract d from the elasticity of the view file's k-th tropism or torque",
+         .reads = {kReadsNothing},
+         .changes = kChangesNoStyle,
+         .stacks = kKeepsStacks,
+         .apply =
+             [](const TurtleStep& t) {
+                 changeMovementElasticity(t.state, t.settings.movements, ElasticityChange::Decrease, t.parameters);
              }},
         {.action = TurtleAction::Sphere,
          .symbol = "@O",
@@ -535,36 +581,6 @@ std::vector<TurtleCommand> turtleCommands(const SymbolTable& symbols, bool cpfgM
     commands.reserve(symbols.size());
     for (const std::string& name : symbols.names) commands.push_back(turtleCommand(name, cpfgModules));
     return commands;
-}
-
-std::string turtleCommandHelp() {
-    struct Row {
-        std::string symbol, parameters;
-        std::string_view documentation;
-    };
-    std::vector<Row> rows;
-    size_t symbolWidth = 6, parameterWidth = 10; // the headings
-    for (const TurtleCommandDefinition& definition : kDefinitions)
-        for (std::string_view symbol : symbolsOf(definition)) {
-            if (symbol.empty()) continue;
-            // A prefix is shown with the name it is followed by: ~name.
-            rows.push_back({std::string(symbol) + (definition.symbolIsPrefix ? "name" : ""),
-                            std::string(definition.parameters), definition.documentation});
-            symbolWidth = std::max(symbolWidth, rows.back().symbol.size());
-            parameterWidth = std::max(parameterWidth, rows.back().parameters.size());
-        }
-    auto line = [&](std::string_view symbol, std::string_view parameters, std::string_view documentation) {
-        std::string text(symbol);
-        text.resize(symbolWidth + 2, ' ');
-        text.append(parameters).resize(symbolWidth + 2 + parameterWidth + 2, ' ');
-        return text.append(documentation).append("\n");
-    };
-    std::string help =
-        "The turtle's commands (docs/LSYS_FORMAT.md, \"Turtle\"). Angles are in degrees, widths are diameters;\n"
-        "a parameter left out is what follows its '='.\n\n";
-    help += line("symbol", "parameters", "what it does");
-    for (const Row& row : rows) help += line(row.symbol, row.parameters, row.documentation);
-    return help;
 }
 
 } // namespace lsys

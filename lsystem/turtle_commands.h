@@ -61,6 +61,8 @@ enum class TurtleAction : uint8_t {
     Stiffness,
     Elasticity,
     TropismVector,
+    MovementElasticityUp,
+    MovementElasticityDown,
     Sphere,
     Surface,
     PolygonBegin,

@@ -68,6 +68,67 @@ glm::vec3 upTurnedWith(const TurtleState& s, glm::vec3 heading) {
     return glm::length(perpendicular) > 1e-6f ? glm::normalize(perpendicular) : s.segmentUp;
 }
 
+// cpfg's rotation of v by the quaternion (cos half, sin half · axis),
+// q⁻¹ v q (quaternions.c, rot_by_quat): a turn by -2 half about axis when
+// axis is a unit vector. cpfg does not always hand it one (its axis is
+// divided by a length clamped to 1); q is then turned as q / |q| turns.
+glm::dvec3 rotateAsCpfg(glm::dvec3 v, double half, glm::dvec3 axis) {
+    const double sine = std::sin(half);
+    const glm::dquat q(std::cos(half), sine * axis.x, sine * axis.y, sine * axis.z);
+    const glm::dquat turned = glm::inverse(q) * glm::dquat(0.0, v.x, v.y, v.z) * q;
+    return {turned.x, turned.y, turned.z};
+}
+
+// The tropisms of movement_adjust and adjust_by_orthotropism (movements.c).
+void bendByTropisms(TurtleState& s, std::span<const Movement> movements) {
+    const glm::dvec3 heading(s.heading);
+    glm::dvec3 toward(0.0);
+    for (size_t i = 0; i < movements.size(); ++i) {
+        const Movement& movement = movements[i];
+        if (movement.kind != MovementKind::Tropism) continue;
+        const glm::dvec3 direction(movement.direction);
+        const double elasticity = s.movementElasticity[i], gamma = glm::radians(double(movement.angle));
+        toward += std::cos(gamma) * elasticity * direction;
+        if (std::sin(gamma) == 0.0) continue;
+        glm::dvec3 across = glm::cross(heading, direction);
+        double length = glm::length(across);
+        if (length < 1e-7) across = glm::dvec3(s.left), length = 1.0; // H along T: turn about L
+        toward += (elasticity * std::sin(gamma) / length) * glm::cross(direction, across);
+    }
+    const glm::dvec3 axis = glm::cross(heading, toward);
+    double length = glm::length(axis);
+    if (length < 1e-6) return;
+    length = std::min(length, 1.0);
+    s.heading = glm::vec3(rotateAsCpfg(heading, -0.5 * length, axis / length));
+    s.up = upTurnedWith(s, s.heading);
+    s.left = glm::cross(s.up, s.heading);
+}
+
+// The twists of movement_adjust and rotate_to_vector (movements.c), in
+// cpfg's up vector, -U. A twist that can act makes this frame the one the
+// next @R turns from, as cpfg's does.
+void twistByTorques(TurtleState& s, std::span<const Movement> movements) {
+    glm::dvec3 twist(0.0);
+    for (size_t i = 0; i < movements.size(); ++i)
+        if (movements[i].kind == MovementKind::Twist)
+            twist += double(s.movementElasticity[i]) * glm::dvec3(movements[i].direction);
+    if (twist == glm::dvec3(0.0)) return;
+    const glm::dvec3 heading(s.heading);
+    const glm::dvec3 across = glm::cross(heading, glm::normalize(twist));
+    if (glm::dot(across, across) <= 1e-8) return; // H along the twist: no turn defined
+    const glm::dvec3 desired = glm::cross(across, heading) * glm::length(twist);
+    const glm::dvec3 up = -glm::dvec3(s.up);
+    const glm::dvec3 axis = glm::cross(up, desired);
+    double length = glm::length(axis);
+    if (length >= 1e-7) {
+        length = std::min(length, 1.0);
+        s.up = -glm::vec3(rotateAsCpfg(up, 0.5 * length, axis / length));
+        s.left = glm::cross(s.up, s.heading);
+    }
+    s.segmentHeading = s.heading;
+    s.segmentUp = s.up;
+}
+
 } // namespace
 
 void rotate(TurtleState& s, glm::vec3 axis, float degrees) {
@@ -106,6 +167,27 @@ void setHeadingAsCpfg(TurtleState& s, std::span<const float> p) {
     else
         s.up = upTurnedWith(s, s.heading);
     s.left = glm::cross(s.up, s.heading);
+}
+
+void adjustForMovements(TurtleState& s, std::span<const Movement> movements) {
+    if (movements.empty()) return;
+    bendByTropisms(s, movements);
+    twistByTorques(s, movements);
+}
+
+void changeMovementElasticity(TurtleState& s, std::span<const Movement> movements, ElasticityChange change,
+                              std::span<const float> p) {
+    if (p.empty()) return;
+    // cpfg's index is (short)(k - 1), truncated toward 0.
+    const double index = double(p[0]) - 1.0;
+    if (!(index > -1.0 && index < double(movements.size()))) return;
+    const size_t i = static_cast<size_t>(index < 0.0 ? 0.0 : index);
+    float& elasticity = s.movementElasticity[i];
+    switch (change) {
+    case ElasticityChange::Increase: elasticity += p.size() >= 2 ? p[1] : movements[i].increment; break;
+    case ElasticityChange::Decrease: elasticity -= p.size() >= 2 ? p[1] : movements[i].increment; break;
+    case ElasticityChange::Set: elasticity = p.size() >= 2 ? p[1] : 0.0f; break;
+    }
 }
 
 } // namespace lsys

@@ -15,6 +15,7 @@
 
 namespace lsys {
 
+struct Movement;
 struct TurtleState;
 
 // Rotates the two frame vectors other than axis by degrees about axis, then
@@ -35,5 +36,20 @@ void bendTowardTropism(TurtleState& state, bool cpfg);
 // otherwise the up vector of the last segment turned with the heading
 // (turtle.c, adjust_up_and_left).
 void setHeadingAsCpfg(TurtleState& state, std::span<const float> parameters);
+
+// cpfg's movements before a step (movements.c, movement_adjust): the
+// tropisms together turn H toward V = sum of e_i (cos γ_i T_i + sin γ_i
+// T_i x (H x T_i) / |H x T_i|) by |H x V| radians (at most 1), the up vector
+// following as @R's does; then the twists turn the up vector about H toward
+// the part of their summed direction perpendicular to H.
+void adjustForMovements(TurtleState& state, std::span<const Movement> movements);
+
+// cpfg's @Ti(k, d), @Td(k, d) and @Ts(k, e) (blackbox.c, 'T'): movement k
+// (from 1) gets d more or less elasticity (its increment when d is left
+// out), or elasticity e (0 when left out). Without k, or with k past the
+// movements, nothing changes.
+enum class ElasticityChange { Increase, Decrease, Set };
+void changeMovementElasticity(TurtleState& state, std::span<const Movement> movements, ElasticityChange change,
+                              std::span<const float> parameters);
 
 } // namespace lsys

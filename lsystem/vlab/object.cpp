@@ -129,6 +129,7 @@ void applyView(const ViewFile& view, Grammar& grammar) {
     style.material = static_cast<uint32_t>(((view.initialColor % 256) + 256) % 256);
     style.tropism = view.tropismDirection;
     style.elasticity = view.initialElasticity;
+    style.movements = view.movements;
     style.pixelLines = view.lineStyle == LineStyle::Pixel;
 }
 

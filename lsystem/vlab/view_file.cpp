@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
+#include <tuple>
 #include <type_traits>
 
 #include <glm/geometric.hpp>
@@ -14,7 +16,7 @@ namespace lsys::vlab {
 
 namespace {
 
-constexpr size_t kMaxViewFileBytes = size_t(1) << 20; // "is larger than 1 MiB" below
+constexpr size_t kMaxViewFileBytes = size_t(1) << 20;
 // Diagnostics kept per list: binary garbage would make one for every line.
 constexpr size_t kMaxListed = 1000;
 
@@ -88,6 +90,12 @@ public:
 
     void run();
     void skipLine() { pos_ = std::min(text_.find('\n', pos_), text_.size()); }
+    // The rest of the line, as cpfg's fgets reads it, and where it starts; the line is then read.
+    std::pair<std::string_view, size_t> restOfLine() {
+        const size_t from = pos_;
+        skipLine();
+        return {text_.substr(from, pos_ - from), from};
+    }
     bool accept(std::string_view s) { return text_.substr(pos_).starts_with(s) && (pos_ += s.size(), true); }
     // `format` as fscanf reads it (' ', %f, %d, %s, %c, other characters
     // literally), within the line; after '|' what is missing is no error.
@@ -274,6 +282,75 @@ void contour(Reader& r, const Values& v) {
     r.view().contours.push_back({int(v[0].number), std::string(v[1].text), r.labelLine()});
 }
 
+// strtok over a line, as cpfg's read_movement and get_double call it: each
+// call skips the delimiters it is given and returns what follows, up to the
+// next one, with its offset in the line; empty at the end.
+struct Tokens {
+    std::string_view line;
+    size_t pos = 0;
+    std::pair<std::string_view, size_t> next(std::string_view delimiters) {
+        while (pos < line.size() && delimiters.find(line[pos]) != std::string_view::npos) ++pos;
+        const size_t from = pos;
+        while (pos < line.size() && delimiters.find(line[pos]) == std::string_view::npos) ++pos;
+        return {line.substr(from, pos - from), from};
+    }
+};
+
+// "tropism: T: 0,1,0 A: 90 E: 0.2 S: 0.05" and "torque: T: ...": letters and
+// their values as cpfg's read_movement reads them (movements.c): T a
+// direction, I an intensity (the direction's length once normalised, kept
+// within [-1, 1]; before T it is 0), A the angle γ in degrees, E the
+// elasticity, S its step for @Ti and @Td. cpfg reads each number with atof
+// (text that is no number is 0) and ignores a movement with an unknown
+// letter, a zero direction or a zero intensity, or past the tenth: so is it
+// here, with a warning.
+template <MovementKind kind>
+void movement(Reader& r, const Values&) {
+    const auto [line, lineStart] = r.restOfLine();
+    Tokens tokens{line};
+    Movement movement{kind};
+    glm::dvec3 direction(0.0, 1.0, 0.0);
+    double scale = 0.0; // 1/|T|, times the intensity
+    auto number = [&](double& value) {
+        const auto [token, at] = tokens.next(" ,\t:");
+        if (token.empty()) return r.fail("a number", lineStart + at, "a number is missing"), false;
+        const size_t length = numberLength(token, true);
+        value = length == 0 ? 0.0 : std::strtod(std::string(token.substr(0, length)).c_str(), nullptr);
+        return true;
+    };
+    auto ignored = [&](std::string why, size_t at) {
+        r.warn(why + ": cpfg ignores this " + std::string(r.label.substr(0, r.label.size() - 1)), lineStart + at);
+    };
+    for (auto [token, at] = tokens.next(" \t:"); !token.empty(); std::tie(token, at) = tokens.next(" \t:")) {
+        double value = 0.0;
+        switch (token[0]) {
+        case 'T':
+            if (!number(direction.x) || !number(direction.y) || !number(direction.z)) return;
+            if (glm::dot(direction, direction) == 0.0) return ignored("a zero direction", at);
+            scale = 1.0 / glm::length(direction);
+            break;
+        case 'I':
+            if (!number(value)) return;
+            scale = std::clamp(scale * value, -1.0, 1.0);
+            if (scale == 0.0) return ignored("a zero intensity (or one before the direction)", at);
+            break;
+        case 'A':
+        case 'E':
+        case 'S':
+            if (!number(value)) return;
+            (token[0] == 'A'   ? movement.angle
+             : token[0] == 'E' ? movement.elasticity
+                               : movement.increment) = float(value);
+            break;
+        default: return ignored("an unknown letter " + shown(token.substr(0, 1)) + " (T, I, A, E or S)", at);
+        }
+    }
+    if (r.view().movements.size() == kMaxMovements)
+        return ignored("more than " + std::to_string(kMaxMovements) + " tropisms and torques", 0);
+    movement.direction = glm::vec3(direction * scale);
+    r.view().movements.push_back(movement);
+}
+
 void box(Reader& r, const Values& v) {
     r.view().box = ViewBox{{v[0].number, v[2].number, v[4].number}, {v[1].number, v[3].number, v[5].number}};
 }
@@ -312,6 +389,8 @@ constexpr LabelFormat kRead[] = {
     {"#", " %d| %s", lineMarker, "12 \"plant.v\""},
     {"polygonization level:", " %d", contourSides<true>, "3"},
     {"tropism direction:", " %f,%f,%f", vectorInto<&V::tropismDirection, true>, "0,-1,0"},
+    {"tropism:", "", movement<MovementKind::Tropism>, "T: 0,-1,0 A: 0 E: 0.2"},
+    {"torque:", "", movement<MovementKind::Twist>, "T: 0,1,0 E: 0.1"},
     {"initial elasticity:", " %f", numberInto<&V::initialElasticity>, "0.1"},
     {"elasticity increment:", " %f", numberInto<&V::elasticityIncrement>, "0.05"},
     {"line style:", " %s", lineStyle, "cylinder"},
@@ -331,7 +410,7 @@ constexpr std::string_view kQuiet = "\nfront distance:\nback distance:\nz buffer
                                     "rayshade scale:\nenvironment display:\nantialiasing:\nmin zoom:\nmax zoom:\n"
                                     "generate on view change:\nwinfont:\nconcave polygons:\nshadow map:\nPS linecap:\n";
 // and those whose absence changes the plant: read, but not drawn (warned of).
-constexpr std::string_view kNotDrawn = "\nline:\nblob:\ntropism:\ntorque:\ntexture:\nbackground scene:\ntsurface:\n"
+constexpr std::string_view kNotDrawn = "\nline:\nblob:\ntexture:\nbackground scene:\ntsurface:\n"
                                        "curve:\n";
 
 bool listed(std::string_view list, std::string_view label) {
@@ -383,14 +462,12 @@ ViewReadResult parseViewFile(std::string_view text, const std::string& file) {
 
 ViewReadResult readViewFile(const std::filesystem::path& path) {
     const std::string name = path.string();
-    const FileBytes file = readFileUpTo(path, kMaxViewFileBytes);
-    constexpr std::string_view kProblems[] = {"", "is a folder", "cannot be opened", "is larger than 1 MiB",
-                                              "cannot be read"}; // FileProblem's values
-    if (file.problem != FileProblem::None)
-        return {{}, {{name, 0, 0, "the view file " + name + " " + std::string(kProblems[int(file.problem)]), {}}}, {}};
+    std::vector<Diagnostic> unread;
+    const std::optional<std::string> text = readTextFileOf("view", path, kMaxViewFileBytes, unread);
+    if (!text) return {{}, std::move(unread), {}};
     // Binary is not given to the preprocessor, which would drop its NUL bytes.
-    if (file.bytes.find('\0') != std::string::npos) return parseViewFile(file.bytes, name);
-    const PreprocessedText preprocessed = runCPreprocessor(file.bytes, name, {});
+    if (text->find('\0') != std::string::npos) return parseViewFile(*text, name);
+    const PreprocessedText preprocessed = runCPreprocessor(*text, name, {});
     if (!preprocessed.diagnostics.empty()) return {{}, preprocessed.diagnostics, {}};
     ViewReadResult result = parseViewFile(preprocessed.text, name);
     mapToFiles(preprocessed, result.diagnostics);

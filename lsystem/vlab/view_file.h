@@ -18,6 +18,7 @@
 #include <glm/vec3.hpp>
 
 #include "lsystem/error.h"
+#include "lsystem/grammar.h"
 
 namespace lsys::vlab {
 
@@ -100,6 +101,7 @@ struct ViewFile {
     std::optional<ViewFunctionSet> functionSet;
     std::vector<ViewFunction> functions;
     std::vector<ViewContour> contours;
+    std::vector<Movement> movements; // "tropism:" and "torque:", in file order (at most kMaxMovements)
 };
 
 struct ViewReadResult {

@@ -42,6 +42,7 @@ const char* const kSystemNames[] = {
     "homomorphism_queries",
     "left_context_bracket",
     "local_variables",
+    "movements",
     "preprocessor",
     "queries",
     "query_tropism",

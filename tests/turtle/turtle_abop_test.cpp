@@ -135,16 +135,50 @@ TEST(LsysTurtleAbop, TropismFromTheSettings) {
 // asin(e T.U), then toward L by asin(e T.L), where ABOP turns it by e|H x T|
 // toward T. With T = (1,0,1) and e = 0.5 the two turns have sines 0.5 and
 // -0.5 (L = -X): H = (0, cos 30, sin 30), then cos 30 H - 0.5 L.
+// The segments of `source` drawn with an elasticity of 0.5 from the start,
+// as a view file's "initial elasticity: 0.5" gives it.
+std::vector<Span> spansWithElasticity(const std::string& source) {
+    Grammar grammar = parseOk(source);
+    grammar.style.elasticity = 0.5;
+    return spansOf(plantFromGrammar(grammar, derive(grammar)));
+}
+
 TEST(LsysTurtleAbop, CpfgFilesBendAsCpfg) {
     const float c = std::sqrt(0.75f);
-    std::vector<Span> spans = spansOf("turtle modules: cpfg\nAxiom: @Tv(1,0,0)@Ts(0.5)FF\n");
+    std::vector<Span> spans = spansWithElasticity("turtle modules: cpfg\nAxiom: @Tv(1,0,0)FF\n");
     ASSERT_EQ(spans.size(), 2u);
     expectNear(spans[1].end - spans[1].start, {0.5f, c, 0});
     spans = spansOf("Axiom: @Tv(1,0,0)@Ts(0.5)FF\n");
     expectNear(spans.at(1).end - spans[1].start, {std::sin(0.5f), std::cos(0.5f), 0});
     // Toward U first, then toward L (the other order would end at (c/2, 0.75, 0.5)).
-    spans = spansOf("turtle modules: cpfg\nAxiom: @Tv(1,0,1)@Ts(0.5)FF\n");
+    spans = spansWithElasticity("turtle modules: cpfg\nAxiom: @Tv(1,0,1)FF\n");
     expectNear(spans.at(1).end - spans[1].start, {0.5f, 0.75f, 0.5f * c});
+}
+
+// In cpfg files @Ts(k, e) sets the k-th movement's elasticity (blackbox.c),
+// never the elasticity of "tropism direction:": without movements it
+// changes nothing, and the plant stays straight.
+TEST(LsysTurtleAbop, CpfgFilesSetMovementsWithAtTs) {
+    const std::vector<Span> spans = spansOf("turtle modules: cpfg\nAxiom: @Tv(1,0,0)@Ts(0.5)@Ts(1,0.5)FF\n");
+    ASSERT_EQ(spans.size(), 2u);
+    expectNear(spans[1].end - spans[1].start, {0, 1, 0});
+}
+
+// A movement turns the heading before the segment, by the elasticity @Ti,
+// @Td and @Ts leave it: an orthotropism toward +X of elasticity e turns the
+// upright heading by e radians (|H x eT| = e).
+TEST(LsysTurtleAbop, MovementsTurnBeforeEachStepByTheirElasticity) {
+    Grammar grammar = parseOk("turtle modules: cpfg\nAxiom: F @Ti(1) F @Td(1,0.1) F [@Ts(1,0) F] F\n");
+    grammar.style.movements = {Movement{MovementKind::Tropism, {1, 0, 0}, 0.0f, 0.2f, 0.1f}};
+    const std::vector<Span> spans = spansOf(plantFromGrammar(grammar, derive(grammar)));
+    ASSERT_EQ(spans.size(), 5u);
+    const auto turned = [](float angle) { return glm::vec3(std::sin(angle), std::cos(angle), 0.0f); };
+    expectNear(spans[0].end - spans[0].start, turned(0.2f));
+    expectNear(spans[1].end - spans[1].start, turned(0.2f + 0.3f * std::cos(0.2f)), 1e-4f);
+    EXPECT_GT(spans[1].end.x - spans[1].start.x, spans[0].end.x - spans[0].start.x);
+    // e = 0 in the branch: no turn; after it e = 0.2 again, and the heading turns further.
+    expectNear(spans[3].end - spans[3].start, spans[2].end - spans[2].start, 1e-5f);
+    EXPECT_GT(spans[4].end.x - spans[4].start.x, spans[2].end.x - spans[2].start.x + 1e-3f);
 }
 
 TEST(LsysTurtleAbop, HeadingAlongTropismDoesNotBend) {

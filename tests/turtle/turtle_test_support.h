@@ -17,11 +17,16 @@ namespace lsys::test {
 
 inline std::string dataPath(const std::string& relative) { return std::string(PLANTFIELD_DATA_DIR) + "/" + relative; }
 
-// The plant a native grammar draws after its derivation length.
-inline PlantAsset plantOf(const std::string& source, const SurfaceLibrary& surfaces = SurfaceLibrary{}) {
+inline Grammar parseOk(const std::string& source) {
     ParseResult parsed = parseLsystem(source);
     EXPECT_TRUE(parsed.ok()) << formatDiagnostics(parsed.diagnostics, source);
-    return plantFromGrammar(parsed.grammar, derive(parsed.grammar), surfaces);
+    return std::move(parsed.grammar);
+}
+
+// The plant a native grammar draws after its derivation length.
+inline PlantAsset plantOf(const std::string& source, const SurfaceLibrary& surfaces = SurfaceLibrary{}) {
+    const Grammar grammar = parseOk(source);
+    return plantFromGrammar(grammar, derive(grammar), surfaces);
 }
 
 inline glm::vec3 headingOf(const Frame& frame) { return frame.rotation * glm::vec3(0.0f, 1.0f, 0.0f); }

@@ -215,15 +215,14 @@ TEST(ViewFile, SurfaceIdIsOneCharacterAsCpfgReadsIt) {
 }
 
 TEST(ViewFile, LabelsNotDrawnAreNamedInWarningsAtTheirPosition) {
-    const ViewReadResult result = parseViewFile(
-        "angle factor: 8\n  texture: F: leaf.png E: m R: 1.6\ntropism: T: 0,1,0 E: 0.2\ntorque: T: 0.0 1.0 0.0\n"
-        "blob: field.dat 1 1 1\ntsurface: s leaf.t 1\ncurve: profile.con\n"
-        "background scene: background.dat\nline: L line.s .01\nangle increment: 30\n",
-        "plant.v");
+    const ViewReadResult result =
+        parseViewFile("angle factor: 8\n  texture: F: leaf.png E: m R: 1.6\n"
+                      "blob: field.dat 1 1 1\ntsurface: s leaf.t 1\ncurve: profile.con\n"
+                      "background scene: background.dat\nline: L line.s .01\nangle increment: 30\n",
+                      "plant.v");
     EXPECT_TRUE(result.ok());
     EXPECT_EQ(result.view.angleIncrement, 30.0f); // what follows their values is read on
-    const char* labels[] = {
-        "texture:", "tropism:", "torque:", "blob:", "tsurface:", "curve:", "background scene:", "line:"};
+    const char* labels[] = {"texture:", "blob:", "tsurface:", "curve:", "background scene:", "line:"};
     ASSERT_EQ(result.warnings.size(), std::size(labels));
     for (size_t i = 0; i < std::size(labels); ++i) {
         EXPECT_EQ(result.warnings[i].severity, Severity::Warning);
@@ -231,6 +230,52 @@ TEST(ViewFile, LabelsNotDrawnAreNamedInWarningsAtTheirPosition) {
         expectAt(result.warnings[i], int(i) + 2, i == 0 ? 3 : 1);
         EXPECT_NE(result.warnings[i].message.find(labels[i]), std::string::npos) << result.warnings[i].message;
     }
+}
+
+// cpfg's movements (movements.c, read_movement): letters and values split
+// as strtok splits them, the direction normalised and scaled by the
+// intensity (kept within [-1, 1]), tropisms and torques in one list.
+TEST(ViewFile, TropismAndTorqueLinesAreMovementsInFileOrder) {
+    const ViewFile view = parsedOk("tropism: T: 0,-2,0 E: 0.2\ntorque: T: 0.0 0.0 1.0  E:0.5\n"
+                                   "tropism:  T: 3 0 4 I: 0.5 A:90 E: 0.1 S: 0.05\nangle increment: 30\n");
+    ASSERT_EQ(view.movements.size(), 3u);
+    EXPECT_EQ(view.movements[0].kind, MovementKind::Tropism);
+    expectNear(view.movements[0].direction, {0, -1, 0});
+    EXPECT_FLOAT_EQ(view.movements[0].elasticity, 0.2f);
+    EXPECT_EQ(view.movements[1].kind, MovementKind::Twist);
+    EXPECT_FLOAT_EQ(view.movements[1].elasticity, 0.5f);
+    expectNear(view.movements[2].direction, {0.3f, 0, 0.4f}); // (3, 0, 4) / 5 x 0.5
+    EXPECT_FLOAT_EQ(view.movements[2].angle, 90.0f);
+    EXPECT_FLOAT_EQ(view.movements[2].increment, 0.05f);
+    EXPECT_EQ(view.angleIncrement, 30.0f); // the line after is read on
+}
+
+// What cpfg ignores (with a message) is ignored with a warning at the
+// letter; a number missing after a letter, where cpfg's atof(NULL) would
+// crash, is an error at the line's end.
+TEST(ViewFile, MovementsCpfgIgnoresAreWarnedOfAndAMissingNumberIsAnError) {
+    const ViewReadResult ignored =
+        parseViewFile("tropism: T: 0,0,0 E: 1\ntropism: I: 0.5 T: 0,1,0\ntorque: T: 0,1,0 Q: 2\n", "plant.v");
+    EXPECT_TRUE(ignored.ok());
+    EXPECT_TRUE(ignored.view.movements.empty());
+    ASSERT_EQ(ignored.warnings.size(), 3u);
+    expectAt(ignored.warnings[0], 1, 10);
+    EXPECT_NE(ignored.warnings[0].message.find("a zero direction"), std::string::npos);
+    expectAt(ignored.warnings[1], 2, 10);
+    expectAt(ignored.warnings[2], 3, 18);
+    EXPECT_NE(ignored.warnings[2].message.find("unknown letter 'Q'"), std::string::npos) << ignored.warnings[2].message;
+
+    std::string eleven;
+    for (int i = 0; i < 11; ++i) eleven += "tropism: T: 0,1,0\n";
+    const ViewReadResult many = parseViewFile(eleven, "plant.v");
+    EXPECT_EQ(many.view.movements.size(), kMaxMovements);
+    ASSERT_EQ(many.warnings.size(), 1u);
+    EXPECT_EQ(many.warnings[0].line, 11);
+
+    const ViewReadResult missing = parseViewFile("tropism: T: 0,1\n", "plant.v");
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.diagnostics[0].message.find("a number is missing"), std::string::npos);
+    EXPECT_EQ(missing.diagnostics[0].line, 1);
 }
 
 TEST(ViewFile, LabelsOfCpfgsWindowAreAcceptedQuietly) {
