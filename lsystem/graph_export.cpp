@@ -82,15 +82,17 @@ std::vector<uint64_t> nodeCounts(const InstanceGraph& graph) {
     return counts;
 }
 
-// The node of an instance of `object` and, below it, those of its instances.
+// The node of an instance of `object` and, below it, those of its instances;
+// translations times `scale` (GraphExportOptions::scale).
 void addInstanceNodes(GltfBuilder& builder, const InstanceGraph& graph, const std::vector<int>& meshOf, uint32_t object,
-                      int node) {
+                      int node, float scale) {
     for (const GraphItem& item : graph.itemsOf(object)) {
         if (!needsNode(graph, item)) continue;
         const GraphInstance& instance = graph.instances[item.index];
+        const Frame frame{instance.frame.position * scale, instance.frame.rotation};
         const int child =
-            builder.addNode("object_" + std::to_string(instance.object), node, instance.frame, meshOf[instance.object]);
-        addInstanceNodes(builder, graph, meshOf, instance.object, child);
+            builder.addNode("object_" + std::to_string(instance.object), node, frame, meshOf[instance.object]);
+        addInstanceNodes(builder, graph, meshOf, instance.object, child, scale);
     }
 }
 
@@ -99,7 +101,8 @@ void writeGraphGltf(const InstanceGraph& graph, const SurfaceLibrary& surfaces, 
     std::vector<std::vector<TriangleMesh>> meshes;
     std::vector<Material> materials;
     for (uint32_t object = 0; object < graph.objects.size(); ++object) {
-        const PlantAsset direct = directPrimitives(graph, object, surfaces);
+        PlantAsset direct = directPrimitives(graph, object, surfaces);
+        if (options.scale != 1.0f) scalePlant(direct, options.scale);
         mergeMaterials(materials, direct.materials);
         meshes.push_back(meshesByMaterial(direct, options.segments, options.detail));
     }
@@ -111,7 +114,7 @@ void writeGraphGltf(const InstanceGraph& graph, const SurfaceLibrary& surfaces, 
     if (!graph.objects.empty()) {
         // The root object is the plant node itself: placed at the plant's start.
         builder.model.nodes[GltfBuilder::kRoot].mesh = meshOf[graph.root];
-        addInstanceNodes(builder, graph, meshOf, graph.root, GltfBuilder::kRoot);
+        addInstanceNodes(builder, graph, meshOf, graph.root, GltfBuilder::kRoot, options.scale);
     }
     summary.nodes = builder.model.nodes.size();
     builder.write(out, binary);

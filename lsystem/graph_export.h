@@ -25,6 +25,11 @@ struct GraphExportOptions {
     // One node per path of instances from the root: a deep plant has
     // exponentially many, so past this the export is refused.
     uint64_t maxNodes = 1'000'000;
+    // Uniform scale (> 0) about the plant's base baked into what is written:
+    // each object's primitives as scalePlant scales them, and the instances'
+    // translations, so nodes stay rigid. (The graph itself is not scaled: with
+    // pixel-wide lines its radii are in pixels until written.)
+    float scale = 1.0f;
     // What the writer would hold at once, from the objects' primitives and
     // the node count, before any mesh is built (stage "export").
     MemoryBudget memory = machineMemoryBudget();

@@ -111,4 +111,47 @@ void exportPlant(const PlantAsset& asset, const std::filesystem::path& path, con
     }
 }
 
+Bounds bakedBounds(const PlantAsset& asset, SegmentGeometry segments, const MeshDetail& detail) {
+    Bounds bounds;
+    const auto extend = [&bounds](const TriangleMesh& mesh) {
+        for (const glm::vec3& position : mesh.positions) bounds.extend(position);
+    };
+    const bool tubes = segments == SegmentGeometry::GeneralizedCylinders;
+    for (const Primitive& primitive : asset.primitives)
+        if (isDrawable(primitive) && !(tubes && primitive.kind == PrimitiveKind::Segment))
+            extend(bakedPrimitiveMesh(asset, primitive, detail));
+    if (tubes)
+        for (const SegmentChain& chain : segmentChains(asset)) extend(generalizedCylinderMesh(asset, chain, detail));
+    return bounds;
+}
+
+float heightScale(const Bounds& bounds, float height) {
+    const float extent = bounds.empty() ? 0.0f : bounds.max.y - bounds.min.y;
+    return extent > 0.0f ? height / extent : 0.0f;
+}
+
+void scalePlant(PlantAsset& asset, float factor) {
+    // Every size a primitive has scales with it: a surface's `length` is its
+    // scale, a sphere's radius is startRadius, a polygon's outline is in
+    // plant space (its frame only records where it began).
+    for (Primitive& p : asset.primitives) {
+        p.frame.position *= factor;
+        p.length *= factor;
+        p.startRadius *= factor;
+        p.endRadius *= factor;
+    }
+    for (PolygonShape& polygon : asset.polygons)
+        for (glm::vec3& point : polygon.outline) point *= factor;
+    for (Joint& joint : asset.joints) {
+        joint.rest.position *= factor;
+        joint.length *= factor;
+        joint.startRadius *= factor;
+        joint.endRadius *= factor;
+    }
+    if (!asset.bounds.empty()) {
+        asset.bounds.min *= factor;
+        asset.bounds.max *= factor;
+    }
+}
+
 } // namespace lsys

@@ -30,4 +30,21 @@ struct ExportOptions {
 // file behind and never a half-written one.
 void exportPlant(const PlantAsset& asset, const std::filesystem::path& path, const ExportOptions& options = {});
 
+// The box of every vertex meshesByMaterial bakes for the flat form, each
+// primitive or segment chain built and dropped in turn: the plant as drawn,
+// where PlantAsset::bounds holds the turtle's round geometry (outside rings
+// of few sides) padded by the widest pixel-wide line. `lsys export --height`
+// measures it.
+Bounds bakedBounds(const PlantAsset& asset, SegmentGeometry segments, const MeshDetail& detail);
+
+// The uniform scale that makes `bounds` `height` tall (their y extent). 0
+// when the bounds are empty or have no height, which no scale can stretch.
+float heightScale(const Bounds& bounds, float height);
+
+// Scales the plant uniformly by `factor` (> 0) about its base (the origin), so that
+// every form exported afterwards is `factor` times as large: primitive frames
+// and sizes, polygon outlines, joints' rest frames and sizes, bounds. Joint
+// stiffness is not exported and is left as it is.
+void scalePlant(PlantAsset& asset, float factor);
+
 } // namespace lsys

@@ -141,6 +141,45 @@ printf 'Lsystem: 1\nAxiom: F\nendlsystem\n' > "$WORK/object/plant.l"
 printf 'angle increment: 30\ninitial line width: thin\n' > "$WORK/object/plant.v"
 expect_run object-bad-view 2 'plant.v:2:21: error: ' -- "$LSYS" check "$WORK/object"
 expect_run object-bad-view-line 2 '^  initial line width: thin$' -- "$LSYS" check "$WORK/object"
+# What is exported is what is drawn: --sides, --no-skeleton and --height, read back from the glTF
+# (gltf_summary.mjs prints vertices=V nodes=N joints=J skins=S height=H).
+SUMMARY="$(dirname "$0")/gltf_summary.mjs"
+command -v node > /dev/null || fail "export-drawn: node is missing (tools/deps.sh installs it)"
+summary() { node "$SUMMARY" "$1" 2>&1; }
+# A frustum with caps has 4(sides+1) vertices: the Koch curve's 625 segments 36 each, 24 with 5 sides.
+"$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/sides8.glb" 2> /dev/null
+"$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/sides5.gltf" --sides 5 --skeleton 2> /dev/null
+case $(summary "$WORK/sides8.glb") in *'vertices=22500 nodes=627 joints=625 skins=0 '*) ;; *) fail "export-sides-default: $(summary "$WORK/sides8.glb")" ;; esac
+case $(summary "$WORK/sides5.gltf") in *'vertices=15000 nodes=627 joints=625 '*) ;; *) fail "export-sides: $(summary "$WORK/sides5.gltf")" ;; esac
+"$LSYS" export "$DATA/plants/abop_1_24a.lsys" -o "$WORK/sides5-instanced.glb" --instanced --sides 5 2> /dev/null
+case $(summary "$WORK/sides5-instanced.glb") in *'vertices=120 '*) ;; *) fail "export-sides-instanced: $(summary "$WORK/sides5-instanced.glb")" ;; esac
+expect_run export-no-skeleton 0 '625 joints' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/bare.glb" --no-skeleton
+case $(summary "$WORK/bare.glb") in *'nodes=2 joints=0 skins=0 '*) ;; *) fail "export-no-skeleton: $(summary "$WORK/bare.glb")" ;; esac
+# --height H: the meshes' y extent is H (within 1e-3 relative) in both forms, whatever the sides, with
+# pixel-wide lines (the vlab object) too.
+expect_height() { # NAME H FILE
+    h=$(summary "$3" | sed -n 's/.*height=\([0-9.]*\).*/\1/p')
+    awk -v h="${h:-0}" -v want="$2" 'BEGIN { d = h - want; exit !(d * d <= (1e-3 * want) ^ 2) }' ||
+        fail "$1: height ${h:-none}, expected $2: $(summary "$3")"
+}
+expect_run export-height 0 '10 m tall (scaled by 1.267' -- "$LSYS" export "$DATA/plants/monopodial_tree.lsys" -o "$WORK/tall.glb" --height 10 --sides 5 --no-skeleton
+expect_height export-height 10 "$WORK/tall.glb"
+"$LSYS" export "$DATA/plants/monopodial_tree.lsys" -o "$WORK/tall-instanced.glb" --height 10 --sides 5 --instanced 2> /dev/null
+expect_height export-height-instanced 10 "$WORK/tall-instanced.glb"
+"$LSYS" export "$DATA/plants/fractal_bush.lsys" -o "$WORK/bush.gltf" --height 0.5 --instanced --generalized-cylinders 2> /dev/null
+expect_height export-height-instanced-bush 0.5 "$WORK/bush.gltf"
+"$LSYS" export "$OBJECT" -o "$WORK/object-tall.glb" --height 3 2> /dev/null
+expect_height export-height-pixel-lines 3 "$WORK/object-tall.glb"
+for bad in 'sides 2:--sides 2' 'sides x:--sides many' 'height 0:--height 0' 'height -1:--height -1' 'height nan:--height nan' 'height inf:--height inf'; do
+    # shellcheck disable=SC2086 # the flag and its value are two words
+    expect_run "export-bad-${bad%%:*}" 2 "--${bad%% *}" -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/bad-value.glb" ${bad#*:}
+    [ -e "$WORK/bad-value.glb" ] && fail "export-bad-${bad%%:*}: a file was written"
+done
+printf 'Axiom: A\n' > "$WORK/nothing.lsys"
+expect_run export-height-nothing 2 'no height to scale' -- "$LSYS" export "$WORK/nothing.lsys" -o "$WORK/nothing.glb" --height 2
+[ -e "$WORK/nothing.glb" ] && fail "export-height-nothing: a file was written"
+expect_run export-help-drawn 0 '--no-skeleton' -- "$LSYS" export --help
+expect_run export-help-height 0 '--height H' -- "$LSYS" export --help
 expect_run no-command 2 'subcommand' -- "$LSYS"
 expect_run bad-option 2 'steps' -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" -n many
 

@@ -5,15 +5,19 @@
 //   NAME=VALUE]... [--dialect D] [--randomness K] [--json] lsys export FILE [-n STEPS] [--seed S] [-D NAME=VALUE]...
 //   [--dialect D] -o OUT.gltf|.glb|.obj [--flat|--instanced]
 //               [--randomness K] [--granularity G] [--max-gltf-nodes N] [--generalized-cylinders]
+//               [--sides N] [--skeleton|--no-skeleton] [--height H]
 //   lsys --help-turtle
 // derive, instance and export take --memory-budget SIZE (tools/memory_budget_option.h).
 // Exit codes: 0 success, 2 bad input (parse errors, budget exceeded, out of memory), 1 usage errors.
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -37,6 +41,9 @@
 namespace {
 
 constexpr int kBadInput = 2;
+// --sides: a segment's ring needs 3 sides; past 1024 a plant's mesh is
+// thousands of times its default size for no visible gain.
+constexpr uint32_t kMinSides = 3, kMaxSides = 1024;
 
 struct Arguments {
     std::string file;
@@ -58,6 +65,7 @@ struct Arguments {
     bool instanced = false; // export: the InstanceGraph's hierarchy rather than the flat plant
     lsys::ExportOptions exportOptions;
     lsys::GraphExportOptions graphExportOptions;
+    std::optional<float> height; // export --height: metres the plant's meshes are scaled to
 };
 
 // Parses "NAME=VALUE" items of -D into constants; reports malformed ones.
@@ -229,6 +237,39 @@ int instance(const Arguments& arguments) {
     return 0;
 }
 
+// The scale that makes the plant's meshes, as the flat form bakes them,
+// --height tall, or nullopt (after saying why) for a plant without height.
+std::optional<float> exportScale(const Arguments& arguments, const lsys::PlantAsset& plant,
+                                 lsys::SegmentGeometry segments, const lsys::MeshDetail& detail) {
+    const float scale = lsys::heightScale(lsys::bakedBounds(plant, segments, detail), *arguments.height);
+    if (scale > 0.0f && std::isfinite(scale)) return scale;
+    std::cerr << arguments.file << ": error: --height: the plant has no height to scale (its meshes' y extent is 0)\n";
+    return std::nullopt;
+}
+
+// ", 10 m tall (scaled by 0.5)" for --height, else nothing: the summary's end.
+std::string scaleNote(const Arguments& arguments, float scale) {
+    if (!arguments.height) return "";
+    std::ostringstream note;
+    note << ", " << *arguments.height << " m tall (scaled by " << scale << ")";
+    return note.str();
+}
+
+// The plant the graph stands for, flattened within the module and memory
+// budgets, for --height: the flat form's meshes are the instanced form's
+// placed (generalised cylinders aside, whose chains the instanced form ends
+// at each instance), so both forms are scaled to the same height. The
+// graph's own boxes would not do: each instance adds its object's rotated
+// box's box (data/plants/fractal_bush.lsys: 12 % too tall).
+lsys::PlantAsset flatPlant(const Arguments& arguments, const lsys::InstanceGraph& graph,
+                           const lsys::SurfaceLibrary& surfaces) {
+    const lsys::InstanceGraphStats stats = lsys::instanceGraphStats(graph);
+    lsys::need(arguments.memory, "flatten",
+               lsys::bytesPlus(lsys::bytesTimes(stats.primitives, sizeof(lsys::Primitive)),
+                               lsys::bytesTimes(stats.joints, sizeof(lsys::Joint))));
+    return lsys::flatten(graph, surfaces, arguments.maxModules);
+}
+
 // The InstanceGraph written with its hierarchy (glTF only; OBJ is always flat).
 int exportGraph(const Arguments& arguments, const lsys::Grammar& grammar) {
     const auto start = std::chrono::steady_clock::now();
@@ -240,10 +281,20 @@ int exportGraph(const Arguments& arguments, const lsys::Grammar& grammar) {
     } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
         return failed(arguments, error);
     }
+    std::optional<float> scale = 1.0f;
+    try {
+        const lsys::GraphExportOptions& o = arguments.graphExportOptions;
+        if (arguments.height)
+            scale = exportScale(arguments, flatPlant(arguments, graph, surfaces), o.segments, o.detail);
+    } catch (const std::runtime_error& error) { // DerivationError, MemoryBudgetError
+        return failed(arguments, error);
+    }
+    if (!scale) return kBadInput;
     lsys::GraphExportSummary summary;
     try {
         lsys::GraphExportOptions options = arguments.graphExportOptions;
         options.memory = arguments.memory;
+        options.scale = *scale;
         summary = lsys::exportInstanceGraph(graph, surfaces, arguments.output, options);
     } catch (const std::runtime_error& error) {
         std::cerr << "lsys: error: " << error.what() << '\n';
@@ -252,7 +303,8 @@ int exportGraph(const Arguments& arguments, const lsys::Grammar& grammar) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const lsys::InstanceGraphStats stats = lsys::instanceGraphStats(graph);
     std::cerr << arguments.output << ": " << stats.primitives << " primitives in " << stats.objects << " objects, "
-              << summary.meshes << " meshes, " << summary.nodes << " nodes (" << seconds << " s)\n";
+              << summary.meshes << " meshes, " << summary.nodes << " nodes" << scaleNote(arguments, *scale) << " ("
+              << seconds << " s)\n";
     return 0;
 }
 
@@ -270,6 +322,10 @@ int exportCommand(const Arguments& arguments) {
     } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
         return failed(arguments, error);
     }
+    const lsys::ExportOptions& o = arguments.exportOptions;
+    const std::optional<float> scale = arguments.height ? exportScale(arguments, plant, o.segments, o.detail) : 1.0f;
+    if (!scale) return kBadInput;
+    if (*scale != 1.0f) lsys::scalePlant(plant, *scale);
     try {
         lsys::ExportOptions options = arguments.exportOptions;
         options.memory = arguments.memory;
@@ -280,7 +336,7 @@ int exportCommand(const Arguments& arguments) {
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cerr << arguments.output << ": " << plant.primitives.size() << " primitives, " << plant.joints.size()
-              << " joints (" << seconds << " s)\n";
+              << " joints" << scaleNote(arguments, *scale) << " (" << seconds << " s)\n";
     return 0;
 }
 
@@ -322,6 +378,35 @@ void addGraphOptions(CLI::App& command, Arguments& arguments) {
                     "G of the Calgary b-grammar thesis, §5.3: share subtrees whose entry orientation relative to "
                     "the tropism vector falls in the same pi/G cell (approximate); 0: exact sharing only")
         ->check(CLI::Range(0, 1'000'000));
+}
+
+// --sides, --skeleton/--no-skeleton and --height: the exported plant as drawn.
+void addDrawnFormOptions(CLI::App& command, Arguments& arguments) {
+    command
+        .add_option_function<uint32_t>(
+            "--sides",
+            [&arguments](uint32_t sides) {
+                arguments.exportOptions.detail.segmentSides = sides;
+                arguments.graphExportOptions.detail.segmentSides = sides;
+            },
+            "Sides of each segment's ring, flat and --instanced (default 8)")
+        ->check(CLI::Range(kMinSides, kMaxSides));
+    command.add_flag("--skeleton,!--no-skeleton", arguments.exportOptions.skeleton,
+                     "Write the joints as empty glTF nodes joint_<i> nested as the plant's skeleton (the default); "
+                     "--no-skeleton writes the meshes alone. Flat glTF only: OBJ and --instanced have no skeleton");
+    command
+        .add_option("--height", arguments.height,
+                    "Scale the plant uniformly about its base so that its meshes are H metres tall (their y extent "
+                    "as drawn with --sides and --generalized-cylinders; --instanced: the same plant's)")
+        ->check([](const std::string& text) -> std::string {
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0' || !std::isfinite(value) || value <= 0.0 ||
+                value > std::numeric_limits<float>::max())
+                return "'" + text + "' is not a height in metres above 0";
+            return {};
+        })
+        ->type_name("H");
 }
 
 int check(const Arguments& arguments) {
@@ -423,6 +508,7 @@ int main(int argc, char** argv) {
         "Stems as tubes whose rings follow the bend instead of one frustum per segment");
     exportSubcommand->add_option("--max-modules", arguments.maxModules, "Module budget; exceeding it is an error")
         ->check(CLI::PositiveNumber);
+    addDrawnFormOptions(*exportSubcommand, arguments);
 
     try {
         app.parse(argc, argv);

@@ -5,6 +5,7 @@
 #include "engine/image/image.h"
 #include "engine/vk/capture.h"
 #include "engine/vk/gpu_timer.h"
+#include "engine/vk/resources.h"
 
 #include <nlohmann/json.hpp>
 
@@ -79,22 +80,40 @@ int runHeadless(const PlantfieldOptions& o) {
         if (!o.outDir.empty()) std::filesystem::create_directories(o.outDir);
 
         const uint32_t frames = o.outDir.empty() ? 1 : o.frames;
+        // --frame-range A:B: the sequence stops after B, and the frames
+        // before A are recorded as the whole run records them, only not
+        // read back or written. A frame carries state to the next (the
+        // plants' motion from rest at the first frame's time − 5 s, LOD
+        // fades, the shadow cache, the depth pyramid), so frame A is then
+        // the whole run's bit for bit.
+        const uint32_t first = o.frameRange ? o.frameRange->first : 0;
+        const uint32_t end = o.frameRange ? o.frameRange->last + 1 : frames;
+        const bool terminal = isatty(fileno(stderr));
         const double step = 1.0 / o.fps;
         double wallMs = 0, time = o.time;
-        for (uint32_t i = 0; i < frames; ++i) {
+        for (uint32_t i = 0; i < end; ++i) {
             time = o.time + i * step;
             renderer.setView(pathView(o, scene, time, i == 0 ? 0.0 : step, i == 0), extent);
+            if (i < first) {
+                submitAndWait(ctx, [&](VkCommandBuffer cmd) { renderer.record(cmd, target, &timer); });
+                if (terminal) std::fprintf(stderr, "\rplantfield: frame %u/%u (before the range)\x1b[K", i + 1, frames);
+                continue;
+            }
             const auto start = std::chrono::steady_clock::now();
             const RgbaImage image = captureFrame(
                 ctx, target, [&](VkCommandBuffer cmd, const RenderTarget& t) { renderer.record(cmd, t, &timer); });
             wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             if (!o.outDir.empty()) {
                 writePng(framePath(o.outDir, i), image);
-                if (isatty(fileno(stderr))) std::fprintf(stderr, "\rplantfield: frame %u/%u", i + 1, frames);
+                if (terminal) std::fprintf(stderr, "\rplantfield: frame %u/%u\x1b[K", i + 1, frames);
             }
-            if (!o.capturePath.empty() && i + 1 == frames) writePng(o.capturePath, image);
+            if (!o.capturePath.empty() && i + 1 == end) writePng(o.capturePath, image);
         }
-        if (!o.outDir.empty()) std::fprintf(stderr, "\rplantfield: %u frames -> %s\n", frames, o.outDir.c_str());
+        if (o.frameRange)
+            std::fprintf(stderr, "\rplantfield: frames %u to %u of %u -> %s\n", first, end - 1, frames,
+                         o.outDir.c_str());
+        else if (!o.outDir.empty())
+            std::fprintf(stderr, "\rplantfield: %u frames -> %s\n", frames, o.outDir.c_str());
         const FieldFrameStats stats = renderer.readStats();
         if (o.stats)
             std::cout << statsJson(o, ctx, renderer, stats, readGpuTimer(ctx, timer), time, wallMs).dump(2) << "\n";

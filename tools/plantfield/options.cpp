@@ -61,6 +61,19 @@ std::optional<Wind> parseWind(const std::string& text) {
     return wind;
 }
 
+std::optional<FrameRange> parseFrameRange(const std::string& text) {
+    const size_t colon = text.find(':');
+    if (colon == std::string::npos) return std::nullopt;
+    FrameRange range;
+    const char* s = text.data();
+    const auto whole = [](const char* first, const char* last, uint32_t& out) {
+        const auto [end, ec] = std::from_chars(first, last, out);
+        return first != last && ec == std::errc() && end == last;
+    };
+    if (!whole(s, s + colon, range.first) || !whole(s + colon + 1, s + text.size(), range.last)) return std::nullopt;
+    return range;
+}
+
 void checkFiniteIn(CLI::Option& option, double min, double max) {
     option.check(
         [min, max](const std::string& text) -> std::string {
@@ -121,6 +134,7 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                "  plantfield --instances 100000 --stats               one frame of 100 000 plants: JSON statistics\n"
                "  plantfield data/scenes/valley.json --capture v.png  a million plants on 2 km x 2 km\n"
                "  plantfield --frames 60 --fps 30 --out-dir seq       two seconds of frames\n"
+               "  plantfield --frames 60 --frame-range 30:59 --out-dir seq   its second half only\n"
                "  plantfield --capture frame.png --aa msaa            4x multisampling instead of FXAA\n"
                "Environment: PLANTFIELD_DEVICE picks the device by name, PLANTFIELD_VALIDATION=1 turns on\n"
                "the Khronos validation layer, PLANTFIELD_DATA_DIR replaces the data folder.");
@@ -140,6 +154,13 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                    "Headless: render this many frames into --out-dir; with --window: close after this many");
     checkFiniteIn(*app.add_option("--fps", o.fps, "Frames per scene second of a --frames sequence"), 0.1, 1000.0);
     app.add_option("--out-dir", o.outDir, "Folder of a --frames sequence (frame_0000.png, ...), created if missing");
+    std::string frameRangeText;
+    app.add_option("--frame-range", frameRangeText,
+                   "With --frames N --out-dir DIR: write only frames A to B of the sequence (both included,\n"
+                   "numbered from 0 as the files are: 0:0 is frame_0000.png), the same bytes as the whole\n"
+                   "run's; the frames before A are rendered too, not written, for the motion they carry\n"
+                   "(docs/FARM.md)")
+        ->type_name("A:B");
     checkFiniteIn(*app.add_option("--time", o.time, "Scene time of the (first) frame in seconds"), 0.0, kMaxSceneTime);
     app.add_option("--instances", o.instances,
                    "Exactly this many generated plants at the scene's densities: they fill a square around the\n"
@@ -225,6 +246,18 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     }
     if (o.listDevices) return o;
     const bool sequence = !o.window && o.frames > 0;
+    if (!frameRangeText.empty()) {
+        if (!sequence) return fail("--frame-range needs a headless sequence: --frames N --out-dir DIR, no --window");
+        o.frameRange = parseFrameRange(frameRangeText);
+        if (!o.frameRange)
+            return fail("invalid --frame-range '" + frameRangeText +
+                        "': expected A:B, the first and the last frame numbered from 0 as frame_0000.png, e.g. 0:99");
+        if (o.frameRange->first > o.frameRange->last)
+            return fail("invalid --frame-range '" + frameRangeText + "': the first frame comes after the last");
+        if (o.frameRange->last >= o.frames)
+            return fail("--frame-range " + frameRangeText + " ends past the sequence: --frames " +
+                        std::to_string(o.frames) + " numbers its frames 0 to " + std::to_string(o.frames - 1));
+    }
     if (o.physicsCheck && (!o.capturePath.empty() || o.window || o.frames > 0 || o.stats))
         return fail("--physics-check is a mode of its own: no --capture, --frames, --stats or --window");
     if (o.capturePath.empty() && !o.window && !sequence && !o.stats && !o.physicsCheck)

@@ -28,6 +28,17 @@ std::optional<ImageSize> parseImageSize(const std::string& text);
 // outside 0–100 m/s (the direction is left at its default when absent).
 std::optional<Wind> parseWind(const std::string& text);
 
+// Frames of a --frames sequence, numbered as its files are: frame_0000.png
+// is frame 0. Both ends included.
+struct FrameRange {
+    uint32_t first = 0;
+    uint32_t last = 0;
+};
+
+// "A:B" of --frame-range → {A, B}; nullopt when malformed (not two whole
+// non-negative numbers around one colon). The order is the caller's check.
+std::optional<FrameRange> parseFrameRange(const std::string& text);
+
 // Accepts only finite numbers from min to max (both included). CLI11's
 // Range and NonNegativeNumber compare with < and >, which NaN passes, and
 // infinity passes an open upper end.
@@ -60,6 +71,7 @@ struct PlantfieldOptions {
     uint32_t frames = 0;                       // window: stop after this many; headless: capture this many into outDir
     double fps = 30.0;                         // scene seconds per frame of a --frames sequence: 1/fps
     std::string outDir;                        // --frames sequence: DIR/frame_0000.png …
+    std::optional<FrameRange> frameRange;      // --frame-range: only these frames of the sequence are written
     double time = 0.0;                         // scene time of the (first) frame, seconds
     std::optional<uint64_t> instances;         // exactly this many generated plants, at the scene's densities
     bool densify = false;                      // --instances on the scene's terrain, distances scaled instead
