@@ -520,6 +520,7 @@ struct Parser {
         for (ProductionSet* set : {&grammar.rules, &grammar.decomposition, &grammar.interpretation}) {
             warnOfUnbalancedBrackets(*set, file(), warnings);
             warnOfCpfgAtModules(grammar, *set, file(), warnings);
+            warnOfCpfgSubLsystems(grammar, *set, file(), warnings);
             formStochasticGroups(*set, signaturesOf(set), file(), diagnostics);
         }
         finalizeGrammar(grammar);

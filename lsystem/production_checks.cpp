@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace lsys {
 
@@ -74,6 +75,25 @@ void warnOfCpfgAtModules(const Grammar& grammar, const ProductionSet& set, const
                                 Severity::Warning});
         }
     }
+}
+
+void warnOfCpfgSubLsystems(const Grammar& grammar, const ProductionSet& set, const std::string& file,
+                           std::vector<Diagnostic>& warnings) {
+    const std::optional<SymbolId> question = grammar.symbols.find("?");
+    if (!grammar.style.cpfgModules || !question) return;
+    for (const Production& production : set.productions)
+        for (const SuccessorModule& module : production.successor)
+            if (module.symbol == *question && !module.arguments.empty()) {
+                warnings.push_back({file,
+                                    production.line,
+                                    1,
+                                    "cpfg's sub-L-systems ('?(n, s)' ... '$') are not supported: this production's "
+                                    "'?(...)' is read as an ordinary module, which no other L-system rewrites",
+                                    {},
+                                    {},
+                                    Severity::Warning});
+                break;
+            }
 }
 
 } // namespace lsys

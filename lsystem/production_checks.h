@@ -34,4 +34,13 @@ void warnOfUnbalancedBrackets(const ProductionSet& set, const std::string& file,
 void warnOfCpfgAtModules(const Grammar& grammar, const ProductionSet& set, const std::string& file,
                          std::vector<Diagnostic>& warnings);
 
+// cpfg's sub-L-systems (Prusinkiewicz, Hanan and Měch 1999, §2): `?(n, s)`
+// in a successor starts a part of the string that L-system n rewrites, its
+// turtle scaled by s, up to the matching `$`. They are not read here: the
+// `?(n, s)` is an ordinary module and the `$` no command (cpfg's turtle
+// skips a `$` that ends nothing). A warning, in files read with cpfg's
+// turtle modules, for each production whose successor starts one.
+void warnOfCpfgSubLsystems(const Grammar& grammar, const ProductionSet& set, const std::string& file,
+                           std::vector<Diagnostic>& warnings);
+
 } // namespace lsys

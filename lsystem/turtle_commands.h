@@ -178,6 +178,7 @@ struct TurtleCommandDefinition {
     std::string_view alias;         // another, if any
     bool symbolIsPrefix = false;    // ~leaf is the command ~ of the surface leaf
     bool cpfgOnly = false;          // a command in cpfg's files only (turtleCommand's cpfgModules)
+    bool symbolNotInCpfg = false;   // its symbol (not its alias) is no command in cpfg's files
     std::string_view parameters;    // "name" or "name = what it is when left out", joined by ", "
     std::string_view documentation; // one line
     TurtleReads reads;

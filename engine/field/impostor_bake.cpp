@@ -164,14 +164,15 @@ BakeTarget createBakeTarget(GpuResources& owner, uint32_t side, VkFormat format,
     const bool depth = format == kBakeDepthFormat;
     const VkImageAspectFlags aspect = depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
     BakeTarget target;
-    target.image = createImage(
-        owner, {.extent = {side, side},
-                .format = format,
-                .usage = depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT
-                               : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                .aspect = aspect,
-                .layers = layers,
-                .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
+    target.image = createImage(owner, {.extent = {side, side},
+                                       .format = format,
+                                       .usage = depth ? VkImageUsageFlags{VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                                                                          VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT}
+                                                      : VkImageUsageFlags{VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                                                          VK_IMAGE_USAGE_TRANSFER_SRC_BIT},
+                                       .aspect = aspect,
+                                       .layers = layers,
+                                       .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
     for (uint32_t layer = 0; layer < layers; ++layer)
         target.layers.push_back(createLayerView(owner, target.image, layer, aspect));
     return target;

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "dialect_test_support.h"
+#include "lsystem/turtle_commands.h"
 #include "lsystem/vlab/function_file.h"
 
 namespace lsys::test {
@@ -240,6 +241,23 @@ TEST(Cpfg, AProductionOfAModuleThatAnAtModuleEndsWithIsWarnedOf) {
     EXPECT_NE(warning.find("at.l:2:1: warning: cpfg reads '@!' as two modules, '@' and '!'"), std::string::npos)
         << warning;
     EXPECT_TRUE(parseDialect(Dialect::Cpfg, "Axiom: !(2) F\n!(w) --> !(w - 1)\n").warnings.empty());
+}
+
+// cpfg's $ ends a sub-L-system (interpret.c, '$'), and one that ends none is
+// skipped: in cpfg files it is no roll, @v is. A production that starts a
+// sub-L-system, which plantfield does not read, is warned of.
+TEST(Cpfg, DollarIsNoRollAndSubLsystemsAreWarnedOf) {
+    const std::string source = "Axiom: A\nA --> F ?(2, 1.5) B $ F\n";
+    const ParseResult result = parseDialect(Dialect::Cpfg, source, {"sub.l"});
+    ASSERT_TRUE(result.ok()) << formatDiagnostics(result.diagnostics, source);
+    ASSERT_EQ(result.warnings.size(), 1u) << formatDiagnostics(result.warnings, source);
+    const std::string warning = formatDiagnostic(result.warnings[0], source);
+    EXPECT_NE(warning.find("sub.l:2:1: warning: cpfg's sub-L-systems"), std::string::npos) << warning;
+    const auto command = [&](const char* name) { return turtleCommand(name, result.grammar.style.cpfgModules).action; };
+    EXPECT_EQ(command("$"), TurtleAction::None);
+    EXPECT_EQ(command("@v"), TurtleAction::RollHorizontal);
+    EXPECT_EQ(turtleCommand("$").action, TurtleAction::RollHorizontal);                            // native files roll
+    EXPECT_TRUE(parseDialect(Dialect::Cpfg, "Axiom: A\nA --> F ?P(0, 0) $ F\n").warnings.empty()); // a query
 }
 
 } // namespace

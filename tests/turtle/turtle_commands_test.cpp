@@ -18,7 +18,9 @@ TEST(LsysTurtleCommands, EveryDefinedSymbolNamesItsCommand) {
             if (symbol.empty()) continue;
             const std::string name = std::string(symbol) + (definition.symbolIsPrefix ? "leaf" : "");
             const TurtleCommand command = turtleCommand(name, true);
-            EXPECT_EQ(command.action, definition.action) << name;
+            // cpfg's $ ends a sub-L-system: no command in its files.
+            const bool notInCpfg = definition.symbolNotInCpfg && symbol == definition.symbol;
+            EXPECT_EQ(command.action, notInCpfg ? TurtleAction::None : definition.action) << name;
             // cpfg's own commands are ordinary modules elsewhere.
             EXPECT_EQ(turtleCommand(name).action, definition.cpfgOnly ? TurtleAction::None : definition.action) << name;
             EXPECT_EQ(command.surface, definition.symbolIsPrefix ? "leaf" : "") << name;
