@@ -8,18 +8,7 @@ VERSION=$3
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 failures=0
-
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-# expect_run NAME EXPECTED_EXIT PATTERN -- command...: runs, checks the exit code and that stdout+stderr match PATTERN.
-expect_run() {
-    name=$1 code=$2 pattern=$3
-    shift 4
-    "$@" > "$WORK/out" 2>&1
-    actual=$?
-    [ "$actual" = "$code" ] || fail "$name: exit code $actual, expected $code: $(cat "$WORK/out")"
-    grep -q -- "$pattern" "$WORK/out" || fail "$name: output does not match '$pattern': $(cat "$WORK/out")"
-}
+. "$(dirname "$0")/../support/expect.sh"
 
 expect_run json 0 '"modules":1249' -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" -n 4 --json
 expect_run json-counts 0 '"F":625' -- "$LSYS" derive "$DATA/plants/koch_curve.lsys" -n 4 --json

@@ -1,9 +1,12 @@
 // plantfield: the renderer's command-line front end.
+#include "field_export.h"
 #include "field_setup.h"
 #include "modes.h"
 
+#include <chrono>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <new>
 
@@ -22,6 +25,29 @@ int listDevices(const PlantfieldOptions& o) {
     return 0;
 }
 
+// --export / --export-placements: the field built on the CPU and written out;
+// no Vulkan instance or device is created.
+int runExport(const PlantfieldOptions& o) {
+    const FieldContent content = loadFieldContent(o);
+    if (!o.exportPath.empty()) {
+        const auto start = std::chrono::steady_clock::now();
+        FieldExportOptions options;
+        options.gpuInstancing = o.gpuInstancing;
+        options.memory = o.memory;
+        const FieldExportSummary written = exportField(content, o.exportPath, options);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::fprintf(stderr, "plantfield: %s: %zu plants%s, %zu meshes, %zu nodes, %zu materials, %.1f MiB in %.2f s\n",
+                     o.exportPath.c_str(), written.plants, o.gpuInstancing ? " (EXT_mesh_gpu_instancing)" : "",
+                     written.meshes, written.nodes, written.materials,
+                     double(std::filesystem::file_size(o.exportPath)) / (1024.0 * 1024.0), seconds);
+    }
+    if (!o.placementsPath.empty()) {
+        exportPlacements(content, o.placementsPath);
+        std::fprintf(stderr, "plantfield: %s: %zu plants\n", o.placementsPath.c_str(), content.plants.size());
+    }
+    return 0;
+}
+
 } // namespace
 } // namespace pf
 
@@ -32,6 +58,7 @@ int main(int argc, char** argv) {
         if (!options) return exitCode;
         if (options->listDevices) return pf::listDevices(*options);
         if (options->physicsCheck) return pf::runPhysicsCheck(*options);
+        if (pf::exportsField(*options)) return pf::runExport(*options);
         return options->window ? pf::runWindow(*options) : pf::runHeadless(*options);
     } catch (const pf::SceneError& e) { // bad input, like a bad flag
         std::cerr << "plantfield: error: " << e.what() << "\n";

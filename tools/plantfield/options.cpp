@@ -3,15 +3,18 @@
 #include "engine/vk/device.h"
 #include "lsystem/output_file.h"
 #include "shaders/field_layouts.h"
+#include "tools/data_dir.h"
 #include "tools/memory_budget_option.h"
 
 #include <CLI/CLI.hpp>
 #include <plantfield_version.h>
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <initializer_list>
 #include <iostream>
 #include <string_view>
 
@@ -114,10 +117,7 @@ std::optional<Antialiasing> antialiasingOf(const AntialiasFlags& flags, std::str
     return aa;
 }
 
-std::string defaultScenePath() {
-    const char* data = std::getenv("PLANTFIELD_DATA_DIR");
-    return std::string(data && *data ? data : PLANTFIELD_DATA_DIR) + "/scenes/default.json";
-}
+std::string defaultScenePath() { return dataDirectory() + "/scenes/default.json"; }
 
 std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, int* exitCode) {
     PlantfieldOptions o;
@@ -136,6 +136,7 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                "  plantfield --frames 60 --fps 30 --out-dir seq       two seconds of frames\n"
                "  plantfield --frames 60 --frame-range 30:59 --out-dir seq   its second half only\n"
                "  plantfield --capture frame.png --aa msaa            4x multisampling instead of FXAA\n"
+               "  plantfield --export field.glb                       the default forest as glTF, no GPU needed\n"
                "Environment: PLANTFIELD_DEVICE picks the device by name, PLANTFIELD_VALIDATION=1 turns on\n"
                "the Khronos validation layer, PLANTFIELD_DATA_DIR replaces the data folder.");
     app.add_option("scene", o.scenePath, "Scene file (.json)")->default_str("data/scenes/default.json");
@@ -176,6 +177,16 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_flag("--physics-check", o.physicsCheck,
                  "Simulate one skeleton of every plant model for 600 sub-steps on the GPU and the CPU and print\n"
                  "JSON: joints, steps, max_deviation_rad (exit 1 when 1e-3 rad or more), gpu_ms, cpu_ms");
+    app.add_option("--export", o.exportPath,
+                   "Write the field as glTF 2.0 (.glb or .gltf) and exit, no GPU needed: the terrain, one mesh per\n"
+                   "plant model, materials, and the plants through EXT_mesh_gpu_instancing (docs/EXPORT.md)")
+        ->type_name("FILE");
+    app.add_flag("!--no-gpu-instancing", o.gpuInstancing,
+                 "With --export: one plain node per plant instead of EXT_mesh_gpu_instancing, for loaders that\n"
+                 "ignore the extension (Blender 3.4)");
+    app.add_option("--export-placements", o.placementsPath,
+                   "Write every plant (species, model, x, y, z, qx, qy, qz, qw, scale) as .csv or .json and exit")
+        ->type_name("FILE");
     std::string windText;
     app.add_option("--wind", windText,
                    "Replace the scene's wind: SPEED[,DIRECTION] in m/s and degrees clockwise from north");
@@ -258,11 +269,15 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
             return fail("--frame-range " + frameRangeText + " ends past the sequence: --frames " +
                         std::to_string(o.frames) + " numbers its frames 0 to " + std::to_string(o.frames - 1));
     }
+    if (exportsField(o) && (!o.capturePath.empty() || o.window || o.frames > 0 || o.stats || o.physicsCheck))
+        return fail("--export and --export-placements are a mode of their own: no --capture, --frames, --stats, "
+                    "--physics-check or --window");
+    if (!o.gpuInstancing && o.exportPath.empty()) return fail("--no-gpu-instancing needs --export FILE.glb|.gltf");
     if (o.physicsCheck && (!o.capturePath.empty() || o.window || o.frames > 0 || o.stats))
         return fail("--physics-check is a mode of its own: no --capture, --frames, --stats or --window");
-    if (o.capturePath.empty() && !o.window && !sequence && !o.stats && !o.physicsCheck)
-        return fail(
-            "nothing to do: pass --capture FILE.png, --frames N --out-dir DIR, --stats, --physics-check or --window");
+    if (o.capturePath.empty() && !o.window && !sequence && !o.stats && !o.physicsCheck && !exportsField(o))
+        return fail("nothing to do: pass --capture FILE.png, --frames N --out-dir DIR, --stats, --physics-check, "
+                    "--export FILE.glb or --window");
     if (o.densify && !o.instances) return fail("--densify needs --instances N");
     if (sequence && o.outDir.empty()) return fail("--frames without --window needs --out-dir DIR for the images");
     if (!o.outDir.empty() && !sequence) return fail("--out-dir needs --frames N (and no --window)");
@@ -273,6 +288,25 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     if (!o.capturePath.empty()) {
         const std::string problem = lsys::outputPathProblem(o.capturePath);
         if (!problem.empty()) return fail("cannot write --capture file: " + problem);
+    }
+    const auto extensionIn = [](const std::string& path, std::initializer_list<const char*> allowed) {
+        std::string extension = std::filesystem::path(path).extension().string();
+        for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+        for (const char* a : allowed)
+            if (extension == a) return true;
+        return false;
+    };
+    if (!o.exportPath.empty()) {
+        if (!extensionIn(o.exportPath, {".glb", ".gltf"}))
+            return fail("invalid --export file '" + o.exportPath + "': expected a .glb or .gltf file");
+        const std::string problem = lsys::outputPathProblem(o.exportPath);
+        if (!problem.empty()) return fail("cannot write --export file: " + problem);
+    }
+    if (!o.placementsPath.empty()) {
+        if (!extensionIn(o.placementsPath, {".csv", ".json"}))
+            return fail("invalid --export-placements file '" + o.placementsPath + "': expected a .csv or .json file");
+        const std::string problem = lsys::outputPathProblem(o.placementsPath);
+        if (!problem.empty()) return fail("cannot write --export-placements file: " + problem);
     }
     return o;
 }

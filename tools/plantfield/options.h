@@ -59,8 +59,9 @@ void addAntialiasOptions(CLI::App& app, AntialiasFlags& flags);
 // with another method than msaa.
 std::optional<Antialiasing> antialiasingOf(const AntialiasFlags& flags, std::string* problem);
 
-// The scene a tool renders when none is named: data/scenes/default.json of
-// the source tree (PLANTFIELD_DATA_DIR overrides the data folder).
+// The scene a tool renders when none is named: scenes/default.json of the
+// data folder (tools/data_dir.h: PLANTFIELD_DATA_DIR, an installed tree's
+// share/plantfield/data, or the source tree's data/).
 std::string defaultScenePath();
 
 struct PlantfieldOptions {
@@ -78,6 +79,9 @@ struct PlantfieldOptions {
     std::optional<uint32_t> seed;              // replaces the scene's seed
     bool stats = false;                        // print the frame's JSON statistics on stdout
     bool physicsCheck = false;                 // run GPU and CPU physics side by side, print their deviation as JSON
+    std::string exportPath;                    // --export: the field as glTF (.glb or .gltf), built on the CPU, no GPU
+    std::string placementsPath;                // --export-placements: every plant as .csv or .json
+    bool gpuInstancing = true;                 // false (--no-gpu-instancing): --export writes one node per plant
     std::optional<uint32_t> forcedLod;         // draw every visible plant at this LOD
     std::optional<float> windSpeed;            // replaces the scene's wind speed (m/s)
     std::optional<float> windDirectionDegrees; // and direction, clockwise from north (-z) toward +x
@@ -95,6 +99,9 @@ struct PlantfieldOptions {
     std::optional<float> renderScale;
     lsys::MemoryBudget memory; // --memory-budget: terrain, placement, uploads
 };
+
+// --export or --export-placements: write files of the field, render nothing.
+inline bool exportsField(const PlantfieldOptions& o) { return !o.exportPath.empty() || !o.placementsPath.empty(); }
 
 // Parses argv. On --help prints usage and returns exit code 0 through
 // `exitCode`; on a bad flag prints a clear error and sets exit code 2.
