@@ -7,7 +7,9 @@
 # in-process time, iterate() alone. Before timing, the script checks that all
 # derive the same string (lindenmayer: the same module count; cpfg: lsys
 # derive --compare on cpfg's -str, module for module). Prints a Markdown table
-# for docs/BENCHMARKS.md.
+# for docs/BENCHMARKS.md. hyperfine runs the commands without a shell (-N):
+# lsys's runs take a few milliseconds, less than hyperfine can correct a
+# shell's start-up for (it warns so), and no command needs one.
 # Usage: [CPFG_BIN=/path/to/vlab/bin] tools/bench/rewriter_vs_peers.sh [RUNS]
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -57,7 +59,7 @@ for c in "${cases[@]}"; do
     peers+=(-n cpfg "${cpfg[*]} $cpfg_plant $work/view.v")
   fi
   rm -f "$work/$name.inprocess"
-  hyperfine --style none --warmup 1 --runs "$runs" --export-json "$work/$name.json" \
+  hyperfine -N --style none --warmup 3 --runs "$runs" --export-json "$work/$name.json" \
     -n "lsys" "$lsys derive $plant -n $steps" "${peers[@]}" >&2
 done
 node "$work/format_hyperfine.mjs" "$work/bush.json" "$work/tree.json" "$work/context.json"
