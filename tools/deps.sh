@@ -7,6 +7,8 @@
 #   bench: hyperfine for the peer benchmarks in tools/bench/
 # cpp, the C preprocessor, is a run-time need too: cpfg files are read through
 # it as cpfg reads them through vlabcpp (docs/DIALECTS.md).
+# pybind11, the Python headers, pytest and NumPy build and test the Python
+# module (tools/python, docs/PYTHON.md).
 # Node.js and npm are in the default list (tests/export runs the Khronos
 # glTF-Validator with them); a machine that already has node and npm, from
 # Debian or elsewhere, keeps its own.
@@ -19,6 +21,7 @@ PACKAGES=(
   libglm-dev libglfw3-dev libstb-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev xvfb xauth libtinygltf-dev gnuplot-nox
   clang-format
+  pybind11-dev python3-dev python3-pytest python3-numpy
 )
 command -v node >/dev/null && command -v npm >/dev/null || PACKAGES+=(nodejs npm)
 FUZZ_PACKAGES=(clang libclang-rt-14-dev)

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -126,6 +127,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadInvocation{"RenderScaleTooSmall", "--window --render-scale 0.1", "--render-scale"},
         BadInvocation{"RenderScaleNotANumber", "--window --render-scale half", "--render-scale"},
         BadInvocation{"UnknownScene", "/nonexistent/scene.json --capture OUT", "does not exist"},
+        BadInvocation{"UnknownPlant", "--plant /nonexistent/plant.lsys --capture OUT", "does not exist"},
+        BadInvocation{"PlantWithAScene", "/nonexistent/scene.json --plant /nonexistent/p.lsys --capture OUT",
+                      "not both"},
+        BadInvocation{"PlantWithInstances", "--plant /nonexistent/p.lsys --capture OUT --instances 5",
+                      "--instances is for scenes"},
+        BadInvocation{"PlantFlagsWithoutPlant", "--capture OUT --steps 3", "are for --plant"},
+        BadInvocation{"OrbitWithoutPlant", "--capture OUT --orbit 90", "are for --plant"},
+        BadInvocation{"MalformedDefine", "--plant /nonexistent/p.lsys --capture OUT -D ANGLE", "invalid -D"},
         BadInvocation{"MalformedMemoryBudget", "--capture OUT --memory-budget lots", "not a size"},
         BadInvocation{"ZeroMemoryBudget", "--capture OUT --memory-budget 0", "--memory-budget"},
         // A million plants need about 122 MiB to place: refused before placing.
@@ -253,11 +262,13 @@ TEST(PlantfieldCli, VersionIsTheProjectsVersion) {
 TEST(PlantfieldCli, HelpListsEveryOption) {
     const CommandResult r = runCommand(kPlantfield + " --help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* flag :
-         {"--capture",      "--size",         "--window",  "--frames",          "--frame-range",   "--time",
-          "--device",       "--validation",   "--wind",    "--joint-budget",    "--physics-check", "--instances",
-          "--densify",      "--aa",           "--samples", "--no-shadow-cache", "--no-clusters",   "--occlusion",
-          "--render-scale", "--memory-budget"})
+    for (const char* flag : {"--capture",     "--size",         "--window",        "--frames",
+                             "--frame-range", "--time",         "--device",        "--validation",
+                             "--wind",        "--joint-budget", "--physics-check", "--instances",
+                             "--densify",     "--aa",           "--samples",       "--no-shadow-cache",
+                             "--no-clusters", "--occlusion",    "--render-scale",  "--memory-budget",
+                             "--plant",       "--plant-height", "--steps",         "--orbit",
+                             "--orbit-speed", "--define"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 
@@ -373,6 +384,100 @@ TEST(PlantfieldCli, FrameRangeMatchesTheWholeRunsFrames) {
         const std::string expected = bytes(whole / name);
         ASSERT_FALSE(expected.empty()) << name;
         EXPECT_TRUE(bytes(part / name) == expected) << name << " differs from the whole run's";
+    }
+}
+
+// The data folder's plants (data/plants).
+fs::path plantsDir() { return fs::path(defaultScenePath()).parent_path().parent_path() / "plants"; }
+
+// Pixels of a --plant capture that are the plant's: brown bark (red above
+// green and blue), where the ground is green and the sky and haze blue-grey.
+struct PlantPixels {
+    size_t count = 0;
+    uint32_t minX = ~0u, maxX = 0, minY = ~0u, maxY = 0;
+    bool inCentreColumn = false;
+};
+PlantPixels brownPixels(const RgbaImage& image) {
+    PlantPixels found;
+    for (uint32_t y = 0; y < image.height; ++y)
+        for (uint32_t x = 0; x < image.width; ++x) {
+            const uint8_t* p = &image.pixels[(size_t(y) * image.width + x) * 4];
+            if (!(p[0] > p[1] + 8 && p[0] > p[2] + 8)) continue;
+            ++found.count;
+            found.minX = std::min(found.minX, x), found.maxX = std::max(found.maxX, x);
+            found.minY = std::min(found.minY, y), found.maxY = std::max(found.maxY, y);
+            if (x == image.width / 2) found.inCentreColumn = true;
+        }
+    return found;
+}
+
+// --plant frames one plant with the orbit camera: the brown tree spans most
+// of the frame's height, centred, and a plant that draws nothing leaves only
+// ground and sky (so the colour test sees the plant, not the background).
+TEST(PlantfieldCli, PlantPreviewFramesThePlant) {
+    const fs::path dir = scratchDir("plant-preview");
+    { std::ofstream(dir / "empty.lsys") << "Axiom: A\n"; }
+    const auto capture = [&](const fs::path& plant, const std::string& name) {
+        const fs::path out = dir / name;
+        const CommandResult r = runCommand(kPlantfield + " --validation --size 96x96 --plant " + plant.string() +
+                                           " --capture " + out.string());
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+        return readPng(out.string());
+    };
+    const RgbaImage tree = capture(plantsDir() / "monopodial_tree.lsys", "tree.png");
+    ASSERT_EQ(tree.width, 96u);
+    const PlantPixels plant = brownPixels(tree);
+    ASSERT_GT(plant.count, 0u) << "no plant in the frame";
+    EXPECT_GE(plant.maxY - plant.minY + 1, 48u) << "the plant spans under half the frame's height";
+    EXPECT_LE(plant.maxY - plant.minY + 1, 95u) << "the plant is cut at the frame's top or bottom";
+    const double centreX = 0.5 * (plant.minX + plant.maxX), centreY = 0.5 * (plant.minY + plant.maxY);
+    EXPECT_NEAR(centreX, 47.5, 12.0);
+    EXPECT_NEAR(centreY, 47.5, 12.0);
+    EXPECT_TRUE(plant.inCentreColumn);
+    EXPECT_EQ(brownPixels(capture(dir / "empty.lsys", "empty.png")).count, 0u);
+}
+
+// --plant with a scene file, or a malformed plant: exit 2 naming the file,
+// line and column, nothing written.
+TEST(PlantfieldCli, PlantPreviewRefusesASceneAndMalformedPlants) {
+    const fs::path dir = scratchDir("plant-preview-bad");
+    { std::ofstream(dir / "bad.lsys") << "Axiom: F\nF -> F[+F\nthis is not a rule\n"; }
+    const fs::path out = dir / "out.png";
+    CommandResult r = runCommand(kPlantfield + " " + defaultScenePath() + " --plant " +
+                                 (plantsDir() / "monopodial_tree.lsys").string() + " --capture " + out.string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("not both"), std::string::npos) << r.output;
+    r = runCommand(kPlantfield + " --plant " + (dir / "bad.lsys").string() + " --size 32x32 --capture " + out.string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("bad.lsys:3:1"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+// A vlab object folder previews as a file does; --orbit-speed turns the
+// camera along a sequence, so its frames differ; --steps and -D reach the
+// plant (a shorter derivation or another #define draws a different plant).
+TEST(PlantfieldCli, PlantPreviewOfAVlabObjectOrbits) {
+    const fs::path dir = scratchDir("plant-preview-vlab");
+    const std::string plant = (plantsDir() / "abop" / "fig2_6a_monopodial_tree").string();
+    const CommandResult r = runCommand(kPlantfield + " --validation --size 64x64 --plant " + plant +
+                                       " --frames 2 --fps 1 --orbit-speed 90 --out-dir " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+    const RgbaImage first = readPng((dir / "frame_0000.png").string());
+    const RgbaImage second = readPng((dir / "frame_0001.png").string());
+    ASSERT_EQ(first.width, 64u);
+    EXPECT_NE(first.pixels, second.pixels) << "the orbit did not turn";
+    for (const char* flags : {"", "--steps 2", "-D a0=10"}) {
+        const fs::path changed = dir / "changed.png";
+        const CommandResult c =
+            runCommand(kPlantfield + " --size 64x64 --plant " + plant + " " + flags + " --capture " + changed.string());
+        ASSERT_EQ(c.exitCode, 0) << flags << "\n" << c.output;
+        // Without flags, the sequence's first frame: the same view, so a difference is the plant's.
+        if (*flags == '\0')
+            EXPECT_EQ(readPng(changed.string()).pixels, first.pixels) << "a capture differs from frame 0";
+        else
+            EXPECT_NE(readPng(changed.string()).pixels, first.pixels) << flags << " did not change the plant";
     }
 }
 

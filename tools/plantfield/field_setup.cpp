@@ -14,7 +14,10 @@ GpuOptions gpuOptions(const PlantfieldOptions& o) {
     return g;
 }
 
+const std::string& inputName(const PlantfieldOptions& o) { return o.plantPath.empty() ? o.scenePath : o.plantPath; }
+
 Scene loadSceneOf(const PlantfieldOptions& o) {
+    if (!o.plantPath.empty()) return previewScene(o);
     Scene scene = loadScene(o.scenePath);
     if (o.seed) scene.seed = *o.seed;
     if (o.windSpeed) scene.wind.speed = *o.windSpeed;
@@ -23,7 +26,7 @@ Scene loadSceneOf(const PlantfieldOptions& o) {
     return scene;
 }
 
-FieldContent loadFieldContent(const PlantfieldOptions& o) {
+FieldContent loadFieldContent(const PlantfieldOptions& o, std::optional<PreviewOrbit>* orbit) {
     const auto start = std::chrono::steady_clock::now();
     const Scene scene = loadSceneOf(o);
     std::optional<PlantCount> count;
@@ -41,9 +44,13 @@ FieldContent loadFieldContent(const PlantfieldOptions& o) {
             if (done == all) std::fprintf(stderr, "\r\x1b[K");
         },
         o.memory);
+    if (!o.plantPath.empty()) {
+        const PreviewOrbit framed = framePreview(content, o);
+        if (orbit) *orbit = framed;
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "plantfield: %s: %zu plants of %zu species on %.0f m x %.0f m, %zu models, built in %.1f s\n",
-                 o.scenePath.c_str(), content.plants.size(), content.scene.species.size(), content.scene.terrain.size,
+                 inputName(o).c_str(), content.plants.size(), content.scene.species.size(), content.scene.terrain.size,
                  content.scene.terrain.size, content.models.models.size(), seconds);
     if (!content.note.empty()) std::fprintf(stderr, "plantfield: note: %s\n", content.note.c_str());
     std::fputs(content.models.warnings.c_str(), stderr);
@@ -56,14 +63,17 @@ FieldRenderSettings renderSettings(const PlantfieldOptions& o) {
     s.shadows = o.shadows;
     s.occlusionCulling = o.occlusionCulling;
     s.shadowCache.reuse = o.shadowCache;
-    s.clusters.enabled = o.clusters;
+    // The far canopy's distances are metres: a --plant of many units would be
+    // drawn as canopy from its orbit, so the preview's one plant skips it.
+    s.clusters.enabled = o.clusters && o.plantPath.empty();
     s.memory = o.memory;
     return s;
 }
 
-FieldView pathView(const PlantfieldOptions& o, const Scene& scene, double t, double dt, bool firstFrame) {
+FieldView pathView(const PlantfieldOptions& o, const Scene& scene, double t, double dt, bool firstFrame,
+                   const std::optional<PreviewOrbit>& orbit) {
     FieldView view;
-    view.camera = cameraAt(scene.camera, t);
+    view.camera = orbit ? orbitCamera(*orbit, t) : cameraAt(scene.camera, t);
     view.time = float(t);
     view.deltaTime = float(dt);
     view.firstFrame = firstFrame;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "options.h"
+#include "plant_preview.h"
 
 #include "engine/field/field_renderer.h"
 #include "engine/vk/device.h"
@@ -14,16 +15,23 @@ namespace pf {
 
 GpuOptions gpuOptions(const PlantfieldOptions& o);
 
-// The scene file with --seed and --wind applied. Throws SceneError
+// What the tool renders, for messages: the scene file or the --plant.
+const std::string& inputName(const PlantfieldOptions& o);
+
+// The scene file with --seed and --wind applied (with --plant, previewScene). Throws SceneError
 // (file:line:column) with a clear message.
 Scene loadSceneOf(const PlantfieldOptions& o);
 
 // Throws SceneError (file:line:column) or runtime_error with a clear message.
-FieldContent loadFieldContent(const PlantfieldOptions& o);
+// With --plant, the ground is sized to the plant and `orbit` (when given) is
+// set to the preview's camera orbit.
+FieldContent loadFieldContent(const PlantfieldOptions& o, std::optional<PreviewOrbit>* orbit = nullptr);
 
 FieldRenderSettings renderSettings(const PlantfieldOptions& o);
 
-// The view at scene time t along the scene's camera path.
-FieldView pathView(const PlantfieldOptions& o, const Scene& scene, double t, double dt, bool firstFrame);
+// The view at scene time t along the scene's camera path, or on the --plant
+// preview's orbit when one is given.
+FieldView pathView(const PlantfieldOptions& o, const Scene& scene, double t, double dt, bool firstFrame,
+                   const std::optional<PreviewOrbit>& orbit = std::nullopt);
 
 } // namespace pf

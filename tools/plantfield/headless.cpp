@@ -22,7 +22,7 @@ namespace {
 nlohmann::json statsJson(const PlantfieldOptions& o, const GpuContext& ctx, const FieldRenderer& renderer,
                          const FieldFrameStats& stats, const std::vector<ScopeTime>& gpu, double time, double wallMs) {
     nlohmann::json j;
-    j["scene"] = o.scenePath;
+    j["scene"] = inputName(o);
     j["device"] = ctx.properties.deviceName;
     j["size"] = {o.size.width, o.size.height};
     j["time"] = time;
@@ -68,7 +68,8 @@ std::string framePath(const std::string& dir, uint32_t index) {
 } // namespace
 
 int runHeadless(const PlantfieldOptions& o) {
-    FieldContent content = loadFieldContent(o);
+    std::optional<PreviewOrbit> orbit;
+    FieldContent content = loadFieldContent(o, &orbit);
     const Scene scene = content.scene;
     GpuContext ctx;
     createHeadlessContext(ctx, gpuOptions(o));
@@ -93,7 +94,7 @@ int runHeadless(const PlantfieldOptions& o) {
         double wallMs = 0, time = o.time;
         for (uint32_t i = 0; i < end; ++i) {
             time = o.time + i * step;
-            renderer.setView(pathView(o, scene, time, i == 0 ? 0.0 : step, i == 0), extent);
+            renderer.setView(pathView(o, scene, time, i == 0 ? 0.0 : step, i == 0, orbit), extent);
             if (i < first) {
                 submitAndWait(ctx, [&](VkCommandBuffer cmd) { renderer.record(cmd, target, &timer); });
                 if (terminal) std::fprintf(stderr, "\rplantfield: frame %u/%u (before the range)\x1b[K", i + 1, frames);

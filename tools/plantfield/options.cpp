@@ -17,6 +17,7 @@
 #include <initializer_list>
 #include <iostream>
 #include <string_view>
+#include <vector>
 
 namespace pf {
 namespace {
@@ -137,9 +138,29 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                "  plantfield --frames 60 --frame-range 30:59 --out-dir seq   its second half only\n"
                "  plantfield --capture frame.png --aa msaa            4x multisampling instead of FXAA\n"
                "  plantfield --export field.glb                       the default forest as glTF, no GPU needed\n"
+               "  plantfield --plant data/plants/spruce.lsys --capture s.png   one plant, framed by an orbit camera\n"
                "Environment: PLANTFIELD_DEVICE picks the device by name, PLANTFIELD_VALIDATION=1 turns on\n"
                "the Khronos validation layer, PLANTFIELD_DATA_DIR replaces the data folder.");
     app.add_option("scene", o.scenePath, "Scene file (.json)")->default_str("data/scenes/default.json");
+    app.add_option("--plant", o.plantPath,
+                   "Preview one plant instead of a scene: an L-system file (.lsys, .l) or a vlab object folder,\n"
+                   "one plant at the origin in its own units on flat ground, no wind unless --wind, framed by an\n"
+                   "orbit camera (docs/PLANT_PREVIEW.md)")
+        ->type_name("FILE|DIR");
+    checkFiniteIn(*app.add_option("--plant-height", o.plantHeight,
+                                  "With --plant: scale the plant so its top is this many metres high"),
+                  1e-6, 1e6);
+    app.add_option("--steps", o.plantSteps, "With --plant: derivation steps instead of the file's derivation length")
+        ->check(CLI::Range(0, 1000));
+    std::vector<std::string> defineTexts;
+    app.add_option("-D,--define", defineTexts, "With --plant: override a #define constant: NAME=VALUE (repeatable)");
+    checkFiniteIn(*app.add_option("--orbit", o.orbitDegrees,
+                                  "With --plant: the camera's place around the plant in degrees, from the south\n"
+                                  "(+z) toward the east (+x); 20 degrees above the plant's centre"),
+                  -36000.0, 36000.0);
+    checkFiniteIn(*app.add_option("--orbit-speed", o.orbitSpeed,
+                                  "With --plant: degrees the camera turns around the plant a scene second (--frames)"),
+                  -36000.0, 36000.0);
     app.add_option("--capture", o.capturePath, "Render one frame headless and write it to this PNG file");
     app.add_option("--size", sizeText, "Image or window size as WIDTHxHEIGHT (1 to 16384 per side)")
         ->default_str("1280x720");
@@ -256,6 +277,22 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
         o.renderScale = *share;
     }
     if (o.listDevices) return o;
+    const bool plant = !o.plantPath.empty();
+    for (const std::string& text : defineTexts) {
+        const size_t equals = text.find('=');
+        const std::optional<double> value = equals == std::string::npos
+                                                ? std::nullopt
+                                                : finiteNumber<double>(std::string_view(text).substr(equals + 1));
+        if (equals == 0 || !value)
+            return fail("invalid -D '" + text + "': expected NAME=VALUE with a number, e.g. -D ANGLE=30");
+        o.plantDefines[text.substr(0, equals)] = *value;
+    }
+    if (plant && app.count("scene") > 0)
+        return fail("--plant previews one plant instead of a scene: give either a scene file or --plant, not both");
+    if (!plant && (o.plantHeight || o.plantSteps || !defineTexts.empty() || app.count("--orbit") > 0 ||
+                   app.count("--orbit-speed") > 0))
+        return fail("--plant-height, --steps, -D, --orbit and --orbit-speed are for --plant FILE");
+    if (plant && o.instances) return fail("--instances is for scenes: --plant previews one plant");
     const bool sequence = !o.window && o.frames > 0;
     if (!frameRangeText.empty()) {
         if (!sequence) return fail("--frame-range needs a headless sequence: --frames N --out-dir DIR, no --window");
@@ -283,7 +320,12 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     if (!o.outDir.empty() && !sequence) return fail("--out-dir needs --frames N (and no --window)");
     if (!renderScaleText.empty() && !o.window)
         return fail("--render-scale is for --window: captures and sequences render at --size");
-    if (!std::filesystem::is_regular_file(o.scenePath))
+    if (plant) {
+        std::error_code error;
+        if (!std::filesystem::is_regular_file(o.plantPath, error) && !std::filesystem::is_directory(o.plantPath, error))
+            return fail("plant '" + o.plantPath +
+                        "' does not exist: --plant takes an L-system file or a vlab object folder");
+    } else if (!std::filesystem::is_regular_file(o.scenePath))
         return fail("scene file '" + o.scenePath + "' does not exist or is not a file");
     if (!o.capturePath.empty()) {
         const std::string problem = lsys::outputPathProblem(o.capturePath);

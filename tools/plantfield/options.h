@@ -6,6 +6,7 @@
 #include "lsystem/memory_budget.h"
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -98,6 +99,13 @@ struct PlantfieldOptions {
     // (auto) lets engine/window/render_scale.h choose it from frame times.
     std::optional<float> renderScale;
     lsys::MemoryBudget memory; // --memory-budget: terrain, placement, uploads
+    // --plant: one plant on flat ground instead of a scene (tools/plantfield/plant_preview.h)
+    std::string plantPath;                      // an L-system file or a vlab object folder
+    std::optional<float> plantHeight;           // --plant-height: metres it is scaled to; empty: its own units
+    std::optional<uint32_t> plantSteps;         // --steps: derivation length instead of the file's
+    std::map<std::string, double> plantDefines; // -D NAME=VALUE
+    double orbitDegrees = 0.0;                  // --orbit: the camera's place around it, from +z toward +x
+    double orbitSpeed = 0.0;                    // --orbit-speed: degrees a scene second
 };
 
 // --export or --export-placements: write files of the field, render nothing.

@@ -31,7 +31,8 @@ std::string overlayText(double frameMs, const FieldFrameStats& stats, const std:
 } // namespace
 
 int runWindow(const PlantfieldOptions& o) {
-    FieldContent content = loadFieldContent(o);
+    std::optional<PreviewOrbit> orbit;
+    FieldContent content = loadFieldContent(o, &orbit);
     const Scene scene = content.scene;
     Window window(o.size.width, o.size.height, "plantfield");
     GpuOptions g = gpuOptions(o);
@@ -63,7 +64,7 @@ int runWindow(const PlantfieldOptions& o) {
                 setOverlayText(overlay, overlayText(frameMs, stats, readGpuTimer(ctx, timer), freeFlight));
             }
             const WindowInput input = pollWindowInput(window.handle(), inputState);
-            FieldView view = pathView(o, scene, o.time + t, dt, frameMs == 0);
+            FieldView view = pathView(o, scene, o.time + t, dt, frameMs == 0, orbit);
             view.realTime = true;
             if (input.togglePathPlayback) {
                 freeFlight = !freeFlight;

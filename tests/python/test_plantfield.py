@@ -1,0 +1,115 @@
+"""The Python module plantfield (tools/python, docs/PYTHON.md)."""
+import json
+import os
+import struct
+from pathlib import Path
+
+import pytest
+
+import plantfield
+
+DATA = Path(os.environ.get("PLANTFIELD_DATA_DIR", Path(__file__).resolve().parents[2] / "data"))
+PLANTS = DATA / "plants"
+
+
+def test_version():
+    assert plantfield.__version__.count(".") >= 1
+
+
+# The counts tests/lsystem/cli_test.sh and tests/install pin for lsys derive.
+def test_derive_fractal_bush():
+    grammar = plantfield.load(PLANTS / "fractal_bush.lsys")
+    derived = plantfield.derive(grammar, steps=3)
+    assert len(derived) == 1388
+    assert sum(derived.counts().values()) == 1388
+    assert len(str(derived)) > 0
+
+
+def test_derive_koch_curve():
+    grammar = plantfield.load(str(PLANTS / "koch_curve.lsys"))
+    derived = plantfield.derive(grammar, 4)
+    assert len(derived) == 1249
+    counts = derived.counts()
+    assert counts["F"] > 0 and "+" in counts
+    assert derived.to_cpfg().count("F") == counts["F"]
+
+
+def test_parse_text_and_counts():
+    grammar = plantfield.parse("derivation length: 5\nAxiom: A\nA --> A B\nB --> A\n")
+    derived = plantfield.derive(grammar)
+    assert derived.counts() == {"A": 8, "B": 5}
+    assert str(derived).replace(" ", "").startswith("ABAAB")
+
+
+def test_parse_error_located():
+    with pytest.raises(plantfield.LsystemError) as info:
+        plantfield.parse("Axiom: A\nA --> B(\n", file="bad.lsys")
+    diagnostics = info.value.diagnostics
+    assert diagnostics, "at least one diagnostic"
+    file, line, column, message = diagnostics[0]
+    assert file == "bad.lsys" and line == 2 and column > 0 and message
+    assert "bad.lsys:2:" in str(info.value)
+
+
+def test_load_missing_file():
+    with pytest.raises(plantfield.LsystemError) as info:
+        plantfield.load(PLANTS / "no_such_plant.lsys")
+    assert "no_such_plant.lsys" in str(info.value)
+
+
+def test_unknown_dialect():
+    with pytest.raises(ValueError, match="unknown dialect"):
+        plantfield.parse("Axiom: A\n", dialect="klingon")
+
+
+def test_module_budget():
+    grammar = plantfield.load(PLANTS / "fractal_bush.lsys")
+    with pytest.raises(plantfield.ModuleBudgetError, match="module budget exceeded"):
+        plantfield.derive(grammar, steps=7, max_modules=100000)
+    assert issubclass(plantfield.ModuleBudgetError, plantfield.DerivationError)
+
+
+def test_instance_stats():
+    stats = plantfield.instance_stats(plantfield.load(PLANTS / "fractal_bush.lsys"), steps=9)
+    assert set(stats) == {"primitives", "joints", "nodes", "objects", "instances", "compression",
+                          "bytes_graph", "bytes_flat"}
+    # As tests/lsystem/cli_test.sh pins `lsys instance -n 9 --json`.
+    assert (stats["primitives"], stats["joints"], stats["nodes"], stats["objects"], stats["instances"]) == \
+        (134217728, 134217728, 9, 9, 72)
+
+
+def read_glb(path):
+    data = Path(path).read_bytes()
+    magic, version, length = struct.unpack_from("<4sII", data, 0)
+    assert magic == b"glTF" and version == 2 and length == len(data)
+    chunk_length, chunk_type = struct.unpack_from("<II", data, 12)
+    assert chunk_type == 0x4E4F534A  # "JSON"
+    return json.loads(data[20:20 + chunk_length])
+
+
+@pytest.fixture
+def output_dir(tmp_path):
+    directory = os.environ.get("PLANTFIELD_TEST_OUTPUT_DIR")
+    if not directory:
+        return tmp_path
+    Path(directory).mkdir(parents=True, exist_ok=True)
+    return Path(directory)
+
+
+def test_export_glb(output_dir):
+    grammar = plantfield.load(PLANTS / "fractal_bush.lsys")
+    path = output_dir / "fractal_bush.glb"
+    plantfield.export(grammar, path, steps=3, sides=6)
+    assert read_glb(path)["meshes"]
+
+
+def test_export_instanced_glb(output_dir):
+    path = output_dir / "fractal_bush_instanced.glb"
+    plantfield.export(plantfield.load(PLANTS / "fractal_bush.lsys"), str(path), steps=3, instanced=True)
+    document = read_glb(path)
+    assert document["meshes"] and document["nodes"]
+
+
+def test_export_bad_extension(output_dir):
+    with pytest.raises(RuntimeError):
+        plantfield.export(plantfield.parse("Axiom: F\n"), output_dir / "plant.txt")

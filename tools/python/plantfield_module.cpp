@@ -1,0 +1,264 @@
+// The Python module `plantfield` (docs/PYTHON.md): load or parse a plant in
+// any dialect, derive it, read its instance-graph statistics and export it,
+// as the lsys tool does (tools/lsys/main.cpp), with diagnostics raised as
+// plantfield.LsystemError. Vulkan-free: only the L-system library.
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <plantfield_version.h>
+
+#include "lsystem/bgrammar.h"
+#include "lsystem/dialects/dialect.h"
+#include "lsystem/error.h"
+#include "lsystem/graph_export.h"
+#include "lsystem/instance_graph.h"
+#include "lsystem/memory_budget.h"
+#include "lsystem/parser.h"
+#include "lsystem/plant_export.h"
+#include "lsystem/rewriter.h"
+#include "lsystem/surfaces.h"
+#include "lsystem/turtle.h"
+#include "lsystem/vlab/object.h"
+
+namespace py = pybind11;
+
+namespace {
+
+// A parsed plant with what the module needs besides the grammar: where it
+// was read from (meshes are found near it) and its warnings.
+struct PyGrammar {
+    lsys::Grammar grammar;
+    std::string file;   // the path, or the name parse() was given
+    std::string source; // the text formatDiagnostics quotes
+    std::vector<lsys::Diagnostic> warnings;
+    bool fromFile = false;
+};
+
+struct PyDerived {
+    lsys::ModuleString string;
+    std::shared_ptr<PyGrammar> grammar; // its symbol table
+};
+
+// Set in PYBIND11_MODULE: plantfield.LsystemError (raised by hand, never
+// translated from C++, so its C++ type is only a tag).
+struct LsystemErrorTag {};
+py::handle lsystemError; // the module's attribute holds the reference
+
+py::list diagnosticTuples(const std::vector<lsys::Diagnostic>& diagnostics) {
+    py::list out;
+    for (const lsys::Diagnostic& d : diagnostics) {
+        std::string message = d.message;
+        if (!d.expected.empty()) message += " (expected " + d.expected + ")";
+        out.append(py::make_tuple(d.file, d.line, d.column, message));
+    }
+    return out;
+}
+
+// Raises LsystemError with every diagnostic, or returns the grammar.
+std::shared_ptr<PyGrammar> finish(lsys::ParseResult& result, std::string file, std::string source, bool fromFile) {
+    if (!result.ok()) {
+        py::object error = lsystemError(lsys::formatDiagnostics(result.diagnostics, source));
+        error.attr("diagnostics") = diagnosticTuples(result.diagnostics);
+        PyErr_SetObject(lsystemError.ptr(), error.ptr());
+        throw py::error_already_set();
+    }
+    auto grammar = std::make_shared<PyGrammar>();
+    grammar->grammar = std::move(result.grammar);
+    grammar->file = std::move(file);
+    grammar->source = std::move(source);
+    grammar->warnings = std::move(result.warnings);
+    grammar->fromFile = fromFile;
+    return grammar;
+}
+
+std::optional<lsys::Dialect> dialectArgument(const std::optional<std::string>& name) {
+    if (!name) return std::nullopt;
+    std::optional<lsys::Dialect> dialect = lsys::dialectFromName(*name);
+    if (!dialect) throw py::value_error("unknown dialect '" + *name + "' (expected " + lsys::knownDialects() + ")");
+    return dialect;
+}
+
+std::shared_ptr<PyGrammar> load(const std::filesystem::path& path,
+                                const std::unordered_map<std::string, double>& defines,
+                                const std::optional<std::string>& dialect) {
+    lsys::ParseOptions options;
+    options.file = path.string();
+    options.defines = defines;
+    const std::optional<lsys::Dialect> given = dialectArgument(dialect);
+    lsys::vlab::PlantFile plant;
+    {
+        py::gil_scoped_release release;
+        plant = lsys::vlab::loadPlant(path, given, options);
+    }
+    return finish(plant.parsed, path.string(), std::move(plant.source), true);
+}
+
+std::shared_ptr<PyGrammar> parse(const std::string& text, const std::string& file,
+                                 const std::unordered_map<std::string, double>& defines,
+                                 const std::optional<std::string>& dialect) {
+    lsys::ParseOptions options;
+    options.file = file;
+    options.defines = defines;
+    lsys::ParseResult result = lsys::parseDialect(dialectArgument(dialect), text, options);
+    return finish(result, file, text, false);
+}
+
+// Meshes are looked for near a plant read from a file, as lsys does.
+lsys::SurfaceLibrary surfacesFor(const PyGrammar& grammar) {
+    return grammar.fromFile ? lsys::SurfaceLibrary(lsys::meshDirectoriesFor(grammar.file)) : lsys::SurfaceLibrary();
+}
+
+lsys::DeriveOptions deriveOptions(std::optional<int> steps, std::optional<uint64_t> seed, size_t maxModules) {
+    lsys::DeriveOptions options;
+    options.steps = steps;
+    options.seed = seed;
+    options.maxModules = maxModules;
+    return options;
+}
+
+lsys::BGrammarOptions bgrammarOptions(std::optional<int> steps, std::optional<uint64_t> seed, size_t maxModules) {
+    lsys::BGrammarOptions options;
+    options.steps = steps;
+    options.seed = seed;
+    options.interpreted = true; // the word the turtle reads
+    options.maxModules = maxModules;
+    return options;
+}
+
+PyDerived derive(std::shared_ptr<PyGrammar> grammar, std::optional<int> steps, std::optional<uint64_t> seed,
+                 size_t maxModules) {
+    PyDerived out;
+    {
+        py::gil_scoped_release release;
+        out.string = lsys::derive(grammar->grammar, deriveOptions(steps, seed, maxModules));
+    }
+    out.grammar = std::move(grammar);
+    return out;
+}
+
+py::dict counts(const PyDerived& derived) {
+    const lsys::SymbolTable& symbols = derived.grammar->grammar.symbols;
+    std::vector<size_t> count(symbols.size(), 0);
+    for (lsys::SymbolId symbol : derived.string.symbols) ++count[symbol];
+    std::map<std::string, size_t> sorted;
+    for (size_t id = 0; id < count.size(); ++id)
+        if (count[id]) sorted[symbols.name(static_cast<lsys::SymbolId>(id))] = count[id];
+    py::dict out;
+    for (const auto& [name, n] : sorted) out[py::str(name)] = n;
+    return out;
+}
+
+py::dict instanceStats(const PyGrammar& grammar, std::optional<int> steps, std::optional<uint64_t> seed,
+                       size_t maxModules) {
+    lsys::InstanceGraphStats stats;
+    {
+        py::gil_scoped_release release;
+        const lsys::BGrammar bgrammar = lsys::buildBGrammar(grammar.grammar, bgrammarOptions(steps, seed, maxModules));
+        stats = lsys::instanceGraphStats(lsys::buildInstanceGraph(bgrammar, grammar.grammar, {}, surfacesFor(grammar)));
+    }
+    py::dict out;
+    out["primitives"] = stats.primitives;
+    out["joints"] = stats.joints;
+    out["nodes"] = stats.nodes;
+    out["objects"] = stats.objects;
+    out["instances"] = stats.instances;
+    out["compression"] = stats.compression();
+    out["bytes_graph"] = stats.bytesGraph;
+    out["bytes_flat"] = stats.bytesFlat;
+    return out;
+}
+
+void exportPlant(const PyGrammar& grammar, const std::filesystem::path& path, std::optional<int> steps,
+                 std::optional<uint64_t> seed, bool instanced, uint32_t sides, bool skeleton, size_t maxModules) {
+    if (sides < 3 || sides > 1024) throw py::value_error("sides must be between 3 and 1024");
+    py::gil_scoped_release release;
+    const lsys::SurfaceLibrary surfaces = surfacesFor(grammar);
+    if (instanced) {
+        const lsys::InstanceGraph graph =
+            lsys::buildInstanceGraph(lsys::buildBGrammar(grammar.grammar, bgrammarOptions(steps, seed, maxModules)),
+                                     grammar.grammar, {}, surfaces);
+        lsys::GraphExportOptions options;
+        options.detail.segmentSides = sides;
+        lsys::exportInstanceGraph(graph, surfaces, path, options);
+        return;
+    }
+    const lsys::ModuleString string = lsys::derive(grammar.grammar, deriveOptions(steps, seed, maxModules));
+    const lsys::PlantAsset plant = lsys::plantFromGrammar(grammar.grammar, string, surfaces);
+    lsys::ExportOptions options;
+    options.detail.segmentSides = sides;
+    options.skeleton = skeleton;
+    lsys::exportPlant(plant, path, options);
+}
+
+constexpr size_t kMaxModules = 50'000'000; // lsys --max-modules' default
+
+} // namespace
+
+PYBIND11_MODULE(plantfield, m) {
+    m.doc() = "L-system plants of the plantfield project: load, derive, instance-graph statistics, export";
+    m.attr("__version__") = pf::kPlantfieldVersion;
+
+    // Exceptions: parse errors carry their diagnostics; derivation errors the
+    // C++ message. ModuleBudgetError and MemoryBudgetError are DerivationErrors.
+    lsystemError = py::exception<LsystemErrorTag>(m, "LsystemError", PyExc_ValueError).ptr();
+    static py::exception<lsys::DerivationError> derivationError(m, "DerivationError", PyExc_RuntimeError);
+    static py::exception<lsys::ModuleBudgetError> moduleBudgetError(m, "ModuleBudgetError", derivationError.ptr());
+    static py::exception<lsys::MemoryBudgetError> memoryBudgetError(m, "MemoryBudgetError", derivationError.ptr());
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const lsys::ModuleBudgetError& e) {
+            moduleBudgetError(e.what());
+        } catch (const lsys::MemoryBudgetError& e) {
+            memoryBudgetError(e.what());
+        } catch (const lsys::DerivationError& e) {
+            derivationError(e.what());
+        }
+    });
+
+    py::class_<PyGrammar, std::shared_ptr<PyGrammar>>(m, "Grammar", "A parsed plant (load or parse)")
+        .def_readonly("file", &PyGrammar::file)
+        .def_property_readonly(
+            "warnings", [](const PyGrammar& g) { return diagnosticTuples(g.warnings); },
+            "Warnings as (file, line, column, message) tuples")
+        .def_property_readonly("derivation_length", [](const PyGrammar& g) { return g.grammar.derivationLength; })
+        .def("__repr__", [](const PyGrammar& g) { return "<plantfield.Grammar '" + g.file + "'>"; });
+
+    py::class_<PyDerived>(m, "DerivedString", "A derived module string")
+        .def("__len__", [](const PyDerived& d) { return d.string.size(); })
+        .def("__str__", [](const PyDerived& d) { return lsys::toString(d.string, d.grammar->grammar.symbols); })
+        .def("__repr__",
+             [](const PyDerived& d) {
+                 return "<plantfield.DerivedString of " + std::to_string(d.string.size()) + " modules>";
+             })
+        .def("counts", &counts, "Module name -> how many times it occurs")
+        .def(
+            "to_cpfg", [](const PyDerived& d) { return lsys::toCpfgString(d.string, d.grammar->grammar.symbols); },
+            "The string as cpfg writes it (its -str output)");
+
+    m.def("load", &load, py::arg("path"), py::arg("defines") = std::unordered_map<std::string, double>{},
+          py::arg("dialect") = py::none(),
+          "Reads a plant file (any dialect: its 'dialect:' line, else cpfg for .l, else native) or a vlab "
+          "object folder; raises LsystemError with every diagnostic");
+    m.def("parse", &parse, py::arg("text"), py::arg("file") = "<string>",
+          py::arg("defines") = std::unordered_map<std::string, double>{}, py::arg("dialect") = py::none(),
+          "Parses plant text; raises LsystemError with every diagnostic");
+    m.def("derive", &derive, py::arg("grammar"), py::arg("steps") = py::none(), py::arg("seed") = py::none(),
+          py::arg("max_modules") = kMaxModules,
+          "Derives the plant (steps: default the grammar's derivation length; seed: default the grammar's)");
+    m.def("instance_stats", &instanceStats, py::arg("grammar"), py::arg("steps") = py::none(),
+          py::arg("seed") = py::none(), py::arg("max_modules") = kMaxModules,
+          "The instance graph's statistics, as `lsys instance --json` prints them");
+    m.def("export", &exportPlant, py::arg("grammar"), py::arg("path"), py::arg("steps") = py::none(),
+          py::arg("seed") = py::none(), py::arg("instanced") = false, py::arg("sides") = 8, py::arg("skeleton") = true,
+          py::arg("max_modules") = kMaxModules, "Writes the plant as .glb, .gltf or .obj, as `lsys export` does");
+}
