@@ -18,15 +18,10 @@ glm::vec3 rgb(std::string_view bytes, size_t at) { return {unit(bytes, at), unit
 // The file's bytes; none, and `result.error` saying why, if it cannot be read.
 std::optional<std::string> readBytes(const std::filesystem::path& path, std::string_view kind,
                                      ColourReadResult& result) {
-    FileBytes file = readFileUpTo(path, kMaxColourFileBytes);
-    if (file.problem == FileProblem::None) return std::move(file.bytes);
-    result.error =
-        Diagnostic{path.string(),
-                   0,
-                   0,
-                   std::string(kind) + " " + path.string() + " " + fileProblemText(file.problem, kMaxColourFileBytes),
-                   {}};
-    return std::nullopt;
+    std::vector<Diagnostic> unread;
+    std::optional<std::string> bytes = readTextFileOf(kind, path, kMaxColourFileBytes, unread);
+    if (!bytes) result.error = std::move(unread.front());
+    return bytes;
 }
 
 void refuse(const std::filesystem::path& path, ColourReadResult& result, std::string message, std::string expected) {
@@ -41,7 +36,7 @@ void refuse(const std::filesystem::path& path, ColourReadResult& result, std::st
 // colour here, for a renderer that lights what it draws.
 ColourReadResult readColourMap(const std::filesystem::path& path) {
     ColourReadResult result;
-    const std::optional<std::string> bytes = readBytes(path, "the colour map", result);
+    const std::optional<std::string> bytes = readBytes(path, "colour map", result);
     if (!bytes) return result;
     if (bytes->size() < kColourMapBytes) {
         refuse(path, result,
@@ -66,7 +61,7 @@ ColourReadResult readColourMap(const std::filesystem::path& path) {
 // white diffuse only (irisGL.c, default_material), and defined = false.
 ColourReadResult readMaterialFile(const std::filesystem::path& path) {
     ColourReadResult result;
-    const std::optional<std::string> bytes = readBytes(path, "the material file", result);
+    const std::optional<std::string> bytes = readBytes(path, "material", result);
     if (!bytes) return result;
     if (bytes->size() % kMaterialRecordBytes != 0) {
         refuse(path, result,
