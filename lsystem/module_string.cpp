@@ -177,4 +177,13 @@ void computeBracketPartners(const ModuleString& string, std::vector<int32_t>& pa
     for (int32_t unclosed : open) partners[unclosed] = static_cast<int32_t>(n);
 }
 
+std::map<std::string, size_t> moduleCounts(const ModuleString& string, const SymbolTable& symbols) {
+    std::vector<size_t> count(symbols.size(), 0);
+    for (SymbolId symbol : string.symbols) ++count[symbol];
+    std::map<std::string, size_t> counts;
+    for (size_t id = 0; id < count.size(); ++id)
+        if (count[id] != 0) counts[symbols.name(static_cast<SymbolId>(id))] = count[id];
+    return counts;
+}
+
 } // namespace lsys

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -65,6 +66,10 @@ void writeText(const ModuleString& string, const SymbolTable& symbols, TextLayou
 // both sides.
 std::optional<std::string> firstDifference(const ModuleString& string, const SymbolTable& symbols,
                                            std::string_view text, double tolerance = 1e-4);
+
+// How many modules of each name the string holds, by name; names it does
+// not hold are left out (`lsys derive --json`'s counts).
+std::map<std::string, size_t> moduleCounts(const ModuleString& string, const SymbolTable& symbols);
 
 // Index of the ']' closing the branch that contains position i, or size()
 // when none does: where a cut ('%') at i - 1 stops.

@@ -158,11 +158,8 @@ int derive(const Arguments& arguments) {
         if (!cpfg) std::fputc('\n', stdout);
     }
     if (arguments.json) {
-        std::vector<size_t> counts(grammar->symbols.size(), 0);
-        for (lsys::SymbolId symbol : string.symbols) ++counts[symbol];
         nlohmann::json countsJson = nlohmann::json::object();
-        for (size_t id = 0; id < counts.size(); ++id)
-            if (counts[id]) countsJson[grammar->symbols.name(static_cast<lsys::SymbolId>(id))] = counts[id];
+        for (const auto& [name, count] : lsys::moduleCounts(string, grammar->symbols)) countsJson[name] = count;
         nlohmann::json out = {
             {"modules", string.size()}, {"steps", steps}, {"counts", countsJson}, {"seconds", seconds}};
         std::cout << out.dump() << '\n';

@@ -4,7 +4,6 @@
 // plantfield.LsystemError. Vulkan-free: only the L-system library.
 
 #include <filesystem>
-#include <map>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -146,14 +145,9 @@ PyDerived derive(std::shared_ptr<PyGrammar> grammar, std::optional<int> steps, s
 }
 
 py::dict counts(const PyDerived& derived) {
-    const lsys::SymbolTable& symbols = derived.grammar->grammar.symbols;
-    std::vector<size_t> count(symbols.size(), 0);
-    for (lsys::SymbolId symbol : derived.string.symbols) ++count[symbol];
-    std::map<std::string, size_t> sorted;
-    for (size_t id = 0; id < count.size(); ++id)
-        if (count[id]) sorted[symbols.name(static_cast<lsys::SymbolId>(id))] = count[id];
     py::dict out;
-    for (const auto& [name, n] : sorted) out[py::str(name)] = n;
+    for (const auto& [name, n] : lsys::moduleCounts(derived.string, derived.grammar->grammar.symbols))
+        out[py::str(name)] = n;
     return out;
 }
 
@@ -199,7 +193,7 @@ void exportPlant(const PyGrammar& grammar, const std::filesystem::path& path, st
     lsys::exportPlant(plant, path, options);
 }
 
-constexpr size_t kMaxModules = 50'000'000; // lsys --max-modules' default
+const size_t kMaxModules = lsys::DeriveOptions{}.maxModules; // the library's default, as lsys's
 
 } // namespace
 
