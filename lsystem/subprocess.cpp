@@ -98,77 +98,112 @@ int spawn(const std::string& program, std::vector<char*>& args, std::array<int, 
     return error;
 }
 
+void closeEnd(int& fd) {
+    if (fd >= 0) ::close(fd);
+    fd = -1;
+}
+
 } // namespace
 
-ProcessResult runProcess(const std::vector<std::string>& argv, std::string_view input, const ProcessLimits& limits) {
-    ProcessResult result;
+Process::Process(const std::vector<std::string>& argv, const ProcessLimits& limits)
+    : program_(argv.at(0)), limits_(limits),
+      deadline_(std::chrono::steady_clock::now() + std::chrono::seconds(limits.timeoutSeconds)) {
     std::array<Descriptor, 2> in, out, err;
     if (!makeChannel(in, true) || !makeChannel(out, false) || !makeChannel(err, false)) {
-        result.failure = std::string("cannot create pipes: ") + std::strerror(errno);
-        return result;
+        result_.failure = std::string("cannot create pipes: ") + std::strerror(errno);
+        return;
     }
     std::vector<char*> args;
     for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
     args.push_back(nullptr);
-    const std::string program = findProgram(argv[0]);
+    const std::string path = findProgram(program_);
     pid_t pid = -1;
-    const int spawned = program.empty() ? ENOENT : spawn(program, args, {in[1].fd, out[1].fd, err[1].fd}, limits, pid);
-    in[1].reset();
-    out[1].reset();
-    err[1].reset();
+    const int spawned = path.empty() ? ENOENT : spawn(path, args, {in[1].fd, out[1].fd, err[1].fd}, limits, pid);
     if (spawned != 0) {
-        result.failure = std::string("cannot run '") + argv[0] + "': " + std::strerror(spawned);
-        return result;
+        result_.failure = "cannot run '" + program_ + "': " + std::strerror(spawned);
+        return;
     }
-    result.started = true;
+    pid_ = pid;
+    result_.started = true;
+    for (auto [index, end] : {std::pair{0, &in[0]}, std::pair{1, &out[0]}, std::pair{2, &err[0]}}) {
+        ends_[size_t(index)] = end->fd;
+        end->fd = -1;
+    }
+}
 
+Process::~Process() {
+    if (started() && !finished_) {
+        ::kill(pid_, SIGKILL);
+        while (::waitpid(pid_, nullptr, 0) < 0 && errno == EINTR) {}
+    }
+    for (int& fd : ends_) closeEnd(fd);
+}
+
+void Process::pump(std::string_view input) {
     size_t written = 0;
-    if (input.empty()) in[0].reset();
     std::array<char, 65536> buffer;
-    std::string stopped; // why the program was killed
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(limits.timeoutSeconds);
-    while (out[0].fd >= 0 || err[0].fd >= 0) {
-        std::array<pollfd, 3> polled{pollfd{in[0].fd, POLLOUT, 0}, pollfd{out[0].fd, POLLIN, 0},
-                                     pollfd{err[0].fd, POLLIN, 0}};
+    while (stopped_.empty() && (input.empty() ? ends_[1] >= 0 || ends_[2] >= 0 : written < input.size())) {
+        if (!input.empty() && ends_[0] < 0) return; // the program stopped reading
+        std::array<pollfd, 3> polled{pollfd{input.empty() ? -1 : ends_[0], POLLOUT, 0}, pollfd{ends_[1], POLLIN, 0},
+                                     pollfd{ends_[2], POLLIN, 0}};
         const auto left =
-            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+            std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - std::chrono::steady_clock::now());
         if (left.count() <= 0) {
-            stopped = "'" + argv[0] + "' ran longer than " + std::to_string(limits.timeoutSeconds) + " s";
+            stopped_ = "'" + program_ + "' ran longer than " + std::to_string(limits_.timeoutSeconds) + " s";
             break;
         }
         if (::poll(polled.data(), polled.size(), static_cast<int>(left.count())) < 0) {
             if (errno == EINTR) continue;
-            stopped = std::string("cannot wait for '") + argv[0] + "': " + std::strerror(errno);
+            stopped_ = "cannot wait for '" + program_ + "': " + std::strerror(errno);
             break;
         }
-        if (in[0].fd >= 0 && polled[0].revents) {
-            const ssize_t n = ::send(in[0].fd, input.data() + written, input.size() - written, MSG_NOSIGNAL);
+        if (polled[0].fd >= 0 && polled[0].revents) {
+            const ssize_t n = ::send(ends_[0], input.data() + written, input.size() - written, MSG_NOSIGNAL);
             if (n > 0) written += static_cast<size_t>(n);
-            if ((n < 0 && errno != EAGAIN && errno != EINTR) || written == input.size()) in[0].reset();
+            if (n < 0 && errno != EAGAIN && errno != EINTR) closeEnd(ends_[0]);
         }
-        for (auto [index, text] : {std::pair{1, &result.out}, std::pair{2, &result.err}}) {
-            Descriptor& end = index == 1 ? out[0] : err[0];
-            if (end.fd < 0 || !polled[index].revents) continue;
-            const ssize_t n = ::read(end.fd, buffer.data(), buffer.size());
+        for (auto [index, text] : {std::pair{1, &result_.out}, std::pair{2, &result_.err}}) {
+            int& end = ends_[size_t(index)];
+            if (end < 0 || !polled[size_t(index)].revents) continue;
+            const ssize_t n = ::read(end, buffer.data(), buffer.size());
             if (n > 0) text->append(buffer.data(), static_cast<size_t>(n));
-            if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR)) end.reset();
+            if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR)) closeEnd(end);
         }
-        if (result.out.size() + result.err.size() > limits.maxOutputBytes) {
-            stopped = "'" + argv[0] + "' wrote more than " + std::to_string(limits.maxOutputBytes >> 20) + " MiB";
-            break;
-        }
+        if (result_.out.size() + result_.err.size() > limits_.maxOutputBytes)
+            stopped_ = "'" + program_ + "' wrote more than " + std::to_string(limits_.maxOutputBytes >> 20) + " MiB";
     }
-    if (!stopped.empty()) ::kill(pid, SIGKILL);
-    in[0].reset();
+    if (!stopped_.empty()) {
+        ::kill(pid_, SIGKILL);
+        closeEnd(ends_[0]);
+    }
+}
+
+bool Process::write(std::string_view data) {
+    if (!started() || finished_ || ends_[0] < 0) return false;
+    pump(data);
+    return ends_[0] >= 0 && stopped_.empty();
+}
+
+ProcessResult Process::finish() {
+    if (!started() || finished_) return result_;
+    closeEnd(ends_[0]);
+    pump({});
     int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
-    if (!stopped.empty())
-        result.failure = stopped;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {}
+    finished_ = true;
+    if (!stopped_.empty())
+        result_.failure = stopped_;
     else if (WIFEXITED(status))
-        result.exitCode = WEXITSTATUS(status);
-    else if (result.failure.empty())
-        result.failure = "'" + argv[0] + "' was stopped by signal " + std::to_string(WTERMSIG(status));
-    return result;
+        result_.exitCode = WEXITSTATUS(status);
+    else
+        result_.failure = "'" + program_ + "' was stopped by signal " + std::to_string(WTERMSIG(status));
+    return result_;
+}
+
+ProcessResult runProcess(const std::vector<std::string>& argv, std::string_view input, const ProcessLimits& limits) {
+    Process process(argv, limits);
+    if (!input.empty()) process.write(input);
+    return process.finish();
 }
 
 } // namespace lsys

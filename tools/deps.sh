@@ -9,6 +9,8 @@
 # it as cpfg reads them through vlabcpp (docs/DIALECTS.md).
 # pybind11, the Python headers, pytest and NumPy build and test the Python
 # module (tools/python, docs/PYTHON.md).
+# ffmpeg encodes plantfield --video (engine/image/video_encoder.h), a program
+# run, not a library linked.
 # Node.js and npm are in the default list (tests/export runs the Khronos
 # glTF-Validator with them); a machine that already has node and npm, from
 # Debian or elsewhere, keeps its own.
@@ -22,6 +24,7 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev xvfb xauth libtinygltf-dev gnuplot-nox
   clang-format
   pybind11-dev python3-dev python3-pytest python3-numpy
+  ffmpeg
 )
 command -v node >/dev/null && command -v npm >/dev/null || PACKAGES+=(nodejs npm)
 FUZZ_PACKAGES=(clang libclang-rt-14-dev)

@@ -1,6 +1,7 @@
-// runProcess (lsystem/subprocess.h), which runs the C preprocessor: input and
-// output larger than a pipe holds, programs that stop reading, write without
-// end or never finish, and programs that do not exist.
+// runProcess and Process (lsystem/subprocess.h), which run the C
+// preprocessor and the video encoder: input and output larger than a pipe
+// holds, input written piece by piece, programs that stop reading, write
+// without end or never finish, and programs that do not exist.
 
 #include <gtest/gtest.h>
 
@@ -54,6 +55,44 @@ TEST(Subprocess, AMissingProgramSaysSo) {
     EXPECT_FALSE(result.started);
     EXPECT_NE(result.failure.find("plantfield-no-such-program"), std::string::npos);
     EXPECT_NE(result.failure.find("No such file"), std::string::npos) << result.failure;
+}
+
+// Pieces of 1 MiB, each more than a pipe holds, while the program's output
+// (as large) is drained between them.
+TEST(Subprocess, InputWrittenPieceByPieceArrivesWhole) {
+    Process process({"cat"});
+    ASSERT_TRUE(process.started());
+    std::string expected;
+    for (char c : {'a', 'b', 'c'}) {
+        const std::string piece(size_t(1) << 20, c);
+        ASSERT_TRUE(process.write(piece));
+        expected += piece;
+    }
+    const ProcessResult result = process.finish();
+    EXPECT_EQ(result.exitCode, 0);
+    EXPECT_EQ(result.out, expected);
+}
+
+TEST(Subprocess, WritingToAProgramThatExitedFailsWithoutStoppingTheCaller) {
+    Process process({"sh", "-c", "echo refused >&2; exit 4"});
+    ASSERT_TRUE(process.started());
+    bool accepted = true;
+    for (int i = 0; i < 64 && accepted; ++i) accepted = process.write(std::string(size_t(1) << 20, 'x'));
+    EXPECT_FALSE(accepted);
+    const ProcessResult result = process.finish();
+    EXPECT_EQ(result.exitCode, 4);
+    EXPECT_EQ(result.err, "refused\n");
+}
+
+// The time limit counts from the start, writes included.
+TEST(Subprocess, AStreamedProgramPastItsTimeLimitIsStopped) {
+    ProcessLimits limits;
+    limits.timeoutSeconds = 1;
+    Process process({"sh", "-c", "sleep 30"}, limits);
+    EXPECT_FALSE(process.write(std::string(size_t(4) << 20, 'x')));
+    const ProcessResult result = process.finish();
+    EXPECT_EQ(result.exitCode, -1);
+    EXPECT_NE(result.failure.find("longer than 1 s"), std::string::npos) << result.failure;
 }
 
 } // namespace
