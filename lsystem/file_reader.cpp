@@ -1,10 +1,28 @@
 #include "lsystem/file_reader.h"
 
+#include <algorithm>
 #include <fstream>
 
 namespace lsys {
+namespace {
+
+thread_local ReadFileLog* innermostReadLog = nullptr;
+
+} // namespace
+
+ReadFileLog::ReadFileLog() : outer_(innermostReadLog) { innermostReadLog = this; }
+
+ReadFileLog::~ReadFileLog() { innermostReadLog = outer_; }
+
+void noteFileRead(const std::filesystem::path& path) {
+    const std::filesystem::path normal = path.lexically_normal();
+    for (ReadFileLog* log = innermostReadLog; log; log = log->outer_)
+        if (std::find(log->paths_.begin(), log->paths_.end(), normal) == log->paths_.end())
+            log->paths_.push_back(normal);
+}
 
 FileBytes readFileUpTo(const std::filesystem::path& path, size_t maxBytes) {
+    noteFileRead(path);
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) return {{}, FileProblem::Folder};
     const bool regular = std::filesystem::is_regular_file(path, ec);

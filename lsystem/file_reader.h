@@ -37,4 +37,30 @@ std::string fileProblemText(FileProblem problem, size_t maxBytes);
 std::optional<std::string> readTextFileOf(std::string_view kind, const std::filesystem::path& path, size_t maxBytes,
                                           std::vector<Diagnostic>& diagnostics);
 
+// The files a load tried to read, for reloading when one changes (plantfield
+// --watch): while a ReadFileLog is alive, every path readFileUpTo (or a reader
+// of its own calling noteFileRead) is asked for on the same thread is
+// appended to it, found or not (a missing file that appears is a change too).
+// Per thread, so that loads on other threads do not mix in; logs nest, each
+// seeing the reads of its lifetime. Reading through these two functions is
+// what lets the loaders report their files without each passing a list down.
+class ReadFileLog {
+public:
+    ReadFileLog();
+    ~ReadFileLog();
+    ReadFileLog(const ReadFileLog&) = delete;
+    ReadFileLog& operator=(const ReadFileLog&) = delete;
+
+    // In the order first read, each once.
+    const std::vector<std::filesystem::path>& paths() const { return paths_; }
+
+private:
+    friend void noteFileRead(const std::filesystem::path& path);
+    std::vector<std::filesystem::path> paths_;
+    ReadFileLog* outer_;
+};
+
+// Adds `path` to the thread's open ReadFileLogs (none: does nothing).
+void noteFileRead(const std::filesystem::path& path);
+
 } // namespace lsys

@@ -115,6 +115,11 @@ FieldRenderer::~FieldRenderer() {
     vkDeviceWaitIdle(ctx_.device);
 }
 
+void replaceFieldContent(std::unique_ptr<FieldRenderer>& renderer, FieldContent content) {
+    auto next = std::make_unique<FieldRenderer>(renderer->context(), std::move(content), renderer->settings());
+    renderer = std::move(next);
+}
+
 // Plant meshes and billboards in one vertex and one index pool, the
 // impostors baked from them, and the terrain.
 void FieldRenderer::uploadGeometry() {

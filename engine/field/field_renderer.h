@@ -19,6 +19,7 @@
 #include "engine/vk/target_pass.h"
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -137,6 +138,7 @@ public:
     // After the fence of a frame recorded with record().
     FieldFrameStats readStats() const;
 
+    const GpuContext& context() const { return ctx_; }
     const FieldContent& content() const { return content_; }
     const ClusterTree& clusterTree() const { return clusterTree_; } // empty without clusters
     const FieldRenderSettings& settings() const { return settings_; }
@@ -217,5 +219,14 @@ private:
     bool occlusion() const { return settings_.occlusionCulling; }
     void drawPlantsNaive(VkCommandBuffer cmd, bool bark, bool foliage) const;
 };
+
+// Replaces a live renderer by one drawing `content` with its settings
+// (plantfield --watch), between frames: call it where setView may be called.
+// The new renderer is built first, so when that throws the old one is kept
+// and still draws; the old one's destructor waits for the device before its
+// resources go. Both are held on the GPU for that moment. What the next frame
+// draws is what a fresh renderer of `content` draws (the view's firstFrame
+// set, as for any renderer's first frame).
+void replaceFieldContent(std::unique_ptr<FieldRenderer>& renderer, FieldContent content);
 
 } // namespace pf

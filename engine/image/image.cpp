@@ -1,5 +1,6 @@
 #include "engine/image/image.h"
 
+#include "lsystem/file_reader.h"
 #include "lsystem/output_file.h"
 
 #include <stb_image.h>
@@ -22,6 +23,7 @@ void writePng(const std::string& path, const RgbaImage& image) {
 }
 
 RgbaImage readPng(const std::string& path, const lsys::MemoryBudget& memory) {
+    lsys::noteFileRead(path); // stb opens it, not readFileUpTo: logged here for the loads that list their files
     int w = 0, h = 0, channels = 0;
     if (!stbi_info(path.c_str(), &w, &h, &channels))
         throw std::runtime_error("cannot read image '" + path + "': " + stbi_failure_reason());

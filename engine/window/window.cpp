@@ -47,6 +47,8 @@ VkSurfaceKHR Window::createSurface(VkInstance instance) {
 
 bool Window::shouldClose() const { return glfwWindowShouldClose(window_); }
 
+void Window::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+
 void Window::pollEvents() const { glfwPollEvents(); }
 
 void Window::waitEvents() const { glfwWaitEvents(); }

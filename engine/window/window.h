@@ -23,6 +23,7 @@ public:
 
     VkSurfaceKHR createSurface(VkInstance instance);
     bool shouldClose() const;
+    void requestClose(); // as the close button does: shouldClose() from now on
     void pollEvents() const;
     void waitEvents() const; // blocks until something happens, e.g. while minimised
     VkExtent2D framebufferExtent() const;

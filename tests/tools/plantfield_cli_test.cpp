@@ -124,6 +124,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInvocation{"NegativeTime", "--capture OUT --time -1", "--time"},
         BadInvocation{"FpsNotANumber", "--frames 2 --out-dir OUT --fps nan", "not a finite number"},
         BadInvocation{"RenderScaleWithoutWindow", "--capture OUT --render-scale 0.5", "--window"},
+        BadInvocation{"WatchWithoutWindow", "--capture OUT --watch", "--watch needs --window"},
+        BadInvocation{"WatchAlone", "--watch", "--watch needs --window"},
         BadInvocation{"RenderScaleTooSmall", "--window --render-scale 0.1", "--render-scale"},
         BadInvocation{"RenderScaleNotANumber", "--window --render-scale half", "--render-scale"},
         BadInvocation{"UnknownScene", "/nonexistent/scene.json --capture OUT", "does not exist"},
@@ -268,7 +270,7 @@ TEST(PlantfieldCli, HelpListsEveryOption) {
                              "--densify",     "--aa",           "--samples",       "--no-shadow-cache",
                              "--no-clusters", "--occlusion",    "--render-scale",  "--memory-budget",
                              "--plant",       "--plant-height", "--steps",         "--orbit",
-                             "--orbit-speed", "--define"})
+                             "--orbit-speed", "--define",       "--watch"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
 }
 

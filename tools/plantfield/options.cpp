@@ -139,6 +139,7 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                "  plantfield --capture frame.png --aa msaa            4x multisampling instead of FXAA\n"
                "  plantfield --export field.glb                       the default forest as glTF, no GPU needed\n"
                "  plantfield --plant data/plants/spruce.lsys --capture s.png   one plant, framed by an orbit camera\n"
+               "  plantfield --plant my_plant.lsys --window --watch   regrown in the window at each save\n"
                "Environment: PLANTFIELD_DEVICE picks the device by name, PLANTFIELD_VALIDATION=1 turns on\n"
                "the Khronos validation layer, PLANTFIELD_DATA_DIR replaces the data folder.");
     app.add_option("scene", o.scenePath, "Scene file (.json)")->default_str("data/scenes/default.json");
@@ -165,6 +166,10 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     app.add_option("--size", sizeText, "Image or window size as WIDTHxHEIGHT (1 to 16384 per side)")
         ->default_str("1280x720");
     app.add_flag("--window", o.window, "Open a window: camera-path playback and free flight");
+    app.add_flag("--watch", o.watch,
+                 "With --window: rebuild whenever the scene file, a plant file it uses (L-system, vlab object\n"
+                 "files) or the --plant file or folder changes on disk, keeping the camera; an error is shown in\n"
+                 "the window and on stderr while the last good build stays drawn (docs/PLANT_PREVIEW.md)");
     std::string renderScaleText;
     app.add_option("--render-scale", renderScaleText,
                    "With --window: render at this share of the window's size, 0.25 to 1, or auto (default): the\n"
@@ -312,6 +317,8 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     if (!o.gpuInstancing && o.exportPath.empty()) return fail("--no-gpu-instancing needs --export FILE.glb|.gltf");
     if (o.physicsCheck && (!o.capturePath.empty() || o.window || o.frames > 0 || o.stats))
         return fail("--physics-check is a mode of its own: no --capture, --frames, --stats or --window");
+    if (o.watch && !o.window)
+        return fail("--watch needs --window: it rebuilds what the window shows when its files change");
     if (o.capturePath.empty() && !o.window && !sequence && !o.stats && !o.physicsCheck && !exportsField(o))
         return fail("nothing to do: pass --capture FILE.png, --frames N --out-dir DIR, --stats, --physics-check, "
                     "--export FILE.glb or --window");

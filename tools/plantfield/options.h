@@ -70,6 +70,7 @@ struct PlantfieldOptions {
     std::string capturePath;
     ImageSize size{1280, 720};
     bool window = false;
+    bool watch = false;                        // --watch: the window rebuilds when the input's files change
     uint32_t frames = 0;                       // window: stop after this many; headless: capture this many into outDir
     double fps = 30.0;                         // scene seconds per frame of a --frames sequence: 1/fps
     std::string outDir;                        // --frames sequence: DIR/frame_0000.png …
