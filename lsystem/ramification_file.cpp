@@ -142,15 +142,15 @@ RamificationTree readTree(const nlohmann::json& root, const RamificationReader& 
     } else {
         tree.matrix = reader.matrix(root["p"]);
         writtenOrders = tree.matrix.orders();
-        if (root.contains("orders") &&
-            reader.integer(root["orders"], "/orders", 1, kMaxRamificationOrders) != tree.matrix.orders())
-            reader.fail("/orders",
-                        "'orders' must be the number of rows of 'p', " + std::to_string(tree.matrix.orders()));
         if (depth && *depth > tree.matrix.orders())
             reader.fail("/depth", "'depth' must be at most the " + std::to_string(tree.matrix.orders()) +
                                       " rows of 'p' (it removes rows; 'balance' makes any depth)");
         if (depth) tree.matrix.p.resize(*depth);
     }
+    if (root.contains("orders") &&
+        reader.integer(root["orders"], "/orders", 1, kMaxRamificationOrders) != writtenOrders)
+        reader.fail("/orders", "'orders' must be " + std::to_string(writtenOrders) +
+                                   ", the rows of 'p' (or 'depth' with 'balance')");
     if (root.contains("a")) {
         const nlohmann::json& a = root["a"];
         if (!a.is_array() || a.size() != writtenOrders)

@@ -76,7 +76,9 @@ GeneratedTree generateTree(const RamificationTree& spec) {
         out.module(symbols.width, growth.width * std::pow(length, widthExponent));
         out.module(symbols.draw, length);
         if (k == 1) continue;
-        if (growth.twist != 0.0) out.module(symbols.roll, random.uniform() * growth.twist * (depth + 1 - k));
+        // The roll is drawn whatever the twist, so that the twist changes angles, never the branching.
+        const double roll = random.uniform() * growth.twist * (depth + 1 - k);
+        if (roll != 0.0) out.module(symbols.roll, roll);
         const uint32_t j = pickColumn(matrix.p[k - 1], random);
         PendingBranch main{k - 1, growth.splitAngle}, side{k - 1, growth.splitAngle};
         if (j < k) {

@@ -86,7 +86,8 @@ TEST(RamificationFile, RefusesBadFilesAtTheirLineAndColumn) {
     EXPECT_EQ(refusal("{\"balance\": 130, \"depth\": 2}"), "1:13: 'balance' must be a number in [0, 100], not 130");
     EXPECT_EQ(refusal("{\"p\": [[1], [0, 1]], \"depth\": 3}"),
               "1:31: 'depth' must be at most the 2 rows of 'p' (it removes rows; 'balance' makes any depth)");
-    EXPECT_EQ(refusal("{\"p\": [[1]], \"orders\": 2}"), "1:24: 'orders' must be the number of rows of 'p', 1");
+    EXPECT_EQ(refusal("{\"p\": [[1]], \"orders\": 2}"),
+              "1:24: 'orders' must be 1, the rows of 'p' (or 'depth' with 'balance')");
     EXPECT_EQ(refusal("{\"balance\": 3, \"depth\": 65}"), "1:25: 'depth' must be a whole number in [1, 64], not 65");
     EXPECT_EQ(refusal("{\"p\": [[1]], \"max_branches\": 0}"),
               "1:30: 'max_branches' must be a whole number in [1, 1099511627776], not 0");

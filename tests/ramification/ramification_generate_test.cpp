@@ -115,6 +115,21 @@ TEST(RamificationGenerate, CompilingGeneratedTreesGivesTheMatrixBack) {
     EXPECT_GT(pooled.a[3], 300u);
 }
 
+// Twist (Tankard 2001, §3.3.1) is no part of the matrix: it rolls branches
+// about their parents and leaves the branching as it was.
+TEST(RamificationGenerate, TwistTurnsBranchesWithoutChangingTheBranching) {
+    RamificationTree twisted = treeOf(kFourOrders, 4);
+    twisted.growth.twist = 200.0;
+    const GeneratedTree plain = generateTree(treeOf(kFourOrders, 4));
+    const GeneratedTree turned = generateTree(twisted);
+    EXPECT_NE(toString(plain.word, plain.symbols), toString(turned.word, turned.symbols));
+    const PlantAsset a = plantOf(plain), b = plantOf(turned);
+    ASSERT_EQ(a.joints.size(), b.joints.size());
+    for (size_t i = 0; i < a.joints.size(); ++i) EXPECT_EQ(a.joints[i].parent, b.joints[i].parent);
+    EXPECT_EQ(compileRamification(a.joints).jointOrder, compileRamification(b.joints).jointOrder);
+    EXPECT_NE(a.bounds.max, b.bounds.max);
+}
+
 // The word is an L-system the parser reads back to the same plant.
 TEST(RamificationGenerate, TheLsystemTextDrawsTheSameTree) {
     const GeneratedTree generated = generateTree(treeOf(kFourOrders, 2));
