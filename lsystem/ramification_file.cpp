@@ -63,6 +63,25 @@ size_t recordValue(const std::string& text, size_t pos, const std::string& point
     return pos + 1;
 }
 
+// A .ram.json file nests 3 levels (the object, 'p', its rows); the walk
+// above recurses, so deeper text is refused before it is parsed.
+constexpr int kMaxJsonDepth = 8;
+
+// Where the text first opens more than kMaxJsonDepth arrays or objects, or npos.
+size_t tooDeepOffset(const std::string& text) {
+    int depth = 0;
+    for (size_t pos = 0; pos < text.size(); ++pos) {
+        const char c = text[pos];
+        if (c == '"')
+            pos = skipJsonString(text, pos) - 1;
+        else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth) return pos;
+        } else if (c == ']' || c == '}')
+            --depth;
+    }
+    return std::string::npos;
+}
+
 struct RamificationFailure {
     size_t offset;
     std::string message;
@@ -202,6 +221,11 @@ RamificationFile parseRamification(std::string text, const std::string& file) {
     RamificationFile result;
     result.source = std::move(text);
     const std::string& source = result.source;
+    if (const size_t deep = tooDeepOffset(source); deep != std::string::npos) {
+        result.diagnostics.push_back(
+            diagnosticAt(file, source, deep, "nests deeper than " + std::to_string(kMaxJsonDepth) + " levels"));
+        return result;
+    }
     nlohmann::json root;
     try {
         root = nlohmann::json::parse(source);

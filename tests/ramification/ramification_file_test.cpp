@@ -92,6 +92,8 @@ TEST(RamificationFile, RefusesBadFilesAtTheirLineAndColumn) {
     EXPECT_EQ(refusal("{\"p\": [[1]], \"max_branches\": 0}"),
               "1:30: 'max_branches' must be a whole number in [1, 1099511627776], not 0");
     EXPECT_EQ(refusal("[1]"), "1:1: a .ram.json file is one JSON object");
+    EXPECT_EQ(refusal("{\"p\": " + std::string(100000, '[')), "1:14: nests deeper than 8 levels");
+    EXPECT_EQ(refusal("{\"p\": [[1], [0.5, 0.5], \"]]]]\" [[[[[[[]]]]]]]}"), "1:38: nests deeper than 8 levels");
     const RamificationFile missing = readRamificationFile("/nonexistent/x.ram.json");
     ASSERT_EQ(missing.diagnostics.size(), 1u);
     EXPECT_NE(missing.diagnostics[0].message.find("x.ram.json"), std::string::npos);
