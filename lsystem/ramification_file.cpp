@@ -108,9 +108,12 @@ struct RamificationReader {
     }
 
     uint64_t integer(const nlohmann::json& value, const std::string& pointer, uint64_t min, uint64_t max) const {
-        if (!value.is_number_unsigned() || value.get<uint64_t>() < min || value.get<uint64_t>() > max)
-            fail(pointer, "'" + pointer.substr(1) + "' must be a whole number in [" + std::to_string(min) + ", " +
-                              std::to_string(max) + "], not " + value.dump());
+        if (!value.is_number_unsigned() || value.get<uint64_t>() < min || value.get<uint64_t>() > max) {
+            const std::string range = max == std::numeric_limits<uint64_t>::max()
+                                          ? " ≥ " + std::to_string(min)
+                                          : " in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+            fail(pointer, "'" + pointer.substr(1) + "' must be a whole number" + range + ", not " + value.dump());
+        }
         return value.get<uint64_t>();
     }
 
@@ -241,7 +244,7 @@ RamificationFile parseRamification(std::string text, const std::string& file) {
         return result;
     }
     JsonPositions positions;
-    recordValue(source, 0, "", positions);
+    recordValue(source, source.starts_with("\xEF\xBB\xBF") ? 3 : 0, "", positions); // after a UTF-8 BOM
     try {
         result.tree = readTree(root, RamificationReader{positions});
     } catch (const RamificationFailure& failure) {

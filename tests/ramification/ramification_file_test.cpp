@@ -92,6 +92,9 @@ TEST(RamificationFile, RefusesBadFilesAtTheirLineAndColumn) {
     EXPECT_EQ(refusal("{\"p\": [[1]], \"max_branches\": 0}"),
               "1:30: 'max_branches' must be a whole number in [1, 1099511627776], not 0");
     EXPECT_EQ(refusal("[1]"), "1:1: a .ram.json file is one JSON object");
+    EXPECT_EQ(refusal("{\"p\": [[1]], \"seed\": -1}"), "1:22: 'seed' must be a whole number ≥ 0, not -1");
+    EXPECT_EQ(refusal("\xEF\xBB\xBF{\"p\": [[1]], \"zz\": 1}"),
+              "1:17: unknown key 'zz' (docs/RAMIFICATION.md lists the keys)");
     EXPECT_EQ(refusal("{\"p\": " + std::string(100000, '[')), "1:14: nests deeper than 8 levels");
     EXPECT_EQ(refusal("{\"p\": [[1], [0.5, 0.5], \"]]]]\" [[[[[[[]]]]]]]}"), "1:38: nests deeper than 8 levels");
     const RamificationFile missing = readRamificationFile("/nonexistent/x.ram.json");
