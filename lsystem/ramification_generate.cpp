@@ -95,8 +95,8 @@ GeneratedTree generateTree(const RamificationTree& spec) {
     return tree;
 }
 
-PlantAsset plantOf(const GeneratedTree& tree) {
-    return interpretPlant(tree.word, tree.symbols, TurtleSettings{}, SurfaceLibrary{});
+PlantAsset plantOf(const GeneratedTree& tree, const MemoryBudget& memory) {
+    return interpretPlant(tree.word, tree.symbols, TurtleSettings{}, SurfaceLibrary{}, memory);
 }
 
 std::string lsystemText(const GeneratedTree& tree, const std::string& comment) {

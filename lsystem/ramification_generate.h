@@ -13,6 +13,7 @@
 #include <string>
 
 #include "lsystem/error.h"
+#include "lsystem/memory_budget.h"
 #include "lsystem/module_string.h"
 #include "lsystem/plant_asset.h"
 #include "lsystem/ramification.h"
@@ -64,8 +65,8 @@ struct GeneratedTree {
 // gives an empty word.
 GeneratedTree generateTree(const RamificationTree& tree);
 
-// The turtle's plant of the word (default turtle settings).
-PlantAsset plantOf(const GeneratedTree& tree);
+// The turtle's plant of the word (default turtle settings), within `memory`.
+PlantAsset plantOf(const GeneratedTree& tree, const MemoryBudget& memory = machineMemoryBudget());
 
 // An .lsys file that draws the tree: `comment` as // lines, then the word
 // as the axiom of a 0-step derivation.

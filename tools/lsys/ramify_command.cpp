@@ -103,7 +103,7 @@ int generate(const RamifyArguments& arguments, lsys::RamificationTree tree) {
                                                              std::to_string(tree.seed));
             out.commit();
         } else {
-            const lsys::PlantAsset plant = lsys::plantOf(generated);
+            const lsys::PlantAsset plant = lsys::plantOf(generated, arguments.memory);
             lsys::ExportOptions options;
             options.memory = arguments.memory;
             lsys::exportPlant(plant, arguments.output, options);
