@@ -36,6 +36,7 @@
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"
 #include "lsystem/vlab/object.h"
+#include "tools/lsys/ramify_command.h"
 #include "tools/memory_budget_option.h"
 
 namespace {
@@ -507,6 +508,8 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     addDrawnFormOptions(*exportSubcommand, arguments);
 
+    const tools::RamifyCommand ramify = tools::addRamifyCommand(app);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -516,6 +519,7 @@ int main(int argc, char** argv) {
         if (deriveCommand->parsed()) return derive(arguments);
         if (instanceCommand->parsed()) return instance(arguments);
         if (exportSubcommand->parsed()) return exportCommand(arguments);
+        if (ramify.command->parsed()) return ramify.run();
         return check(arguments);
     } catch (const std::bad_alloc&) { // a stage the memory budget does not count
         std::cerr << "lsys: error: out of memory (--memory-budget, -n fewer steps or a smaller plant)\n";

@@ -1,0 +1,75 @@
+#pragma once
+// Trees generated from a ramification matrix (Tankard 2001, §3.3 and §4.2.2):
+// a branch of order k ≥ 2 picks column j of row k; j < k gives children of
+// orders k (the axis going on) and j, j = k two children of order k − 1; a
+// branch of order 1 is a tip. The result is a bracketed word of turtle
+// commands (!, F, /, +, -, [, ]) with one F per branch, so the turtle makes
+// it a PlantAsset like any L-system's (joints, export, physics), and
+// compiling that plant (lsystem/ramification.h) counts exactly the choices
+// made here.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "lsystem/error.h"
+#include "lsystem/memory_budget.h"
+#include "lsystem/module_string.h"
+#include "lsystem/plant_asset.h"
+#include "lsystem/ramification.h"
+#include "lsystem/symbols.h"
+
+namespace lsys {
+
+// What a branch's order decides besides its children (Tankard 2001, §3.3.3,
+// with the functions of §4.2.2.2 after Viennot et al. 1989). Lengths and
+// widths in the turtle's units; angles in degrees.
+struct RamificationGrowth {
+    double length = 0.0625; // c1: a branch of order k is L(k) = c1 k long
+    double width = 0.5;     // c2: and W(k) = c2 L(k)^e wide (a diameter)
+    // e; none: Tankard's d_t / 2, d_t the tree's depth (its orders).
+    std::optional<double> widthExponent;
+    // Children of equal order both leave the axis at this angle, on opposite sides.
+    double splitAngle = 30.0;
+    // Children of orders k and i < k: the order-k one turns c_m i / (k − 1),
+    // the order-i one c_s (k − i) / (k − 1), on the other side.
+    double mainAngle = 20.0;
+    double sideAngle = 50.0;
+    // The twist slider t (§3.3.1, §4.2.1.1): each branch point of order k
+    // rolls its children's plane about the axis by r t (d_t + 1 − k), r
+    // uniform in [0, 1), so branches near the tips twist more.
+    double twist = 0.0;
+};
+
+// A tree type: what a .ram.json file holds (lsystem/ramification_file.h).
+struct RamificationTree {
+    RamificationMatrix matrix; // as given; generation guards it (guardedMatrix)
+    RamificationGrowth growth;
+    uint64_t seed = 0;
+    uint64_t maxBranches = 1'000'000; // generating more is an error
+};
+
+// Generating would pass RamificationTree::maxBranches.
+struct RamificationBudgetError : DerivationError {
+    using DerivationError::DerivationError;
+};
+
+struct GeneratedTree {
+    SymbolTable symbols;
+    ModuleString word;
+    uint64_t branches = 0; // = F modules
+};
+
+// The tree of `tree.seed`: the same seed, the same word. Throws
+// RamificationBudgetError past tree.maxBranches. A matrix without rows
+// gives an empty word.
+GeneratedTree generateTree(const RamificationTree& tree);
+
+// The turtle's plant of the word (default turtle settings), within `memory`.
+PlantAsset plantOf(const GeneratedTree& tree, const MemoryBudget& memory = machineMemoryBudget());
+
+// An .lsys file that draws the tree: `comment` as // lines, then the word
+// as the axiom of a 0-step derivation.
+std::string lsystemText(const GeneratedTree& tree, const std::string& comment);
+
+} // namespace lsys

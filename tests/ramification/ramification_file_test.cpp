@@ -1,0 +1,119 @@
+// .ram.json files, Tankard's balance slider and the generation guards.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "lsystem/ramification_file.h"
+#include "ramification_test_support.h"
+
+namespace lsys {
+namespace {
+
+// The first diagnostic of a file that must be refused, as "line:column: message".
+std::string refusal(const std::string& text) {
+    const RamificationFile file = parseRamification(text, "t.ram.json");
+    EXPECT_FALSE(file.tree) << text;
+    if (file.diagnostics.empty()) return "";
+    const Diagnostic& d = file.diagnostics[0];
+    return std::to_string(d.line) + ":" + std::to_string(d.column) + ": " + d.message;
+}
+
+RamificationTree accepted(const std::string& text) {
+    const RamificationFile file = parseRamification(text, "t.ram.json");
+    EXPECT_TRUE(file.tree) << formatDiagnostics(file.diagnostics, file.source);
+    return file.tree.value_or(RamificationTree{});
+}
+
+// Tankard 2001, §4.2.1.2: y = 1 + cos(π (j / i − b / 100)), rows normalised.
+TEST(RamificationBalance, RowsFollowTheSinusoidNormalised) {
+    const RamificationMatrix matrix = balancedMatrix(3, 50.0);
+    EXPECT_EQ(matrix.p[0], (std::vector<double>{1.0}));
+    EXPECT_NEAR(matrix.p[1][0], 2.0 / 3.0, 1e-12); // y = 2 and 1
+    EXPECT_NEAR(matrix.p[1][1], 1.0 / 3.0, 1e-12);
+    const double y = 1.0 + std::cos(std::numbers::pi / 6.0); // j = 1 and 2 of row 3; j = 3 gives 1
+    EXPECT_NEAR(matrix.p[2][0], y / (2.0 * y + 1.0), 1e-12);
+    EXPECT_NEAR(matrix.p[2][1], y / (2.0 * y + 1.0), 1e-12);
+    EXPECT_NEAR(matrix.p[2][2], 1.0 / (2.0 * y + 1.0), 1e-12);
+    // Balance 100 favours the right of each row (a perfect tree), 0 the left (a trunk).
+    EXPECT_GT(balancedMatrix(5, 100.0).p[4][4], balancedMatrix(5, 100.0).p[4][0]);
+    EXPECT_EQ(balancedMatrix(5, 0.0).p[4][4], 0.0);
+}
+
+TEST(RamificationGuards, ZeroRowsSplitAndEveryAxisEnds) {
+    RamificationMatrix matrix;
+    matrix.p = {{7.0}, {0.0, 0.0}, {2.0, 2.0, 0.0}, {1.0, 1.0, 1.0, 1.0}};
+    const RamificationMatrix guarded = guardedMatrix(matrix);
+    EXPECT_EQ(guarded.p[0], (std::vector<double>{1.0}));
+    EXPECT_EQ(guarded.p[1], (std::vector<double>{0.0, 1.0}));
+    const double side = (1.0 - kMinSplitProbability) / 2.0;
+    EXPECT_NEAR(guarded.p[2][0], side, 1e-12);
+    EXPECT_NEAR(guarded.p[2][1], side, 1e-12);
+    EXPECT_NEAR(guarded.p[2][2], kMinSplitProbability, 1e-12);
+    for (double value : guarded.p[3]) EXPECT_NEAR(value, 0.25, 1e-12);
+}
+
+TEST(RamificationFile, ReadsAMatrixAndItsGrowth) {
+    const RamificationTree tree = accepted(R"({"orders": 3, "a": [8, 5, 2], "p": [[1], [0.6, 0.4], [0.5, 0, 0.5]],
+        "twist": 90, "length": 0.5, "width": 0.25, "width_exponent": 1, "split_angle": 35, "main_angle": 10,
+        "side_angle": 60, "seed": 7, "max_branches": 1000, "description": "Tankard's Figure 3"})");
+    EXPECT_EQ(tree.matrix.p, (std::vector<std::vector<double>>{{1}, {0.6, 0.4}, {0.5, 0, 0.5}}));
+    EXPECT_EQ(tree.growth.twist, 90.0);
+    EXPECT_EQ(tree.growth.length, 0.5);
+    EXPECT_EQ(tree.growth.width, 0.25);
+    EXPECT_EQ(tree.growth.widthExponent, 1.0);
+    EXPECT_EQ(tree.growth.splitAngle, 35.0);
+    EXPECT_EQ(tree.growth.mainAngle, 10.0);
+    EXPECT_EQ(tree.growth.sideAngle, 60.0);
+    EXPECT_EQ(tree.seed, 7u);
+    EXPECT_EQ(tree.maxBranches, 1000u);
+    // depth removes rows; balance makes a matrix of any depth.
+    EXPECT_EQ(accepted(R"({"p": [[1], [0.6, 0.4], [0.5, 0, 0.5]], "depth": 2})").matrix.orders(), 2u);
+    EXPECT_EQ(accepted(R"({"balance": 50, "depth": 3})").matrix.p, balancedMatrix(3, 50.0).p);
+}
+
+TEST(RamificationFile, RefusesBadFilesAtTheirLineAndColumn) {
+    EXPECT_EQ(refusal("{\n  \"p\": [[1], [0.5, 0.5]]\n  \"twist\": 3\n}"),
+              "3:9: not JSON: syntax error while parsing object - unexpected string literal; expected '}'");
+    EXPECT_EQ(refusal("{\n  \"p\": [[1], [0.5, 0.5]],\n  \"twst\": 3\n}"),
+              "3:3: unknown key 'twst' (docs/RAMIFICATION.md lists the keys)");
+    EXPECT_EQ(refusal("{\"p\": [[1],\n      [0.5, -1]]}"), "2:13: p_22 must be a number ≥ 0, not -1");
+    EXPECT_EQ(refusal("{\"p\": [[1], [0.5]]}"), "1:13: row 2 of 'p' must hold 2 numbers (p_21 ... p_22)");
+    EXPECT_EQ(refusal("{\"p\": [[1]], \"balance\": 3, \"depth\": 2}"),
+              "1:1: give either 'p' (the matrix) or 'balance' with 'depth'");
+    EXPECT_EQ(refusal("{\"balance\": 3}"), "1:13: 'balance' needs 'depth', the number of orders");
+    EXPECT_EQ(refusal("{\"balance\": 130, \"depth\": 2}"), "1:13: 'balance' must be a number in [0, 100], not 130");
+    EXPECT_EQ(refusal("{\"p\": [[1], [0, 1]], \"depth\": 3}"),
+              "1:31: 'depth' must be at most the 2 rows of 'p' (it removes rows; 'balance' makes any depth)");
+    EXPECT_EQ(refusal("{\"p\": [[1]], \"orders\": 2}"),
+              "1:24: 'orders' must be 1, the rows of 'p' (or 'depth' with 'balance')");
+    EXPECT_EQ(refusal("{\"balance\": 3, \"depth\": 65}"), "1:25: 'depth' must be a whole number in [1, 64], not 65");
+    EXPECT_EQ(refusal("{\"p\": [[1]], \"max_branches\": 0}"),
+              "1:30: 'max_branches' must be a whole number in [1, 1099511627776], not 0");
+    EXPECT_EQ(refusal("[1]"), "1:1: a .ram.json file is one JSON object");
+    EXPECT_EQ(refusal("{\"p\": [[1]], \"seed\": -1}"), "1:22: 'seed' must be a whole number ≥ 0, not -1");
+    EXPECT_EQ(refusal("\xEF\xBB\xBF{\"p\": [[1]], \"zz\": 1}"),
+              "1:17: unknown key 'zz' (docs/RAMIFICATION.md lists the keys)");
+    EXPECT_EQ(refusal("{\"p\": " + std::string(100000, '[')), "1:14: nests deeper than 8 levels");
+    EXPECT_EQ(refusal("{\"p\": [[1], [0.5, 0.5], \"]]]]\" [[[[[[[]]]]]]]}"), "1:38: nests deeper than 8 levels");
+    const RamificationFile missing = readRamificationFile("/nonexistent/x.ram.json");
+    ASSERT_EQ(missing.diagnostics.size(), 1u);
+    EXPECT_NE(missing.diagnostics[0].message.find("x.ram.json"), std::string::npos);
+}
+
+// The species of data/ramified/ are valid files.
+TEST(RamificationFile, DataSpeciesAreValid) {
+    size_t species = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(test::dataPath("ramified"))) {
+        if (!isRamificationFile(entry.path())) continue;
+        SCOPED_TRACE(entry.path().string());
+        const RamificationFile file = readRamificationFile(entry.path());
+        EXPECT_TRUE(file.tree) << formatDiagnostics(file.diagnostics, file.source);
+        ++species;
+    }
+    EXPECT_GE(species, 3u);
+}
+
+} // namespace
+} // namespace lsys
