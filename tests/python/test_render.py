@@ -130,3 +130,16 @@ def test_bad_arguments_raise(arguments, message):
 def test_missing_device_raises():
     with pytest.raises(RuntimeError, match="no such gpu"):
         plantfield.render(DATA / "scenes" / "test_small.json", size=SIZE, device="no such gpu")
+
+
+def test_given_camera_replaces_the_path():
+    scene = DATA / "scenes" / "test_small.json"
+    above = ((0.0, 40.0, 0.1), (0.0, 0.0, 0.0), 50.0)
+    with plantfield.Renderer(scene, size=(64, 36), validation=True) as renderer:
+        on_path = renderer.render(0.0)
+        from_above = renderer.render(0.0, camera=above)
+    assert not numpy.array_equal(on_path, from_above)
+    assert numpy.array_equal(plantfield.render(scene, size=(64, 36), camera=above), from_above)
+    for bad in [((0, 1, 2),), ((0, 1, 2), (0, 1, 2)), ((0, 1), (0, 0, 0)), ((0, 9, 9), (0, 0, 0), 180.0), "camera"]:
+        with pytest.raises(ValueError, match="camera must be"):
+            plantfield.render(scene, size=(64, 36), camera=bad)

@@ -12,6 +12,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -90,6 +91,40 @@ void writePng(const std::filesystem::path& path,
     pf::writePng(path.string(), image);
 }
 
+// camera=(position, target) or (position, target, fov_degrees), in metres
+// and degrees, as a scene file's camera keyframes give them (docs/SCENE_FORMAT.md).
+std::optional<pf::Camera> cameraArgument(const py::object& camera) {
+    if (camera.is_none()) return std::nullopt;
+    const char* expected = "camera must be (position, target) or (position, target, fov_degrees) with position "
+                           "and target (x, y, z) apart and fov_degrees between 0 and 180";
+    std::vector<py::object> parts;
+    std::array<float, 3> position{}, target{};
+    try {
+        parts = camera.cast<std::vector<py::object>>();
+        if (parts.size() != 2 && parts.size() != 3) throw py::value_error(expected);
+        position = parts[0].cast<std::array<float, 3>>();
+        target = parts[1].cast<std::array<float, 3>>();
+    } catch (const py::cast_error&) {
+        throw py::value_error(expected);
+    }
+    pf::Camera c;
+    c.position = {position[0], position[1], position[2]};
+    c.target = {target[0], target[1], target[2]};
+    if (parts.size() == 3) c.fovYDegrees = parts[2].cast<float>();
+    const auto finite3 = [](const glm::vec3& v) { return !glm::any(glm::isnan(v)) && !glm::any(glm::isinf(v)); };
+    const bool finite = finite3(c.position) && finite3(c.target);
+    if (!finite || c.position == c.target || !(c.fovYDegrees > 0.0f && c.fovYDegrees < 180.0f))
+        throw py::value_error(expected);
+    return c;
+}
+
+// The field's notes and its species' L-system warnings, which plantfield
+// prints on stderr, as Python warnings.
+void warnAbout(const pf::FieldContent& content) {
+    for (const std::string& text : {content.note, content.models.warnings})
+        if (!text.empty() && PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 pf::SceneOverrides sceneOverrides(const RenderArguments& a) {
     pf::SceneOverrides overrides;
     overrides.seed = a.seed;
@@ -149,17 +184,23 @@ public:
         : scene_(scene ? scene->string() : defaultScenePath()) {
         const pf::SceneOverrides overrides = sceneOverrides(arguments);
         pf::OfflineSettings settings = offlineSettings(arguments);
+        pf::FieldContent content;
         {
             py::gil_scoped_release release;
-            pf::FieldContent content = pf::buildFieldContent(pf::loadScene(scene_, overrides));
+            content = pf::buildFieldContent(pf::loadScene(scene_, overrides));
+        }
+        warnAbout(content);
+        {
+            py::gil_scoped_release release;
             renderer_ = std::make_unique<pf::OfflineRenderer>(std::move(content), std::move(settings));
         }
         checkValidation();
     }
 
-    py::array_t<uint8_t> render(double time) {
+    py::array_t<uint8_t> render(double time, const py::object& camera) {
         checkTime("time", time);
-        return image([&](pf::OfflineRenderer& r) { return r.render(time); });
+        const std::optional<pf::Camera> view = cameraArgument(camera);
+        return image([&](pf::OfflineRenderer& r) { return r.render(time, view); });
     }
 
     py::array_t<uint8_t> frame(uint32_t index) {
@@ -285,8 +326,9 @@ void bindRender(py::module_& m) {
              py::arg("start") = 0.0, py::arg("fps") = 30.0, py::arg("seed") = py::none(), py::arg("wind") = py::none(),
              py::arg("antialiasing") = "fxaa", py::arg("samples") = py::none(), py::arg("shadows") = true,
              py::arg("lod") = py::none(), py::arg("validation") = false, py::arg("device") = py::none())
-        .def("render", &PyRenderer::render, py::arg("time"),
-             "The frame at scene time `time` (not before the last frame's) as a (height, width, 4) uint8 RGBA array")
+        .def("render", &PyRenderer::render, py::arg("time"), py::arg("camera") = py::none(),
+             "The frame at scene time `time` (not before the last frame's) as a (height, width, 4) uint8 RGBA array; "
+             "camera=(position, target[, fov_degrees]) in place of the scene's camera path")
         .def("frame", &PyRenderer::frame, py::arg("index"),
              "Frame `index` of the sequence at start + index / fps, as plantfield --frames writes frame_INDEX.png; "
              "frames go forward")
@@ -305,11 +347,13 @@ void bindRender(py::module_& m) {
         [arguments](std::optional<std::filesystem::path> scene, std::tuple<int64_t, int64_t> size, double time,
                     std::optional<uint32_t> seed, std::optional<std::variant<float, std::tuple<float, float>>> wind,
                     std::string antialiasing, std::optional<uint32_t> samples, bool shadows,
-                    std::optional<uint32_t> lod, bool validation, std::optional<std::string> device) {
+                    std::optional<uint32_t> lod, bool validation, std::optional<std::string> device,
+                    const py::object& camera) {
             checkTime("time", time); // before the field is built
+            cameraArgument(camera);
             PyRenderer renderer(
                 scene, arguments(size, seed, wind, std::move(antialiasing), samples, shadows, lod, validation, device));
-            py::array_t<uint8_t> image = renderer.render(time);
+            py::array_t<uint8_t> image = renderer.render(time, camera);
             renderer.close();
             return image;
         },
@@ -317,8 +361,10 @@ void bindRender(py::module_& m) {
         py::arg("time") = 0.0, py::arg("seed") = py::none(), py::arg("wind") = py::none(),
         py::arg("antialiasing") = "fxaa", py::arg("samples") = py::none(), py::arg("shadows") = true,
         py::arg("lod") = py::none(), py::arg("validation") = false, py::arg("device") = py::none(),
+        py::arg("camera") = py::none(),
         "One frame of the scene (default: the default scene) at scene time `time`, as plantfield --capture "
-        "renders it: a (height, width, 4) uint8 RGBA array");
+        "renders it: a (height, width, 4) uint8 RGBA array; camera=(position, target[, fov_degrees]) in place of "
+        "the scene's camera path");
 
     m.def("read_png", &readPng, py::arg("path"), "A PNG file as a (height, width, 4) uint8 RGBA array");
     m.def("write_png", &writePng, py::arg("path"), py::arg("image"),
