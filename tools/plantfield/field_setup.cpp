@@ -18,12 +18,7 @@ const std::string& inputName(const PlantfieldOptions& o) { return o.plantPath.em
 
 Scene loadSceneOf(const PlantfieldOptions& o) {
     if (!o.plantPath.empty()) return previewScene(o);
-    Scene scene = loadScene(o.scenePath);
-    if (o.seed) scene.seed = *o.seed;
-    if (o.windSpeed) scene.wind.speed = *o.windSpeed;
-    if (o.windDirectionDegrees) scene.wind.directionDegrees = *o.windDirectionDegrees;
-    if (o.jointBudget) scene.physics.jointBudget = *o.jointBudget;
-    return scene;
+    return loadScene(o.scenePath, SceneOverrides{o.seed, o.windSpeed, o.windDirectionDegrees, o.jointBudget});
 }
 
 FieldContent loadFieldContent(const PlantfieldOptions& o, std::optional<PreviewOrbit>* orbit) {
@@ -72,13 +67,19 @@ FieldRenderSettings renderSettings(const PlantfieldOptions& o) {
 
 FieldView pathView(const PlantfieldOptions& o, const Scene& scene, double t, double dt, bool firstFrame,
                    const std::optional<PreviewOrbit>& orbit) {
-    FieldView view;
-    view.camera = orbit ? orbitCamera(*orbit, t) : cameraAt(scene.camera, t);
-    view.time = float(t);
-    view.deltaTime = float(dt);
-    view.firstFrame = firstFrame;
-    view.forcedLod = o.forcedLod;
-    return view;
+    return frameView(orbit ? orbitCamera(*orbit, t) : cameraAt(scene.camera, t), t, dt, firstFrame, o.forcedLod);
+}
+
+OfflineSettings offlineSettings(const PlantfieldOptions& o, const std::optional<PreviewOrbit>& orbit) {
+    OfflineSettings s;
+    s.size = {o.size.width, o.size.height};
+    s.render = renderSettings(o);
+    s.gpu = gpuOptions(o);
+    s.forcedLod = o.forcedLod;
+    if (orbit) s.camera = [orbit = *orbit](double t) { return orbitCamera(orbit, t); };
+    s.start = o.time;
+    s.fps = o.fps;
+    return s;
 }
 
 } // namespace pf

@@ -7,6 +7,8 @@
 #include "plant_preview.h"
 
 #include "engine/field/field_renderer.h"
+#include "engine/offline/offline_renderer.h"
+#include "engine/offline/scene_overrides.h"
 #include "engine/vk/device.h"
 
 #include <memory>
@@ -33,5 +35,9 @@ FieldRenderSettings renderSettings(const PlantfieldOptions& o);
 // preview's orbit when one is given.
 FieldView pathView(const PlantfieldOptions& o, const Scene& scene, double t, double dt, bool firstFrame,
                    const std::optional<PreviewOrbit>& orbit = std::nullopt);
+
+// What a headless run renders with: the size, renderSettings, gpuOptions, the
+// --time and --fps of its frames, and the camera on the path or the orbit.
+OfflineSettings offlineSettings(const PlantfieldOptions& o, const std::optional<PreviewOrbit>& orbit);
 
 } // namespace pf

@@ -1,7 +1,7 @@
 // The Python module `plantfield` (docs/PYTHON.md): load or parse a plant in
 // any dialect, derive it, read its instance-graph statistics and export it,
 // as the lsys tool does (tools/lsys/main.cpp), with diagnostics raised as
-// plantfield.LsystemError. Vulkan-free: only the L-system library.
+// plantfield.LsystemError; and render scenes headless (render_bindings.h).
 
 #include <filesystem>
 #include <optional>
@@ -14,6 +14,8 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <plantfield_version.h>
+
+#include "render_bindings.h"
 
 #include "lsystem/bgrammar.h"
 #include "lsystem/dialects/dialect.h"
@@ -198,7 +200,8 @@ const size_t kMaxModules = lsys::DeriveOptions{}.maxModules; // the library's de
 } // namespace
 
 PYBIND11_MODULE(plantfield, m) {
-    m.doc() = "L-system plants of the plantfield project: load, derive, instance-graph statistics, export";
+    m.doc() = "L-system plants of the plantfield project: load, derive, instance-graph statistics, export; "
+              "frames of scenes rendered headless";
     m.attr("__version__") = pf::kPlantfieldVersion;
 
     // Exceptions: parse errors carry their diagnostics; derivation errors the
@@ -255,4 +258,6 @@ PYBIND11_MODULE(plantfield, m) {
     m.def("export", &exportPlant, py::arg("grammar"), py::arg("path"), py::arg("steps") = py::none(),
           py::arg("seed") = py::none(), py::arg("instanced") = false, py::arg("sides") = 8, py::arg("skeleton") = true,
           py::arg("max_modules") = kMaxModules, "Writes the plant as .glb, .gltf or .obj, as `lsys export` does");
+
+    bindRender(m);
 }
