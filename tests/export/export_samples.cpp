@@ -38,12 +38,15 @@ void exportBothGeometries(const fs::path& prefix, Write write) {
     }
 }
 
+// PREFIX_{frusta,tubes,drawn}.{gltf,glb}: the turtle's geometries and the drawn form.
 void exportFlat(const lsys::PlantAsset& plant, const fs::path& prefix) {
     exportBothGeometries(prefix, [&](const fs::path& path, lsys::SegmentGeometry segments) {
         lsys::ExportOptions options;
+        options.geometry = lsys::ExportGeometry::Turtle;
         options.segments = segments;
         lsys::exportPlant(plant, path, options);
     });
+    for (const char* extension : {".gltf", ".glb"}) lsys::exportPlant(plant, prefix.string() + "_drawn" + extension);
 }
 
 } // namespace

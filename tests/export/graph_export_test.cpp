@@ -64,7 +64,8 @@ void expectSampledCornersIn(const std::vector<glm::vec3>& from, const std::vecto
 void expectSameDrawingAsFlat(const lsys::InstanceGraph& graph, const lsys::SurfaceLibrary& surfaces,
                              const fs::path& dir, const lsys::GraphExportOptions& options = {}) {
     const lsys::GraphExportSummary summary = lsys::exportInstanceGraph(graph, surfaces, dir / "graph.glb", options);
-    lsys::ExportOptions flatOptions;
+    lsys::ExportOptions flatOptions; // the turtle's geometry, as the instanced form writes
+    flatOptions.geometry = lsys::ExportGeometry::Turtle;
     flatOptions.segments = options.segments;
     flatOptions.detail = options.detail;
     const lsys::PlantAsset plant = lsys::flatten(graph, surfaces);
@@ -133,7 +134,8 @@ TEST_F(GraphExport, GeneralizedCylindersWithoutCapsDrawTheSameTriangles) {
     options.detail.segmentCaps = false;
     const lsys::InstanceGraph graph = plantfield::test::sampleGraph();
     lsys::exportInstanceGraph(graph, lsys::SurfaceLibrary{}, dir / "graph.gltf", options);
-    lsys::ExportOptions flatOptions;
+    lsys::ExportOptions flatOptions; // the turtle's geometry, as the instanced form writes
+    flatOptions.geometry = lsys::ExportGeometry::Turtle;
     flatOptions.segments = options.segments;
     flatOptions.detail = options.detail;
     lsys::exportPlant(lsys::flatten(graph), dir / "flat.gltf", flatOptions);
