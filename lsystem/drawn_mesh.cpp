@@ -62,10 +62,18 @@ bool isFoliageSegment(const PlantAsset& asset, const Primitive& primitive) {
     return primitive.kind == PrimitiveKind::Segment && asset.materials.at(primitive.material).twoSided;
 }
 
-float largestExtent(const PlantAsset& asset) {
-    if (asset.bounds.empty()) return 1.0f;
-    const glm::vec3 size = asset.bounds.max - asset.bounds.min;
+float largestExtent(const Bounds& bounds) {
+    if (bounds.empty()) return 1.0f;
+    const glm::vec3 size = bounds.max - bounds.min;
     return std::max({size.x, size.y, size.z, 1e-3f});
+}
+
+float trunkRadiusOf(const PlantAsset& asset) {
+    float radius = 0.0f;
+    for (const Primitive& p : asset.primitives)
+        if (p.kind == PrimitiveKind::Segment && !isFoliageSegment(asset, p))
+            radius = std::max({radius, p.startRadius, p.endRadius});
+    return radius;
 }
 
 // Ring sides of a bark tube from its thickness relative to the trunk: the
@@ -167,7 +175,8 @@ void bakeLeafCard(DrawnMesh& out, const Primitive& surface, const SurfaceExtent&
     }
     const LeafOutline& outline = leafOutline();
     const uint32_t base = uint32_t(out.vertices.size());
-    for (const glm::vec2& uv : outline.uvs) out.vertices.push_back(vertex(onCard(origin - 0.5f * across, across, along, uv), uv));
+    for (const glm::vec2& uv : outline.uvs)
+        out.vertices.push_back(vertex(onCard(origin - 0.5f * across, across, along, uv), uv));
     for (uint32_t index : outline.indices) out.indices.push_back(base + index);
 }
 
@@ -200,8 +209,9 @@ void bakeFoliageChain(DrawnMesh& out, const PlantAsset& asset, const SegmentChai
         const Primitive& first = asset.primitives[chain.primitives[start]];
         const Primitive& last = asset.primitives[chain.primitives[end]];
         bakeRibbon(out, first.frame, first.frame.position, tipOf(last),
-                   widen * std::max(2.0f * first.startRadius, minWidth), widen * std::max(2.0f * last.endRadius, minWidth),
-                   first.material, jointOf(first.joint), jointOf(last.joint));
+                   widen * std::max(2.0f * first.startRadius, minWidth),
+                   widen * std::max(2.0f * last.endRadius, minWidth), first.material, jointOf(first.joint),
+                   jointOf(last.joint));
     }
 }
 
@@ -297,11 +307,12 @@ LeafOutline buildLeafOutline() {
 } // namespace
 
 DrawnScale drawnScaleOf(const PlantAsset& asset) {
-    DrawnScale scale;
-    for (const Primitive& p : asset.primitives)
-        if (p.kind == PrimitiveKind::Segment && !isFoliageSegment(asset, p))
-            scale.trunkRadius = std::max({scale.trunkRadius, p.startRadius, p.endRadius});
-    scale.minRibbonWidth = kMinRibbonWidth * largestExtent(asset);
+    return {trunkRadiusOf(asset), kMinRibbonWidth * largestExtent(asset.bounds)};
+}
+
+DrawnScale drawnScaleOf(const std::vector<PlantAsset>& parts, const Bounds& bounds) {
+    DrawnScale scale{0.0f, kMinRibbonWidth * largestExtent(bounds)};
+    for (const PlantAsset& part : parts) scale.trunkRadius = std::max(scale.trunkRadius, trunkRadiusOf(part));
     return scale;
 }
 
@@ -343,6 +354,8 @@ const LeafOutline& leafOutline() {
     static const LeafOutline outline = buildLeafOutline();
     return outline;
 }
+
+MeshSize leafOutlineSize() { return {leafOutline().uvs.size(), leafOutline().indices.size()}; }
 
 void appendLeafOutline(TriangleMesh& mesh, glm::vec3 origin, glm::vec3 across, glm::vec3 along, glm::vec3 normal) {
     const LeafOutline& outline = leafOutline();

@@ -76,10 +76,12 @@ struct DrawnScale {
     float minRibbonWidth = 0.0f; // foliage ribbons are at least this wide
 };
 DrawnScale drawnScaleOf(const PlantAsset& asset);
+// Of a plant given in parts (an InstanceGraph's objects' own primitives),
+// `bounds` the whole plant's box.
+DrawnScale drawnScaleOf(const std::vector<PlantAsset>& parts, const Bounds& bounds);
 
 // One level of detail of the plant, per draw class.
-DrawnClasses drawnLod(const PlantAsset& asset, DrawnLod lod, const DrawnScale& scale,
-                      const DrawnOptions& options = {});
+DrawnClasses drawnLod(const PlantAsset& asset, DrawnLod lod, const DrawnScale& scale, const DrawnOptions& options = {});
 // Both, full first: what the field's pool holds for the plant.
 std::array<DrawnClasses, kDrawnLodCount> drawnLods(const PlantAsset& asset, const DrawnOptions& options = {});
 
@@ -100,6 +102,8 @@ struct LeafOutline {
     std::vector<uint32_t> indices;
 };
 const LeafOutline& leafOutline();
+// Its vertex and index counts, for the exporters' memory estimates.
+MeshSize leafOutlineSize();
 
 // The outline placed on a card whose uv (0,0) corner is `origin` and whose u
 // and v run along `across` and `along`, all vertices facing `normal`.

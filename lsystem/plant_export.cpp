@@ -98,7 +98,7 @@ std::vector<TriangleMesh> flatMeshes(const PlantAsset& asset, const ExportOption
 MeshSize flatMeshSize(const PlantAsset& asset, const ExportOptions& options) {
     MeshSize size = bakedMeshSize(asset, options.detail);
     if (options.geometry == ExportGeometry::Drawn) {
-        const MeshSize outline{leafOutline().uvs.size(), leafOutline().indices.size()};
+        const MeshSize outline = leafOutlineSize();
         for (const Primitive& p : asset.primitives)
             if (p.kind == PrimitiveKind::Surface && isDrawable(p)) size.add(outline);
     }

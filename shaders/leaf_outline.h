@@ -11,7 +11,7 @@
 // ovate blade, widest a little below the middle.
 #define LEAF_HALF_WIDTH(v) (0.48 * pow(sin(3.14159265 * pow((v), 0.8)), 0.9) * (1.0 - 0.25 * (v)))
 // The slightly serrated edge added to the half width (about 11 teeth a side).
-#define LEAF_SERRATION(v) (0.018 * sin((v) * 70.0))
+#define LEAF_SERRATION(v) (0.018 * sin((v)*70.0))
 // The petiole: a strip of this half width along the midrib below this v.
 #define LEAF_PETIOLE_LENGTH 0.08
 #define LEAF_PETIOLE_HALF_WIDTH 0.025

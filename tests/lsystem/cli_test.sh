@@ -150,7 +150,7 @@ cmp -s "$WORK/tubes.glb" "$WORK/tubes-alias.glb" || fail "export-geometry-tubes:
 expect_run export-bad-geometry 2 '--geometry' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/bad-geometry.glb" --geometry cones
 [ -e "$WORK/bad-geometry.glb" ] && fail "export-bad-geometry: a file was written"
 expect_run export-help-geometry 0 'drawn|frusta|tubes' -- "$LSYS" export --help
-"$LSYS" export "$DATA/plants/abop_1_24a.lsys" -o "$WORK/sides5-instanced.glb" --instanced --sides 5 2> /dev/null
+"$LSYS" export "$DATA/plants/abop_1_24a.lsys" -o "$WORK/sides5-instanced.glb" --instanced --geometry frusta --sides 5 2> /dev/null
 case $(summary "$WORK/sides5-instanced.glb") in *'vertices=120 '*) ;; *) fail "export-sides-instanced: $(summary "$WORK/sides5-instanced.glb")" ;; esac
 expect_run export-no-skeleton 0 '625 joints' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/bare.glb" --no-skeleton
 case $(summary "$WORK/bare.glb") in *'nodes=2 joints=0 skins=0 '*) ;; *) fail "export-no-skeleton: $(summary "$WORK/bare.glb")" ;; esac

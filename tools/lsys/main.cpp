@@ -27,6 +27,7 @@
 
 #include "lsystem/bgrammar.h"
 #include "lsystem/dialects/dialect.h"
+#include "lsystem/drawn_mesh.h"
 #include "lsystem/error.h"
 #include "lsystem/graph_export.h"
 #include "lsystem/instance_graph.h"
@@ -234,12 +235,24 @@ int instance(const Arguments& arguments) {
     return 0;
 }
 
-// The scale that makes the flattened graph's meshes, as the turtle's
-// geometry bakes them, --height tall, or nullopt (after saying why) for a
-// plant without height.
+// The box of the flattened graph's meshes as the flat form bakes them.
+lsys::Bounds flatBounds(const lsys::PlantAsset& plant, const lsys::GraphExportOptions& options) {
+    if (options.geometry == lsys::ExportGeometry::Turtle)
+        return lsys::bakedBounds(plant, options.segments, options.detail);
+    lsys::DrawnOptions drawn;
+    drawn.trunkSides = options.detail.segmentSides;
+    drawn.leaves = lsys::LeafCards::Outlines;
+    lsys::Bounds bounds;
+    for (const lsys::TriangleMesh& mesh : lsys::drawnMeshesByMaterial(plant, lsys::drawnScaleOf(plant), drawn))
+        for (const glm::vec3& p : mesh.positions) bounds.extend(p);
+    return bounds;
+}
+
+// The scale that makes the flattened graph's meshes --height tall, or
+// nullopt (after saying why) for a plant without height.
 std::optional<float> exportScale(const Arguments& arguments, const lsys::PlantAsset& plant,
-                                 lsys::SegmentGeometry segments, const lsys::MeshDetail& detail) {
-    const float scale = lsys::heightScale(lsys::bakedBounds(plant, segments, detail), *arguments.height);
+                                 const lsys::GraphExportOptions& options) {
+    const float scale = lsys::heightScale(flatBounds(plant, options), *arguments.height);
     if (scale > 0.0f && std::isfinite(scale)) return scale;
     std::cerr << arguments.file << ": error: --height: the plant has no height to scale (its meshes' y extent is 0)\n";
     return std::nullopt;
@@ -255,7 +268,7 @@ std::string scaleNote(const Arguments& arguments, float scale) {
 
 // The plant the graph stands for, flattened within the module and memory
 // budgets, for --height: the flat form's meshes are the instanced form's
-// placed (generalised cylinders aside, whose chains the instanced form ends
+// placed (bark tubes and generalised cylinders aside, whose chains the instanced form ends
 // at each instance), so both forms are scaled to the same height. The
 // graph's own boxes would not do: each instance adds its object's rotated
 // box's box (data/plants/fractal_bush.lsys: 12 % too tall).
@@ -281,9 +294,8 @@ int exportGraph(const Arguments& arguments, const lsys::Grammar& grammar) {
     }
     std::optional<float> scale = 1.0f;
     try {
-        const lsys::GraphExportOptions& o = arguments.graphExportOptions;
         if (arguments.height)
-            scale = exportScale(arguments, flatPlant(arguments, graph, surfaces), o.segments, o.detail);
+            scale = exportScale(arguments, flatPlant(arguments, graph, surfaces), arguments.graphExportOptions);
     } catch (const std::runtime_error& error) { // DerivationError, MemoryBudgetError
         return failed(arguments, error);
     }
@@ -376,12 +388,12 @@ void addGraphOptions(CLI::App& command, Arguments& arguments) {
         ->check(CLI::Range(0, 1'000'000));
 }
 
-// The meshes --geometry names (docs/EXPORT.md): the flat form as the field
-// draws it, or the turtle's segments as frusta or generalised cylinders
-// (--instanced writes the turtle's geometry: drawn means frusta there).
+// The meshes --geometry names (docs/EXPORT.md): the plant as the field
+// draws it, or the turtle's segments as frusta or generalised cylinders.
 void setGeometry(Arguments& arguments, const std::string& name) {
     const bool drawn = name == "drawn", tubes = name == "tubes";
     arguments.exportOptions.geometry = drawn ? lsys::ExportGeometry::Drawn : lsys::ExportGeometry::Turtle;
+    arguments.graphExportOptions.geometry = arguments.exportOptions.geometry;
     const lsys::SegmentGeometry segments =
         tubes ? lsys::SegmentGeometry::GeneralizedCylinders : lsys::SegmentGeometry::Frusta;
     arguments.exportOptions.segments = segments;
@@ -393,10 +405,9 @@ void addGeometryOptions(CLI::App& command, Arguments& arguments) {
     command
         .add_option_function<std::string>(
             "--geometry", [&arguments](const std::string& name) { setGeometry(arguments, name); },
-            "Meshes of the flat form: drawn (default: the plant as plantfield draws it up close, bark tubes, "
-            "foliage ribbons, leaf outlines), frusta (the turtle's segments, one cone frustum each) or tubes "
-            "(the turtle's segments as generalised cylinders). --instanced writes the turtle's geometry: frusta, "
-            "or tubes")
+            "Meshes, flat and --instanced: drawn (default: the plant as plantfield draws it up close, bark "
+            "tubes, foliage ribbons, leaf outlines), frusta (the turtle's segments, one cone frustum each) or "
+            "tubes (the turtle's segments as generalised cylinders)")
         ->check(CLI::IsMember({"drawn", "frusta", "tubes"}))
         ->type_name("drawn|frusta|tubes");
     command.add_flag_callback(

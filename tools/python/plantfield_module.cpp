@@ -177,7 +177,8 @@ void exportPlant(const PyGrammar& grammar, const std::filesystem::path& path, st
     if (sides < 3 || sides > 1024) throw py::value_error("sides must be between 3 and 1024");
     if (geometry != "drawn" && geometry != "frusta" && geometry != "tubes")
         throw py::value_error("geometry must be 'drawn', 'frusta' or 'tubes', not '" + geometry + "'");
-    // As lsys export --geometry: the instanced form writes the turtle's geometry (drawn: frusta).
+    // As lsys export --geometry.
+    const lsys::ExportGeometry form = geometry == "drawn" ? lsys::ExportGeometry::Drawn : lsys::ExportGeometry::Turtle;
     const lsys::SegmentGeometry segments =
         geometry == "tubes" ? lsys::SegmentGeometry::GeneralizedCylinders : lsys::SegmentGeometry::Frusta;
     py::gil_scoped_release release;
@@ -187,6 +188,7 @@ void exportPlant(const PyGrammar& grammar, const std::filesystem::path& path, st
             lsys::buildInstanceGraph(lsys::buildBGrammar(grammar.grammar, bgrammarOptions(steps, seed, maxModules)),
                                      grammar.grammar, {}, surfaces);
         lsys::GraphExportOptions options;
+        options.geometry = form;
         options.segments = segments;
         options.detail.segmentSides = sides;
         lsys::exportInstanceGraph(graph, surfaces, path, options);
@@ -195,7 +197,7 @@ void exportPlant(const PyGrammar& grammar, const std::filesystem::path& path, st
     const lsys::ModuleString string = lsys::derive(grammar.grammar, deriveOptions(steps, seed, maxModules));
     const lsys::PlantAsset plant = lsys::plantFromGrammar(grammar.grammar, string, surfaces);
     lsys::ExportOptions options;
-    options.geometry = geometry == "drawn" ? lsys::ExportGeometry::Drawn : lsys::ExportGeometry::Turtle;
+    options.geometry = form;
     options.segments = segments;
     options.detail.segmentSides = sides;
     options.skeleton = skeleton;
@@ -265,5 +267,5 @@ PYBIND11_MODULE(plantfield, m) {
           py::arg("seed") = py::none(), py::arg("instanced") = false, py::arg("sides") = 8, py::arg("skeleton") = true,
           py::arg("max_modules") = kMaxModules, py::arg("geometry") = "drawn",
           "Writes the plant as .glb, .gltf or .obj, as `lsys export` does (geometry: 'drawn', the plant as "
-          "plantfield draws it, or the turtle's 'frusta' or 'tubes')");
+          "plantfield draws it, or the turtle's 'frusta' or 'tubes'; flat and instanced)");
 }
