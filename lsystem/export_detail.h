@@ -32,9 +32,13 @@ inline constexpr uint64_t kGltfNodeBytes = 2048;
 uint64_t gltfBytes(const MeshSize& meshes, uint64_t nodes, bool binary);
 uint64_t objBytes(const MeshSize& meshes);
 
-void writeGltf(const PlantAsset& asset, std::ostream& out, const ExportOptions& options, bool binary);
+// The writers take the meshes baked, one per material (as meshesByMaterial
+// gives them); glTF's skeleton is the asset's, its rest positions times
+// `scale` (ExportOptions::height).
+void writeGltf(const PlantAsset& asset, const std::vector<TriangleMesh>& meshes, std::ostream& out,
+               const ExportOptions& options, float scale, bool binary);
 // `mtlFileName` is what the .obj's mtllib line refers to.
-void writeObj(const PlantAsset& asset, std::ostream& obj, std::ostream& mtl, const std::string& mtlFileName,
-              const ExportOptions& options);
+void writeObj(const std::vector<Material>& materials, const std::vector<TriangleMesh>& meshes, std::ostream& obj,
+              std::ostream& mtl, const std::string& mtlFileName);
 
 } // namespace lsys::export_detail

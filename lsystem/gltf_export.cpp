@@ -17,12 +17,13 @@ Frame relativeTo(const Frame& parent, const Frame& child) {
 }
 
 // The empty joint nodes, nested as Joint::parent says, below the root.
-void addSkeleton(GltfBuilder& builder, const PlantAsset& asset) {
+void addSkeleton(GltfBuilder& builder, const PlantAsset& asset, float scale) {
+    const auto scaled = [scale](const Frame& rest) { return Frame{rest.position * scale, rest.rotation}; };
     std::vector<int> nodes;
     for (size_t i = 0; i < asset.joints.size(); ++i) {
         const Joint& joint = asset.joints[i];
-        const Frame local =
-            joint.parent < 0 ? joint.rest : relativeTo(asset.joints[size_t(joint.parent)].rest, joint.rest);
+        const Frame rest = scaled(joint.rest);
+        const Frame local = joint.parent < 0 ? rest : relativeTo(scaled(asset.joints[size_t(joint.parent)].rest), rest);
         nodes.push_back(builder.addNode("joint_" + std::to_string(i), -1, local));
     }
     // Linked once all exist: a parent may come after its child in the table.
@@ -35,11 +36,11 @@ void addSkeleton(GltfBuilder& builder, const PlantAsset& asset) {
 
 } // namespace
 
-void writeGltf(const PlantAsset& asset, std::ostream& out, const ExportOptions& options, bool binary) {
+void writeGltf(const PlantAsset& asset, const std::vector<TriangleMesh>& byMaterial, std::ostream& out,
+               const ExportOptions& options, float scale, bool binary) {
     GltfBuilder builder(asset.materials);
-    if (options.skeleton) addSkeleton(builder, asset);
+    if (options.skeleton) addSkeleton(builder, asset, scale);
     // One node below the root for each material's mesh that has triangles.
-    const std::vector<TriangleMesh> byMaterial = meshesByMaterial(asset, options.segments, options.detail);
     for (uint32_t m = 0; m < byMaterial.size(); ++m) {
         const std::string name = materialName(asset.materials, m);
         const int mesh = builder.addMesh(byMaterial[m], m, name);

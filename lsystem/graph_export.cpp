@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "lsystem/drawn_mesh.h"
 #include "lsystem/export_detail.h"
 #include "lsystem/gltf_builder.h"
 #include "lsystem/output_file.h"
@@ -98,14 +99,29 @@ void addInstanceNodes(GltfBuilder& builder, const InstanceGraph& graph, const st
 
 void writeGraphGltf(const InstanceGraph& graph, const SurfaceLibrary& surfaces, std::ostream& out,
                     const GraphExportOptions& options, bool binary, GraphExportSummary& summary) {
-    std::vector<std::vector<TriangleMesh>> meshes;
+    std::vector<PlantAsset> directs;
     std::vector<Material> materials;
     for (uint32_t object = 0; object < graph.objects.size(); ++object) {
-        PlantAsset direct = directPrimitives(graph, object, surfaces);
+        PlantAsset& direct = directs.emplace_back(directPrimitives(graph, object, surfaces));
         if (options.scale != 1.0f) scalePlant(direct, options.scale);
         mergeMaterials(materials, direct.materials);
-        meshes.push_back(meshesByMaterial(direct, options.segments, options.detail));
     }
+    std::vector<std::vector<TriangleMesh>> meshes;
+    if (options.geometry == ExportGeometry::Drawn) {
+        Bounds box;
+        if (!graph.objects.empty())
+            box = {graph.objects[graph.root].bounds.min * options.scale,
+                   graph.objects[graph.root].bounds.max * options.scale};
+        const DrawnScale scale = drawnScaleOf(directs, box);
+        DrawnOptions drawn;
+        drawn.trunkSides = options.detail.segmentSides;
+        drawn.leaves = LeafCards::Outlines;
+        for (const PlantAsset& direct : directs) meshes.push_back(drawnMeshesByMaterial(direct, scale, drawn));
+    } else {
+        for (const PlantAsset& direct : directs)
+            meshes.push_back(meshesByMaterial(direct, options.segments, options.detail));
+    }
+    directs.clear();
     GltfBuilder builder(materials);
     std::vector<int> meshOf;
     for (uint32_t object = 0; object < graph.objects.size(); ++object)
@@ -120,17 +136,19 @@ void writeGraphGltf(const InstanceGraph& graph, const SurfaceLibrary& surfaces, 
     builder.write(out, binary);
 }
 
-// Every object's direct primitives as meshes (drawable or not: a bound).
-MeshSize graphMeshSize(const InstanceGraph& graph, const SurfaceLibrary& surfaces, const MeshDetail& detail) {
+// Every object's direct primitives as meshes (drawable or not: a bound; the
+// drawn form at most the frusta's plus each leaf's outline).
+MeshSize graphMeshSize(const InstanceGraph& graph, const SurfaceLibrary& surfaces, const GraphExportOptions& options) {
     MeshSize total;
     for (const GraphPrimitive& p : graph.primitives) {
+        if (p.kind == PrimitiveKind::Surface && options.geometry == ExportGeometry::Drawn) total.add(leafOutlineSize());
         MeshSize shape;
         if (p.kind == PrimitiveKind::Surface) {
             const SurfaceMesh& surface = surfaceOfLook(graph.look, surfaces, graph.surfaceNames[p.shape]);
             shape = {surface.positions.size(), surface.indices.size()};
         }
         if (p.kind == PrimitiveKind::Polygon) shape.vertices = graph.polygons[p.shape].outline.size();
-        total.add(primitiveMeshSize(p.kind, shape, detail));
+        total.add(primitiveMeshSize(p.kind, shape, options.detail));
     }
     return total;
 }
@@ -156,8 +174,7 @@ GraphExportSummary exportInstanceGraph(const InstanceGraph& graph, const Surface
                                      " glTF nodes (one per instance path), more than the budget of " +
                                      std::to_string(options.maxNodes) +
                                      "; export the flat form (--flat) or derive fewer steps");
-        need(options.memory, "export",
-             gltfBytes(graphMeshSize(graph, surfaces, options.detail), nodes, extension == ".glb"));
+        need(options.memory, "export", gltfBytes(graphMeshSize(graph, surfaces, options), nodes, extension == ".glb"));
         OutputFile file(path);
         writeGraphGltf(graph, surfaces, file.stream(), options, extension == ".glb", summary);
         file.commit();

@@ -12,16 +12,22 @@
 
 #include "lsystem/instance_graph.h"
 #include "lsystem/memory_budget.h"
+#include "lsystem/plant_export.h"
 #include "lsystem/primitive_mesh.h"
 #include "lsystem/surfaces.h"
 
 namespace lsys {
 
 struct GraphExportOptions {
-    // Generalised cylinders follow the segments an object draws itself;
-    // chains end where an instance starts (a bent tube is not shareable).
+    // Drawn: each object's own primitives as the field draws them
+    // (drawn_mesh.h), with the whole plant's trunk radius and the graph's
+    // box for the ring sides and the minimum ribbon width. Turtle: as
+    // `segments` says. Generalised cylinders and the drawn form's bark
+    // tubes follow the segments an object draws itself; chains end where an
+    // instance starts (a bent tube is not shareable).
+    ExportGeometry geometry = ExportGeometry::Drawn;
     SegmentGeometry segments = SegmentGeometry::Frusta;
-    MeshDetail detail;
+    MeshDetail detail; // as ExportOptions::detail
     // One node per path of instances from the root: a deep plant has
     // exponentially many, so past this the export is refused.
     uint64_t maxNodes = 1'000'000;

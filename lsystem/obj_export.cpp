@@ -14,8 +14,8 @@ namespace lsys::export_detail {
 namespace {
 
 // OBJ and MTL names end at whitespace.
-std::string objName(const PlantAsset& asset, uint32_t material) {
-    std::string name = materialName(asset.materials, material);
+std::string objName(const std::vector<Material>& materials, uint32_t material) {
+    std::string name = materialName(materials, material);
     std::replace_if(
         name.begin(), name.end(), [](unsigned char c) { return std::isspace(c); }, '_');
     return name;
@@ -55,21 +55,21 @@ private:
 
 } // namespace
 
-void writeObj(const PlantAsset& asset, std::ostream& objStream, std::ostream& mtlStream, const std::string& mtlFileName,
-              const ExportOptions& options) {
+void writeObj(const std::vector<Material>& materials, const std::vector<TriangleMesh>& meshes, std::ostream& objStream,
+              std::ostream& mtlStream, const std::string& mtlFileName) {
     ObjText obj(objStream), mtl(mtlStream);
     obj << "# plantfield plant: metres, y up\nmtllib " << mtlFileName << "\n";
-    for (uint32_t m = 0; m < asset.materials.size(); ++m) {
-        const glm::vec3& albedo = asset.materials[m].albedo;
-        mtl << "newmtl " << objName(asset, m) << "\nKd " << albedo.r << ' ' << albedo.g << ' ' << albedo.b << "\n\n";
+    for (uint32_t m = 0; m < materials.size(); ++m) {
+        const glm::vec3& albedo = materials[m].albedo;
+        mtl << "newmtl " << objName(materials, m) << "\nKd " << albedo.r << ' ' << albedo.g << ' ' << albedo.b
+            << "\n\n";
     }
     // OBJ indices are 1-based and count every vertex written before them.
     uint32_t base = 1;
-    const std::vector<TriangleMesh> meshes = meshesByMaterial(asset, options.segments, options.detail);
     for (uint32_t m = 0; m < meshes.size(); ++m) {
         const TriangleMesh& mesh = meshes[m];
         if (mesh.indices.empty()) continue;
-        obj << "o " << objName(asset, m) << "\nusemtl " << objName(asset, m) << "\n";
+        obj << "o " << objName(materials, m) << "\nusemtl " << objName(materials, m) << "\n";
         for (const glm::vec3& p : mesh.positions) obj << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
         for (const glm::vec2& t : mesh.uvs) obj << "vt " << t.x << ' ' << t.y << '\n';
         for (const glm::vec3& n : mesh.normals) obj << "vn " << n.x << ' ' << n.y << ' ' << n.z << '\n';

@@ -1,10 +1,12 @@
 #include "lsystem/plant_export.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "lsystem/drawn_mesh.h"
 #include "lsystem/export_detail.h"
 #include "lsystem/memory_budget.h"
 #include "lsystem/output_file.h"
@@ -81,34 +83,73 @@ void checkAsset(const PlantAsset& asset) {
     }
 }
 
+// The flat form's meshes, one per material. (The turtle makes every
+// material of a surface or polygon two-sided, as the renderer draws them.)
+std::vector<TriangleMesh> flatMeshes(const PlantAsset& asset, const ExportOptions& options) {
+    if (options.geometry == ExportGeometry::Turtle) return meshesByMaterial(asset, options.segments, options.detail);
+    DrawnOptions drawn;
+    drawn.trunkSides = options.detail.segmentSides;
+    drawn.leaves = LeafCards::Outlines;
+    return drawnMeshesByMaterial(asset, drawnScaleOf(asset), drawn);
+}
+
+// At most what the turtle's frusta take (a bark tube, a ribbon, a coarser
+// sphere all take less) plus each leaf's outline.
+MeshSize flatMeshSize(const PlantAsset& asset, const ExportOptions& options) {
+    MeshSize size = bakedMeshSize(asset, options.detail);
+    if (options.geometry == ExportGeometry::Drawn) {
+        const MeshSize outline = leafOutlineSize();
+        for (const Primitive& p : asset.primitives)
+            if (p.kind == PrimitiveKind::Surface && isDrawable(p)) size.add(outline);
+    }
+    return size;
+}
+
+// Scales the meshes about the origin so their y extent is `height`; returns the scale.
+float scaleToHeight(std::vector<TriangleMesh>& meshes, float height) {
+    Bounds bounds;
+    for (const TriangleMesh& mesh : meshes)
+        for (const glm::vec3& p : mesh.positions) bounds.extend(p);
+    const float scale = heightScale(bounds, height);
+    if (!(scale > 0.0f && std::isfinite(scale)))
+        throw std::runtime_error("the plant has no height to scale (its meshes' y extent is 0)");
+    for (TriangleMesh& mesh : meshes)
+        for (glm::vec3& p : mesh.positions) p *= scale;
+    return scale;
+}
+
 } // namespace
 
-void exportPlant(const PlantAsset& asset, const std::filesystem::path& path, const ExportOptions& options) {
+float exportPlant(const PlantAsset& asset, const std::filesystem::path& path, const ExportOptions& options) {
     using namespace export_detail;
+    float scale = 1.0f;
     try {
         const std::string extension = lowercaseExtension(path);
         if (extension != ".gltf" && extension != ".glb" && extension != ".obj")
             throw std::runtime_error("unknown extension '" + extension + "' (expected .gltf, .glb or .obj)");
         checkAsset(asset);
-        const MeshSize meshes = bakedMeshSize(asset, options.detail);
+        const MeshSize meshes = flatMeshSize(asset, options);
         need(options.memory, "export",
              extension == ".obj" ? objBytes(meshes)
                                  : gltfBytes(meshes, options.skeleton ? asset.joints.size() : 0, extension == ".glb"));
+        std::vector<TriangleMesh> flat = flatMeshes(asset, options);
+        if (options.height > 0.0f) scale = scaleToHeight(flat, options.height);
         if (extension == ".obj") {
             std::filesystem::path mtlPath = path;
             mtlPath.replace_extension(".mtl");
             OutputFile mtl(mtlPath), obj(path);
-            writeObj(asset, obj.stream(), mtl.stream(), mtlPath.filename().string(), options);
+            writeObj(asset.materials, flat, obj.stream(), mtl.stream(), mtlPath.filename().string());
             mtl.commit();
             obj.commit();
         } else {
             OutputFile file(path);
-            writeGltf(asset, file.stream(), options, extension == ".glb");
+            writeGltf(asset, flat, file.stream(), options, scale, extension == ".glb");
             file.commit();
         }
     } catch (const std::exception&) {
         rethrowNaming(path);
     }
+    return scale;
 }
 
 Bounds bakedBounds(const PlantAsset& asset, SegmentGeometry segments, const MeshDetail& detail) {

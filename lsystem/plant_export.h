@@ -1,7 +1,8 @@
 #pragma once
 // Writes a PlantAsset as glTF 2.0 (.gltf with the buffer embedded as base64,
 // or .glb) or Wavefront OBJ (.obj plus a .mtl beside it), chosen by the
-// file's extension, in the flat form: every primitive baked in plant space.
+// file's extension, in the flat form: every primitive baked in plant space,
+// by default as the field draws it (lsystem/drawn_mesh.h).
 // The instanced form, which keeps the InstanceGraph's shared subtrees, is
 // lsystem/graph_export.h. docs/EXPORT.md describes what each form contains.
 
@@ -13,10 +14,21 @@
 
 namespace lsys {
 
+// What the flat form's meshes are: the plant as the field draws it up close
+// (drawnMeshesByMaterial: bark tubes, foliage ribbons, leaf outlines), or the
+// turtle's primitives (meshesByMaterial, segments as `segments` says).
+enum class ExportGeometry : uint8_t { Drawn, Turtle };
+
 struct ExportOptions {
-    SegmentGeometry segments = SegmentGeometry::Frusta;
+    ExportGeometry geometry = ExportGeometry::Drawn;
+    SegmentGeometry segments = SegmentGeometry::Frusta; // the turtle's geometry only
+    // Turtle: every segment's ring sides and the spheres'. Drawn: the trunk's
+    // ring sides (thinner bark gets fewer, DrawnOptions::trunkSides).
     MeshDetail detail;
     bool skeleton = true; // glTF: one node per Joint, nested as Joint::parent says
+    // > 0: the meshes, baked once, are scaled uniformly about the plant's
+    // base (the origin) so their y extent is `height`; the skeleton with them.
+    float height = 0.0f;
     // What the writer would hold at once, estimated from the primitives'
     // vertex and index counts before any mesh is built (export_detail.h).
     MemoryBudget memory = machineMemoryBudget();
@@ -28,13 +40,15 @@ struct ExportOptions {
 // MemoryBudgetError (stage "export") past options.memory, before writing. Each file is
 // written to PATH.partial and renamed into place, so a failure leaves no
 // file behind and never a half-written one.
-void exportPlant(const PlantAsset& asset, const std::filesystem::path& path, const ExportOptions& options = {});
+// With options.height, a plant whose meshes have no y extent is refused
+// likewise. Returns the scale applied (1 without options.height).
+float exportPlant(const PlantAsset& asset, const std::filesystem::path& path, const ExportOptions& options = {});
 
-// The box of every vertex meshesByMaterial bakes for the flat form, each
-// primitive or segment chain built and dropped in turn: the plant as drawn,
-// where PlantAsset::bounds holds the turtle's round geometry (outside rings
-// of few sides) padded by the widest pixel-wide line. `lsys export --height`
-// measures it.
+// The box of every vertex meshesByMaterial bakes for the turtle's geometry,
+// each primitive or segment chain built and dropped in turn, where
+// PlantAsset::bounds holds the turtle's round geometry (outside rings of few
+// sides) padded by the widest pixel-wide line. `lsys export --instanced
+// --height` measures the flattened graph with it.
 Bounds bakedBounds(const PlantAsset& asset, SegmentGeometry segments, const MeshDetail& detail);
 
 // The uniform scale that makes `bounds` `height` tall (their y extent). 0

@@ -4,6 +4,7 @@
 #ifndef PLANT_SURFACE_GLSL
 #define PLANT_SURFACE_GLSL
 #include "field_layouts.h"
+#include "leaf_outline.h"
 
 float surfaceHash(vec2 p) {
     vec3 p3 = fract(vec3(p.xyx) * 0.1031);
@@ -12,14 +13,15 @@ float surfaceHash(vec2 p) {
 }
 
 // Coverage of a leaf card at uv ∈ [0,1]²: a pointed ovate blade along v from
-// the petiole (v = 0) to the tip (v = 1), with a slightly serrated edge.
-// Returns a signed distance-like value: > 0 inside.
+// the petiole (v = 0) to the tip (v = 1), with a slightly serrated edge
+// (leaf_outline.h, whose outline the exports mesh). Returns a signed
+// distance-like value: > 0 inside.
 float leafShape(vec2 uv) {
     float v = clamp(uv.y, 0.0, 1.0);
-    float halfWidth = 0.48 * pow(sin(3.14159265 * pow(v, 0.8)), 0.9) * (1.0 - 0.25 * v);
-    float serration = 0.018 * sin(v * 70.0);
+    float halfWidth = LEAF_HALF_WIDTH(v);
+    float serration = LEAF_SERRATION(v);
     float x = abs(uv.x - 0.5);
-    float petiole = (v < 0.08 && x < 0.025) ? 1.0 : 0.0;
+    float petiole = (v < LEAF_PETIOLE_LENGTH && x < LEAF_PETIOLE_HALF_WIDTH) ? 1.0 : 0.0;
     return max(halfWidth + serration - x, petiole * 0.01);
 }
 

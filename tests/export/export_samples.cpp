@@ -38,12 +38,15 @@ void exportBothGeometries(const fs::path& prefix, Write write) {
     }
 }
 
+// PREFIX_{frusta,tubes,drawn}.{gltf,glb}: the turtle's geometries and the drawn form.
 void exportFlat(const lsys::PlantAsset& plant, const fs::path& prefix) {
     exportBothGeometries(prefix, [&](const fs::path& path, lsys::SegmentGeometry segments) {
         lsys::ExportOptions options;
+        options.geometry = lsys::ExportGeometry::Turtle;
         options.segments = segments;
         lsys::exportPlant(plant, path, options);
     });
+    for (const char* extension : {".gltf", ".glb"}) lsys::exportPlant(plant, prefix.string() + "_drawn" + extension);
 }
 
 } // namespace
@@ -62,9 +65,13 @@ int main(int argc, char** argv) {
         const lsys::InstanceGraph graph = plantfield::test::sampleGraph();
         exportBothGeometries(dir / "graph_instanced", [&](const fs::path& path, lsys::SegmentGeometry segments) {
             lsys::GraphExportOptions options;
+            options.geometry = lsys::ExportGeometry::Turtle;
             options.segments = segments;
             lsys::exportInstanceGraph(graph, lsys::SurfaceLibrary{}, path, options);
         });
+        for (const char* extension : {".gltf", ".glb"})
+            lsys::exportInstanceGraph(graph, lsys::SurfaceLibrary{},
+                                      (dir / "graph_instanced_drawn").string() + extension);
         lsys::exportPlant(lsys::PlantAsset{}, dir / "empty.glb");
         writeBroken(dir / "sample_flat_frusta.gltf", dir / "broken" / "accessor_out_of_bounds.gltf");
     } catch (const std::exception& error) {

@@ -38,17 +38,19 @@ glm::mat4 localMatrix(const tinygltf::Node& node) {
     return m;
 }
 
-void collect(const tinygltf::Model& model, int nodeIndex, const glm::mat4& parent, std::vector<glm::vec3>& corners) {
+void collect(const tinygltf::Model& model, int nodeIndex, const glm::mat4& parent, int material,
+             std::vector<glm::vec3>& corners) {
     const tinygltf::Node& node = model.nodes.at(size_t(nodeIndex));
     const glm::mat4 world = parent * localMatrix(node);
     if (node.mesh >= 0) {
         for (const tinygltf::Primitive& primitive : model.meshes.at(size_t(node.mesh)).primitives) {
+            if (material >= 0 && primitive.material != material) continue;
             const auto positions = accessorValues<glm::vec3>(model, primitive.attributes.at("POSITION"));
             for (uint32_t i : accessorValues<uint32_t>(model, primitive.indices))
                 corners.push_back(glm::vec3(world * glm::vec4(positions.at(i), 1.0f)));
         }
     }
-    for (int child : node.children) collect(model, child, world, corners);
+    for (int child : node.children) collect(model, child, world, material, corners);
 }
 
 } // namespace
@@ -74,10 +76,10 @@ tinygltf::Model loadGltf(const std::filesystem::path& path) {
     return model;
 }
 
-std::vector<glm::vec3> sceneTriangleCorners(const tinygltf::Model& model) {
+std::vector<glm::vec3> sceneTriangleCorners(const tinygltf::Model& model, int material) {
     std::vector<glm::vec3> corners;
     for (int root : model.scenes.at(size_t(std::max(model.defaultScene, 0))).nodes)
-        collect(model, root, glm::mat4(1.0f), corners);
+        collect(model, root, glm::mat4(1.0f), material, corners);
     return corners;
 }
 

@@ -26,8 +26,8 @@ protected:
 tinygltf::Model loadGltf(const std::filesystem::path& path);
 
 // Every triangle's corners in scene space: node transforms applied from the
-// default scene's roots down.
-std::vector<glm::vec3> sceneTriangleCorners(const tinygltf::Model& model);
+// default scene's roots down; only those of glTF material `material` unless it is -1.
+std::vector<glm::vec3> sceneTriangleCorners(const tinygltf::Model& model, int material = -1);
 
 // Whether some point of `points` lies within `tolerance` of `p`.
 bool containsPoint(const std::vector<glm::vec3>& points, glm::vec3 p, float tolerance);

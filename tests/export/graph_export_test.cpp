@@ -59,12 +59,19 @@ void expectSampledCornersIn(const std::vector<glm::vec3>& from, const std::vecto
             << "corner " << i << ": " << from[i].x << ' ' << from[i].y << ' ' << from[i].z;
 }
 
+lsys::GraphExportOptions turtleGeometry() {
+    lsys::GraphExportOptions options;
+    options.geometry = lsys::ExportGeometry::Turtle;
+    return options;
+}
+
 // Exports the graph and its flattened plant with the same geometry and
 // compares what they draw.
 void expectSameDrawingAsFlat(const lsys::InstanceGraph& graph, const lsys::SurfaceLibrary& surfaces,
-                             const fs::path& dir, const lsys::GraphExportOptions& options = {}) {
+                             const fs::path& dir, const lsys::GraphExportOptions& options = turtleGeometry()) {
     const lsys::GraphExportSummary summary = lsys::exportInstanceGraph(graph, surfaces, dir / "graph.glb", options);
     lsys::ExportOptions flatOptions;
+    flatOptions.geometry = options.geometry;
     flatOptions.segments = options.segments;
     flatOptions.detail = options.detail;
     const lsys::PlantAsset plant = lsys::flatten(graph, surfaces);
@@ -128,17 +135,46 @@ TEST_F(GraphExport, AnObjectsOwnSurfacesDrawWhatTheFlatFormDraws) {
 // Without caps a tube has 2·sides triangles per segment however the chains
 // are cut, so cutting them at instances keeps the count.
 TEST_F(GraphExport, GeneralizedCylindersWithoutCapsDrawTheSameTriangles) {
-    lsys::GraphExportOptions options;
+    lsys::GraphExportOptions options = turtleGeometry();
     options.segments = lsys::SegmentGeometry::GeneralizedCylinders;
     options.detail.segmentCaps = false;
     const lsys::InstanceGraph graph = plantfield::test::sampleGraph();
     lsys::exportInstanceGraph(graph, lsys::SurfaceLibrary{}, dir / "graph.gltf", options);
     lsys::ExportOptions flatOptions;
+    flatOptions.geometry = lsys::ExportGeometry::Turtle;
     flatOptions.segments = options.segments;
     flatOptions.detail = options.detail;
     lsys::exportPlant(lsys::flatten(graph), dir / "flat.gltf", flatOptions);
     EXPECT_EQ(sceneTriangleCorners(loadGltf(dir / "graph.gltf")).size(),
               sceneTriangleCorners(loadGltf(dir / "flat.gltf")).size());
+}
+
+// The drawn form (the default) bakes each object with the whole plant's
+// scale, so its foliage (two-sided materials: leaf outlines, polygons, the
+// spruce's needle ribbons) is the flat drawn form's, triangle for triangle.
+// (Bark tubes end at each instance, as generalised cylinders do.)
+TEST_F(GraphExport, DrawnFoliageIsTheFlatDrawnFoliage) {
+    const lsys::SurfaceLibrary spruceSurfaces(lsys::meshDirectoriesFor(lsys::test::dataPath("plants/spruce.lsys")));
+    const std::pair<lsys::InstanceGraph, const lsys::SurfaceLibrary*> graphs[] = {
+        {plantfield::test::sampleGraph(), &spruceSurfaces},
+        {graphOfFile("plants/spruce.lsys", std::nullopt, spruceSurfaces), &spruceSurfaces},
+    };
+    for (const auto& [graph, surfaces] : graphs) {
+        lsys::exportInstanceGraph(graph, *surfaces, dir / "graph.glb");
+        lsys::exportPlant(lsys::flatten(graph, *surfaces), dir / "flat.glb");
+        const tinygltf::Model instanced = loadGltf(dir / "graph.glb"), flat = loadGltf(dir / "flat.glb");
+        size_t foliage = 0;
+        for (size_t m = 0; m < flat.materials.size(); ++m) {
+            if (!flat.materials[m].doubleSided) continue;
+            const std::vector<glm::vec3> graphCorners = sceneTriangleCorners(instanced, int(m)),
+                                         flatCorners = sceneTriangleCorners(flat, int(m));
+            ASSERT_EQ(graphCorners.size(), flatCorners.size()) << flat.materials[m].name;
+            expectSampledCornersIn(graphCorners, flatCorners, 1e-4f);
+            expectSampledCornersIn(flatCorners, graphCorners, 1e-4f);
+            foliage += flatCorners.size();
+        }
+        EXPECT_GT(foliage, 0u);
+    }
 }
 
 // Each instance is a node placed by its own transform below its parent's,

@@ -34,6 +34,14 @@ protected:
     }
 };
 
+// The turtle's geometry, whose counts the tests below pin (the default is the drawn form).
+lsys::ExportOptions turtleOptions(lsys::SegmentGeometry segments = lsys::SegmentGeometry::Frusta) {
+    lsys::ExportOptions options;
+    options.geometry = lsys::ExportGeometry::Turtle;
+    options.segments = segments;
+    return options;
+}
+
 size_t meshVertexCount(const tinygltf::Model& model, size_t mesh) {
     return model.accessors.at(size_t(model.meshes.at(mesh).primitives.at(0).attributes.at("POSITION"))).count;
 }
@@ -52,7 +60,7 @@ TEST_F(ExportFiles, FlatGltfAndGlbLoadBackWithTheSameCounts) {
     const lsys::PlantAsset plant = samplePlant();
     for (const char* name : {"plant.gltf", "plant.glb"}) {
         SCOPED_TRACE(name);
-        lsys::exportPlant(plant, dir / name);
+        lsys::exportPlant(plant, dir / name, turtleOptions());
         const tinygltf::Model model = loadGltf(dir / name);
         ASSERT_EQ(model.materials.size(), 2u);
         EXPECT_EQ(model.materials[1].name, "leaf green");
@@ -101,9 +109,7 @@ TEST_F(ExportFiles, SkeletonNodesFollowTheJoints) {
 
 TEST_F(ExportFiles, GeneralizedCylindersReplaceTheSegments) {
     const lsys::PlantAsset plant = samplePlant();
-    lsys::ExportOptions options;
-    options.segments = lsys::SegmentGeometry::GeneralizedCylinders;
-    lsys::exportPlant(plant, dir / "flat.gltf", options);
+    lsys::exportPlant(plant, dir / "flat.gltf", turtleOptions(lsys::SegmentGeometry::GeneralizedCylinders));
     const tinygltf::Model flat = loadGltf(dir / "flat.gltf");
     EXPECT_EQ(meshVertexCount(flat, 0), 54u + 36u + 117u); // stem chain, branch, sphere
     EXPECT_EQ(meshTriangleCount(flat, 0), 64u + 32u + 168u);
@@ -111,8 +117,8 @@ TEST_F(ExportFiles, GeneralizedCylindersReplaceTheSegments) {
 
 TEST_F(ExportFiles, ObjMatchesTheFlatGltf) {
     const lsys::PlantAsset plant = samplePlant();
-    lsys::exportPlant(plant, dir / "plant.obj");
-    lsys::exportPlant(plant, dir / "plant.glb");
+    lsys::exportPlant(plant, dir / "plant.obj", turtleOptions());
+    lsys::exportPlant(plant, dir / "plant.glb", turtleOptions());
     EXPECT_EQ(filesInDir(), (std::vector<std::string>{"plant.glb", "plant.mtl", "plant.obj"}));
     const plantfield::test::ObjCounts obj = plantfield::test::readObj(dir / "plant.obj");
     EXPECT_EQ(obj.mtllib, "plant.mtl");

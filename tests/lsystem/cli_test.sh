@@ -136,11 +136,21 @@ SUMMARY="$(dirname "$0")/gltf_summary.mjs"
 command -v node > /dev/null || fail "export-drawn: node is missing (tools/deps.sh installs it)"
 summary() { node "$SUMMARY" "$1" 2>&1; }
 # A frustum with caps has 4(sides+1) vertices: the Koch curve's 625 segments 36 each, 24 with 5 sides.
-"$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/sides8.glb" 2> /dev/null
-"$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/sides5.gltf" --sides 5 --skeleton 2> /dev/null
+"$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/sides8.glb" --geometry frusta 2> /dev/null
+"$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/sides5.gltf" --geometry frusta --sides 5 --skeleton 2> /dev/null
 case $(summary "$WORK/sides8.glb") in *'vertices=22500 nodes=627 joints=625 skins=0 '*) ;; *) fail "export-sides-default: $(summary "$WORK/sides8.glb")" ;; esac
 case $(summary "$WORK/sides5.gltf") in *'vertices=15000 nodes=627 joints=625 '*) ;; *) fail "export-sides: $(summary "$WORK/sides5.gltf")" ;; esac
-"$LSYS" export "$DATA/plants/abop_1_24a.lsys" -o "$WORK/sides5-instanced.glb" --instanced --sides 5 2> /dev/null
+# The drawn form (the default) has the renderer's bark tubes: fewer vertices than the frusta, and
+# --geometry tubes is --generalized-cylinders.
+"$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/drawn.glb" 2> /dev/null
+case $(summary "$WORK/drawn.glb") in *'vertices=22500 '*) fail "export-drawn-default: frusta written" ;; *'vertices='*) ;; *) fail "export-drawn-default: $(summary "$WORK/drawn.glb")" ;; esac
+"$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/tubes.glb" --geometry tubes 2> /dev/null
+"$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/tubes-alias.glb" --generalized-cylinders 2> /dev/null
+cmp -s "$WORK/tubes.glb" "$WORK/tubes-alias.glb" || fail "export-geometry-tubes: --generalized-cylinders writes another file"
+expect_run export-bad-geometry 2 '--geometry' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/bad-geometry.glb" --geometry cones
+[ -e "$WORK/bad-geometry.glb" ] && fail "export-bad-geometry: a file was written"
+expect_run export-help-geometry 0 'drawn|frusta|tubes' -- "$LSYS" export --help
+"$LSYS" export "$DATA/plants/abop_1_24a.lsys" -o "$WORK/sides5-instanced.glb" --instanced --geometry frusta --sides 5 2> /dev/null
 case $(summary "$WORK/sides5-instanced.glb") in *'vertices=120 '*) ;; *) fail "export-sides-instanced: $(summary "$WORK/sides5-instanced.glb")" ;; esac
 expect_run export-no-skeleton 0 '625 joints' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/bare.glb" --no-skeleton
 case $(summary "$WORK/bare.glb") in *'nodes=2 joints=0 skins=0 '*) ;; *) fail "export-no-skeleton: $(summary "$WORK/bare.glb")" ;; esac

@@ -110,6 +110,27 @@ def test_export_instanced_glb(output_dir):
     assert document["meshes"] and document["nodes"]
 
 
+def vertex_count(document):
+    return sum(document["accessors"][primitive["attributes"]["POSITION"]]["count"]
+               for mesh in document["meshes"] for primitive in mesh["primitives"])
+
+
+def test_export_geometry(output_dir):
+    # The drawn form (the default) draws the spruce's needles as ribbons, 4 vertices a needle
+    # where the turtle's frusta have 36: far fewer vertices.
+    spruce = plantfield.load(PLANTS / "spruce.lsys")
+    counts = {}
+    for geometry in ("drawn", "frusta", "tubes"):
+        path = output_dir / f"spruce_{geometry}.glb"
+        plantfield.export(spruce, path, geometry=geometry)
+        counts[geometry] = vertex_count(read_glb(path))
+    plantfield.export(spruce, output_dir / "spruce_default.glb")
+    assert vertex_count(read_glb(output_dir / "spruce_default.glb")) == counts["drawn"]
+    assert counts["drawn"] < counts["tubes"] < counts["frusta"]
+    with pytest.raises(ValueError, match="geometry"):
+        plantfield.export(spruce, output_dir / "spruce_bad.glb", geometry="cones")
+
+
 def test_export_bad_extension(output_dir):
     with pytest.raises(RuntimeError):
         plantfield.export(plantfield.parse("Axiom: F\n"), output_dir / "plant.txt")

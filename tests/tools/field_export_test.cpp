@@ -8,18 +8,27 @@
 #include "field_export.h"
 
 #include "engine/scene/scene.h"
+#include "lsystem/drawn_mesh.h"
+#include "lsystem/plant_export.h"
+#include "lsystem/rewriter.h"
+#include "lsystem/surfaces.h"
+#include "lsystem/turtle.h"
+#include "lsystem/vlab/object.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace pf::test {
@@ -211,6 +220,105 @@ TEST(FieldExport, WithoutGpuInstancingEveryPlantIsANode) {
         EXPECT_NEAR(node.rotation[1], std::sin(0.25 * 3.14159265358979), 1e-6);
     }
     EXPECT_TRUE(found);
+}
+
+// The test scene with its first species drawing data/plants/PLANT at its own
+// size (no height, steps or material overrides), one variant.
+Scene sceneDrawing(const std::string& plant) {
+    Scene scene = loadScene(kScene);
+    Species& species = scene.species.at(0);
+    species.lsystem = fs::path(PLANTFIELD_DATA_DIR) / "plants" / plant;
+    species.variants = 1;
+    species.steps.reset();
+    species.height.reset();
+    species.materials.clear();
+    return scene;
+}
+
+// Every POSITION of every mesh of the file.
+std::vector<glm::vec3> allPositions(const tinygltf::Model& gltf) {
+    std::vector<glm::vec3> positions;
+    for (const tinygltf::Mesh& mesh : gltf.meshes)
+        for (const tinygltf::Primitive& primitive : mesh.primitives) {
+            const std::vector<float> p = floatsOf(gltf, primitive.attributes.at("POSITION"), 3);
+            for (size_t i = 0; i < p.size(); i += 3) positions.emplace_back(p[i], p[i + 1], p[i + 2]);
+        }
+    return positions;
+}
+
+bool lexicographic(const glm::vec3& a, const glm::vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); }
+
+// `lsys export`'s drawn form and the field's LOD0 come from one bake
+// (lsystem/drawn_mesh.h): the spruce (bark tubes, needle ribbons, no leaf
+// cards) exported on its own has exactly the vertices of its model's LOD0
+// meshes in the field's pool, bit for bit.
+TEST(FieldExport, DrawnPlantExportIsTheFieldsLod0) {
+    const Scene scene = sceneDrawing("spruce.lsys");
+    const PlantModelPool pool = buildPlantModels(scene);
+    const PlantModelInfo& model = pool.models.at(pool.modelOf(0, 0));
+    std::vector<glm::vec3> drawn;
+    for (uint32_t v = model.meshes[LOD_FULL][DRAW_BARK].vertexOffset;
+         v < model.meshes[LOD_REDUCED][DRAW_BARK].vertexOffset; ++v)
+        drawn.emplace_back(pool.vertices[v].position);
+    ASSERT_GT(drawn.size(), 1000u);
+
+    // The species' plant as buildPlantModels derives it: the same file and seed.
+    lsys::vlab::PlantFile file = lsys::vlab::loadPlant(scene.species[0].lsystem);
+    ASSERT_TRUE(file.parsed.ok());
+    lsys::DeriveOptions options;
+    options.seed = speciesSeed(scene, 0);
+    options.maxModules = 5'000'000;
+    const lsys::PlantAsset plant =
+        lsys::plantFromGrammar(file.parsed.grammar, lsys::derive(file.parsed.grammar, options),
+                               lsys::SurfaceLibrary(lsys::meshDirectoriesFor(scene.species[0].lsystem)));
+    const fs::path dir = scratchDir("drawn");
+    lsys::exportPlant(plant, dir / "spruce.glb");
+    std::vector<glm::vec3> exported = allPositions(load(dir / "spruce.glb"));
+
+    std::sort(drawn.begin(), drawn.end(), lexicographic);
+    std::sort(exported.begin(), exported.end(), lexicographic);
+    ASSERT_EQ(exported.size(), drawn.size());
+    for (size_t i = 0; i < drawn.size(); ++i) ASSERT_EQ(exported[i], drawn[i]) << "vertex " << i;
+}
+
+// The whole-field export writes a leaf card as the leaf outline the shader
+// cuts from it: each of the model's LOD0 cards (four vertices of kind leaf)
+// becomes leafOutline()'s vertices, on the card's plane within the card.
+TEST(FieldExport, LeafCardsAreLeafOutlines) {
+    const FieldContent field = buildFieldContent(sceneDrawing("leafy_bush.lsys"));
+    const PlantModelPool& pool = field.models;
+    const PlantModelInfo& model = pool.models.at(pool.modelOf(0, 0));
+    const MeshRange& foliage = model.meshes[LOD_FULL][DRAW_FOLIAGE];
+    size_t cardVertices = 0;
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (uint32_t v = foliage.vertexOffset; v < model.meshes[LOD_REDUCED][DRAW_BARK].vertexOffset; ++v)
+        if (pool.vertices[v].albedo.w == SURFACE_LEAF) {
+            ++cardVertices;
+            lo = glm::min(lo, glm::vec3(pool.vertices[v].position));
+            hi = glm::max(hi, glm::vec3(pool.vertices[v].position));
+        }
+    ASSERT_GT(cardVertices, 0u);
+    ASSERT_EQ(cardVertices % 4, 0u);
+
+    const fs::path dir = scratchDir("leaves");
+    exportField(field, dir / "field.glb");
+    const tinygltf::Model gltf = load(dir / "field.glb");
+    size_t leafVertices = 0;
+    for (const tinygltf::Mesh& mesh : gltf.meshes) {
+        if (mesh.name != model.name) continue;
+        for (const tinygltf::Primitive& primitive : mesh.primitives) {
+            if (gltf.materials.at(size_t(primitive.material)).name.rfind("leaf ", 0) != 0) continue;
+            EXPECT_TRUE(gltf.materials.at(size_t(primitive.material)).doubleSided);
+            const std::vector<float> p = floatsOf(gltf, primitive.attributes.at("POSITION"), 3);
+            leafVertices += p.size() / 3;
+            for (size_t i = 0; i < p.size(); i += 3) { // inside the cards' box
+                const glm::vec3 q(p[i], p[i + 1], p[i + 2]);
+                ASSERT_TRUE(glm::all(glm::greaterThanEqual(q, lo - 1e-5f)) &&
+                            glm::all(glm::lessThanEqual(q, hi + 1e-5f)));
+            }
+        }
+    }
+    EXPECT_EQ(leafVertices, cardVertices / 4 * lsys::leafOutline().uvs.size());
 }
 
 TEST(FieldExport, RefusesUnknownExtensionsWithoutWriting) {

@@ -4,8 +4,8 @@
 //   [--max-modules N] lsys check FILE [-D NAME=VALUE]... [--dialect D] lsys instance FILE [-n STEPS] [--seed S] [-D
 //   NAME=VALUE]... [--dialect D] [--randomness K] [--json] lsys export FILE [-n STEPS] [--seed S] [-D NAME=VALUE]...
 //   [--dialect D] -o OUT.gltf|.glb|.obj [--flat|--instanced]
-//               [--randomness K] [--granularity G] [--max-gltf-nodes N] [--generalized-cylinders]
-//               [--sides N] [--skeleton|--no-skeleton] [--height H]
+//               [--randomness K] [--granularity G] [--max-gltf-nodes N] [--geometry drawn|frusta|tubes]
+//               [--generalized-cylinders] [--sides N] [--skeleton|--no-skeleton] [--height H]
 //   lsys --help-turtle
 // derive, instance and export take --memory-budget SIZE (tools/memory_budget_option.h).
 // Exit codes: 0 success, 2 bad input (parse errors, budget exceeded, out of memory), 1 usage errors.
@@ -27,6 +27,7 @@
 
 #include "lsystem/bgrammar.h"
 #include "lsystem/dialects/dialect.h"
+#include "lsystem/drawn_mesh.h"
 #include "lsystem/error.h"
 #include "lsystem/graph_export.h"
 #include "lsystem/instance_graph.h"
@@ -235,11 +236,24 @@ int instance(const Arguments& arguments) {
     return 0;
 }
 
-// The scale that makes the plant's meshes, as the flat form bakes them,
-// --height tall, or nullopt (after saying why) for a plant without height.
+// The box of the flattened graph's meshes as the flat form bakes them.
+lsys::Bounds flatBounds(const lsys::PlantAsset& plant, const lsys::GraphExportOptions& options) {
+    if (options.geometry == lsys::ExportGeometry::Turtle)
+        return lsys::bakedBounds(plant, options.segments, options.detail);
+    lsys::DrawnOptions drawn;
+    drawn.trunkSides = options.detail.segmentSides;
+    drawn.leaves = lsys::LeafCards::Outlines;
+    lsys::Bounds bounds;
+    for (const lsys::TriangleMesh& mesh : lsys::drawnMeshesByMaterial(plant, lsys::drawnScaleOf(plant), drawn))
+        for (const glm::vec3& p : mesh.positions) bounds.extend(p);
+    return bounds;
+}
+
+// The scale that makes the flattened graph's meshes --height tall, or
+// nullopt (after saying why) for a plant without height.
 std::optional<float> exportScale(const Arguments& arguments, const lsys::PlantAsset& plant,
-                                 lsys::SegmentGeometry segments, const lsys::MeshDetail& detail) {
-    const float scale = lsys::heightScale(lsys::bakedBounds(plant, segments, detail), *arguments.height);
+                                 const lsys::GraphExportOptions& options) {
+    const float scale = lsys::heightScale(flatBounds(plant, options), *arguments.height);
     if (scale > 0.0f && std::isfinite(scale)) return scale;
     std::cerr << arguments.file << ": error: --height: the plant has no height to scale (its meshes' y extent is 0)\n";
     return std::nullopt;
@@ -255,7 +269,7 @@ std::string scaleNote(const Arguments& arguments, float scale) {
 
 // The plant the graph stands for, flattened within the module and memory
 // budgets, for --height: the flat form's meshes are the instanced form's
-// placed (generalised cylinders aside, whose chains the instanced form ends
+// placed (bark tubes and generalised cylinders aside, whose chains the instanced form ends
 // at each instance), so both forms are scaled to the same height. The
 // graph's own boxes would not do: each instance adds its object's rotated
 // box's box (data/plants/fractal_bush.lsys: 12 % too tall).
@@ -281,9 +295,8 @@ int exportGraph(const Arguments& arguments, const lsys::Grammar& grammar) {
     }
     std::optional<float> scale = 1.0f;
     try {
-        const lsys::GraphExportOptions& o = arguments.graphExportOptions;
         if (arguments.height)
-            scale = exportScale(arguments, flatPlant(arguments, graph, surfaces), o.segments, o.detail);
+            scale = exportScale(arguments, flatPlant(arguments, graph, surfaces), arguments.graphExportOptions);
     } catch (const std::runtime_error& error) { // DerivationError, MemoryBudgetError
         return failed(arguments, error);
     }
@@ -320,21 +333,19 @@ int exportCommand(const Arguments& arguments) {
     } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
         return failed(arguments, error);
     }
-    const lsys::ExportOptions& o = arguments.exportOptions;
-    const std::optional<float> scale = arguments.height ? exportScale(arguments, plant, o.segments, o.detail) : 1.0f;
-    if (!scale) return kBadInput;
-    if (*scale != 1.0f) lsys::scalePlant(plant, *scale);
+    float scale = 1.0f;
     try {
         lsys::ExportOptions options = arguments.exportOptions;
         options.memory = arguments.memory;
-        lsys::exportPlant(plant, arguments.output, options);
+        options.height = arguments.height.value_or(0.0f);
+        scale = lsys::exportPlant(plant, arguments.output, options);
     } catch (const std::runtime_error& error) {
         std::cerr << "lsys: error: " << error.what() << '\n';
         return kBadInput;
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cerr << arguments.output << ": " << plant.primitives.size() << " primitives, " << plant.joints.size()
-              << " joints" << scaleNote(arguments, *scale) << " (" << seconds << " s)\n";
+              << " joints" << scaleNote(arguments, scale) << " (" << seconds << " s)\n";
     return 0;
 }
 
@@ -378,6 +389,32 @@ void addGraphOptions(CLI::App& command, Arguments& arguments) {
         ->check(CLI::Range(0, 1'000'000));
 }
 
+// The meshes --geometry names (docs/EXPORT.md): the plant as the field
+// draws it, or the turtle's segments as frusta or generalised cylinders.
+void setGeometry(Arguments& arguments, const std::string& name) {
+    const bool drawn = name == "drawn", tubes = name == "tubes";
+    arguments.exportOptions.geometry = drawn ? lsys::ExportGeometry::Drawn : lsys::ExportGeometry::Turtle;
+    arguments.graphExportOptions.geometry = arguments.exportOptions.geometry;
+    const lsys::SegmentGeometry segments =
+        tubes ? lsys::SegmentGeometry::GeneralizedCylinders : lsys::SegmentGeometry::Frusta;
+    arguments.exportOptions.segments = segments;
+    arguments.graphExportOptions.segments = segments;
+}
+
+// --geometry and its older spelling --generalized-cylinders (--geometry tubes).
+void addGeometryOptions(CLI::App& command, Arguments& arguments) {
+    command
+        .add_option_function<std::string>(
+            "--geometry", [&arguments](const std::string& name) { setGeometry(arguments, name); },
+            "Meshes, flat and --instanced: drawn (default: the plant as plantfield draws it up close, bark "
+            "tubes, foliage ribbons, leaf outlines), frusta (the turtle's segments, one cone frustum each) or "
+            "tubes (the turtle's segments as generalised cylinders)")
+        ->check(CLI::IsMember({"drawn", "frusta", "tubes"}))
+        ->type_name("drawn|frusta|tubes");
+    command.add_flag_callback(
+        "--generalized-cylinders", [&arguments] { setGeometry(arguments, "tubes"); }, "The same as --geometry tubes");
+}
+
 // --sides, --skeleton/--no-skeleton and --height: the exported plant as drawn.
 void addDrawnFormOptions(CLI::App& command, Arguments& arguments) {
     command
@@ -387,7 +424,8 @@ void addDrawnFormOptions(CLI::App& command, Arguments& arguments) {
                 arguments.exportOptions.detail.segmentSides = sides;
                 arguments.graphExportOptions.detail.segmentSides = sides;
             },
-            "Sides of each segment's ring, flat and --instanced (default 8)")
+            "Sides of each segment's ring, flat and --instanced (default 8); with --geometry drawn the trunk's, "
+            "thinner bark getting fewer (3/4, 1/2, at least 3) as plantfield draws it")
         ->check(CLI::Range(kMinSides, kMaxSides));
     command.add_flag("--skeleton,!--no-skeleton", arguments.exportOptions.skeleton,
                      "Write the joints as empty glTF nodes joint_<i> nested as the plant's skeleton (the default); "
@@ -395,7 +433,7 @@ void addDrawnFormOptions(CLI::App& command, Arguments& arguments) {
     command
         .add_option("--height", arguments.height,
                     "Scale the plant uniformly about its base so that its meshes are H metres tall (their y extent "
-                    "as drawn with --sides and --generalized-cylinders; --instanced: the same plant's)")
+                    "as written, with --geometry and --sides; --instanced: the same plant's)")
         ->check([](const std::string& text) -> std::string {
             char* end = nullptr;
             const double value = std::strtod(text.c_str(), &end);
@@ -497,13 +535,7 @@ int main(int argc, char** argv) {
         ->add_option("--max-gltf-nodes", arguments.graphExportOptions.maxNodes,
                      "With --instanced: node budget (one node per instance path); exceeding it is an error")
         ->check(CLI::PositiveNumber);
-    exportSubcommand->add_flag_callback(
-        "--generalized-cylinders",
-        [&arguments] {
-            arguments.exportOptions.segments = lsys::SegmentGeometry::GeneralizedCylinders;
-            arguments.graphExportOptions.segments = lsys::SegmentGeometry::GeneralizedCylinders;
-        },
-        "Stems as tubes whose rings follow the bend instead of one frustum per segment");
+    addGeometryOptions(*exportSubcommand, arguments);
     exportSubcommand->add_option("--max-modules", arguments.maxModules, "Module budget; exceeding it is an error")
         ->check(CLI::PositiveNumber);
     addDrawnFormOptions(*exportSubcommand, arguments);

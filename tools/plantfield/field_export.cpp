@@ -3,6 +3,7 @@
 #include "field_export.h"
 
 #include "engine/scene/terrain.h"
+#include "lsystem/drawn_mesh.h"
 #include "lsystem/export_detail.h"
 #include "lsystem/gltf_builder.h"
 #include "lsystem/output_file.h"
@@ -60,7 +61,21 @@ glm::vec3 unitOr(glm::vec3 n, glm::vec3 fallback) {
     return length > 0.0f && std::isfinite(length) ? n / length : fallback;
 }
 
-// A model's LOD0 meshes (bark and foliage) split by material: (material, mesh) pairs.
+glm::vec3 positionOf(const gpu::FieldVertex& v) { return glm::vec3(v.position); }
+
+// Whether the triangle is the first of a leaf card's two: a card is the quad
+// a b c d (uv (0,0) (1,0) (1,1) (0,1), in that vertex order) drawn as a b c
+// and a c d (lsystem/drawn_mesh.cpp bakeLeafCard).
+bool isLeafCardStart(const PlantModelPool& pool, const MeshRange& range, const uint32_t* corners) {
+    const gpu::FieldVertex& a = pool.vertices[range.vertexOffset + corners[0]];
+    const gpu::FieldVertex& b = pool.vertices[range.vertexOffset + corners[1]];
+    return a.albedo.w == SURFACE_LEAF && a.position.w == 0.0f && a.normal.w == 0.0f && b.position.w == 1.0f &&
+           b.normal.w == 0.0f;
+}
+
+// A model's LOD0 meshes (bark and foliage) split by material: (material,
+// mesh) pairs. Leaf cards become the mesh of the leaf outline the renderer's
+// shader cuts from them (the file has no texture to cut with).
 std::vector<std::pair<uint32_t, lsys::TriangleMesh>> modelMeshes(const PlantModelPool& pool,
                                                                  const PlantModelInfo& model, Materials& materials) {
     std::map<uint32_t, lsys::TriangleMesh> parts;
@@ -68,15 +83,25 @@ std::vector<std::pair<uint32_t, lsys::TriangleMesh>> modelMeshes(const PlantMode
     for (const MeshRange& range : model.meshes[LOD_FULL]) {
         for (uint32_t t = 0; t + 2 < range.indexCount; t += 3) {
             const uint32_t* corners = &pool.indices[range.firstIndex + t];
-            const uint32_t material = materials.of(pool.vertices[range.vertexOffset + corners[0]]);
+            const gpu::FieldVertex& first = pool.vertices[range.vertexOffset + corners[0]];
+            const uint32_t material = materials.of(first);
             lsys::TriangleMesh& mesh = parts[material];
+            if (first.albedo.w == SURFACE_LEAF) {
+                if (isLeafCardStart(pool, range, corners)) {
+                    const glm::vec3 a = positionOf(first);
+                    const glm::vec3 b = positionOf(pool.vertices[range.vertexOffset + corners[1]]);
+                    const glm::vec3 d = positionOf(pool.vertices[range.vertexOffset + corners[2] + 1]); // after c
+                    lsys::appendLeafOutline(mesh, a, b - a, d - a, unitOr(glm::vec3(first.normal), {0, 1, 0}));
+                }
+                continue;
+            }
             std::unordered_map<uint32_t, uint32_t>& remap = remaps[material];
             for (int c = 0; c < 3; ++c) {
                 const uint32_t vertex = range.vertexOffset + corners[c];
                 const auto [it, added] = remap.try_emplace(vertex, mesh.vertexCount());
                 if (added) {
                     const gpu::FieldVertex& v = pool.vertices[vertex];
-                    mesh.positions.emplace_back(v.position.x, v.position.y, v.position.z);
+                    mesh.positions.push_back(positionOf(v));
                     mesh.normals.push_back(unitOr({v.normal.x, v.normal.y, v.normal.z}, {0.0f, 1.0f, 0.0f}));
                     mesh.uvs.emplace_back(v.position.w, v.normal.w);
                 }
@@ -154,16 +179,25 @@ std::string jsonString(const std::string& text) {
 }
 
 // What exportField holds at once, from counts known before any mesh is built:
-// every LOD0 index may bring a vertex (32 bytes written, more while built),
+// every LOD0 index may bring a vertex (32 bytes written, more while built; a
+// leaf card's six bring its outline, below),
 // the terrain's vertices and indices, the instance attributes (40 bytes a
 // plant) or the plain nodes; all of it about three times over (the meshes,
 // the glTF buffer and its copy in the file's encoding, base64 for .gltf).
 uint64_t exportBytes(const FieldContent& content, const FieldExportOptions& options, bool binary) {
-    uint64_t indices = 0;
-    for (const PlantModelInfo& model : content.models.models)
-        for (const MeshRange& range : model.meshes[LOD_FULL]) indices = lsys::bytesPlus(indices, range.indexCount);
+    const PlantModelPool& pool = content.models;
+    uint64_t indices = 0, leafCards = 0;
+    for (const PlantModelInfo& model : pool.models)
+        for (const MeshRange& range : model.meshes[LOD_FULL]) {
+            indices = lsys::bytesPlus(indices, range.indexCount);
+            for (uint32_t t = 0; t + 2 < range.indexCount; t += 3)
+                leafCards += isLeafCardStart(pool, range, &pool.indices[range.firstIndex + t]);
+        }
+    const lsys::LeafOutline& outline = lsys::leafOutline();
+    const uint64_t outlineBytes = outline.uvs.size() * (32 + 64) + outline.indices.size() * 4;
     const uint64_t resolution = content.terrain.resolution;
     uint64_t data = lsys::bytesTimes(indices, 4 + 64);
+    data = lsys::bytesPlus(data, lsys::bytesTimes(leafCards, outlineBytes));
     data = lsys::bytesPlus(data, lsys::bytesTimes(resolution * resolution, 32 + 24));
     data = lsys::bytesPlus(data, lsys::bytesTimes(resolution * resolution, 6 * 4));
     data = lsys::bytesPlus(data, lsys::bytesTimes(content.plants.size(), 40));

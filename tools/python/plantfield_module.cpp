@@ -174,8 +174,15 @@ py::dict instanceStats(const PyGrammar& grammar, std::optional<int> steps, std::
 }
 
 void exportPlant(const PyGrammar& grammar, const std::filesystem::path& path, std::optional<int> steps,
-                 std::optional<uint64_t> seed, bool instanced, uint32_t sides, bool skeleton, size_t maxModules) {
+                 std::optional<uint64_t> seed, bool instanced, uint32_t sides, bool skeleton, size_t maxModules,
+                 const std::string& geometry) {
     if (sides < 3 || sides > 1024) throw py::value_error("sides must be between 3 and 1024");
+    if (geometry != "drawn" && geometry != "frusta" && geometry != "tubes")
+        throw py::value_error("geometry must be 'drawn', 'frusta' or 'tubes', not '" + geometry + "'");
+    // As lsys export --geometry.
+    const lsys::ExportGeometry form = geometry == "drawn" ? lsys::ExportGeometry::Drawn : lsys::ExportGeometry::Turtle;
+    const lsys::SegmentGeometry segments =
+        geometry == "tubes" ? lsys::SegmentGeometry::GeneralizedCylinders : lsys::SegmentGeometry::Frusta;
     py::gil_scoped_release release;
     const lsys::SurfaceLibrary surfaces = surfacesFor(grammar);
     if (instanced) {
@@ -183,6 +190,8 @@ void exportPlant(const PyGrammar& grammar, const std::filesystem::path& path, st
             lsys::buildInstanceGraph(lsys::buildBGrammar(grammar.grammar, bgrammarOptions(steps, seed, maxModules)),
                                      grammar.grammar, {}, surfaces);
         lsys::GraphExportOptions options;
+        options.geometry = form;
+        options.segments = segments;
         options.detail.segmentSides = sides;
         lsys::exportInstanceGraph(graph, surfaces, path, options);
         return;
@@ -190,6 +199,8 @@ void exportPlant(const PyGrammar& grammar, const std::filesystem::path& path, st
     const lsys::ModuleString string = lsys::derive(grammar.grammar, deriveOptions(steps, seed, maxModules));
     const lsys::PlantAsset plant = lsys::plantFromGrammar(grammar.grammar, string, surfaces);
     lsys::ExportOptions options;
+    options.geometry = form;
+    options.segments = segments;
     options.detail.segmentSides = sides;
     options.skeleton = skeleton;
     lsys::exportPlant(plant, path, options);
@@ -257,7 +268,9 @@ PYBIND11_MODULE(plantfield, m) {
           "The instance graph's statistics, as `lsys instance --json` prints them");
     m.def("export", &exportPlant, py::arg("grammar"), py::arg("path"), py::arg("steps") = py::none(),
           py::arg("seed") = py::none(), py::arg("instanced") = false, py::arg("sides") = 8, py::arg("skeleton") = true,
-          py::arg("max_modules") = kMaxModules, "Writes the plant as .glb, .gltf or .obj, as `lsys export` does");
+          py::arg("max_modules") = kMaxModules, py::arg("geometry") = "drawn",
+          "Writes the plant as .glb, .gltf or .obj, as `lsys export` does (geometry: 'drawn', the plant as "
+          "plantfield draws it, or the turtle's 'frusta' or 'tubes'; flat and instanced)");
 
     bindRender(m);
 }
