@@ -91,7 +91,7 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& path, uint32_t width, ui
     ffmpeg_ = std::make_unique<lsys::Process>(argv, ffmpegLimits());
     if (!ffmpeg_->started())
         throw std::runtime_error("video " + path.string() + ": " + ffmpegSays(ffmpeg_->finish()) +
-                                 " (install ffmpeg, or write PNG frames with --out)");
+                                 " (install ffmpeg, or write PNG frames with --out-dir)");
 }
 
 VideoEncoder::~VideoEncoder() = default;

@@ -4,8 +4,10 @@
 #include "modes.h"
 
 #include "engine/image/image.h"
+#include "engine/image/video_encoder.h"
 #include "engine/offline/frame_stats_json.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -24,12 +26,15 @@ std::string framePath(const std::string& dir, uint32_t index) {
 } // namespace
 
 int runHeadless(const PlantfieldOptions& o) {
+    // Started before the field is built, so a machine without ffmpeg says so at once.
+    std::optional<VideoEncoder> video;
+    if (!o.videoPath.empty()) video.emplace(o.videoPath, o.size.width, o.size.height, o.fps);
     std::optional<PreviewOrbit> orbit;
     FieldContent content = loadFieldContent(o, &orbit);
     OfflineRenderer renderer(std::move(content), offlineSettings(o, orbit));
     if (!o.outDir.empty()) std::filesystem::create_directories(o.outDir);
 
-    const uint32_t frames = o.outDir.empty() ? 1 : o.frames;
+    const uint32_t frames = std::max(o.frames, 1u);
     // --frame-range A:B: the sequence stops after B, and the frames before A
     // are drawn as the whole run draws them, only not read back or written:
     // frame A carries their state (offline_renderer.h), so it is the whole
@@ -44,16 +49,17 @@ int runHeadless(const PlantfieldOptions& o) {
             continue;
         }
         const RgbaImage image = renderer.frame(i);
-        if (!o.outDir.empty()) {
-            writePng(framePath(o.outDir, i), image);
-            if (terminal) std::fprintf(stderr, "\rplantfield: frame %u/%u\x1b[K", i + 1, frames);
-        }
+        if (!o.outDir.empty()) writePng(framePath(o.outDir, i), image);
+        if (video) video->addFrame(image);
+        if (terminal && o.frames > 0) std::fprintf(stderr, "\rplantfield: frame %u/%u\x1b[K", i + 1, frames);
         if (!o.capturePath.empty() && i + 1 == end) writePng(o.capturePath, image);
     }
+    if (video) video->finish();
+    const std::string written = o.outDir + (!o.outDir.empty() && video ? " and " : "") + o.videoPath;
     if (o.frameRange)
-        std::fprintf(stderr, "\rplantfield: frames %u to %u of %u -> %s\n", first, end - 1, frames, o.outDir.c_str());
-    else if (!o.outDir.empty())
-        std::fprintf(stderr, "\rplantfield: %u frames -> %s\n", frames, o.outDir.c_str());
+        std::fprintf(stderr, "\rplantfield: frames %u to %u of %u -> %s\n", first, end - 1, frames, written.c_str());
+    else if (o.frames > 0)
+        std::fprintf(stderr, "\rplantfield: %u frames -> %s\n", frames, written.c_str());
     if (o.stats) std::cout << frameStatsJson(renderer, inputName(o)) << "\n";
     const FieldFrameStats stats = renderer.stats();
     std::fprintf(stderr, "plantfield: %ux%u on %s: %u plants (%s), %.1f M triangles%s%s\n", o.size.width, o.size.height,

@@ -1,5 +1,6 @@
 #include "options.h"
 
+#include "engine/image/video_encoder.h"
 #include "engine/vk/device.h"
 #include "lsystem/output_file.h"
 #include "shaders/field_layouts.h"
@@ -178,12 +179,18 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                    "up to the window (docs/WINDOW.md)")
         ->type_name("S|auto");
     app.add_option("--frames", o.frames,
-                   "Headless: render this many frames into --out-dir; with --window: close after this many");
+                   "Headless: render this many frames into --out-dir and/or --video; with --window: close after\n"
+                   "this many");
     checkFiniteIn(*app.add_option("--fps", o.fps, "Frames per scene second of a --frames sequence"), 0.1, 1000.0);
     app.add_option("--out-dir", o.outDir, "Folder of a --frames sequence (frame_0000.png, ...), created if missing");
+    app.add_option("--video", o.videoPath,
+                   "With --frames N: encode the frames (with --frame-range, those) into FILE.mp4, .mkv or .mov,\n"
+                   "H.264 at --fps, with ffmpeg as they are rendered (docs/FARM.md)")
+        ->type_name("FILE");
     std::string frameRangeText;
     app.add_option("--frame-range", frameRangeText,
-                   "With --frames N --out-dir DIR: write only frames A to B of the sequence (both included,\n"
+                   "With --frames N and --out-dir DIR or --video FILE: write only frames A to B of the sequence (both "
+                   "included,\n"
                    "numbered from 0 as the files are: 0:0 is frame_0000.png), the same bytes as the whole\n"
                    "run's; the frames before A are rendered too, not written, for the motion they carry\n"
                    "(docs/FARM.md)")
@@ -300,7 +307,9 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     if (plant && o.instances) return fail("--instances is for scenes: --plant previews one plant");
     const bool sequence = !o.window && o.frames > 0;
     if (!frameRangeText.empty()) {
-        if (!sequence) return fail("--frame-range needs a headless sequence: --frames N --out-dir DIR, no --window");
+        if (!sequence)
+            return fail("--frame-range needs a headless sequence: --frames N with --out-dir DIR or --video FILE, "
+                        "no --window");
         o.frameRange = parseFrameRange(frameRangeText);
         if (!o.frameRange)
             return fail("invalid --frame-range '" + frameRangeText +
@@ -323,8 +332,10 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
         return fail("nothing to do: pass --capture FILE.png, --frames N --out-dir DIR, --stats, --physics-check, "
                     "--export FILE.glb or --window");
     if (o.densify && !o.instances) return fail("--densify needs --instances N");
-    if (sequence && o.outDir.empty()) return fail("--frames without --window needs --out-dir DIR for the images");
+    if (sequence && o.outDir.empty() && o.videoPath.empty())
+        return fail("--frames without --window needs --out-dir DIR for the images or --video FILE");
     if (!o.outDir.empty() && !sequence) return fail("--out-dir needs --frames N (and no --window)");
+    if (!o.videoPath.empty() && !sequence) return fail("--video needs --frames N (and no --window)");
     if (!renderScaleText.empty() && !o.window)
         return fail("--render-scale is for --window: captures and sequences render at --size");
     if (plant) {
@@ -337,6 +348,12 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     if (!o.capturePath.empty()) {
         const std::string problem = lsys::outputPathProblem(o.capturePath);
         if (!problem.empty()) return fail("cannot write --capture file: " + problem);
+    }
+    if (!o.videoPath.empty()) {
+        if (!videoMuxerFor(o.videoPath))
+            return fail("--video '" + o.videoPath + "': unknown extension (expected .mp4, .mkv or .mov)");
+        const std::string problem = lsys::outputPathProblem(o.videoPath);
+        if (!problem.empty()) return fail("cannot write --video file: " + problem);
     }
     const auto extensionIn = [](const std::string& path, std::initializer_list<const char*> allowed) {
         std::string extension = std::filesystem::path(path).extension().string();

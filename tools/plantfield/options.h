@@ -71,9 +71,10 @@ struct PlantfieldOptions {
     ImageSize size{1280, 720};
     bool window = false;
     bool watch = false;                        // --watch: the window rebuilds when the input's files change
-    uint32_t frames = 0;                       // window: stop after this many; headless: capture this many into outDir
+    uint32_t frames = 0;                       // window: stop after this many; headless: this many into outDir, video
     double fps = 30.0;                         // scene seconds per frame of a --frames sequence: 1/fps
     std::string outDir;                        // --frames sequence: DIR/frame_0000.png …
+    std::string videoPath;                     // --frames sequence: encoded by ffmpeg into this .mp4, .mkv or .mov
     std::optional<FrameRange> frameRange;      // --frame-range: only these frames of the sequence are written
     double time = 0.0;                         // scene time of the (first) frame, seconds
     std::optional<uint64_t> instances;         // exactly this many generated plants, at the scene's densities
