@@ -134,3 +134,32 @@ def test_export_geometry(output_dir):
 def test_export_bad_extension(output_dir):
     with pytest.raises(RuntimeError):
         plantfield.export(plantfield.parse("Axiom: F\n"), output_dir / "plant.txt")
+
+
+# Tankard 2001's Figure 3 matrix, from the tree tests/ramification pins by hand.
+def test_ramify_gives_figure_three():
+    figure3 = Path(__file__).resolve().parents[1] / "ramification" / "data" / "figure3.lsys"
+    matrix = plantfield.ramify(plantfield.load(figure3))
+    assert matrix == {"orders": 3, "a": [8, 5, 2], "p": [[1.0], [0.6, 0.4], [0.5, 0.0, 0.5]]}
+
+
+def test_ramified_tree_is_a_plant_of_its_matrix():
+    oak = DATA / "ramified" / "oak.ram.json"
+    tree = plantfield.ramified_tree(oak, seed=3)
+    assert str(plantfield.derive(tree)) == str(plantfield.derive(plantfield.ramified_tree(oak, seed=3)))
+    assert str(plantfield.derive(tree)) != str(plantfield.derive(plantfield.ramified_tree(oak, seed=4)))
+    matrix = plantfield.ramify(tree)
+    assert matrix["orders"] == 7
+    for row in matrix["p"]:
+        assert sum(row) == pytest.approx(1.0)
+
+
+def test_ramified_tree_errors(tmp_path):
+    bad = tmp_path / "bad.ram.json"
+    bad.write_text('{\n  "p": [[1], [0.5, 0.5]],\n  "twst": 3\n}\n')
+    with pytest.raises(plantfield.LsystemError) as error:
+        plantfield.ramified_tree(bad)
+    assert error.value.diagnostics[0][1:3] == (3, 3)
+    assert "unknown key 'twst'" in error.value.diagnostics[0][3]
+    with pytest.raises(plantfield.RamificationBudgetError):
+        plantfield.ramified_tree(DATA / "ramified" / "oak.ram.json", max_branches=10)

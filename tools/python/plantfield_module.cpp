@@ -1,5 +1,7 @@
 // The Python module `plantfield` (docs/PYTHON.md): load or parse a plant in
-// any dialect, derive it, read its instance-graph statistics and export it,
+// any dialect, derive it, read its instance-graph statistics, its
+// ramification matrix (Tankard 2001, §2.2) and export it, generate trees
+// from ramification files,
 // as the lsys tool does (tools/lsys/main.cpp), with diagnostics raised as
 // plantfield.LsystemError; and render scenes headless (render_bindings.h).
 
@@ -25,6 +27,9 @@
 #include "lsystem/memory_budget.h"
 #include "lsystem/parser.h"
 #include "lsystem/plant_export.h"
+#include "lsystem/ramification.h"
+#include "lsystem/ramification_file.h"
+#include "lsystem/ramification_generate.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"
@@ -206,6 +211,44 @@ void exportPlant(const PyGrammar& grammar, const std::filesystem::path& path, st
     lsys::exportPlant(plant, path, options);
 }
 
+// As `lsys ramify --json` prints it for a plant: {"orders": K, "a": [...], "p": [[...], ...]}.
+py::dict ramify(const PyGrammar& grammar, std::optional<int> steps, std::optional<uint64_t> seed, size_t maxModules) {
+    lsys::CompiledRamification compiled;
+    {
+        py::gil_scoped_release release;
+        const lsys::ModuleString string = lsys::derive(grammar.grammar, deriveOptions(steps, seed, maxModules));
+        compiled =
+            lsys::compileRamification(lsys::plantFromGrammar(grammar.grammar, string, surfacesFor(grammar)).joints);
+    }
+    const lsys::RamificationMatrix matrix = lsys::ramificationMatrix(compiled.counts);
+    py::dict out;
+    out["orders"] = matrix.orders();
+    out["a"] = compiled.counts.a;
+    out["p"] = matrix.p;
+    return out;
+}
+
+// The tree a .ram.json file generates, as the plant `lsys ramify FILE -o
+// tree.lsys` writes: a Grammar like any loaded one.
+std::shared_ptr<PyGrammar> ramifiedTree(const std::filesystem::path& path, std::optional<uint64_t> seed,
+                                        std::optional<uint64_t> maxBranches) {
+    lsys::RamificationFile file = lsys::readRamificationFile(path);
+    if (!file.tree) {
+        lsys::ParseResult failed;
+        failed.diagnostics = std::move(file.diagnostics);
+        finish(failed, path.string(), std::move(file.source), true); // raises LsystemError
+    }
+    if (seed) file.tree->seed = *seed;
+    if (maxBranches) file.tree->maxBranches = *maxBranches;
+    std::string text;
+    {
+        py::gil_scoped_release release;
+        text = lsys::lsystemText(lsys::generateTree(*file.tree),
+                                 "Generated from " + path.string() + ", seed " + std::to_string(file.tree->seed));
+    }
+    return parse(text, path.string(), {}, std::nullopt);
+}
+
 const size_t kMaxModules = lsys::DeriveOptions{}.maxModules; // the library's default, as lsys's
 
 } // namespace
@@ -221,6 +264,8 @@ PYBIND11_MODULE(plantfield, m) {
     static py::exception<lsys::DerivationError> derivationError(m, "DerivationError", PyExc_RuntimeError);
     static py::exception<lsys::ModuleBudgetError> moduleBudgetError(m, "ModuleBudgetError", derivationError.ptr());
     static py::exception<lsys::MemoryBudgetError> memoryBudgetError(m, "MemoryBudgetError", derivationError.ptr());
+    static py::exception<lsys::RamificationBudgetError> ramificationBudgetError(m, "RamificationBudgetError",
+                                                                                derivationError.ptr());
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p) std::rethrow_exception(p);
@@ -228,6 +273,8 @@ PYBIND11_MODULE(plantfield, m) {
             moduleBudgetError(e.what());
         } catch (const lsys::MemoryBudgetError& e) {
             memoryBudgetError(e.what());
+        } catch (const lsys::RamificationBudgetError& e) {
+            ramificationBudgetError(e.what());
         } catch (const lsys::DerivationError& e) {
             derivationError(e.what());
         }
@@ -271,6 +318,14 @@ PYBIND11_MODULE(plantfield, m) {
           py::arg("max_modules") = kMaxModules, py::arg("geometry") = "drawn",
           "Writes the plant as .glb, .gltf or .obj, as `lsys export` does (geometry: 'drawn', the plant as "
           "plantfield draws it, or the turtle's 'frusta' or 'tubes'; flat and instanced)");
+    m.def("ramify", &ramify, py::arg("grammar"), py::arg("steps") = py::none(), py::arg("seed") = py::none(),
+          py::arg("max_modules") = kMaxModules,
+          "The plant's ramification matrix (Tankard 2001, section 2.2) as `lsys ramify --json` prints it: "
+          "{'orders': K, 'a': [a_1, ...], 'p': [[p_11], [p_21, p_22], ...]}");
+    m.def("ramified_tree", &ramifiedTree, py::arg("path"), py::arg("seed") = py::none(),
+          py::arg("max_branches") = py::none(),
+          "The tree a .ram.json file generates (seed, max_branches: default the file's), as a Grammar; raises "
+          "LsystemError for a malformed file and RamificationBudgetError past the branch budget");
 
     bindRender(m);
 }
