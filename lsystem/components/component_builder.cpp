@@ -21,7 +21,9 @@ namespace lsys::components {
 namespace {
 
 constexpr glm::vec3 kHeading{0.0f, 1.0f, 0.0f};
-constexpr glm::vec3 kLeft{1.0f, 0.0f, 0.0f}; // local X: tilting about it keeps a blade facing up
+// Local X (the turtle's −L): a branch tilts about it, as the turtle's & and ^
+// pitch, so a blade in its frame's XY plane keeps facing up.
+constexpr glm::vec3 kPitchAxis{1.0f, 0.0f, 0.0f};
 
 // Where a component is drawn: its frame, its size relative to the file's
 // metres, and the joint it grows on (-1: the plant's base).
@@ -36,14 +38,21 @@ struct Placement {
 glm::quat shortestArc(glm::vec3 a, glm::vec3 b) {
     const float cosine = glm::dot(a, b);
     if (cosine < -0.9999f) {
-        const glm::vec3 axis = std::abs(a.x) < 0.9f ? glm::cross(a, glm::vec3(1, 0, 0)) : glm::cross(a, glm::vec3(0, 0, 1));
+        const glm::vec3 axis =
+            std::abs(a.x) < 0.9f ? glm::cross(a, glm::vec3(1, 0, 0)) : glm::cross(a, glm::vec3(0, 0, 1));
         return glm::angleAxis(std::numbers::pi_v<float>, glm::normalize(axis));
     }
     const glm::vec3 axis = glm::cross(a, b);
     return glm::normalize(glm::quat(1.0f + cosine, axis.x, axis.y, axis.z));
 }
 
-float radians(float degrees) { return glm::radians(degrees); }
+// A child's rotation at a node of `frame`: turned about the axis, tilted off
+// it, then twisted about its own axis (degrees) — a tree's branch and a
+// radial's child alike.
+glm::quat childRotation(glm::quat frame, float turn, float tilt, float twist) {
+    return frame * glm::angleAxis(glm::radians(turn), kHeading) * glm::angleAxis(glm::radians(tilt), kPitchAxis) *
+           glm::angleAxis(glm::radians(twist), kHeading);
+}
 
 // The drawn stem: a frame and length per segment, and the joint it moves with.
 struct StemSegment {
@@ -55,7 +64,8 @@ struct StemSegment {
 class ComponentPlantBuilder {
 public:
     explicit ComponentPlantBuilder(const ComponentGraph& graph)
-        : graph_(graph), assets_(surfaces_, PlantLook{std::make_shared<const std::vector<Material>>(graph.materials), {}}),
+        : graph_(graph),
+          assets_(surfaces_, PlantLook{std::make_shared<const std::vector<Material>>(graph.materials), {}}),
           random_{splitmix64(graph.seed), 0} {}
 
     PlantAsset build() {
@@ -94,8 +104,7 @@ private:
     // Tankard §4.1.2.2.1: `detail` points of the shape spline joined by
     // segments; each segment is a joint on the one before, so the stem bends
     // as a chain (and the renderer draws it as one generalised cylinder).
-    std::vector<StemSegment> drawStem(const Component& component, const Stem& stem, const Placement& at,
-                                      bool visible) {
+    std::vector<StemSegment> drawStem(const Component& component, const Stem& stem, const Placement& at, bool visible) {
         if (visible) countPrimitives(component, stem.detail);
         std::vector<StemSegment> segments;
         const float size = stem.length * at.scale;
@@ -152,7 +161,7 @@ private:
             for (auto it = half.rbegin(); it != half.rend(); ++it)
                 if (std::abs(it->x) > 1e-6f) blade.push_back({-it->x, it->y, 0.0f}); // the midrib's points once
         }
-        const float fold = radians(leaf.fold), size = leaf.length * at.scale;
+        const float fold = glm::radians(leaf.fold), size = leaf.length * at.scale;
         std::vector<glm::vec3> outline;
         for (const glm::vec3& p : blade) {
             const glm::vec3 folded{p.x * std::cos(fold), p.y, std::abs(p.x) * std::sin(fold)};
@@ -177,15 +186,15 @@ private:
         drawChildren(stemComponent, tip);
         float azimuth = tree.azimuth;
         for (uint32_t k = 0; k < tree.count; ++k) {
-            const float u = tree.count == 1 ? tree.start
-                                            : tree.start + (tree.end - tree.start) * float(k) / float(tree.count - 1);
+            const float u =
+                tree.count == 1 ? tree.start : tree.start + (tree.end - tree.start) * float(k) / float(tree.count - 1);
             if (k > 0) azimuth += valueAt(tree.phyllotaxis, u);
             const float angle = valueAt(tree.angle, u) + tree.angleVariation * variation();
-            const float scale = at.scale * std::max(0.0f, valueAt(tree.scale, u)) * (1.0f + tree.scaleVariation * variation());
+            const float scale =
+                at.scale * std::max(0.0f, valueAt(tree.scale, u)) * (1.0f + tree.scaleVariation * variation());
             Placement node = along(segments, u, scale);
             if (!tree.stemVisible) node.joint = at.joint;
-            node.frame.rotation = node.frame.rotation * glm::angleAxis(radians(azimuth), kHeading) *
-                                  glm::angleAxis(radians(angle), kLeft) * glm::angleAxis(radians(tree.twist), kHeading);
+            node.frame.rotation = childRotation(node.frame.rotation, azimuth, angle, tree.twist);
             drawChildren(component, node);
         }
     }
@@ -197,9 +206,7 @@ private:
             const float turn = radial.interChildAngle * float(i) + radial.angleVariation * variation();
             const float elevation = radial.nodeAngle + radial.angleVariation * variation();
             Placement node = at;
-            node.frame.rotation = at.frame.rotation * glm::angleAxis(radians(turn), kHeading) *
-                                  glm::angleAxis(radians(elevation), kLeft) *
-                                  glm::angleAxis(radians(radial.nodeTwist), kHeading);
+            node.frame.rotation = childRotation(at.frame.rotation, turn, elevation, radial.nodeTwist);
             drawChildren(component, node);
         }
     }

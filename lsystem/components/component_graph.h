@@ -23,7 +23,7 @@ struct Stem {
     Spline shape;
     float length = 1.0f;
     Attribute radius = constant(0.02f);
-    uint32_t detail = 8;   // segments sampled along the shape (Tankard's detail)
+    uint32_t detail = 8;    // segments sampled along the shape (Tankard's detail)
     float stiffness = 0.0f; // N·m/rad of each joint; 0: from beam theory when simulated
     uint32_t material = 0;
 };
@@ -32,8 +32,8 @@ struct Stem {
 // y along the midrib, mirrored about x = 0 and sampled at `detail` points, or
 // a whole polygon given point by point. In units of `length`.
 struct Leaf {
-    Spline halfOutline;               // empty when `polygon` is given
-    std::vector<glm::vec3> polygon;   // z = 0
+    Spline halfOutline;             // empty when `polygon` is given
+    std::vector<glm::vec3> polygon; // z = 0
     float length = 0.1f;
     uint32_t detail = 8;
     float fold = 0.0f; // degrees each half turns up about the midrib
@@ -80,7 +80,7 @@ struct Component {
 // How much a graph may draw: a graph instances its components
 // multiplicatively, so a few lines can ask for millions.
 struct ComponentBudget {
-    uint64_t maxInstances = 200'000;  // components drawn
+    uint64_t maxInstances = 200'000; // components drawn
     uint64_t maxPrimitives = 2'000'000;
 };
 

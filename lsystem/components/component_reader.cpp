@@ -12,10 +12,12 @@
 namespace lsys::components {
 namespace {
 
-// A component file is a few kilobytes; a megabyte is plenty for any.
+// A component file is a few kilobytes; 4 MiB is plenty for any.
 constexpr size_t kMaxComponentFileBytes = size_t(4) << 20;
-// Past these a stem or leaf is tessellated more finely than any screen shows.
+// Past this a stem or leaf is tessellated more finely than any screen shows.
 constexpr uint32_t kMaxDetail = 256;
+// Nodes of one tree or radial: far more than any plant's, few enough that a
+// single misplaced digit is an error rather than a budget overrun.
 constexpr uint32_t kMaxNodes = 10'000;
 // A budget past this would let a plant outgrow memory (56 bytes a primitive)
 // before the budget stopped it.
@@ -119,7 +121,8 @@ Leaf readLeaf(const JsonNode& node, const Names& names) {
     leaf.material = names.materials.at("leaf");
     const std::optional<JsonNode> outline = member(node, "outline");
     const std::optional<JsonNode> polygon = member(node, "polygon");
-    if (outline && polygon) failAt(*polygon, "cannot be given together with \"outline\": a leaf is one or the other", true);
+    if (outline && polygon)
+        failAt(*polygon, "cannot be given together with \"outline\": a leaf is one or the other", true);
     if (polygon) {
         const std::vector<JsonNode> points = arrayElements(*polygon, "an array of [x, y] points");
         if (points.size() < 3) failAt(*polygon, "needs at least 3 points");
@@ -128,7 +131,8 @@ Leaf readLeaf(const JsonNode& node, const Names& names) {
         leaf.halfOutline = readCurve<2>(*outline, "an array of [x, y] points");
     } else {
         // An ovate blade with a pointed tip.
-        leaf.halfOutline.points = {{{0, 0, 0}, {0.5f, 0.2f, 0}}, {{0.3f, 0.4f, 0}, {0, 0.4f, 0}}, {{0, 1, 0}, {-0.2f, 0.3f, 0}}};
+        leaf.halfOutline.points = {
+            {{0, 0, 0}, {0.5f, 0.2f, 0}}, {{0.3f, 0.4f, 0}, {0, 0.4f, 0}}, {{0, 1, 0}, {-0.2f, 0.3f, 0}}};
     }
     readField(node, "length", leaf.length, above(0.0));
     readField(node, "detail", leaf.detail, between(2, kMaxDetail));
@@ -276,8 +280,7 @@ ComponentGraph readGraph(const JsonSource& source) {
         else if (kind == "tree") {
             component.kind = readTree(node, names, kinds);
             edges[i].emplace_back(std::get<Tree>(component.kind).stem, *member(node, "stem"));
-        }
-        else if (kind == "radial")
+        } else if (kind == "radial")
             component.kind = readRadial(node);
         else
             failAt(*kinds[i], "is an unknown component kind \"" + kind + "\"" + didYouMean(kind, kKinds) +
@@ -309,6 +312,8 @@ ComponentGraph readComponentGraph(const std::filesystem::path& file) {
     }
 }
 
-PlantAsset loadComponentPlant(const std::filesystem::path& file) { return buildComponentPlant(readComponentGraph(file)); }
+PlantAsset loadComponentPlant(const std::filesystem::path& file) {
+    return buildComponentPlant(readComponentGraph(file));
+}
 
 } // namespace lsys::components

@@ -40,9 +40,9 @@ INSTANTIATE_TEST_SUITE_P(
     Components, BadComponentFile,
     testing::Values(
         BadFile{"not_json", "{\n  \"root\": ,\n}", "2:11", "unexpected ','"},
-        BadFile{"unknown_top_key", "{\n  \"rooot\": \"s\"\n}", "2:3", "/rooot is an unknown key; did you mean \"root\"?"},
-        BadFile{"unknown_kind",
-                "{\n\"root\": \"s\",\n\"components\": {\n\"s\": {\"kind\": \"stme\"}\n}\n}", "4:15",
+        BadFile{"unknown_top_key", "{\n  \"rooot\": \"s\"\n}", "2:3",
+                "/rooot is an unknown key; did you mean \"root\"?"},
+        BadFile{"unknown_kind", "{\n\"root\": \"s\",\n\"components\": {\n\"s\": {\"kind\": \"stme\"}\n}\n}", "4:15",
                 "/components/s/kind is an unknown component kind \"stme\"; did you mean \"stem\"?"},
         BadFile{"missing_kind", "{\n\"root\": \"s\",\n\"components\": {\n\"s\": {}\n}\n}", "4:6",
                 "/components/s needs \"kind\""},
@@ -88,7 +88,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "4:52", "/components/l/polygon cannot be given together with \"outline\""},
         BadFile{"budget_out_of_range", "{\n\"root\": \"s\",\n\"budget\": {\"max_primitives\": 0}\n}", "3:30",
                 "/budget/max_primitives must be an integer in [1, 100000000] (got 0)"},
-        BadFile{"repeated_key", ONE_STEM(", \"length\": 1, \"length\": 2"), "4:36", "\"length\" is given twice in one object"},
+        BadFile{"repeated_key", ONE_STEM(", \"length\": 1, \"length\": 2"), "4:36",
+                "\"length\" is given twice in one object"},
         BadFile{"budget_of_instances",
                 "{\n\"root\": \"t\",\n\"budget\": {\"max_instances\": 50},\n\"components\": {\n"
                 "\"s\": {\"kind\": \"stem\", \"detail\": 1},\n"

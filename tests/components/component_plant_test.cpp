@@ -135,7 +135,8 @@ class ExampleSpecies : public testing::TestWithParam<Species> {};
 
 TEST_P(ExampleSpecies, BuildsAPlantOfItsSize) {
     const Species& species = GetParam();
-    const PlantAsset asset = loadComponentPlant(std::filesystem::path(PLANTFIELD_DATA_DIR) / "components" / species.file);
+    const PlantAsset asset =
+        loadComponentPlant(std::filesystem::path(PLANTFIELD_DATA_DIR) / "components" / species.file);
     EXPECT_GE(countKind(asset, PrimitiveKind::Polygon), species.minBlades);
     EXPECT_NEAR(asset.bounds.min.y, 0.0f, 0.05f);
     EXPECT_GT(asset.bounds.max.y, species.minHeight);
