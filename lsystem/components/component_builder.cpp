@@ -76,25 +76,7 @@ public:
 private:
     void draw(uint32_t index, const Placement& at) {
         const Component& component = graph_.components[index];
-        countInstance(component);
         std::visit([&](const auto& kind) { drawKind(component, kind, at); }, component.kind);
-    }
-
-    void countInstance(const Component& component) {
-        if (++instances_ > graph_.budget.maxInstances)
-            fail(component, "would be drawn past the budget of " + std::to_string(graph_.budget.maxInstances) +
-                                " components (\"budget\": {\"max_instances\"})");
-    }
-
-    [[noreturn]] void fail(const Component& component, const std::string& message) const {
-        throw ComponentError(component.location + " " + message);
-    }
-
-    void countPrimitives(const Component& component, uint64_t added) {
-        primitives_ += added;
-        if (primitives_ > graph_.budget.maxPrimitives)
-            fail(component, "would draw past the budget of " + std::to_string(graph_.budget.maxPrimitives) +
-                                " primitives (\"budget\": {\"max_primitives\"})");
     }
 
     void drawChildren(const Component& component, const Placement& at) {
@@ -104,8 +86,7 @@ private:
     // Tankard §4.1.2.2.1: `detail` points of the shape spline joined by
     // segments; each segment is a joint on the one before, so the stem bends
     // as a chain (and the renderer draws it as one generalised cylinder).
-    std::vector<StemSegment> drawStem(const Component& component, const Stem& stem, const Placement& at, bool visible) {
-        if (visible) countPrimitives(component, stem.detail);
+    std::vector<StemSegment> drawStem(const Stem& stem, const Placement& at, bool visible) {
         std::vector<StemSegment> segments;
         const float size = stem.length * at.scale;
         glm::quat rotation = at.frame.rotation;
@@ -144,14 +125,13 @@ private:
     }
 
     void drawKind(const Component& component, const Stem& stem, const Placement& at) {
-        const std::vector<StemSegment> segments = drawStem(component, stem, at, true);
+        const std::vector<StemSegment> segments = drawStem(stem, at, true);
         drawChildren(component, along(segments, 1.0f, at.scale));
     }
 
     // Tankard §4.1.2.2.2: the half outline sampled at `detail` points and
     // mirrored about x = 0 into one polygon in the frame's XY plane.
-    void drawKind(const Component& component, const Leaf& leaf, const Placement& at) {
-        countPrimitives(component, 1);
+    void drawKind(const Component&, const Leaf& leaf, const Placement& at) {
         std::vector<glm::vec3> blade = leaf.polygon;
         if (blade.empty()) {
             std::vector<glm::vec3> half;
@@ -179,8 +159,7 @@ private:
         const Stem& stem = std::get<Stem>(stemComponent.kind);
         // A hidden stem draws nothing but still carries its children
         // (Lintermann and Deussen's hidden components; Tankard's stemVisible).
-        countInstance(stemComponent);
-        const std::vector<StemSegment> segments = drawStem(stemComponent, stem, at, tree.stemVisible);
+        const std::vector<StemSegment> segments = drawStem(stem, at, tree.stemVisible);
         Placement tip = along(segments, 1.0f, at.scale);
         if (!tree.stemVisible) tip.joint = at.joint;
         drawChildren(stemComponent, tip);
@@ -219,12 +198,13 @@ private:
     SurfaceLibrary surfaces_; // none: components draw no predefined surfaces
     PlantAssetBuilder assets_;
     RandomStream random_;
-    uint64_t instances_ = 0;
-    uint64_t primitives_ = 0;
 };
 
 } // namespace
 
-PlantAsset buildComponentPlant(const ComponentGraph& graph) { return ComponentPlantBuilder(graph).build(); }
+PlantAsset buildComponentPlant(const ComponentGraph& graph, const MemoryBudget& memory) {
+    requireWithinBudgets(graph, countComponentPlant(graph), memory);
+    return ComponentPlantBuilder(graph).build();
+}
 
 } // namespace lsys::components

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "lsystem/components/spline.h"
+#include "lsystem/memory_budget.h"
 #include "lsystem/plant_asset.h"
 
 namespace lsys::components {
@@ -78,7 +79,8 @@ struct Component {
 };
 
 // How much a graph may draw: a graph instances its components
-// multiplicatively, so a few lines can ask for millions.
+// multiplicatively, so a few lines can ask for millions (counted before
+// drawing: countComponentPlant).
 struct ComponentBudget {
     uint64_t maxInstances = 200'000; // components drawn
     uint64_t maxPrimitives = 2'000'000;
@@ -100,6 +102,23 @@ struct ComponentError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// What a graph draws, counted from the graph without drawing it: each
+// component is drawn once per draw of each parent (a tree's stem once, its
+// children `count` times; a radial's children `count` times; a stem's once).
+// Saturating at UINT64_MAX.
+struct ComponentCounts {
+    std::vector<uint64_t> draws; // per component
+    uint64_t instances = 0;      // all draws
+    uint64_t primitives = 0;     // segments and blades
+    uint64_t bytes = 0;          // the PlantAsset's records, twice for the vectors' growth
+};
+ComponentCounts countComponentPlant(const ComponentGraph& graph);
+
+// Throws ComponentError when the counts pass the graph's budget (at the
+// component drawn, or drawing primitives, most), MemoryBudgetError when the
+// plant's records would pass `memory`.
+void requireWithinBudgets(const ComponentGraph& graph, const ComponentCounts& counts, const MemoryBudget& memory);
+
 // Files named *.comp.json are component plants.
 bool isComponentFile(const std::filesystem::path& file);
 
@@ -107,10 +126,11 @@ bool isComponentFile(const std::filesystem::path& file);
 ComponentGraph readComponentGraph(const std::filesystem::path& file);
 
 // Draws the graph from its root at the origin, heading +Y; the same graph
-// and seed give the same plant. Throws ComponentError past the budget.
-PlantAsset buildComponentPlant(const ComponentGraph& graph);
+// and seed give the same plant. Counts it first: throws ComponentError past
+// the graph's budget, MemoryBudgetError past `memory`, before drawing.
+PlantAsset buildComponentPlant(const ComponentGraph& graph, const MemoryBudget& memory = {});
 
 // readComponentGraph then buildComponentPlant.
-PlantAsset loadComponentPlant(const std::filesystem::path& file);
+PlantAsset loadComponentPlant(const std::filesystem::path& file, const MemoryBudget& memory = {});
 
 } // namespace lsys::components

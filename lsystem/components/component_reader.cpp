@@ -312,8 +312,8 @@ ComponentGraph readComponentGraph(const std::filesystem::path& file) {
     }
 }
 
-PlantAsset loadComponentPlant(const std::filesystem::path& file) {
-    return buildComponentPlant(readComponentGraph(file));
+PlantAsset loadComponentPlant(const std::filesystem::path& file, const MemoryBudget& memory) {
+    return buildComponentPlant(readComponentGraph(file), memory);
 }
 
 } // namespace lsys::components

@@ -95,12 +95,33 @@ INSTANTIATE_TEST_SUITE_P(
                 "\"s\": {\"kind\": \"stem\", \"detail\": 1},\n"
                 "\"t\": {\"kind\": \"tree\", \"stem\": \"s\", \"count\": 100, \"children\": [\"l\"]},\n"
                 "\"l\": {\"kind\": \"leaf\"}\n}\n}",
-                "7:6", "/components/l would be drawn past the budget of 50 components"},
+                "7:6", "/components/l is drawn 100 times: the plant would draw 102 components, past the budget of 50"},
         BadFile{"budget_of_primitives",
                 "{\n\"root\": \"s\",\n\"budget\": {\"max_primitives\": 100},\n\"components\": {\n"
                 "\"s\": {\"kind\": \"stem\", \"detail\": 101}\n}\n}",
-                "5:6", "/components/s would draw past the budget of 100 primitives"}),
+                "5:6", "/components/s is drawn once: the plant would draw 101 primitives, past the budget of 100"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+TEST(ComponentFile, AGraphOfATrillionLeavesIsRefusedBeforeDrawing) {
+    // Three nested trees of 10 000 nodes: 10¹² leaves, counted, not drawn.
+    const std::filesystem::path file = test::writeComponentFile("trillion.comp.json", R"({
+  "root": "a",
+  "components": {
+    "s": { "kind": "stem", "detail": 1 },
+    "a": { "kind": "tree", "stem": "s", "count": 10000, "children": ["b"] },
+    "b": { "kind": "tree", "stem": "s", "count": 10000, "children": ["c"] },
+    "c": { "kind": "tree", "stem": "s", "count": 10000, "children": ["l"] },
+    "l": { "kind": "leaf" }
+  }
+})");
+    try {
+        loadComponentPlant(file);
+        FAIL() << "built a trillion leaves";
+    } catch (const ComponentError& e) {
+        EXPECT_NE(std::string(e.what()).find("/components/l is drawn 1000000000000 times"), std::string::npos)
+            << e.what();
+    }
+}
 
 TEST(ComponentFile, MissingFileOrFolderIsAComponentError) {
     EXPECT_THROW(readComponentGraph(std::filesystem::current_path() / "absent.comp.json"), ComponentError);

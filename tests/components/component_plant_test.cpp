@@ -55,6 +55,22 @@ TEST(ComponentPlant, SmallGraphHasPinnedCounts) {
     EXPECT_EQ(bakedVertices(asset, SegmentGeometry::Frusta), 10u * 36 + 7 * 8);
 }
 
+TEST(ComponentPlant, CountsMatchWhatIsDrawn) {
+    const ComponentGraph graph = readComponentGraph(test::writeComponentFile("counted.comp.json", kSmallPlant));
+    const ComponentCounts counts = countComponentPlant(graph);
+    // Components by name: axis, branch, bud, leaf, plant.
+    EXPECT_EQ(counts.draws, (std::vector<uint64_t>{1, 3, 1, 7, 1}));
+    EXPECT_EQ(counts.instances, 13u);
+    EXPECT_EQ(counts.primitives, buildComponentPlant(graph).primitives.size());
+}
+
+TEST(ComponentPlant, MemoryBudgetIsCheckedBeforeDrawing) {
+    const ComponentGraph graph = readComponentGraph(test::writeComponentFile("memory.comp.json", kSmallPlant));
+    EXPECT_GT(countComponentPlant(graph).bytes, 1000u);
+    EXPECT_THROW(buildComponentPlant(graph, MemoryBudget{1000}), MemoryBudgetError);
+    EXPECT_NO_THROW(buildComponentPlant(graph, MemoryBudget{countComponentPlant(graph).bytes}));
+}
+
 TEST(ComponentPlant, StemsAreJointsOfOneSkeleton) {
     const PlantAsset asset = smallPlant();
     size_t roots = 0;
@@ -65,7 +81,9 @@ TEST(ComponentPlant, StemsAreJointsOfOneSkeleton) {
     EXPECT_EQ(roots, 1u);
     for (const Primitive& p : asset.primitives) {
         EXPECT_GE(p.joint, 0) << "every primitive moves with a stem";
-        if (p.kind == PrimitiveKind::Segment) EXPECT_EQ(asset.joints[p.joint].length, p.length);
+        if (p.kind == PrimitiveKind::Segment) {
+            EXPECT_EQ(asset.joints[p.joint].length, p.length);
+        }
     }
     // Axis joints 0-3; each branch's first joint grows on the axis segment
     // holding its node (u = 0.25, 0.5, 0.75 of 4 segments), at that point.

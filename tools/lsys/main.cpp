@@ -324,7 +324,7 @@ int exportCommand(const Arguments& arguments) {
     lsys::PlantAsset plant;
     try {
         if (components) {
-            plant = lsys::components::loadComponentPlant(arguments.file);
+            plant = lsys::components::loadComponentPlant(arguments.file, arguments.memory);
         } else {
             const lsys::ModuleString string = lsys::derive(*grammar, deriveOptions(arguments));
             plant = lsys::plantFromGrammar(
