@@ -81,15 +81,15 @@ void requireWithinBudgets(const ComponentGraph& graph, const ComponentCounts& co
     };
     if (counts.instances > graph.budget.maxInstances)
         fail(largest(counts.draws), "the plant would draw " + std::to_string(counts.instances) +
-                                        " components, past the budget of " +
-                                        std::to_string(graph.budget.maxInstances) + " (\"budget\": {\"max_instances\"})");
+                                        " components, past the budget of " + std::to_string(graph.budget.maxInstances) +
+                                        " (\"budget\": {\"max_instances\"})");
     if (counts.primitives > graph.budget.maxPrimitives) {
         std::vector<uint64_t> primitives(graph.components.size());
         for (size_t i = 0; i < primitives.size(); ++i)
             primitives[i] = bytesTimes(counts.draws[i], drawSize(graph.components[i]).first);
         fail(largest(primitives), "the plant would draw " + std::to_string(counts.primitives) +
-                                      " primitives, past the budget of " +
-                                      std::to_string(graph.budget.maxPrimitives) + " (\"budget\": {\"max_primitives\"})");
+                                      " primitives, past the budget of " + std::to_string(graph.budget.maxPrimitives) +
+                                      " (\"budget\": {\"max_primitives\"})");
     }
     need(memory, "component plant", counts.bytes);
 }
