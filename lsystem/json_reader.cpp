@@ -370,6 +370,12 @@ void readField(const JsonNode& object, std::string_view key, glm::vec3& out, Ran
 void readField(const JsonNode& object, std::string_view key, std::string& out) {
     if (auto node = member(object, key)) out = readString(*node);
 }
+void readField(const JsonNode& object, std::string_view key, bool& out) {
+    if (auto node = member(object, key)) {
+        if (!node->value->is_boolean()) failExpected(*node, "true or false");
+        out = node->value->get<bool>();
+    }
+}
 
 std::string didYouMean(std::string_view word, const std::vector<std::string_view>& known) {
     // A typo changes a few characters: allow 2 edits, more in long words.

@@ -101,6 +101,7 @@ void readField(const JsonNode& object, std::string_view key, std::optional<uint3
 void readField(const JsonNode& object, std::string_view key, glm::vec2& out, Range range);
 void readField(const JsonNode& object, std::string_view key, glm::vec3& out, Range range);
 void readField(const JsonNode& object, std::string_view key, std::string& out);
+void readField(const JsonNode& object, std::string_view key, bool& out);
 
 // "; did you mean \"x\"?" for the known word x closest to word, or empty when
 // none is close enough to be a typo.

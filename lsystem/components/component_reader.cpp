@@ -148,10 +148,7 @@ Tree readTree(const JsonNode& node, const Names& names, const std::vector<std::o
     const JsonNode stem = requireMember(node, "stem", "the name of the stem component the branches grow on");
     tree.stem = reference(stem, names.components, "component");
     if (kinds[tree.stem] && readString(*kinds[tree.stem]) != "stem") failAt(stem, "must name a stem component");
-    if (auto visible = member(node, "stem_visible")) {
-        if (!visible->value->is_boolean()) failAt(*visible, "must be true or false");
-        tree.stemVisible = visible->value->get<bool>();
-    }
+    readField(node, "stem_visible", tree.stemVisible);
     readField(node, "count", tree.count, between(0, kMaxNodes));
     readField(node, "start", tree.start, between(0, 1));
     readField(node, "end", tree.end, between(0, 1));
@@ -191,10 +188,7 @@ std::vector<Material> readMaterials(const std::optional<JsonNode>& node, Names& 
         if (const auto given = names.materials.find(name); given != names.materials.end())
             material = materials[given->second];
         readField(entry, "albedo", material.albedo, between(0, 1));
-        if (auto twoSided = member(entry, "two_sided")) {
-            if (!twoSided->value->is_boolean()) failAt(*twoSided, "must be true or false");
-            material.twoSided = twoSided->value->get<bool>();
-        }
+        readField(entry, "two_sided", material.twoSided);
         const auto [slot, added] = names.materials.try_emplace(name, uint32_t(materials.size()));
         if (added)
             materials.push_back(material);

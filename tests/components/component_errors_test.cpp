@@ -76,6 +76,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "{\n\"root\": \"t\",\n\"components\": {\n\"l\": {\"kind\": \"leaf\"},\n"
                 "\"t\": {\"kind\": \"tree\", \"stem\": \"l\"}\n}\n}",
                 "5:31", "/components/t/stem must name a stem component"},
+        BadFile{"not_a_boolean",
+                "{\n\"root\": \"t\",\n\"components\": {\n\"s\": {\"kind\": \"stem\"},\n"
+                "\"t\": {\"kind\": \"tree\", \"stem\": \"s\", \"stem_visible\": 1}\n}\n}",
+                "5:52", "/components/t/stem_visible must be true or false (got 1)"},
         BadFile{"tree_without_stem", "{\n\"root\": \"t\",\n\"components\": {\n\"t\": {\"kind\": \"tree\"}\n}\n}", "4:6",
                 "/components/t needs \"stem\""},
         BadFile{"tree_end_before_start",

@@ -8,7 +8,7 @@ namespace pf::fuzz {
 void runComponentsInput(const uint8_t* data, size_t size) {
     try {
         (void)lsys::components::loadComponentPlant(writeInputFile(data, size, "components/input.comp.json"),
-                                                    lsys::MemoryBudget{256ull << 20});
+                                                   lsys::MemoryBudget{256ull << 20});
     } catch (const lsys::components::ComponentError&) {
         // A clear error naming file, line and column is the right outcome.
     } catch (const lsys::MemoryBudgetError&) {
