@@ -1,7 +1,7 @@
 #pragma once
 // Reading a whole input file with a size limit, shared by the plant files
 // (lsystem/parser.h), glTF surfaces (surfaces_gltf.cpp) and scene files
-// (engine/scene/json_reader.h); each names its own limit and words its own
+// (lsystem/json_reader.h); each names its own limit and words its own
 // messages.
 
 #include <cstddef>

@@ -3,6 +3,7 @@
 # sanitizers) for SECONDS (default 120):
 #   lsys   the dialect-aware .lsys parser, the rewriter and the turtle
 #   scene  the scene loader (JSON, validation, paths, placement rules)
+#   components  component plants (.comp.json: reader, counts, builder)
 #   gltf   the glTF surface loader (tinygltf behind our own checks)
 #   view, func, surface, colour   a vlab object's readers (lsystem/vlab): the
 #          view file, function files and sets, surface files, colour maps
@@ -12,7 +13,7 @@
 # what adds coverage back into tests/fuzz/corpus/TARGET, which the regular
 # test suite replays. A crash leaves build-fuzz/crash-*: fix it, then add the
 # input to tests/fuzz/crashers/TARGET.
-# Usage: tools/fuzz.sh [lsys|scene|gltf|view|func|surface|colour] [SECONDS]
+# Usage: tools/fuzz.sh [lsys|scene|components|gltf|view|func|surface|colour] [SECONDS]
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 target=${1:-lsys}
@@ -20,10 +21,11 @@ seconds=${2:-120}
 case "$target" in
   lsys) seeds=("$root/data/plants") options=(-dict="$root/tests/fuzz/lsys.dict" -max_len=4096) ;;
   scene) seeds=("$root/data/scenes") options=(-dict="$root/tests/fuzz/scene.dict" -max_len=8192) ;;
+  components) seeds=("$root/data/components") options=(-dict="$root/tests/fuzz/components.dict" -max_len=8192) ;;
   gltf) seeds=("$root/data/meshes") options=(-dict="$root/tests/fuzz/gltf.dict" -max_len=16384) ;;
   view | func | surface) seeds=() options=(-dict="$root/tests/fuzz/$target.dict" -max_len=4096) ;;
   colour) seeds=() options=(-max_len=4096) ;;
-  *) echo "fuzz.sh: unknown target '$target' (known: lsys, scene, gltf, view, func, surface, colour)" >&2; exit 2 ;;
+  *) echo "fuzz.sh: unknown target '$target' (known: lsys, scene, components, gltf, view, func, surface, colour)" >&2; exit 2 ;;
 esac
 build=$root/build-fuzz
 "$root/tools/deps.sh" fuzz

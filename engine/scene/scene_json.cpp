@@ -1,14 +1,19 @@
 // loadScene: the sections of a scene file (docs/SCENE_FORMAT.md), each read
 // onto its struct's defaults, so a key left out keeps the default.
-#include "engine/scene/json_reader.h"
 #include "engine/scene/scene.h"
 
+#include "lsystem/json_reader.h"
 #include "lsystem/turtle_builder.h"
 
 #include <algorithm>
 #include <cctype>
 
 namespace pf {
+// The located JSON reader (lsystem/json_reader.h).
+using lsys::above, lsys::anyNumber, lsys::arrayElements, lsys::atLeast, lsys::between, lsys::didYouMean, lsys::failAt,
+    lsys::JsonError, lsys::JsonNode, lsys::JsonSource, lsys::member, lsys::Range, lsys::readField, lsys::readJsonFile,
+    lsys::readNumber, lsys::readString, lsys::readVector, lsys::requireMap, lsys::requireMember, lsys::requireObject,
+    lsys::rootNode;
 namespace {
 
 const Range kColour = atLeast(0.0); // linear RGB; above 1 is allowed for bright light
@@ -303,10 +308,9 @@ void requireUniqueNames(const std::vector<Species>& species, const std::vector<J
                 failAt(*member(elements[i], "name"), "repeats the name of /species/" + std::to_string(j));
 }
 
-} // namespace
-
-Scene loadScene(const std::filesystem::path& file) {
-    const JsonSource source = readJsonFile(file);
+Scene readScene(const std::filesystem::path& file) {
+    // A million explicitly placed plants take about 60 MB of JSON.
+    const JsonSource source = readJsonFile(file, {"scene", size_t(256) << 20});
     const JsonNode root = rootNode(source);
     requireObject(root, {"description", "seed", "terrain", "species", "placement", "sun", "sky", "fog", "wind",
                          "physics", "camera"});
@@ -333,6 +337,16 @@ Scene loadScene(const std::filesystem::path& file) {
     if (auto physics = member(root, "physics")) scene.physics = readPhysics(*physics);
     if (auto camera = member(root, "camera")) scene.camera = readCamera(*camera);
     return scene;
+}
+
+} // namespace
+
+Scene loadScene(const std::filesystem::path& file) {
+    try {
+        return readScene(file);
+    } catch (const JsonError& error) {
+        throw SceneError(error.what());
+    }
 }
 
 } // namespace pf

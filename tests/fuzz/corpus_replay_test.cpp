@@ -1,10 +1,9 @@
 // Replays every fuzz corpus input (crashers the fuzzers found included, once
 // fixed) and every shipped file of each kind through its fuzz target: plant
 // files through parser, rewriter and turtle, scene files through the scene
-// loader, glTF files through the surface loader, a vlab object's view,
-// function, surface and colour files through their readers. Under the
-// regular build this proves none of them crash or hang any more; under the
-// sanitizer build (tools/sanitize.sh) that none reads or writes out of bounds.
+// loader, component plants through their reader and builder, glTF files through the surface loader, a vlab object's
+// view, function, surface and colour files through their readers. Under the regular build this proves none of them
+// crash or hang any more; under the sanitizer build (tools/sanitize.sh) that none reads or writes out of bounds.
 #include "fuzz_targets.h"
 
 #include <gtest/gtest.h>
@@ -53,6 +52,14 @@ TEST(FuzzCorpus, EveryShippedPlantRunsToCompletion) { replay(pf::fuzz::runLsysIn
 TEST(FuzzCorpus, EverySceneCorpusInputRunsToCompletion) { replay(pf::fuzz::runSceneInput, kFuzz / "corpus/scene", 20); }
 
 TEST(FuzzCorpus, EveryShippedSceneRunsToCompletion) { replay(pf::fuzz::runSceneInput, kData / "scenes", 5); }
+
+TEST(FuzzCorpus, EveryComponentsCorpusInputRunsToCompletion) {
+    replay(pf::fuzz::runComponentsInput, kFuzz / "corpus/components", 20);
+}
+
+TEST(FuzzCorpus, EveryShippedComponentPlantRunsToCompletion) {
+    replay(pf::fuzz::runComponentsInput, kData / "components", 3);
+}
 
 TEST(FuzzCorpus, EveryGltfCorpusInputRunsToCompletion) { replay(pf::fuzz::runGltfInput, kFuzz / "corpus/gltf", 20); }
 

@@ -16,6 +16,9 @@ void runLsysInput(const uint8_t* data, size_t size);
 // Load as a scene file (engine/scene: JSON, validation, paths, seeds) and
 // derive its placement rules.
 void runSceneInput(const uint8_t* data, size_t size);
+// Load as a component plant (lsystem/components, docs/COMPONENTS.md) and
+// build it under a 256 MiB memory budget.
+void runComponentsInput(const uint8_t* data, size_t size);
 // Load as a glTF surface mesh (.glb when it starts with the binary magic).
 void runGltfInput(const uint8_t* data, size_t size);
 // The readers of a vlab object's files (lsystem/vlab, docs/VLAB.md): a view

@@ -26,6 +26,7 @@
 #include <plantfield_version.h>
 
 #include "lsystem/bgrammar.h"
+#include "lsystem/components/component_graph.h"
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/drawn_mesh.h"
 #include "lsystem/error.h"
@@ -319,17 +320,33 @@ int exportGraph(const Arguments& arguments, const lsys::Grammar& grammar) {
     return 0;
 }
 
-// Derives, interprets (surfaces from data/meshes near the file) and writes the plant.
+// Derives, interprets (surfaces from data/meshes near the file) and writes
+// the plant; a .comp.json file is built from its components instead.
 int exportCommand(const Arguments& arguments) {
-    std::optional<lsys::Grammar> grammar = load(arguments);
-    if (!grammar) return kBadInput;
-    if (arguments.instanced) return exportGraph(arguments, *grammar);
+    const bool components = lsys::components::isComponentFile(arguments.file);
+    if (components && arguments.instanced) {
+        std::cerr << "lsys: error: --instanced needs an L-system (a component plant has no b-grammar)\n";
+        return 1;
+    }
+    std::optional<lsys::Grammar> grammar;
+    if (!components) {
+        grammar = load(arguments);
+        if (!grammar) return kBadInput;
+        if (arguments.instanced) return exportGraph(arguments, *grammar);
+    }
     auto start = std::chrono::steady_clock::now();
     lsys::PlantAsset plant;
     try {
-        const lsys::ModuleString string = lsys::derive(*grammar, deriveOptions(arguments));
-        plant = lsys::plantFromGrammar(*grammar, string, lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file)),
-                                       arguments.memory);
+        if (components) {
+            plant = lsys::components::loadComponentPlant(arguments.file, arguments.memory);
+        } else {
+            const lsys::ModuleString string = lsys::derive(*grammar, deriveOptions(arguments));
+            plant = lsys::plantFromGrammar(
+                *grammar, string, lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file)), arguments.memory);
+        }
+    } catch (const lsys::components::ComponentError& error) { // located in the file already
+        std::cerr << "lsys: error: " << error.what() << '\n';
+        return kBadInput;
     } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
         return failed(arguments, error);
     }
@@ -520,7 +537,8 @@ int main(int argc, char** argv) {
 
     CLI::App* exportSubcommand = app.add_subcommand(
         "export",
-        "Derive and interpret an L-system and write the plant as glTF 2.0 (.gltf, .glb) or OBJ (docs/EXPORT.md)");
+        "Derive and interpret an L-system, or build a component plant (FILE.comp.json, docs/COMPONENTS.md), and "
+        "write the plant as glTF 2.0 (.gltf, .glb) or OBJ (docs/EXPORT.md)");
     addDerivationOptions(*exportSubcommand, arguments);
     exportSubcommand->add_option("-o,--output", arguments.output, "Output file: .gltf, .glb or .obj")->required();
     exportSubcommand->add_flag_callback(

@@ -1,26 +1,49 @@
-// Checked reading of a JSON file for the scene loader (internal to engine/):
-// every value carries its JSON pointer, and every error names the file, the
-// line and column of the value at fault and what was expected.
+// Checked reading of a JSON file, shared by the scene loader (engine/scene)
+// and component plants (lsystem/components): every value carries its JSON
+// pointer, and every error names the file, the line and column of the value at
+// fault and what was expected. Needs nlohmann_json (linked privately by the
+// library; its users link it themselves).
 #pragma once
-
-#include "engine/scene/scene.h"
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
+#include <filesystem>
 #include <initializer_list>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
 #include <string_view>
+#include <vector>
 
-namespace pf {
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace lsys {
+
+// Every problem in a JSON document: "file:line:column: /json/pointer message".
+struct JsonError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// What kind of document a file is, for messages ("the scene file is larger
+// than 256 MiB", "the scene must be an object"), and its size limit.
+struct JsonDocumentKind {
+    std::string name;
+    size_t maxBytes = 0;
+};
 
 // The parsed document and the text it came from, for locating values.
 struct JsonSource {
     std::filesystem::path file;
     std::string text;
     nlohmann::json root;
+    std::string kind; // JsonDocumentKind::name
 };
 
-// Throws SceneError when the file cannot be read or is not JSON.
-JsonSource readJsonFile(const std::filesystem::path& file);
+// Throws JsonError when the file cannot be read or is not JSON.
+JsonSource readJsonFile(const std::filesystem::path& file, const JsonDocumentKind& kind);
 
 // One value of a document and the path of keys and indices leading to it.
 struct JsonNode {
@@ -36,7 +59,7 @@ JsonNode rootNode(const JsonSource& source);
 // Where the value (or, with atKey, its key) starts: "file:line:column".
 std::string locationOf(const JsonNode& node, bool atKey = false);
 
-// SceneError("file:line:column: /pointer message").
+// JsonError("file:line:column: /pointer message").
 [[noreturn]] void failAt(const JsonNode& node, std::string_view message, bool atKey = false);
 
 // Checks that node is an object whose keys are all in known; an unknown key is
@@ -78,9 +101,10 @@ void readField(const JsonNode& object, std::string_view key, std::optional<uint3
 void readField(const JsonNode& object, std::string_view key, glm::vec2& out, Range range);
 void readField(const JsonNode& object, std::string_view key, glm::vec3& out, Range range);
 void readField(const JsonNode& object, std::string_view key, std::string& out);
+void readField(const JsonNode& object, std::string_view key, bool& out);
 
 // "; did you mean \"x\"?" for the known word x closest to word, or empty when
 // none is close enough to be a typo.
 std::string didYouMean(std::string_view word, const std::vector<std::string_view>& known);
 
-} // namespace pf
+} // namespace lsys

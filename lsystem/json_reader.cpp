@@ -1,4 +1,4 @@
-#include "engine/scene/json_reader.h"
+#include "lsystem/json_reader.h"
 
 #include "lsystem/file_reader.h"
 
@@ -10,7 +10,7 @@
 #include <set>
 #include <sstream>
 
-namespace pf {
+namespace lsys {
 namespace {
 
 // ---- locating a value in the text -----------------------------------------
@@ -211,18 +211,15 @@ JsonNode childNode(const JsonNode& parent, const nlohmann::json& value, std::str
 
 } // namespace
 
-JsonSource readJsonFile(const std::filesystem::path& file) {
+JsonSource readJsonFile(const std::filesystem::path& file, const JsonDocumentKind& kind) {
+    const std::string unreadable = file.string() + ": cannot read the " + kind.name + " file (not a regular file)";
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec))
-        throw SceneError(file.string() + ": cannot read the scene file (not a regular file)");
-    // A million explicitly placed plants take about 60 MB of JSON.
-    constexpr size_t kMaxSceneBytes = size_t(256) << 20;
-    lsys::FileBytes read = lsys::readFileUpTo(file, kMaxSceneBytes);
-    if (read.problem == lsys::FileProblem::TooLarge)
-        throw SceneError(file.string() + ": the scene file is larger than 256 MiB");
-    if (read.problem != lsys::FileProblem::None)
-        throw SceneError(file.string() + ": cannot read the scene file (not a regular file)");
-    JsonSource source{file, std::move(read.bytes), {}};
+    if (!std::filesystem::is_regular_file(file, ec)) throw JsonError(unreadable);
+    FileBytes read = readFileUpTo(file, kind.maxBytes);
+    if (read.problem == FileProblem::TooLarge)
+        throw JsonError(file.string() + ": the " + kind.name + " file " + fileProblemText(read.problem, kind.maxBytes));
+    if (read.problem != FileProblem::None) throw JsonError(unreadable);
+    JsonSource source{file, std::move(read.bytes), {}, kind.name};
     try {
         source.root = nlohmann::json::parse(source.text);
     } catch (const nlohmann::json::out_of_range& e) {
@@ -232,8 +229,8 @@ JsonSource readJsonFile(const std::filesystem::path& file) {
         const size_t open = what.find('\''), close = what.rfind('\'');
         const std::string literal = open < close ? what.substr(open + 1, close - open - 1) : std::string();
         const size_t offset = literal.empty() ? std::string::npos : source.text.find(literal);
-        throw SceneError(file.string() + ":" + lineAndColumn(source.text, offset == std::string::npos ? 0 : offset) +
-                         ": a number too large: " + literal);
+        throw JsonError(file.string() + ":" + lineAndColumn(source.text, offset == std::string::npos ? 0 : offset) +
+                        ": a number too large: " + literal);
     } catch (const nlohmann::json::parse_error& e) {
         // e.byte is the 1-based offset of the last character read; the
         // message after "column N: " says what was wrong there.
@@ -242,12 +239,12 @@ JsonSource readJsonFile(const std::filesystem::path& file) {
         const size_t detail = what.find(": ", column == std::string::npos ? 0 : column);
         if (detail != std::string::npos) what = what.substr(detail + 2);
         const size_t offset = e.byte > 0 ? e.byte - 1 : 0;
-        throw SceneError(file.string() + ":" + lineAndColumn(source.text, offset) + ": " + what);
+        throw JsonError(file.string() + ":" + lineAndColumn(source.text, offset) + ": " + what);
     }
     std::string key;
     if (const size_t repeated = repeatedKeyOffset(source.text, key); repeated != std::string_view::npos)
-        throw SceneError(file.string() + ":" + lineAndColumn(source.text, repeated) + ": \"" + key +
-                         "\" is given twice in one object");
+        throw JsonError(file.string() + ":" + lineAndColumn(source.text, repeated) + ": \"" + key +
+                        "\" is given twice in one object");
     return source;
 }
 
@@ -268,8 +265,8 @@ std::string locationOf(const JsonNode& node, bool atKey) {
 }
 
 void failAt(const JsonNode& node, std::string_view message, bool atKey) {
-    const std::string where = node.path.empty() ? "the scene" : node.pointer();
-    throw SceneError(locationOf(node, atKey) + ": " + where + " " + std::string(message));
+    const std::string where = node.path.empty() ? "the " + node.source->kind : node.pointer();
+    throw JsonError(locationOf(node, atKey) + ": " + where + " " + std::string(message));
 }
 
 void requireMap(const JsonNode& node) {
@@ -373,6 +370,12 @@ void readField(const JsonNode& object, std::string_view key, glm::vec3& out, Ran
 void readField(const JsonNode& object, std::string_view key, std::string& out) {
     if (auto node = member(object, key)) out = readString(*node);
 }
+void readField(const JsonNode& object, std::string_view key, bool& out) {
+    if (auto node = member(object, key)) {
+        if (!node->value->is_boolean()) failExpected(*node, "true or false");
+        out = node->value->get<bool>();
+    }
+}
 
 std::string didYouMean(std::string_view word, const std::vector<std::string_view>& known) {
     // A typo changes a few characters: allow 2 edits, more in long words.
@@ -388,4 +391,4 @@ std::string didYouMean(std::string_view word, const std::vector<std::string_view
     return closest.empty() ? "" : "; did you mean \"" + closest + "\"?";
 }
 
-} // namespace pf
+} // namespace lsys
