@@ -25,12 +25,13 @@ void* allocateBufferBytes(size_t bytes) {
     return pointer;
 }
 
+// The unsized deletes: clang (tools/fuzz.sh's) declares the sized ones only
+// with -fsized-deallocation.
 void freeBufferBytes(void* pointer, size_t bytes) noexcept {
-    if (bytes < kHugePageBytes) {
-        ::operator delete(pointer, bytes);
-        return;
-    }
-    ::operator delete (pointer, roundedToHugePages(bytes), std::align_val_t{kHugePageBytes});
+    if (bytes < kHugePageBytes)
+        ::operator delete(pointer);
+    else
+        ::operator delete (pointer, std::align_val_t{kHugePageBytes});
 }
 
 } // namespace lsys

@@ -306,8 +306,11 @@ struct Tokens {
 // here, with a warning.
 template <MovementKind kind>
 void movement(Reader& r, const Values&) {
-    const auto [line, lineStart] = r.restOfLine();
-    Tokens tokens{line};
+    // Not a structured binding: the lambdas below capture lineStart, which
+    // clang accepts of a binding only from version 16 (tools/fuzz.sh builds with clang 14).
+    const std::pair<std::string_view, size_t> rest = r.restOfLine();
+    const size_t lineStart = rest.second;
+    Tokens tokens{rest.first};
     Movement movement{kind};
     glm::dvec3 direction(0.0, 1.0, 0.0);
     double scale = 0.0; // 1/|T|, times the intensity
