@@ -1,12 +1,14 @@
-// Species meshes of the field: L-system → PlantAsset → two LODs of triangles
+// Species meshes of the field: L-system or model file → PlantAsset → two LODs of triangles
 // per draw class (docs/FIELD.md "Plant models (meshes and LODs)").
 #include "engine/scene/plant_models.h"
 
 #include "engine/scene/joint_params.h"
 
+#include "lsystem/components/component_graph.h"
 #include "lsystem/drawn_mesh.h"
 #include "lsystem/error.h"
 #include "lsystem/parser.h"
+#include "lsystem/ramification_file.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"
@@ -18,6 +20,7 @@
 #include <array>
 #include <limits>
 #include <stdexcept>
+#include <variant>
 
 namespace pf {
 namespace {
@@ -70,23 +73,62 @@ lsys::Grammar parseSpecies(const Species& species, std::string& warnings) {
     return std::move(plant.parsed.grammar);
 }
 
-lsys::PlantAsset derivePlant(const Species& species, const lsys::Grammar& grammar, const lsys::SurfaceLibrary& surfaces,
-                             uint64_t seed, const lsys::MemoryBudget& memory) {
-    lsys::DeriveOptions options;
-    if (species.steps) options.steps = int(*species.steps);
-    options.seed = seed;
-    options.maxModules = kModuleBudget;
-    options.memory = memory;
-    const std::string which =
-        "species '" + species.name + "' (" + species.lsystem.string() + ", seed " + std::to_string(seed) + "): ";
+// What a species' variants are made from, read once: an L-system's grammar,
+// a ramification tree type (Tankard 2001, §3.3) or a component graph (§3.2).
+using PlantSource = std::variant<lsys::Grammar, lsys::RamificationTree, lsys::components::ComponentGraph>;
+
+const std::filesystem::path& plantFile(const Species& species) {
+    return species.lsystem.empty() ? species.model : species.lsystem;
+}
+
+PlantSource readPlantSource(const Species& species, std::string& warnings) {
+    if (!species.lsystem.empty()) return parseSpecies(species, warnings);
+    const std::string which = "species '" + species.name + "': ";
+    if (lsys::isRamificationFile(species.model)) {
+        lsys::RamificationFile file = lsys::readRamificationFile(species.model);
+        if (!file.tree) throw SceneError(which + lsys::formatDiagnostics(file.diagnostics, file.source));
+        return std::move(*file.tree);
+    }
     try {
-        const lsys::ModuleString derived = lsys::derive(grammar, options);
-        return lsys::plantFromGrammar(grammar, derived, surfaces, memory);
+        return lsys::components::readComponentGraph(species.model);
+    } catch (const lsys::components::ComponentError& error) { // located in the file already
+        throw SceneError(which + error.what());
+    }
+}
+
+// The plant of one variant: the source made with `seed` in place of the
+// file's own, as L-system variants derive with theirs.
+lsys::PlantAsset plantOfVariant(const PlantSource& source, const lsys::SurfaceLibrary& surfaces,
+                                const std::optional<uint32_t>& steps, uint64_t seed, const lsys::MemoryBudget& memory) {
+    if (const auto* grammar = std::get_if<lsys::Grammar>(&source)) {
+        lsys::DeriveOptions options;
+        if (steps) options.steps = int(*steps);
+        options.seed = seed;
+        options.maxModules = kModuleBudget;
+        options.memory = memory;
+        return lsys::plantFromGrammar(*grammar, lsys::derive(*grammar, options), surfaces, memory);
+    }
+    if (const auto* tree = std::get_if<lsys::RamificationTree>(&source)) {
+        lsys::RamificationTree seeded = *tree;
+        seeded.seed = seed;
+        return lsys::plantOf(lsys::generateTree(seeded), memory);
+    }
+    lsys::components::ComponentGraph seeded = std::get<lsys::components::ComponentGraph>(source);
+    seeded.seed = seed;
+    return lsys::components::buildComponentPlant(seeded, memory);
+}
+
+lsys::PlantAsset speciesPlant(const Species& species, const PlantSource& source, const lsys::SurfaceLibrary& surfaces,
+                              uint64_t seed, const lsys::MemoryBudget& memory) {
+    const std::string which =
+        "species '" + species.name + "' (" + plantFile(species).string() + ", seed " + std::to_string(seed) + "): ";
+    try {
+        return plantOfVariant(source, surfaces, species.steps, seed, memory);
     } catch (const lsys::MemoryBudgetError& error) { // the species too large for the budget: its type kept
         throw lsys::MemoryBudgetError(which + error.what());
     } catch (const lsys::ModuleBudgetError& error) {
         throw lsys::ModuleBudgetError(which + error.what() + "; give the species fewer \"steps\"");
-    } catch (const std::runtime_error& error) { // DerivationError, SurfaceError: the species' own fault
+    } catch (const std::runtime_error& error) { // DerivationError, SurfaceError, ComponentError: the species' own fault
         throw SceneError(which + error.what());
     }
 }
@@ -132,11 +174,11 @@ void fillBounds(gpu::PlantModel& model, const DrawnLods& lods) {
 }
 
 PlantModelInfo buildModel(PlantModelPool& pool, const Scene& scene, uint32_t speciesIndex, uint32_t variant,
-                          const lsys::Grammar& grammar, const lsys::SurfaceLibrary& surfaces,
+                          const PlantSource& source, const lsys::SurfaceLibrary& surfaces,
                           const lsys::MemoryBudget& memory) {
     const Species& species = scene.species[speciesIndex];
     const uint64_t seed = uint64_t(speciesSeed(scene, speciesIndex)) + variant;
-    lsys::PlantAsset asset = derivePlant(species, grammar, surfaces, seed, memory);
+    lsys::PlantAsset asset = speciesPlant(species, source, surfaces, seed, memory);
     applyMaterialOverrides(asset, species.materials);
     DrawnLods lods = lsys::drawnLods(asset);
     const float scale = species.height ? scaleToHeight(lods, *species.height) : 1.0f;
@@ -167,11 +209,11 @@ PlantModelPool buildPlantModels(const Scene& scene, const ModelProgress& progres
     for (const Species& species : scene.species) total += species.variants;
     PlantModelPool pool;
     for (uint32_t s = 0; s < scene.species.size(); ++s) {
-        const lsys::Grammar grammar = parseSpecies(scene.species[s], pool.warnings);
-        const lsys::SurfaceLibrary surfaces(lsys::meshDirectoriesFor(scene.species[s].lsystem));
+        const PlantSource source = readPlantSource(scene.species[s], pool.warnings);
+        const lsys::SurfaceLibrary surfaces(lsys::meshDirectoriesFor(plantFile(scene.species[s])));
         pool.firstModel.push_back(uint32_t(pool.models.size()));
         for (uint32_t variant = 0; variant < scene.species[s].variants; ++variant) {
-            pool.models.push_back(buildModel(pool, scene, s, variant, grammar, surfaces, memory));
+            pool.models.push_back(buildModel(pool, scene, s, variant, source, surfaces, memory));
             if (progress) progress(pool.models.size(), total, pool.models.back().name);
         }
     }

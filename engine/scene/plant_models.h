@@ -1,5 +1,6 @@
 // The meshes the field draws: every species variant of a scene derived from
-// its L-system, interpreted by the turtle, scaled to the species height and
+// its L-system and interpreted by the turtle, or generated from its model
+// file (a ramification tree or a component plant), scaled to the species height and
 // baked into triangle meshes at two levels of detail, all in one vertex and
 // one index pool (shaders/field_layouts.h FieldVertex). CPU only.
 #pragma once
@@ -65,8 +66,8 @@ using ModelProgress = std::function<void(size_t, size_t, const std::string&)>;
 
 // Derives and bakes every variant of every species, each derivation and
 // turtle within `memory`. Same scene ⇒ same pool, bit for bit. Throws
-// SceneError naming the species and its L-system file (with line and
-// column) when a file does not parse or derive, and
+// SceneError naming the species and its L-system or model file (with line
+// and column) when a file does not parse or derive, and
 // lsys::MemoryBudgetError / lsys::ModuleBudgetError naming the species when
 // it grows past a budget.
 PlantModelPool buildPlantModels(const Scene& scene, const ModelProgress& progress = {},

@@ -106,10 +106,13 @@ struct MaterialOverride {
 
 struct Species {
     std::string name;
-    std::filesystem::path lsystem;         // resolved against the scene file's folder; exists
-    std::map<std::string, double> defines; // #define overrides, as `lsys -D NAME=VALUE`
-    std::optional<uint32_t> steps;         // empty: the file's derivation length
-    uint32_t variants = 1;                 // distinct plants, derived with seeds seed, seed+1, …
+    // The plant: an L-system, or else a model file; exactly one is set. Both
+    // are resolved against the scene file's folder and exist.
+    std::filesystem::path lsystem;         // an L-system file or vlab object folder
+    std::filesystem::path model;           // a .ram.json tree type or a .comp.json component plant
+    std::map<std::string, double> defines; // L-system only: #define overrides, as `lsys -D NAME=VALUE`
+    std::optional<uint32_t> steps;         // L-system only; empty: the file's derivation length
+    uint32_t variants = 1;                 // distinct plants, made with seeds seed, seed+1, …
     std::optional<uint32_t> seed;          // empty: derived from the scene seed (speciesSeed)
     std::optional<float> height;           // metres the derived plant is scaled to; empty: its own units
     LodHints lod;

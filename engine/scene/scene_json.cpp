@@ -2,7 +2,9 @@
 // onto its struct's defaults, so a key left out keeps the default.
 #include "engine/scene/scene.h"
 
+#include "lsystem/components/component_graph.h"
 #include "lsystem/json_reader.h"
+#include "lsystem/ramification_file.h"
 #include "lsystem/turtle_builder.h"
 
 #include <algorithm>
@@ -196,16 +198,37 @@ std::map<std::string, double> readDefines(const JsonNode& node) {
     return defines;
 }
 
+// A species' plant: "lsystem" (with its "defines" and "steps") or "model",
+// a ramification tree (.ram.json) or a component plant (.comp.json); exactly one.
+void readPlantSource(const JsonNode& node, const std::filesystem::path& sceneFolder, Species& species) {
+    const std::optional<JsonNode> lsystem = member(node, "lsystem");
+    const std::optional<JsonNode> model = member(node, "model");
+    if (lsystem && model) failAt(*model, "and \"lsystem\" both give the plant; keep one", true);
+    if (!model) {
+        species.lsystem =
+            existingFile(requireMember(node, "lsystem", "the L-system file or vlab object folder, or a \"model\""),
+                         sceneFolder, true);
+        if (auto defines = member(node, "defines")) species.defines = readDefines(*defines);
+        readField(node, "steps", species.steps, between(0, 1000));
+        return;
+    }
+    for (const std::string_view key : {"defines", "steps"})
+        if (auto lsystemKey = member(node, key))
+            failAt(*lsystemKey, "is an L-system setting; a species with a \"model\" has none", true);
+    const std::filesystem::path name = readString(*model);
+    if (!lsys::isRamificationFile(name) && !lsys::components::isComponentFile(name))
+        failAt(*model, "must name a ramification tree (.ram.json) or a component plant (.comp.json), not \"" +
+                           name.filename().string() + "\"");
+    species.model = existingFile(*model, sceneFolder);
+}
+
 Species readSpecies(const JsonNode& node, const std::filesystem::path& sceneFolder, const Placement& globalPlacement) {
-    requireObject(
-        node, {"name", "lsystem", "defines", "steps", "variants", "seed", "height", "lod", "materials", "placement"});
+    requireObject(node, {"name", "lsystem", "model", "defines", "steps", "variants", "seed", "height", "lod",
+                         "materials", "placement"});
     Species species;
     species.name = readString(requireMember(node, "name", "a name for the species"));
     if (species.name.empty()) failAt(*member(node, "name"), "must not be empty");
-    species.lsystem =
-        existingFile(requireMember(node, "lsystem", "the L-system file or vlab object folder"), sceneFolder, true);
-    if (auto defines = member(node, "defines")) species.defines = readDefines(*defines);
-    readField(node, "steps", species.steps, between(0, 1000));
+    readPlantSource(node, sceneFolder, species);
     readField(node, "variants", species.variants, between(1, 1024));
     readField(node, "seed", species.seed, anyNumber());
     readField(node, "height", species.height, above(0.0));

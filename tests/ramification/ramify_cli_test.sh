@@ -39,12 +39,23 @@ expect_run glb 0 'shrub.glb: [0-9]* branches, [0-9]* primitives' -- \
     "$LSYS" ramify "$DATA/ramified/shrub.ram.json" -o "$WORK/shrub.glb"
 [ -s "$WORK/shrub.glb" ] || fail "glb: nothing written"
 
+# lsys export generates the tree too, --seed replacing the file's.
+expect_run export-glb 0 'oak.glb: [0-9]* primitives, [0-9]* joints' -- \
+    "$LSYS" export "$DATA/ramified/oak.ram.json" -o "$WORK/oak.glb"
+[ -s "$WORK/oak.glb" ] || fail "export: nothing written"
+"$LSYS" export "$DATA/ramified/oak.ram.json" -o "$WORK/oak-again.glb" 2> /dev/null
+cmp -s "$WORK/oak.glb" "$WORK/oak-again.glb" || fail "export: the same seed gave another tree"
+"$LSYS" export "$DATA/ramified/oak.ram.json" --seed 2 -o "$WORK/oak-seed2.glb" 2> /dev/null
+cmp -s "$WORK/oak.glb" "$WORK/oak-seed2.glb" && fail "export: --seed 2 gave the file's seed's tree"
+
 # Errors: located, exit 2.
 expect_run budget 2 'passes its budget of 10 branches (--max-branches' -- \
     "$LSYS" ramify "$DATA/ramified/oak.ram.json" --max-branches 10 -o "$WORK/x.lsys"
 printf '{\n  "p": [[1], [0.5, 0.5]],\n  "depth": 0\n}\n' > "$WORK/bad.ram.json"
 expect_run bad-file 2 "bad.ram.json:3:12: error: 'depth' must be a whole number in \[1, 64\], not 0" -- \
     "$LSYS" ramify "$WORK/bad.ram.json"
+expect_run export-bad-file 2 "bad.ram.json:3:12: error: 'depth' must be a whole number in \[1, 64\], not 0" -- \
+    "$LSYS" export "$WORK/bad.ram.json" -o "$WORK/x.glb"
 expect_run plant-output 2 '-o generates a tree from a .ram.json file' -- \
     "$LSYS" ramify "$TESTDATA/figure3.lsys" -o "$WORK/x.glb"
 printf 'Axiom: F(\n' > "$WORK/bad.lsys"

@@ -34,6 +34,7 @@
 #include "lsystem/instance_graph.h"
 #include "lsystem/parser.h"
 #include "lsystem/plant_export.h"
+#include "lsystem/ramification_file.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"
@@ -320,16 +321,30 @@ int exportGraph(const Arguments& arguments, const lsys::Grammar& grammar) {
     return 0;
 }
 
+// The tree of a .ram.json file, --seed replacing the file's.
+std::optional<lsys::PlantAsset> generatedTree(const Arguments& arguments) {
+    lsys::RamificationFile file = lsys::readRamificationFile(arguments.file);
+    if (!file.tree) {
+        std::cerr << lsys::formatDiagnostics(file.diagnostics, file.source);
+        return std::nullopt;
+    }
+    if (arguments.seed) file.tree->seed = *arguments.seed;
+    return lsys::plantOf(lsys::generateTree(*file.tree), arguments.memory);
+}
+
 // Derives, interprets (surfaces from data/meshes near the file) and writes
-// the plant; a .comp.json file is built from its components instead.
+// the plant; a .comp.json file is built from its components and a .ram.json
+// tree generated from its matrix instead.
 int exportCommand(const Arguments& arguments) {
     const bool components = lsys::components::isComponentFile(arguments.file);
-    if (components && arguments.instanced) {
-        std::cerr << "lsys: error: --instanced needs an L-system (a component plant has no b-grammar)\n";
+    const bool ramified = lsys::isRamificationFile(arguments.file);
+    if ((components || ramified) && arguments.instanced) {
+        std::cerr << "lsys: error: --instanced needs an L-system (a component plant or ramification tree has no "
+                     "b-grammar)\n";
         return 1;
     }
     std::optional<lsys::Grammar> grammar;
-    if (!components) {
+    if (!components && !ramified) {
         grammar = load(arguments);
         if (!grammar) return kBadInput;
         if (arguments.instanced) return exportGraph(arguments, *grammar);
@@ -339,6 +354,10 @@ int exportCommand(const Arguments& arguments) {
     try {
         if (components) {
             plant = lsys::components::loadComponentPlant(arguments.file, arguments.memory);
+        } else if (ramified) {
+            std::optional<lsys::PlantAsset> tree = generatedTree(arguments);
+            if (!tree) return kBadInput;
+            plant = std::move(*tree);
         } else {
             const lsys::ModuleString string = lsys::derive(*grammar, deriveOptions(arguments));
             plant = lsys::plantFromGrammar(
@@ -537,8 +556,9 @@ int main(int argc, char** argv) {
 
     CLI::App* exportSubcommand = app.add_subcommand(
         "export",
-        "Derive and interpret an L-system, or build a component plant (FILE.comp.json, docs/COMPONENTS.md), and "
-        "write the plant as glTF 2.0 (.gltf, .glb) or OBJ (docs/EXPORT.md)");
+        "Derive and interpret an L-system, build a component plant (FILE.comp.json, docs/COMPONENTS.md) or generate "
+        "a ramification tree (FILE.ram.json, --seed replacing its 'seed'; docs/RAMIFICATION.md), and write the plant "
+        "as glTF 2.0 (.gltf, .glb) or OBJ (docs/EXPORT.md)");
     addDerivationOptions(*exportSubcommand, arguments);
     exportSubcommand->add_option("-o,--output", arguments.output, "Output file: .gltf, .glb or .obj")->required();
     exportSubcommand->add_flag_callback(

@@ -145,7 +145,8 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                "the Khronos validation layer, PLANTFIELD_DATA_DIR replaces the data folder.");
     app.add_option("scene", o.scenePath, "Scene file (.json)")->default_str("data/scenes/default.json");
     app.add_option("--plant", o.plantPath,
-                   "Preview one plant instead of a scene: an L-system file (.lsys, .l) or a vlab object folder,\n"
+                   "Preview one plant instead of a scene: an L-system file (.lsys, .l), a vlab object folder,\n"
+                   "a ramification tree (.ram.json) or a component plant (.comp.json),\n"
                    "one plant at the origin in its own units on flat ground, no wind unless --wind, framed by an\n"
                    "orbit camera (docs/PLANT_PREVIEW.md)")
         ->type_name("FILE|DIR");

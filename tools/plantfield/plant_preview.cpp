@@ -1,5 +1,8 @@
 #include "plant_preview.h"
 
+#include "lsystem/components/component_graph.h"
+#include "lsystem/ramification_file.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -34,9 +37,13 @@ Scene previewScene(const PlantfieldOptions& o) {
     const std::filesystem::path path = std::filesystem::path(o.plantPath).lexically_normal();
     species.name = path.has_filename() ? path.stem().string() : path.parent_path().filename().string();
     if (species.name.empty()) species.name = "plant";
-    species.lsystem = path;
-    species.defines = o.plantDefines;
-    species.steps = o.plantSteps;
+    if (lsys::isRamificationFile(path) || lsys::components::isComponentFile(path)) {
+        species.model = path; // takes no defines or steps
+    } else {
+        species.lsystem = path;
+        species.defines = o.plantDefines;
+        species.steps = o.plantSteps;
+    }
     species.seed = o.seed;
     species.height = o.plantHeight;
     // Full detail at any size: the preview is of the plant, not of its LODs.
