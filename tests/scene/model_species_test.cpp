@@ -18,11 +18,11 @@ namespace {
 
 TEST(ModelSpecies, LoadsATreeTypeAndAComponentPlant) {
     const std::filesystem::path file = test::writeFile(
-        "models.json", "{ \"species\": [\n"
-                       "  { \"name\": \"oak\", \"model\": \"" PLANTFIELD_DATA_DIR "/ramified/oak.ram.json\", "
-                       "\"variants\": 2, \"height\": 9 },\n"
-                       "  { \"name\": \"palm\", \"model\": \"" PLANTFIELD_DATA_DIR
-                       "/components/coconut_palm.comp.json\" } ] }");
+        "models.json",
+        "{ \"species\": [\n"
+        "  { \"name\": \"oak\", \"model\": \"" PLANTFIELD_DATA_DIR "/ramified/oak.ram.json\", "
+        "\"variants\": 2, \"height\": 9 },\n"
+        "  { \"name\": \"palm\", \"model\": \"" PLANTFIELD_DATA_DIR "/components/coconut_palm.comp.json\" } ] }");
     const Scene scene = loadScene(file);
     ASSERT_EQ(scene.species.size(), 2u);
     EXPECT_EQ(scene.species[0].model, std::filesystem::path(PLANTFIELD_DATA_DIR "/ramified/oak.ram.json"));
@@ -58,22 +58,22 @@ TEST_P(BadModelSpeciesTest, FailsAtTheKeyWithAMessage) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scene, BadModelSpeciesTest,
-    testing::Values(
-        BadModelSpecies{"lsystem_and_model", PF_MODEL_SPECIES(PF_BUSH_LSYSTEM ", " PF_OAK_MODEL), "\"model\"",
-                        "/species/0/model and \"lsystem\" both give the plant; keep one"},
-        BadModelSpecies{"neither", PF_MODEL_SPECIES("\"height\": 3"), "{ \"name\"",
-                        "needs \"lsystem\": the L-system file or vlab object folder, or a \"model\""},
-        BadModelSpecies{"unknown_extension",
-                        PF_MODEL_SPECIES("\"model\": \"" PLANTFIELD_DATA_DIR "/plants/broadleaf.lsys\""),
-                        "\"" PLANTFIELD_DATA_DIR "/plants/broadleaf.lsys\"",
-                        "/species/0/model must name a ramification tree (.ram.json) or a component plant "
-                        "(.comp.json), not \"broadleaf.lsys\""},
-        BadModelSpecies{"missing_model", PF_MODEL_SPECIES("\"model\": \"no_such_tree.ram.json\""),
-                        "\"no_such_tree.ram.json\"", "/species/0/model names a file that does not exist"},
-        BadModelSpecies{"defines_with_model", PF_MODEL_SPECIES(PF_OAK_MODEL ", \"defines\": { \"r\": 1 }"),
-                        "\"defines\"", "/species/0/defines is an L-system setting; a species with a \"model\" has none"},
-        BadModelSpecies{"steps_with_model", PF_MODEL_SPECIES(PF_OAK_MODEL ", \"steps\": 4"), "\"steps\"",
-                        "/species/0/steps is an L-system setting; a species with a \"model\" has none"}),
+    testing::Values(BadModelSpecies{"lsystem_and_model", PF_MODEL_SPECIES(PF_BUSH_LSYSTEM ", " PF_OAK_MODEL),
+                                    "\"model\"", "/species/0/model and \"lsystem\" both give the plant; keep one"},
+                    BadModelSpecies{"neither", PF_MODEL_SPECIES("\"height\": 3"), "{ \"name\"",
+                                    "needs \"lsystem\": the L-system file or vlab object folder, or a \"model\""},
+                    BadModelSpecies{"unknown_extension",
+                                    PF_MODEL_SPECIES("\"model\": \"" PLANTFIELD_DATA_DIR "/plants/broadleaf.lsys\""),
+                                    "\"" PLANTFIELD_DATA_DIR "/plants/broadleaf.lsys\"",
+                                    "/species/0/model must name a ramification tree (.ram.json) or a component plant "
+                                    "(.comp.json), not \"broadleaf.lsys\""},
+                    BadModelSpecies{"missing_model", PF_MODEL_SPECIES("\"model\": \"no_such_tree.ram.json\""),
+                                    "\"no_such_tree.ram.json\"", "/species/0/model names a file that does not exist"},
+                    BadModelSpecies{"defines_with_model", PF_MODEL_SPECIES(PF_OAK_MODEL ", \"defines\": { \"r\": 1 }"),
+                                    "\"defines\"",
+                                    "/species/0/defines is an L-system setting; a species with a \"model\" has none"},
+                    BadModelSpecies{"steps_with_model", PF_MODEL_SPECIES(PF_OAK_MODEL ", \"steps\": 4"), "\"steps\"",
+                                    "/species/0/steps is an L-system setting; a species with a \"model\" has none"}),
     [](const testing::TestParamInfo<BadModelSpecies>& info) { return std::string(info.param.name); });
 
 Scene sceneOfModel(const std::filesystem::path& model, uint32_t variants) {
@@ -153,9 +153,9 @@ TEST(ModelSpecies, AMalformedTreeTypeNamesSpeciesFileLineAndColumn) {
 }
 
 TEST(ModelSpecies, AMalformedComponentPlantNamesSpeciesFileLineAndColumn) {
-    expectLocatedModelError("bad.comp.json",
-                            "{\n  \"root\": \"stalk\",\n  \"components\": {\n    \"stalk\": { \"kind\": \"stme\" }\n  }\n}",
-                            "\"stme\"");
+    expectLocatedModelError(
+        "bad.comp.json",
+        "{\n  \"root\": \"stalk\",\n  \"components\": {\n    \"stalk\": { \"kind\": \"stme\" }\n  }\n}", "\"stme\"");
 }
 
 } // namespace
