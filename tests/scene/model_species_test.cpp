@@ -13,9 +13,6 @@
 namespace pf {
 namespace {
 
-#define PF_OAK_MODEL "\"model\": \"" PLANTFIELD_DATA_DIR "/ramified/oak.ram.json\""
-#define PF_MODEL_SPECIES(keys) "{\n  \"species\": [\n    { \"name\": \"m\", " keys " }\n  ]\n}"
-
 TEST(ModelSpecies, LoadsATreeTypeAndAComponentPlant) {
     const std::filesystem::path file = test::writeFile(
         "models.json",
@@ -31,50 +28,6 @@ TEST(ModelSpecies, LoadsATreeTypeAndAComponentPlant) {
     EXPECT_EQ(scene.species[0].height, 9.0f);
     EXPECT_EQ(scene.species[1].model, std::filesystem::path(PLANTFIELD_DATA_DIR "/components/coconut_palm.comp.json"));
 }
-
-struct BadModelSpecies {
-    const char* name;
-    const char* text;
-    const char* at;
-    const char* message;
-};
-
-void PrintTo(const BadModelSpecies& bad, std::ostream* out) { *out << bad.name; }
-
-class BadModelSpeciesTest : public testing::TestWithParam<BadModelSpecies> {};
-
-TEST_P(BadModelSpeciesTest, FailsAtTheKeyWithAMessage) {
-    const BadModelSpecies& bad = GetParam();
-    const std::filesystem::path file = test::writeFile("bad.json", bad.text);
-    try {
-        loadScene(file);
-        FAIL() << "loaded without an error";
-    } catch (const SceneError& e) {
-        const std::string what = e.what();
-        EXPECT_EQ(what.rfind(file.string() + ":" + test::lineColumnOf(bad.text, bad.at) + ": ", 0), 0u) << what;
-        EXPECT_NE(what.find(bad.message), std::string::npos) << what;
-    }
-}
-
-INSTANTIATE_TEST_SUITE_P(
-    Scene, BadModelSpeciesTest,
-    testing::Values(BadModelSpecies{"lsystem_and_model", PF_MODEL_SPECIES(PF_BUSH_LSYSTEM ", " PF_OAK_MODEL),
-                                    "\"model\"", "/species/0/model and \"lsystem\" both give the plant; keep one"},
-                    BadModelSpecies{"neither", PF_MODEL_SPECIES("\"height\": 3"), "{ \"name\"",
-                                    "needs \"lsystem\": the L-system file or vlab object folder, or a \"model\""},
-                    BadModelSpecies{"unknown_extension",
-                                    PF_MODEL_SPECIES("\"model\": \"" PLANTFIELD_DATA_DIR "/plants/broadleaf.lsys\""),
-                                    "\"" PLANTFIELD_DATA_DIR "/plants/broadleaf.lsys\"",
-                                    "/species/0/model must name a ramification tree (.ram.json) or a component plant "
-                                    "(.comp.json), not \"broadleaf.lsys\""},
-                    BadModelSpecies{"missing_model", PF_MODEL_SPECIES("\"model\": \"no_such_tree.ram.json\""),
-                                    "\"no_such_tree.ram.json\"", "/species/0/model names a file that does not exist"},
-                    BadModelSpecies{"defines_with_model", PF_MODEL_SPECIES(PF_OAK_MODEL ", \"defines\": { \"r\": 1 }"),
-                                    "\"defines\"",
-                                    "/species/0/defines is an L-system setting; a species with a \"model\" has none"},
-                    BadModelSpecies{"steps_with_model", PF_MODEL_SPECIES(PF_OAK_MODEL ", \"steps\": 4"), "\"steps\"",
-                                    "/species/0/steps is an L-system setting; a species with a \"model\" has none"}),
-    [](const testing::TestParamInfo<BadModelSpecies>& info) { return std::string(info.param.name); });
 
 Scene sceneOfModel(const std::filesystem::path& model, uint32_t variants) {
     Scene scene;

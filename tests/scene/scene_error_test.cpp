@@ -8,6 +8,8 @@ namespace pf {
 namespace {
 
 #define PF_SPECIES(extra) "{ \"name\": \"a\", " PF_BUSH_LSYSTEM extra " }"
+#define PF_OAK_MODEL "\"model\": \"" PLANTFIELD_DATA_DIR "/ramified/oak.ram.json\""
+#define PF_MODEL_SPECIES(keys) "{\n  \"species\": [\n    { \"name\": \"m\", " keys " }\n  ]\n}"
 #define PF_SCENE(extra) "{\n  \"species\": [" PF_SPECIES("") "]" extra "\n}"
 
 struct BadScene {
@@ -108,7 +110,22 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"number_overflow", PF_SCENE(",\n  \"fog\": { \"density\": 1e999 }"), "1e999",
                  "a number too large: 1e999"},
         BadScene{"number_beyond_float", PF_SCENE(",\n  \"fog\": { \"density\": 1e300 }"), "1e300",
-                 "/fog/density must be a number ≥ 0 (got 1e300)"}),
+                 "/fog/density must be a number ≥ 0 (got 1e300)"},
+        // Species of a model file (tests/scene/model_species_test.cpp loads good ones).
+        BadScene{"lsystem_and_model", PF_MODEL_SPECIES(PF_BUSH_LSYSTEM ", " PF_OAK_MODEL), "\"model\"",
+                 "/species/0/model and \"lsystem\" both give the plant; keep one"},
+        BadScene{"neither", PF_MODEL_SPECIES("\"height\": 3"), "{ \"name\"",
+                 "needs \"lsystem\": the L-system file or vlab object folder, or a \"model\""},
+        BadScene{"unknown_extension", PF_MODEL_SPECIES("\"model\": \"" PLANTFIELD_DATA_DIR "/plants/broadleaf.lsys\""),
+                 "\"" PLANTFIELD_DATA_DIR "/plants/broadleaf.lsys\"",
+                 "/species/0/model must name a ramification tree (.ram.json) or a component plant "
+                 "(.comp.json), not \"broadleaf.lsys\""},
+        BadScene{"missing_model", PF_MODEL_SPECIES("\"model\": \"no_such_tree.ram.json\""), "\"no_such_tree.ram.json\"",
+                 "/species/0/model names a file that does not exist"},
+        BadScene{"defines_with_model", PF_MODEL_SPECIES(PF_OAK_MODEL ", \"defines\": { \"r\": 1 }"), "\"defines\"",
+                 "/species/0/defines is an L-system setting; a species with a \"model\" has none"},
+        BadScene{"steps_with_model", PF_MODEL_SPECIES(PF_OAK_MODEL ", \"steps\": 4"), "\"steps\"",
+                 "/species/0/steps is an L-system setting; a species with a \"model\" has none"}),
     [](const testing::TestParamInfo<BadScene>& info) { return std::string(info.param.name); });
 
 TEST(SceneErrors, AMissingFileIsASceneError) {
