@@ -17,6 +17,10 @@ expect_run figure3-json 0 '^{"orders":3,"a":\[8,5,2\],"p":\[\[1.0\],\[0.6,0.4\],
 expect_run figure3-table 0 '^k=2 a=5 p: 0.6 0.4$' -- "$LSYS" ramify "$TESTDATA/figure3.lsys"
 expect_run vlab-object 0 '"orders":7,"a":\[729,' -- "$LSYS" ramify "$DATA/plants/abop/fig2_8a_ternary_tree" --json
 expect_run steps 0 '"orders":4,' -- "$LSYS" ramify "$DATA/plants/monopodial_tree.lsys" -n 4 --json
+# A component plant (Tankard 2001, §3.2) compiles as any plant does.
+expect_run component 0 '^{"orders":[2-9],"a":\[' -- "$LSYS" ramify "$DATA/components/broadleaf_sapling.comp.json" --json
+printf '{ "root": "s", "components": { "s": { "kind": "stem", "lenght": 1 } } }' > "$WORK/bad.comp.json"
+expect_run component-error 2 'bad.comp.json:1:' -- "$LSYS" ramify "$WORK/bad.comp.json"
 
 # What --json prints is a .ram.json file; the file prints the matrix it generates with.
 "$LSYS" ramify "$TESTDATA/figure3.lsys" --json > "$WORK/figure3.ram.json"

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lsystem/components/component_graph.h"
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/error.h"
 #include "lsystem/output_file.h"
@@ -56,31 +57,44 @@ void printMatrix(const lsys::RamificationMatrix& matrix, const std::vector<uint6
     }
 }
 
-// Compiles a plant: derived, interpreted, its joints' branching tree ordered.
-int compilePlant(const RamifyArguments& arguments) {
+// The plant to compile: an L-system derived and interpreted, or a component
+// plant built (Tankard 2001, §3.2); none, with the error printed, when it fails.
+std::optional<lsys::PlantAsset> plantToCompile(const RamifyArguments& arguments) {
+    if (lsys::components::isComponentFile(arguments.file)) {
+        try {
+            return lsys::components::loadComponentPlant(arguments.file, arguments.memory);
+        } catch (const std::runtime_error& error) { // ComponentError (located), MemoryBudgetError
+            std::cerr << "lsys: error: " << error.what() << '\n';
+            return std::nullopt;
+        }
+    }
     lsys::ParseOptions options;
     options.file = arguments.file;
     lsys::vlab::PlantFile plant = lsys::vlab::loadPlant(arguments.file, arguments.dialect, options);
     std::cerr << lsys::formatDiagnostics(plant.parsed.warnings, plant.source);
     if (!plant.parsed.ok()) {
         std::cerr << lsys::formatDiagnostics(plant.parsed.diagnostics, plant.source);
-        return kBadInput;
+        return std::nullopt;
     }
     const lsys::Grammar& grammar = plant.parsed.grammar;
-    lsys::PlantAsset asset;
     try {
         lsys::DeriveOptions derive;
         derive.steps = arguments.steps;
         derive.seed = arguments.seed;
         derive.memory = arguments.memory;
-        asset =
-            lsys::plantFromGrammar(grammar, lsys::derive(grammar, derive),
-                                   lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file)), arguments.memory);
+        return lsys::plantFromGrammar(grammar, lsys::derive(grammar, derive),
+                                      lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file)), arguments.memory);
     } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
         std::cerr << arguments.file << ": error: " << error.what() << '\n';
-        return kBadInput;
+        return std::nullopt;
     }
-    const lsys::CompiledRamification compiled = lsys::compileRamification(asset.joints);
+}
+
+// Compiles a plant: its joints' branching tree ordered.
+int compilePlant(const RamifyArguments& arguments) {
+    const std::optional<lsys::PlantAsset> asset = plantToCompile(arguments);
+    if (!asset) return kBadInput;
+    const lsys::CompiledRamification compiled = lsys::compileRamification(asset->joints);
     printMatrix(lsys::ramificationMatrix(compiled.counts), &compiled.counts.a, arguments.json);
     return 0;
 }
@@ -152,7 +166,9 @@ RamifyCommand addRamifyCommand(CLI::App& app) {
         "Ramification matrices (Tankard 2001, §2.2; docs/RAMIFICATION.md). For a plant: derive and interpret it, "
         "give every branch of its branching tree its Horton-Strahler order and print a_k (branches of order k) "
         "and p_kj. For a .ram.json file: print the matrix it generates with, or with -o generate a tree from it");
-    command->add_option("FILE", arguments->file, "plant (.lsys, .l, any dialect, vlab object folder) or .ram.json")
+    command
+        ->add_option("FILE", arguments->file,
+                     "plant (.lsys, .l, any dialect, vlab object folder, component plant .comp.json) or .ram.json")
         ->required();
     command->add_option("-n,--steps", arguments->steps, "Plant: derivation steps (default: the file's)")
         ->check(CLI::Range(0, lsys::kMaxDerivationLength));
