@@ -67,6 +67,10 @@ struct DrawnOptions {
     LeafCards leaves = LeafCards::Quads;
 };
 
+// What the exports bake (flat, instanced, and the box --height measures):
+// the trunk with `trunkSides` ring sides, leaf cards as their outlines.
+inline DrawnOptions exportedDrawnOptions(uint32_t trunkSides) { return {trunkSides, LeafCards::Outlines}; }
+
 // What the bake measures on the whole plant: bark ring sides and LOD1's twig
 // cut follow radii relative to the trunk, the minimum ribbon width the
 // plant's extent. A part of a plant (an InstanceGraph object) baked with the

@@ -113,9 +113,7 @@ void writeGraphGltf(const InstanceGraph& graph, const SurfaceLibrary& surfaces, 
             box = {graph.objects[graph.root].bounds.min * options.scale,
                    graph.objects[graph.root].bounds.max * options.scale};
         const DrawnScale scale = drawnScaleOf(directs, box);
-        DrawnOptions drawn;
-        drawn.trunkSides = options.detail.segmentSides;
-        drawn.leaves = LeafCards::Outlines;
+        const DrawnOptions drawn = exportedDrawnOptions(options.detail.segmentSides);
         for (const PlantAsset& direct : directs) meshes.push_back(drawnMeshesByMaterial(direct, scale, drawn));
     } else {
         for (const PlantAsset& direct : directs)

@@ -87,10 +87,7 @@ void checkAsset(const PlantAsset& asset) {
 // material of a surface or polygon two-sided, as the renderer draws them.)
 std::vector<TriangleMesh> flatMeshes(const PlantAsset& asset, const ExportOptions& options) {
     if (options.geometry == ExportGeometry::Turtle) return meshesByMaterial(asset, options.segments, options.detail);
-    DrawnOptions drawn;
-    drawn.trunkSides = options.detail.segmentSides;
-    drawn.leaves = LeafCards::Outlines;
-    return drawnMeshesByMaterial(asset, drawnScaleOf(asset), drawn);
+    return drawnMeshesByMaterial(asset, drawnScaleOf(asset), exportedDrawnOptions(options.detail.segmentSides));
 }
 
 // At most what the turtle's frusta take (a bark tube, a ribbon, a coarser

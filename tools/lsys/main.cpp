@@ -242,9 +242,7 @@ int instance(const Arguments& arguments) {
 lsys::Bounds flatBounds(const lsys::PlantAsset& plant, const lsys::GraphExportOptions& options) {
     if (options.geometry == lsys::ExportGeometry::Turtle)
         return lsys::bakedBounds(plant, options.segments, options.detail);
-    lsys::DrawnOptions drawn;
-    drawn.trunkSides = options.detail.segmentSides;
-    drawn.leaves = lsys::LeafCards::Outlines;
+    const lsys::DrawnOptions drawn = lsys::exportedDrawnOptions(options.detail.segmentSides);
     lsys::Bounds bounds;
     for (const lsys::TriangleMesh& mesh : lsys::drawnMeshesByMaterial(plant, lsys::drawnScaleOf(plant), drawn))
         for (const glm::vec3& p : mesh.positions) bounds.extend(p);
