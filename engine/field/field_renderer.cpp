@@ -54,6 +54,24 @@ Buffer uploadVector(GpuResources& owner, const std::vector<T>& data, VkBufferUsa
     return createDeviceBufferWithData(owner, data.data(), data.size() * sizeof(T), usage);
 }
 
+// The vertex pool is bound whole as a storage buffer (the impostor bake) and
+// read through uint4 texel views (the draw shaders); past either device limit
+// those bindings are invalid, so the scene is refused, with the sizes, before
+// anything is uploaded.
+void requireBindableVertexPool(const GpuContext& ctx, size_t vertices) {
+    const VkPhysicalDeviceLimits& limits = ctx.properties.limits;
+    const uint64_t bytes = uint64_t(vertices) * sizeof(gpu::FieldVertex);
+    const uint64_t texels = bytes / (4 * sizeof(uint32_t));
+    if (bytes <= limits.maxStorageBufferRange && texels <= limits.maxTexelBufferElements) return;
+    const auto mib = [](uint64_t b) { return std::to_string((b + (1 << 20) - 1) >> 20) + " MiB"; };
+    throw std::runtime_error(
+        "the plant models' vertex pool (" + std::to_string(vertices) + " vertices, " + mib(bytes) +
+        ") is larger than this device binds as one buffer (" +
+        mib(std::min<uint64_t>(limits.maxStorageBufferRange, uint64_t(limits.maxTexelBufferElements) * 16)) +
+        ", maxStorageBufferRange and maxTexelBufferElements): use fewer variants, fewer "
+        "derivation steps or simpler plants");
+}
+
 // The drawn terrain keeps at most this many samples a side: far cells of a
 // finer grid are a pixel or two wide, and a CPU rasteriser pays per triangle.
 constexpr uint32_t kTerrainDrawSamples = 129;
@@ -100,6 +118,7 @@ FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const 
     if (content_.plants.size() > FIELD_MAX_INSTANCES)
         throw std::runtime_error("at most " + std::to_string(FIELD_MAX_INSTANCES) + " plants can be drawn");
     lsys::need(settings_.memory, "GPU uploads", fieldUploadBytes(content_));
+    requireBindableVertexPool(ctx_, content_.models.vertices.size());
     uniforms_ = createHostBuffer(resources_, sizeof(FieldUniformBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     uploadGeometry();
     uploadInstances();

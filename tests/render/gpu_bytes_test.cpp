@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 namespace pf::test {
@@ -48,6 +49,27 @@ TEST_F(GpuBytesTest, UploadsPastTheMemoryBudgetAreRefusedBeforeAllocating) {
         FAIL() << "expected the uploads to be refused";
     } catch (const lsys::MemoryBudgetError& error) {
         EXPECT_NE(std::string(error.what()).find("GPU uploads needs"), std::string::npos) << error.what();
+    }
+    EXPECT_EQ(liveDeviceMemoryBytes(), before);
+}
+
+// A vertex pool larger than the device binds as one storage buffer is
+// refused with its size, before any device memory is allocated (bound
+// anyway, it is undefined behaviour the validation layer reports).
+TEST_F(GpuBytesTest, AVertexPoolPastTheDevicesBufferRangeIsRefused) {
+    const Scene scene = loadScene(std::string(PLANTFIELD_DATA_DIR) + "/scenes/test_small.json");
+    FieldContent content = buildFieldContent(scene);
+    const uint64_t range = std::min<uint64_t>(ctx.properties.limits.maxStorageBufferRange,
+                                              uint64_t(ctx.properties.limits.maxTexelBufferElements) * 16);
+    content.models.vertices.resize(range / sizeof(gpu::FieldVertex) + 1);
+    const VkDeviceSize before = liveDeviceMemoryBytes();
+    try {
+        FieldRenderer renderer(ctx, std::move(content), FieldRenderSettings{});
+        FAIL() << "expected the vertex pool to be refused";
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what()).find("vertex pool (" + std::to_string(range / 64 + 1) + " vertices"),
+                  std::string::npos)
+            << error.what();
     }
     EXPECT_EQ(liveDeviceMemoryBytes(), before);
 }
