@@ -80,6 +80,33 @@ CompiledRamification compileRamification(std::span<const Joint> joints) {
     return result;
 }
 
+CompiledRamification compileRamification(const PlantAsset& plant) {
+    std::vector<bool> foliage(plant.joints.size(), false);
+    for (const Primitive& primitive : plant.primitives)
+        if (primitive.kind == PrimitiveKind::Segment && primitive.joint >= 0 &&
+            static_cast<size_t>(primitive.joint) < foliage.size() && primitive.material < plant.materials.size())
+            foliage[primitive.joint] = plant.materials[primitive.material].twoSided;
+    // woodyIndex[i]: joint i's index among the branches, or (foliage) that of the branch it hangs on.
+    std::vector<int32_t> woodyIndex(plant.joints.size(), -1);
+    std::vector<Joint> woody;
+    for (size_t i = 0; i < plant.joints.size(); ++i) {
+        const int32_t parent = plant.joints[i].parent;
+        const int32_t below = parent >= 0 && static_cast<size_t>(parent) < i ? woodyIndex[parent] : -1;
+        if (foliage[i]) {
+            woodyIndex[i] = below;
+            continue;
+        }
+        woodyIndex[i] = static_cast<int32_t>(woody.size());
+        woody.push_back(plant.joints[i]);
+        woody.back().parent = below;
+    }
+    CompiledRamification woodyCompiled = compileRamification(woody);
+    CompiledRamification result{std::vector<uint32_t>(plant.joints.size(), 0), std::move(woodyCompiled.counts)};
+    for (size_t i = 0; i < plant.joints.size(); ++i)
+        if (!foliage[i]) result.jointOrder[i] = woodyCompiled.jointOrder[woodyIndex[i]];
+    return result;
+}
+
 RamificationMatrix ramificationMatrix(const RamificationCounts& counts) {
     RamificationMatrix matrix;
     for (size_t k = 1; k <= counts.a.size(); ++k) {

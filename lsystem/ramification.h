@@ -55,6 +55,13 @@ struct CompiledRamification {
 // plant (a parent out of range, or a cycle) are treated as roots.
 CompiledRamification compileRamification(std::span<const Joint> joints);
 
+// The same for a plant's branches: its joints without its foliage. A segment
+// of a two-sided material (needles, grass blades: leaves the renderer draws
+// as ribbons) is a leaf, not a branch, as ~leaf surfaces are; a branch
+// growing on one hangs from the nearest branch below it. jointOrder holds
+// every joint of the plant, 0 for foliage.
+CompiledRamification compileRamification(const PlantAsset& plant);
+
 // p_kj = b_kj / a_k, row 1 = [1]; an empty matrix for a plant without joints.
 RamificationMatrix ramificationMatrix(const RamificationCounts& counts);
 

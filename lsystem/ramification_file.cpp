@@ -141,15 +141,47 @@ struct RamificationReader {
     }
 };
 
-const std::vector<std::string> kKeys = {"p",          "balance",    "depth", "orders",         "a",
-                                        "twist",      "length",     "width", "width_exponent", "split_angle",
-                                        "main_angle", "side_angle", "seed",  "max_branches",   "description"};
+const std::vector<std::string> kKeys = {
+    "p",     "balance",        "depth",       "orders",     "a",          "twist",          "length",
+    "width", "width_exponent", "split_angle", "main_angle", "side_angle", "side_angle_min", "phyllotaxis",
+    "droop", "stems",          "stem_angle",  "foliage",    "seed",       "max_branches",   "description"};
+const std::vector<std::string> kFoliageKeys = {"kind", "orders", "clusters", "per_cluster", "size", "angle", "width"};
+
+void checkKeys(const nlohmann::json& object, const std::string& pointer, const std::vector<std::string>& keys,
+               const RamificationReader& reader) {
+    for (const auto& [key, value] : object.items())
+        if (std::find(keys.begin(), keys.end(), key) == keys.end())
+            reader.fail(pointer + "/" + key, "unknown key '" + key + "' (docs/RAMIFICATION.md lists the keys)", true);
+}
+
+RamificationFoliage readFoliage(const nlohmann::json& object, const RamificationReader& reader) {
+    if (!object.is_object()) reader.fail("/foliage", "'foliage' must be an object");
+    checkKeys(object, "/foliage", kFoliageKeys, reader);
+    RamificationFoliage foliage;
+    if (!object.contains("kind") || !object["kind"].is_string() ||
+        (object["kind"] != "leaves" && object["kind"] != "needles"))
+        reader.fail(object.contains("kind") ? "/foliage/kind" : "/foliage",
+                    "'foliage/kind' must be \"leaves\" or \"needles\"");
+    foliage.kind = object["kind"] == "leaves" ? RamificationFoliage::Kind::Leaves : RamificationFoliage::Kind::Needles;
+    const auto count = [&](const char* key, uint32_t& out, uint32_t max) {
+        if (object.contains(key))
+            out = static_cast<uint32_t>(reader.integer(object[key], std::string("/foliage/") + key, 1, max));
+    };
+    const auto number = [&](const char* key, double& out, double min, double max) {
+        if (object.contains(key)) out = reader.number(object[key], std::string("/foliage/") + key, min, max);
+    };
+    count("orders", foliage.maxOrder, kMaxRamificationOrders);
+    count("clusters", foliage.clusters, 64);
+    count("per_cluster", foliage.perCluster, 64);
+    number("size", foliage.size, 1e-6, 1e6);
+    number("angle", foliage.angle, 0.0, 180.0);
+    number("width", foliage.needleWidth, 0.0, 1e6);
+    return foliage;
+}
 
 RamificationTree readTree(const nlohmann::json& root, const RamificationReader& reader) {
     if (!root.is_object()) reader.fail("", "a .ram.json file is one JSON object");
-    for (const auto& [key, value] : root.items())
-        if (std::find(kKeys.begin(), kKeys.end(), key) == kKeys.end())
-            reader.fail("/" + key, "unknown key '" + key + "' (docs/RAMIFICATION.md lists the keys)", true);
+    checkKeys(root, "", kKeys, reader);
     if (root.contains("p") == root.contains("balance"))
         reader.fail("", "give either 'p' (the matrix) or 'balance' with 'depth'");
     RamificationTree tree;
@@ -195,6 +227,12 @@ RamificationTree readTree(const nlohmann::json& root, const RamificationReader& 
     optionalNumber("split_angle", growth.splitAngle, 0.0, 180.0);
     optionalNumber("main_angle", growth.mainAngle, 0.0, 180.0);
     optionalNumber("side_angle", growth.sideAngle, 0.0, 180.0);
+    optionalNumber("side_angle_min", growth.minSideAngle, 0.0, 180.0);
+    optionalNumber("phyllotaxis", growth.phyllotaxis, 0.0, 360.0);
+    optionalNumber("droop", growth.droop, 0.0, 1.0);
+    if (root.contains("stems")) growth.stems = static_cast<uint32_t>(reader.integer(root["stems"], "/stems", 1, 64));
+    optionalNumber("stem_angle", growth.stemAngle, 0.0, 90.0);
+    if (root.contains("foliage")) tree.foliage = readFoliage(root["foliage"], reader);
     if (root.contains("seed"))
         tree.seed = reader.integer(root["seed"], "/seed", 0, std::numeric_limits<uint64_t>::max());
     if (root.contains("max_branches"))

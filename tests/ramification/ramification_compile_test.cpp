@@ -54,6 +54,22 @@ TEST(RamificationCompile, BranchPointsOfMoreChildrenAreBinaryJoinsInARow) {
     EXPECT_EQ(compiled.counts.b[1], (std::vector<uint64_t>{2, 1}));
 }
 
+// Needles (segments of the two-sided material 5) are leaves, not branches: a
+// plant's matrix is its woody skeleton's; a branch growing on a needle hangs
+// from the branch below it.
+TEST(RamificationCompile, FoliageSegmentsAreNoBranches) {
+    const CompiledRamification needles = compileRamification(plantOfWord("F[;(5)F]F[+F][;(5)-F]F"));
+    EXPECT_EQ(needles.jointOrder, (std::vector<uint32_t>{2, 0, 2, 1, 0, 1}));
+    EXPECT_EQ(needles.counts.a, compileRamification(plantOfWord("FF[+F]F")).counts.a);
+    const CompiledRamification onNeedle = compileRamification(plantOfWord("F;(5)F;(0)F[+F]F"));
+    EXPECT_EQ(onNeedle.jointOrder,
+              (std::vector<uint32_t>{2, 0, 2, 1, 1})); // the F after the needle goes on from the first
+    EXPECT_EQ(onNeedle.counts.a, (std::vector<uint64_t>{2, 1}));
+    // The same words as bare joints: every segment is a branch.
+    EXPECT_EQ(compileRamification(plantOfWord("F[;(5)F]F[+F][;(5)-F]F").joints).counts.a,
+              (std::vector<uint64_t>{4, 3}));
+}
+
 TEST(RamificationCompile, SeparateRootsAreSeparateTreesAndNoJointsNoMatrix) {
     const CompiledRamification roots = compileRamification(plantOfWord("[F][-F[+F]F]").joints);
     EXPECT_EQ(roots.counts.a, (std::vector<uint64_t>{3, 1}));

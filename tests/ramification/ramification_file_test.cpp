@@ -68,6 +68,24 @@ TEST(RamificationFile, ReadsAMatrixAndItsGrowth) {
     EXPECT_EQ(tree.growth.sideAngle, 60.0);
     EXPECT_EQ(tree.seed, 7u);
     EXPECT_EQ(tree.maxBranches, 1000u);
+    const RamificationTree habit = accepted(R"({"p": [[1]], "side_angle_min": 75, "phyllotaxis": 137.5,
+        "droop": 0.02, "stems": 5, "stem_angle": 25, "foliage": {"kind": "needles", "orders": 3, "clusters": 4,
+        "per_cluster": 5, "size": 0.2, "angle": 40, "width": 0.05}})");
+    EXPECT_EQ(habit.growth.minSideAngle, 75.0);
+    EXPECT_EQ(habit.growth.phyllotaxis, 137.5);
+    EXPECT_EQ(habit.growth.droop, 0.02);
+    EXPECT_EQ(habit.growth.stems, 5u);
+    EXPECT_EQ(habit.growth.stemAngle, 25.0);
+    EXPECT_EQ(habit.foliage.kind, RamificationFoliage::Kind::Needles);
+    EXPECT_EQ(habit.foliage.maxOrder, 3u);
+    EXPECT_EQ(habit.foliage.clusters, 4u);
+    EXPECT_EQ(habit.foliage.perCluster, 5u);
+    EXPECT_EQ(habit.foliage.size, 0.2);
+    EXPECT_EQ(habit.foliage.angle, 40.0);
+    EXPECT_EQ(habit.foliage.needleWidth, 0.05);
+    EXPECT_EQ(accepted(R"({"p": [[1]], "foliage": {"kind": "leaves"}})").foliage.kind,
+              RamificationFoliage::Kind::Leaves);
+    EXPECT_EQ(accepted(R"({"p": [[1]]})").foliage.kind, RamificationFoliage::Kind::None);
     // depth removes rows; balance makes a matrix of any depth.
     EXPECT_EQ(accepted(R"({"p": [[1], [0.6, 0.4], [0.5, 0, 0.5]], "depth": 2})").matrix.orders(), 2u);
     EXPECT_EQ(accepted(R"({"balance": 50, "depth": 3})").matrix.p, balancedMatrix(3, 50.0).p);
@@ -92,6 +110,16 @@ TEST(RamificationFile, RefusesBadFilesAtTheirLineAndColumn) {
     EXPECT_EQ(refusal("{\"p\": [[1]], \"max_branches\": 0}"),
               "1:30: 'max_branches' must be a whole number in [1, 1099511627776], not 0");
     EXPECT_EQ(refusal("[1]"), "1:1: a .ram.json file is one JSON object");
+    EXPECT_EQ(refusal("{\"p\": [[1]], \"foliage\": {\"kind\": \"fronds\"}}"),
+              "1:34: 'foliage/kind' must be \"leaves\" or \"needles\"");
+    EXPECT_EQ(refusal("{\"p\": [[1]], \"foliage\": {\"size\": 1}}"),
+              "1:25: 'foliage/kind' must be \"leaves\" or \"needles\"");
+    EXPECT_EQ(refusal("{\"p\": [[1]], \"foliage\": {\"kind\": \"leaves\", \"clusterz\": 2}}"),
+              "1:44: unknown key 'clusterz' (docs/RAMIFICATION.md lists the keys)");
+    EXPECT_EQ(refusal("{\"p\": [[1]], \"foliage\": {\"kind\": \"leaves\", \"clusters\": 0}}"),
+              "1:56: 'foliage/clusters' must be a whole number in [1, 64], not 0");
+    EXPECT_EQ(refusal("{\"p\": [[1]], \"stems\": 0}"), "1:23: 'stems' must be a whole number in [1, 64], not 0");
+    EXPECT_EQ(refusal("{\"p\": [[1]], \"foliage\": 3}"), "1:25: 'foliage' must be an object");
     EXPECT_EQ(refusal("{\"p\": [[1]], \"seed\": -1}"), "1:22: 'seed' must be a whole number ≥ 0, not -1");
     EXPECT_EQ(refusal("\xEF\xBB\xBF{\"p\": [[1]], \"zz\": 1}"),
               "1:17: unknown key 'zz' (docs/RAMIFICATION.md lists the keys)");

@@ -4,9 +4,6 @@
 
 #include <cmath>
 
-#include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
-
 #include "lsystem/ramification.h"
 #include "lsystem/ramification_generate.h"
 #include "ramification_test_support.h"
@@ -57,30 +54,21 @@ TEST(RamificationGenerate, LengthsWidthsAndAnglesFollowTheOrders) {
     const RamificationGrowth& growth = tree.growth;
     const PlantAsset plant = plantOf(generateTree(tree));
     const CompiledRamification compiled = compileRamification(plant.joints);
-    const auto heading = [&](size_t joint) { return plant.joints[joint].rest.rotation * glm::vec3(0, 1, 0); };
-    std::vector<std::vector<size_t>> children(plant.joints.size());
     for (size_t i = 0; i < plant.joints.size(); ++i) {
         const Joint& joint = plant.joints[i];
         const double length = growth.length * compiled.jointOrder[i];
         EXPECT_NEAR(joint.length, length, 1e-6);
         EXPECT_NEAR(2.0 * joint.startRadius, growth.width * std::pow(length, 4 / 2.0), 1e-6);
-        if (joint.parent >= 0) children[joint.parent].push_back(i);
     }
     size_t checked = 0;
-    for (size_t i = 0; i < plant.joints.size(); ++i) {
-        if (children[i].empty()) continue;
-        ASSERT_EQ(children[i].size(), 2u);
-        const uint32_t k = compiled.jointOrder[i];
-        for (size_t child : children[i]) {
-            const uint32_t own = compiled.jointOrder[child];
-            const uint32_t other = compiled.jointOrder[children[i][0] + children[i][1] - child];
-            double expected = growth.splitAngle;
-            if (own != other)
-                expected = own == k ? growth.mainAngle * other / (k - 1) : growth.sideAngle * (k - own) / (k - 1);
-            const double angle = glm::degrees(std::acos(std::clamp(glm::dot(heading(i), heading(child)), -1.0f, 1.0f)));
-            EXPECT_NEAR(angle, expected, 0.01) << "joint " << child;
-            ++checked;
-        }
+    for (const test::ChildAngle& child : test::childAngles(plant, compiled)) {
+        const uint32_t k = child.parentOrder;
+        double expected = growth.splitAngle;
+        if (child.own != child.sibling)
+            expected = child.own == k ? growth.mainAngle * child.sibling / (k - 1)
+                                      : growth.sideAngle * (k - child.own) / (k - 1);
+        EXPECT_NEAR(child.degrees, expected, 0.01) << "joint " << child.joint;
+        ++checked;
     }
     EXPECT_GT(checked, 10u);
 }

@@ -36,6 +36,8 @@ for species in oak pine shrub; do
     expect_run "compile-$species" 0 '^{"orders":' -- "$LSYS" ramify "$WORK/$species.lsys" --json
 done
 "$LSYS" ramify "$DATA/ramified/oak.ram.json" -o "$WORK/again.lsys" 2> /dev/null
+# The pine's needles are foliage, not branches: its matrix is the 6 orders it was generated with.
+expect_run compile-pine-orders 0 '^{"orders":6,' -- "$LSYS" ramify "$WORK/pine.lsys" --json
 cmp -s "$WORK/oak.lsys" "$WORK/again.lsys" || fail "generate: the same seed gave another tree"
 "$LSYS" ramify "$DATA/ramified/oak.ram.json" --seed 2 -o "$WORK/other.lsys" 2> /dev/null
 cmp -s "$WORK/oak.lsys" "$WORK/other.lsys" && fail "generate: --seed 2 gave the file's seed's tree"

@@ -94,7 +94,7 @@ std::optional<lsys::PlantAsset> plantToCompile(const RamifyArguments& arguments)
 int compilePlant(const RamifyArguments& arguments) {
     const std::optional<lsys::PlantAsset> asset = plantToCompile(arguments);
     if (!asset) return kBadInput;
-    const lsys::CompiledRamification compiled = lsys::compileRamification(asset->joints);
+    const lsys::CompiledRamification compiled = lsys::compileRamification(*asset);
     printMatrix(lsys::ramificationMatrix(compiled.counts), &compiled.counts.a, arguments.json);
     return 0;
 }

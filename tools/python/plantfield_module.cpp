@@ -217,8 +217,7 @@ py::dict ramify(const PyGrammar& grammar, std::optional<int> steps, std::optiona
     {
         py::gil_scoped_release release;
         const lsys::ModuleString string = lsys::derive(grammar.grammar, deriveOptions(steps, seed, maxModules));
-        compiled =
-            lsys::compileRamification(lsys::plantFromGrammar(grammar.grammar, string, surfacesFor(grammar)).joints);
+        compiled = lsys::compileRamification(lsys::plantFromGrammar(grammar.grammar, string, surfacesFor(grammar)));
     }
     const lsys::RamificationMatrix matrix = lsys::ramificationMatrix(compiled.counts);
     py::dict out;
