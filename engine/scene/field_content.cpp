@@ -9,7 +9,9 @@
 
 namespace pf {
 
-Heightfield terrainOf(const Scene& scene, const lsys::MemoryBudget& memory) {
+namespace {
+
+Heightfield baseTerrainOf(const Scene& scene, const lsys::MemoryBudget& memory) {
     const Terrain& t = scene.terrain;
     if (const auto* image = std::get_if<ImageHeightfield>(&t.heightfield))
         return loadImageTerrain(image->path.string(), t.size, image->heightScale, memory);
@@ -25,6 +27,15 @@ Heightfield terrainOf(const Scene& scene, const lsys::MemoryBudget& memory) {
     settings.gain = noise.gain;
     settings.memory = memory;
     return makeNoiseTerrain(settings);
+}
+
+} // namespace
+
+Heightfield terrainOf(const Scene& scene, const lsys::MemoryBudget& memory) {
+    Heightfield terrain = baseTerrainOf(scene, memory);
+    if (scene.terrain.lsystem)
+        lsys::landscape::addBumps(terrain.heights, terrain.resolution, terrain.size, scene.terrain.lsystem->bumps);
+    return terrain;
 }
 
 namespace {
