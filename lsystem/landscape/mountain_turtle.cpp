@@ -85,11 +85,13 @@ void checkPeaks(const std::vector<TerrainBump>& bumps, const std::vector<size_t>
 } // namespace
 
 std::vector<TerrainBump> mountainBumps(const ModuleString& word, const SymbolTable& symbols,
-                                       const TurtleSettings& settings, const MountainPlacement& placement) {
+                                       const TurtleSettings& settings, const MountainPlacement& placement,
+                                       const MemoryBudget& memory) {
     std::vector<std::optional<BumpShape>> shapeOf(symbols.size());
     for (BumpShape shape : kMountainShapes)
         if (const std::optional<SymbolId> id = symbols.find(bumpShapeName(shape))) shapeOf[*id] = shape;
     const std::vector<TurtleCommand> commands = turtleCommands(symbols, settings.cpfgModules);
+    need(memory, "turtle", turtleBytes(word, commands));
     const SurfaceLibrary noSurfaces;
     PlantAssetBuilder ignored(noSurfaces, settings.look); // the segments a plant would draw
     TurtleState state = groundTurtle(settings, placement.headingDegrees);
@@ -123,7 +125,7 @@ std::vector<TerrainBump> mountainBumpsOf(const Grammar& grammar, const MountainP
     options.memory = memory;
     ModuleString word = derive(grammar, options);
     if (!grammar.interpretation.empty()) word = applyInterpretation(grammar, word, options);
-    return mountainBumps(word, grammar.symbols, turtleSettings(grammar), placement);
+    return mountainBumps(word, grammar.symbols, turtleSettings(grammar), placement, memory);
 }
 
 } // namespace lsys::landscape

@@ -53,9 +53,12 @@ struct MountainError : DerivationError {
 // turtle's height above its start times scale; negated for Valley) and a
 // factor on the radius (half the turtle's width times scale), both 1 when
 // left out. Throws MountainError (naming the module, its place in the word
-// and the turtle's position) past the placement's limits.
+// and the turtle's position) past the placement's limits, and
+// MemoryBudgetError (stage "turtle") when what the turtle would hold
+// (turtleBytes) is past `memory`.
 std::vector<TerrainBump> mountainBumps(const ModuleString& word, const SymbolTable& symbols,
-                                       const TurtleSettings& settings, const MountainPlacement& placement);
+                                       const TurtleSettings& settings, const MountainPlacement& placement,
+                                       const MemoryBudget& memory = machineMemoryBudget());
 
 // Derives the grammar (with `seed` in place of its own when given, within
 // kMaxMountainModules and `memory`), applies its interpretation rules and

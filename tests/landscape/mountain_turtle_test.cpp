@@ -116,6 +116,14 @@ TEST(MountainTurtle, BadMountainParametersAreRefused) {
     EXPECT_NE(errorOf("module Mesa\nAxiom: !(0)Mesa\n").find("has no width"), std::string::npos);
 }
 
+TEST(MountainTurtle, AWordPastTheModuleOrMemoryBudgetIsRefused) {
+    // 2^20 modules after 20 steps: past kMaxMountainModules.
+    EXPECT_THROW(mountainBumpsOf(grammarOf("derivation length: 20\nAxiom: F\nF --> F F\n"), {}), ModuleBudgetError);
+    const Grammar segments = grammarOf("derivation length: 6\nAxiom: F\nF --> F F\n");
+    EXPECT_NO_THROW(mountainBumpsOf(segments, {}));
+    EXPECT_THROW(mountainBumpsOf(segments, {}, std::nullopt, MemoryBudget{2000}), MemoryBudgetError);
+}
+
 // data/terrain: the ridge, valley and massif the scenes use.
 Grammar dataGrammar(const std::string& name) {
     vlab::PlantFile file = vlab::loadPlant(std::string(PLANTFIELD_DATA_DIR) + "/terrain/" + name);
