@@ -35,23 +35,25 @@ std::string metres(float value) {
     return text.str();
 }
 
+// "Peak (module 57 of the derived word)"
+std::string moduleText(BumpShape shape, size_t module) {
+    return std::string(bumpShapeName(shape)) + " (module " + std::to_string(module) + " of the derived word)";
+}
+
 // "Peak (module 57 of the derived word) at x 120.0 m, z -40.0 m"
 std::string describeBump(const TerrainBump& bump, size_t module) {
-    return std::string(bumpShapeName(bump.shape)) + " (module " + std::to_string(module) +
-           " of the derived word) at x " + metres(bump.x) + ", z " + metres(bump.z);
+    return moduleText(bump.shape, module) + " at x " + metres(bump.x) + ", z " + metres(bump.z);
 }
 
 TerrainBump bumpOf(BumpShape shape, std::span<const float> parameters, const TurtleState& turtle,
                    const MountainPlacement& placement, size_t module) {
-    const std::string name(bumpShapeName(shape));
     if (parameters.size() > 2)
-        throw MountainError(name + " (module " + std::to_string(module) + " of the derived word) takes at most 2 " +
-                            "parameters, a height factor and a radius factor, not " +
+        throw MountainError(moduleText(shape, module) +
+                            " takes at most 2 parameters, a height factor and a radius factor, not " +
                             std::to_string(parameters.size()));
     for (float value : parameters)
         if (!std::isfinite(value))
-            throw MountainError(name + " (module " + std::to_string(module) +
-                                " of the derived word) got a parameter that is not a finite number");
+            throw MountainError(moduleText(shape, module) + " got a parameter that is not a finite number");
     const float heightFactor = parameters.size() > 0 ? parameters[0] : 1.0f;
     const float radiusFactor = parameters.size() > 1 ? parameters[1] : 1.0f;
     TerrainBump bump;
@@ -61,14 +63,16 @@ TerrainBump bumpOf(BumpShape shape, std::span<const float> parameters, const Tur
     bump.height = placement.scale * turtle.position.y * heightFactor * (shape == BumpShape::Valley ? -1.0f : 1.0f);
     bump.radius = 0.5f * turtle.width * placement.scale * radiusFactor; // widths are diameters
     if (!(bump.radius > 0.0f))
-        throw MountainError(describeBump(bump, module) + " has no width: its radius, half the turtle's width " +
-                            std::to_string(turtle.width) + " times the radius factor and scale, must be > 0");
+        throw MountainError(describeBump(bump, module) +
+                            " has no width: its radius, half the turtle's width (!) times its radius factor and the "
+                            "scale, must be > 0");
     return bump;
 }
 
 // The chapter's warning (§22): a turtle straying far above or below its
-// start makes extreme peaks. Superimposed bumps peak at their centres, so
-// the sum is checked there.
+// start makes extreme peaks. The sum is checked at the bumps' centres, where
+// the summits and pits of superimposed bumps lie; between centres
+// overlapping flanks can add up a little higher.
 void checkPeaks(const std::vector<TerrainBump>& bumps, const std::vector<size_t>& modules,
                 const MountainPlacement& placement) {
     for (size_t i = 0; i < bumps.size(); ++i) {

@@ -41,12 +41,6 @@ struct MountainPlacement {
     uint32_t maxBumps = kMaxMountainBumps;
 };
 
-// A mountain word that cannot become bumps: a bump past maxHeight, more bumps
-// than maxBumps, a mountain module with bad parameters.
-struct MountainError : DerivationError {
-    using DerivationError::DerivationError;
-};
-
 // The bumps of a derived (and interpreted) word, in the word's order, with
 // the turtle of `settings` started as the header comment says. Hill, Peak,
 // Mesa and Valley take up to two parameters: a factor on the height (the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace lsys::landscape {
 
@@ -13,6 +14,23 @@ float cosineFall(float t) { return 0.5f * (1.0f + std::cos(std::numbers::pi_v<fl
 
 // Where the mesa's flat top ends, as a fraction of its radius.
 constexpr float kMesaTop = 0.5f;
+
+// The samples of a grid inside a bump's bounding square: only they can be
+// within its radius. Empty (x0 > x1 or z0 > z1) when none is.
+struct SampleSquare {
+    uint32_t x0 = 1, x1 = 0, z0 = 1, z1 = 0;
+    uint64_t count() const { return x0 > x1 || z0 > z1 ? 0 : uint64_t(x1 - x0 + 1) * (z1 - z0 + 1); }
+};
+
+SampleSquare samplesUnder(const TerrainBump& bump, uint32_t resolution, float size) {
+    const float spacing = size / float(resolution - 1), last = float(resolution - 1);
+    const auto index = [&](float coordinate) { return (coordinate + 0.5f * size) / spacing; };
+    const float lowX = index(bump.x - bump.radius), highX = index(bump.x + bump.radius);
+    const float lowZ = index(bump.z - bump.radius), highZ = index(bump.z + bump.radius);
+    if (!(highX >= 0.0f && highZ >= 0.0f && lowX <= last && lowZ <= last)) return {};
+    const auto clamped = [&](float i) { return uint32_t(std::clamp(i, 0.0f, last)); };
+    return {clamped(std::ceil(lowX)), clamped(std::floor(highX)), clamped(std::ceil(lowZ)), clamped(std::floor(highZ))};
+}
 
 } // namespace
 
@@ -49,21 +67,26 @@ float bumpsHeightAt(std::span<const TerrainBump> bumps, float x, float z) {
     return sum;
 }
 
+uint64_t bumpSamples(uint32_t resolution, float size, std::span<const TerrainBump> bumps) {
+    if (resolution < 2) return 0;
+    uint64_t samples = 0;
+    for (const TerrainBump& bump : bumps) samples += samplesUnder(bump, resolution, size).count(); // < 2^26 · 2^32
+    return samples;
+}
+
 void addBumps(std::span<float> heights, uint32_t resolution, float size, std::span<const TerrainBump> bumps) {
     if (resolution < 2 || heights.size() < size_t(resolution) * resolution) return;
+    if (const uint64_t samples = bumpSamples(resolution, size, bumps); samples > kMaxBumpSamples)
+        throw MountainError("the terrain's " + std::to_string(bumps.size()) + " bumps cover " +
+                            std::to_string(samples) + " height samples between them, more than " +
+                            std::to_string(kMaxBumpSamples) +
+                            ": give the terrain fewer or narrower bumps, or fewer samples (resolution)");
     const float spacing = size / float(resolution - 1);
     const float start = -0.5f * size;
-    const auto column = [&](float coordinate) { return (coordinate - start) / spacing; };
-    const auto clampIndex = [&](float index) { return uint32_t(std::clamp(index, 0.0f, float(resolution - 1))); };
     for (const TerrainBump& bump : bumps) {
-        // Only the samples in the bump's bounding square can be within its radius.
-        const float lowX = column(bump.x - bump.radius), highX = column(bump.x + bump.radius);
-        const float lowZ = column(bump.z - bump.radius), highZ = column(bump.z + bump.radius);
-        if (highX < 0.0f || highZ < 0.0f || lowX > float(resolution - 1) || lowZ > float(resolution - 1)) continue;
-        const uint32_t x0 = clampIndex(std::ceil(lowX)), x1 = clampIndex(std::floor(highX));
-        const uint32_t z0 = clampIndex(std::ceil(lowZ)), z1 = clampIndex(std::floor(highZ));
-        for (uint32_t iz = z0; iz <= z1; ++iz)
-            for (uint32_t ix = x0; ix <= x1; ++ix)
+        const SampleSquare square = samplesUnder(bump, resolution, size);
+        for (uint32_t iz = square.z0; iz <= square.z1; ++iz)
+            for (uint32_t ix = square.x0; ix <= square.x1; ++ix)
                 heights[size_t(iz) * resolution + ix] +=
                     bumpHeightAt(bump, start + float(ix) * spacing, start + float(iz) * spacing);
     }

@@ -6,8 +6,9 @@
 
 #include <cstdint>
 #include <span>
-#include <stdexcept>
 #include <string_view>
+
+#include "lsystem/error.h"
 
 namespace lsys::landscape {
 
@@ -40,10 +41,26 @@ float bumpHeightAt(const TerrainBump& bump, float x, float z);
 // The sum of every bump's height at (x, z), added in the bumps' order.
 float bumpsHeightAt(std::span<const TerrainBump> bumps, float x, float z);
 
+// Bumps that cannot be made or laid: past a limit (the extreme-peak height,
+// the bump budget, kMaxBumpSamples) or with bad parameters.
+struct MountainError : DerivationError {
+    using DerivationError::DerivationError;
+};
+
+// The most bump evaluations addBumps makes (about 10 s of one core): its
+// cost is the samples in every bump's bounding square, which a few very
+// wide bumps on a fine grid could otherwise make hours.
+inline constexpr uint64_t kMaxBumpSamples = uint64_t(1) << 30;
+
+// The samples in the bumps' bounding squares on a grid of `resolution`² over
+// `size`: the evaluations addBumps makes.
+uint64_t bumpSamples(uint32_t resolution, float size, std::span<const TerrainBump> bumps);
+
 // A square grid of `resolution`² heights, row by row (heights[iz·resolution +
 // ix]), its samples spanning [-size/2, size/2] in x and z (as pf::Heightfield
 // lays them out): adds every bump, in order, to the samples within its radius.
-// The same bumps give the same heights, bit for bit.
+// The same bumps give the same heights, bit for bit. Throws MountainError
+// when bumpSamples is past kMaxBumpSamples, before adding any.
 void addBumps(std::span<float> heights, uint32_t resolution, float size, std::span<const TerrainBump> bumps);
 
 } // namespace lsys::landscape

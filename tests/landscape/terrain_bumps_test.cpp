@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace lsys::landscape {
@@ -96,6 +97,33 @@ TEST(AddBumps, BumpsPastTheEdgeAddOnlyTheirInsidePart) {
     EXPECT_FLOAT_EQ(grid.at(40, 20), 10.0f); // x 100: within the mesa's flat top
     EXPECT_EQ(grid.at(36, 20), 0.0f);        // x 80: 25 m from its centre
     EXPECT_EQ(grid.at(40, 40), 0.0f);
+}
+
+TEST(AddBumps, ItsCostIsTheSamplesInTheBumpsBoundingSquares) {
+    const Grid grid;
+    const TerrainBump hill{10.0f, -20.0f, 30.0f, 25.0f, BumpShape::Hill}; // x 85…135 m, z 55…105 m from the corner
+    const TerrainBump wide{0.0f, 0.0f, 1.0f, 1e6f, BumpShape::Hill};
+    const TerrainBump away{400.0f, 400.0f, 10.0f, 20.0f, BumpShape::Hill};
+    EXPECT_EQ(bumpSamples(grid.resolution, grid.size, std::span(&hill, 1)), 11u * 11u);
+    EXPECT_EQ(bumpSamples(grid.resolution, grid.size, std::span(&wide, 1)), 41u * 41u);
+    EXPECT_EQ(bumpSamples(grid.resolution, grid.size, std::span(&away, 1)), 0u);
+    const TerrainBump three[] = {hill, wide, away};
+    EXPECT_EQ(bumpSamples(grid.resolution, grid.size, three), 11u * 11u + 41u * 41u);
+}
+
+TEST(AddBumps, BumpsCoveringTooManySamplesAreRefusedBeforeAnyIsAdded) {
+    Grid grid;
+    const TerrainBump wide{0.0f, 0.0f, 1.0f, 1e6f, BumpShape::Hill};
+    const std::vector<TerrainBump> bumps(kMaxBumpSamples / (41 * 41) + 1, wide);
+    try {
+        addBumps(grid.heights, grid.resolution, grid.size, bumps);
+        FAIL() << "no MountainError";
+    } catch (const MountainError& error) {
+        EXPECT_NE(std::string(error.what()).find("more than 1073741824"), std::string::npos) << error.what();
+    }
+    EXPECT_EQ(grid.heights, Grid{}.heights);
+    // One bump fewer is within the limit (not added here: a billion evaluations take seconds).
+    EXPECT_LE(bumpSamples(grid.resolution, grid.size, std::span(bumps.data(), bumps.size() - 1)), kMaxBumpSamples);
 }
 
 TEST(AddBumps, TheSameBumpsGiveTheSameHeightsBitForBit) {
