@@ -62,6 +62,11 @@ TerrainBump bumpOf(BumpShape shape, std::span<const float> parameters, const Tur
     bump.z = placement.originZ + placement.scale * turtle.position.z;
     bump.height = placement.scale * turtle.position.y * heightFactor * (shape == BumpShape::Valley ? -1.0f : 1.0f);
     bump.radius = 0.5f * turtle.width * placement.scale * radiusFactor; // widths are diameters
+    if (!std::isfinite(bump.x) || !std::isfinite(bump.z) || !std::isfinite(bump.height) || !std::isfinite(bump.radius))
+        throw MountainError(moduleText(shape, module) + " lies too far or too high for a float: its turtle is at (" +
+                            std::to_string(turtle.position.x) + ", " + std::to_string(turtle.position.y) + ", " +
+                            std::to_string(turtle.position.z) + ") with width " + std::to_string(turtle.width) +
+                            ", times the scale");
     if (!(bump.radius > 0.0f))
         throw MountainError(describeBump(bump, module) +
                             " has no width: its radius, half the turtle's width (!) times its radius factor and the "
@@ -77,7 +82,7 @@ void checkPeaks(const std::vector<TerrainBump>& bumps, const std::vector<size_t>
                 const MountainPlacement& placement) {
     for (size_t i = 0; i < bumps.size(); ++i) {
         const float sum = bumpsHeightAt(bumps, bumps[i].x, bumps[i].z);
-        if (std::abs(sum) > placement.maxHeight)
+        if (!(std::abs(sum) <= placement.maxHeight)) // NaN too
             throw MountainError(describeBump(bumps[i], modules[i]) + " makes the ground " + metres(std::abs(sum)) +
                                 (sum > 0 ? " high" : " deep") + " there with the bumps around it, past max_height " +
                                 metres(placement.maxHeight) +

@@ -114,6 +114,10 @@ TEST(MountainTurtle, MoreBumpsThanTheBudgetAreRefused) {
 TEST(MountainTurtle, BadMountainParametersAreRefused) {
     EXPECT_NE(errorOf("module Hill\nAxiom: Hill(1, 2, 3)\n").find("takes at most 2 parameters"), std::string::npos);
     EXPECT_NE(errorOf("module Mesa\nAxiom: !(0)Mesa\n").find("has no width"), std::string::npos);
+    MountainPlacement huge;
+    huge.scale = 1e30f;
+    EXPECT_NE(errorOf("module Peak\nAxiom: ^(90)f(1e10)Peak\n", huge).find("too far or too high for a float"),
+              std::string::npos);
 }
 
 TEST(MountainTurtle, AWordPastTheModuleOrMemoryBudgetIsRefused) {
