@@ -9,7 +9,10 @@
 
 namespace pf {
 
-Heightfield terrainOf(const Scene& scene, const lsys::MemoryBudget& memory) {
+namespace {
+
+// The noise or image heightfield, before the L-system's bumps are added.
+Heightfield baseTerrainOf(const Scene& scene, const lsys::MemoryBudget& memory) {
     const Terrain& t = scene.terrain;
     if (const auto* image = std::get_if<ImageHeightfield>(&t.heightfield))
         return loadImageTerrain(image->path.string(), t.size, image->heightScale, memory);
@@ -26,8 +29,6 @@ Heightfield terrainOf(const Scene& scene, const lsys::MemoryBudget& memory) {
     settings.memory = memory;
     return makeNoiseTerrain(settings);
 }
-
-namespace {
 
 PlacementRule ruleOf(const Scene& scene, size_t speciesIndex) {
     const Species& species = scene.species[speciesIndex];
@@ -81,6 +82,13 @@ bool placesNothing(const Placement& p) {
 }
 
 } // namespace
+
+Heightfield terrainOf(const Scene& scene, const lsys::MemoryBudget& memory) {
+    Heightfield terrain = baseTerrainOf(scene, memory);
+    if (scene.terrain.lsystem)
+        lsys::landscape::addBumps(terrain.heights, terrain.resolution, terrain.size, scene.terrain.lsystem->bumps);
+    return terrain;
+}
 
 std::vector<PlacementRule> placementRules(const Scene& scene) {
     std::vector<PlacementRule> rules;

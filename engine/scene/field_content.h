@@ -12,7 +12,8 @@
 
 namespace pf {
 
-// The scene's heightfield (noise or image); a noise one within `memory`.
+// The scene's heightfield (noise or image; a noise one within `memory`) with
+// its L-system's bumps added.
 Heightfield terrainOf(const Scene& scene, const lsys::MemoryBudget& memory = lsys::machineMemoryBudget());
 
 // One placement rule per species placed by density or distance (Count

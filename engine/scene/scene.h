@@ -4,6 +4,7 @@
 #pragma once
 
 #include "engine/scene/camera.h"
+#include "lsystem/landscape/terrain_bumps.h"
 
 #include <glm/glm.hpp>
 
@@ -43,6 +44,19 @@ struct ImageHeightfield {
     bool operator==(const ImageHeightfield&) const = default;
 };
 
+// L-system mountains (docs/TERRAIN_LSYSTEMS.md): the hills and valleys a
+// turtle leaves, added to the noise or image heightfield (or to flat ground).
+struct TerrainLsystem {
+    std::filesystem::path path;                      // resolved against the scene file's folder
+    glm::vec2 origin{0.0f};                          // x, z in metres where the turtle starts
+    float headingDegrees = 0.0f;                     // its start heading, counter-clockwise from +x seen from above
+    float scale = 10.0f;                             // metres per turtle unit
+    float maxHeight = 200.0f;                        // metres the superimposed bumps may reach up or down
+    std::optional<uint32_t> seed;                    // empty: the L-system file's own
+    std::vector<lsys::landscape::TerrainBump> bumps; // derived when the scene is loaded
+    bool operator==(const TerrainLsystem&) const = default;
+};
+
 // The most height samples a terrain side may have: 8193² floats are 256 MiB.
 constexpr uint32_t kMaxTerrainResolution = 8193;
 
@@ -50,8 +64,9 @@ constexpr uint32_t kMaxTerrainResolution = 8193;
 struct Terrain {
     float size = 512.0f;       // side in metres
     uint32_t resolution = 257; // height samples along each side (an image gives its own)
-    std::variant<NoiseHeightfield, ImageHeightfield> heightfield;
+    std::variant<NoiseHeightfield, ImageHeightfield> heightfield; // flat (no noise) when only an L-system is given
     glm::vec3 albedo{0.13f, 0.22f, 0.055f};
+    std::optional<TerrainLsystem> lsystem; // its bumps are added to the heightfield
     bool operator==(const Terrain&) const = default;
 };
 

@@ -4,8 +4,10 @@
 
 #include "lsystem/components/component_graph.h"
 #include "lsystem/json_reader.h"
+#include "lsystem/landscape/mountain_turtle.h"
 #include "lsystem/ramification_file.h"
 #include "lsystem/turtle_builder.h"
+#include "lsystem/vlab/object.h"
 
 #include <algorithm>
 #include <cctype>
@@ -62,8 +64,47 @@ ImageHeightfield readImage(const JsonNode& node, const std::filesystem::path& sc
     return image;
 }
 
+// The bumps of the terrain's L-system, derived now so that a malformed file,
+// a bump past max_height or too many bumps are errors at `node`.
+std::vector<lsys::landscape::TerrainBump> mountainsOf(const TerrainLsystem& lsystem, const JsonNode& node) {
+    const lsys::vlab::PlantFile file = lsys::vlab::loadPlant(lsystem.path);
+    if (!file.parsed.ok())
+        failAt(node, "names a malformed L-system:\n" + lsys::formatDiagnostics(file.parsed.diagnostics, file.source));
+    lsys::landscape::MountainPlacement placement;
+    placement.originX = lsystem.origin.x;
+    placement.originZ = lsystem.origin.y;
+    placement.headingDegrees = lsystem.headingDegrees;
+    placement.scale = lsystem.scale;
+    placement.maxHeight = lsystem.maxHeight;
+    try {
+        return lsys::landscape::mountainBumpsOf(file.parsed.grammar, placement, lsystem.seed);
+    } catch (const lsys::MemoryBudgetError&) { // the machine's limit, not the file's fault: its type kept
+        throw;
+    } catch (const lsys::DerivationError& error) {
+        failAt(node, "(" + lsystem.path.string() + ") cannot be made into mountains: " + error.what());
+    }
+}
+
+// A file name, or an object of a file name and where its turtle stands.
+TerrainLsystem readTerrainLsystem(const JsonNode& node, const std::filesystem::path& sceneFolder) {
+    TerrainLsystem lsystem;
+    if (!node.value->is_object()) {
+        lsystem.path = existingFile(node, sceneFolder, true);
+    } else {
+        requireObject(node, {"path", "origin", "heading", "scale", "max_height", "seed"});
+        lsystem.path = existingFile(requireMember(node, "path", "an L-system file"), sceneFolder, true);
+        readField(node, "origin", lsystem.origin, anyNumber());
+        readField(node, "heading", lsystem.headingDegrees, anyNumber());
+        readField(node, "scale", lsystem.scale, above(0.0));
+        readField(node, "max_height", lsystem.maxHeight, above(0.0));
+        readField(node, "seed", lsystem.seed, anyNumber());
+    }
+    lsystem.bumps = mountainsOf(lsystem, node);
+    return lsystem;
+}
+
 Terrain readTerrain(const JsonNode& node, const std::filesystem::path& sceneFolder) {
-    requireObject(node, {"size", "resolution", "noise", "image", "albedo"});
+    requireObject(node, {"size", "resolution", "noise", "image", "lsystem", "albedo"});
     Terrain terrain;
     readField(node, "size", terrain.size, above(0.0));
     readField(node, "resolution", terrain.resolution, between(2, kMaxTerrainResolution));
@@ -74,6 +115,10 @@ Terrain readTerrain(const JsonNode& node, const std::filesystem::path& sceneFold
         failAt(*image, "cannot be given together with \"noise\": the heightfield is one or the other", true);
     if (noise) terrain.heightfield = readNoise(*noise);
     if (image) terrain.heightfield = readImage(*image, sceneFolder);
+    if (const std::optional<JsonNode> lsystem = member(node, "lsystem")) {
+        terrain.lsystem = readTerrainLsystem(*lsystem, sceneFolder);
+        if (!noise && !image) terrain.heightfield = NoiseHeightfield{.amplitude = 0.0f}; // flat ground under the bumps
+    }
     return terrain;
 }
 

@@ -1,6 +1,6 @@
 // Replays every fuzz corpus input (crashers the fuzzers found included, once
 // fixed) and every shipped file of each kind through its fuzz target: plant
-// files through parser, rewriter and turtle, scene files through the scene
+// files and terrain L-systems through parser, rewriter and turtle, scene files through the scene
 // loader, component plants through their reader and builder, glTF files through the surface loader, a vlab object's
 // view, function, surface and colour files through their readers. Under the regular build this proves none of them
 // crash or hang any more; under the sanitizer build (tools/sanitize.sh) that none reads or writes out of bounds.
@@ -48,6 +48,8 @@ TEST(FuzzCorpus, EveryPlantCorpusInputRunsToCompletion) { replay(pf::fuzz::runLs
 TEST(FuzzCorpus, EveryPastPlantCrasherRunsToCompletion) { replay(pf::fuzz::runLsysInput, kFuzz / "crashers/lsys", 1); }
 
 TEST(FuzzCorpus, EveryShippedPlantRunsToCompletion) { replay(pf::fuzz::runLsysInput, kData / "plants", 10); }
+
+TEST(FuzzCorpus, EveryShippedTerrainLsystemRunsToCompletion) { replay(pf::fuzz::runLsysInput, kData / "terrain", 3); }
 
 TEST(FuzzCorpus, EverySceneCorpusInputRunsToCompletion) { replay(pf::fuzz::runSceneInput, kFuzz / "corpus/scene", 20); }
 

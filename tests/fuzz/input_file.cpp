@@ -11,7 +11,7 @@ namespace {
 
 fs::path inputFolder() {
     const fs::path folder = fs::temp_directory_path() / ("plantfield-fuzz-" + std::to_string(getpid()));
-    for (const char* shipped : {"plants", "meshes"}) {
+    for (const char* shipped : {"plants", "meshes", "terrain"}) {
         std::error_code ec;
         fs::create_directories(folder, ec);
         if (!fs::exists(fs::symlink_status(folder / shipped)))

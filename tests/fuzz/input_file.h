@@ -1,7 +1,8 @@
 // The loaders fuzzed through a file (scenes, glTF) read a path: each input
 // is written to a file in a folder of this process's own, overwritten by the
-// next. The folder mirrors data/: its plants/ and meshes/ link to the
-// shipped ones, so a scene in scenes/ names L-systems as the shipped scenes do.
+// next. The folder mirrors data/: its plants/, meshes/ and terrain/ link to
+// the shipped ones, so a scene in scenes/ names L-systems as the shipped
+// scenes do.
 #pragma once
 
 #include <cstddef>

@@ -10,6 +10,7 @@ namespace {
 #define PF_SPECIES(extra) "{ \"name\": \"a\", " PF_BUSH_LSYSTEM extra " }"
 #define PF_OAK_MODEL "\"model\": \"" PLANTFIELD_DATA_DIR "/ramified/oak.ram.json\""
 #define PF_MODEL_SPECIES(keys) "{\n  \"species\": [\n    { \"name\": \"m\", " keys " }\n  ]\n}"
+#define PF_RIDGE "\"path\": \"" PLANTFIELD_DATA_DIR "/terrain/ridge.lsys\""
 #define PF_SCENE(extra) "{\n  \"species\": [" PF_SPECIES("") "]" extra "\n}"
 
 struct BadScene {
@@ -67,6 +68,23 @@ INSTANTIATE_TEST_SUITE_P(
                  "/terrain/albedo must be an array of 3 numbers in [0, 1] (got [0.5, 2, 0])"},
         BadScene{"noise_and_image", PF_SCENE(",\n  \"terrain\": { \"noise\": {}, \"image\": { \"path\": \"h.png\" } }"),
                  "\"image\"", "/terrain/image cannot be given together with \"noise\""},
+        // L-system mountains (tests/scene/terrain_lsystem_test.cpp loads good ones and a malformed file).
+        BadScene{"missing_terrain_lsystem", PF_SCENE(",\n  \"terrain\": { \"lsystem\": \"no_such_ridge.lsys\" }"),
+                 "\"no_such_ridge.lsys\"", "/terrain/lsystem names a file or folder that does not exist"},
+        BadScene{"terrain_lsystem_without_path", PF_SCENE(",\n  \"terrain\": { \"lsystem\": { \"scale\": 2 } }"),
+                 "{ \"scale\"", "/terrain/lsystem needs \"path\""},
+        BadScene{"terrain_lsystem_unknown_key",
+                 PF_SCENE(",\n  \"terrain\": { \"lsystem\": { " PF_RIDGE ", \"scal\": 2 } }"), "\"scal\"",
+                 "/terrain/lsystem/scal is an unknown key; did you mean \"scale\"?"},
+        BadScene{"terrain_lsystem_zero_scale",
+                 PF_SCENE(",\n  \"terrain\": { \"lsystem\": { " PF_RIDGE ", \"scale\": 0 } }"), "0 }",
+                 "/terrain/lsystem/scale must be a number > 0 (got 0)"},
+        BadScene{"terrain_lsystem_extreme_peak",
+                 PF_SCENE(",\n  \"terrain\": { \"lsystem\": { " PF_RIDGE ", \"max_height\": 5 } }"), "{ \"path\"",
+                 "/terrain/lsystem (" PLANTFIELD_DATA_DIR "/terrain/ridge.lsys) cannot be made into mountains: "},
+        BadScene{"terrain_lsystem_extreme_peak_says_why",
+                 PF_SCENE(",\n  \"terrain\": { \"lsystem\": { " PF_RIDGE ", \"max_height\": 5 } }"), "{ \"path\"",
+                 "past max_height 5.0 m: keep the turtle's branches within a few steps of its horizontal core"},
         BadScene{"unknown_billboard",
                  "{\n  \"species\": [\n    " PF_SPECIES(", \"lod\": { \"billboard\": \"tripple\" }") "\n  ]\n}",
                  "\"tripple\"",

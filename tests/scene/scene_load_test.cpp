@@ -52,7 +52,8 @@ constexpr const char* kFullScene = R"({
   "seed": 99,
   "terrain": {
     "size": 120, "resolution": 65, "albedo": [0.2, 0.3, 0.1],
-    "noise": { "seed": 5, "octaves": 3, "amplitude": 4, "frequency": 0.02, "lacunarity": 2.5, "gain": 0.4 }
+    "noise": { "seed": 5, "octaves": 3, "amplitude": 4, "frequency": 0.02, "lacunarity": 2.5, "gain": 0.4 },
+    "lsystem": { "path": "terrain/hills.lsys", "origin": [5, -5], "heading": 30, "scale": 2, "max_height": 50, "seed": 3 }
   },
   "placement": { "min_distance": 3, "clearance": 2, "max_slope": 20, "height_range": [-1, 9], "scale": [0.5, 2], "seed": 11 },
   "species": [
@@ -86,7 +87,11 @@ Scene fullSceneExpected(const std::filesystem::path& file) {
     s.file = file;
     s.description = "every key";
     s.seed = 99;
-    s.terrain = {120, 65, NoiseHeightfield{5, 3, 4, 0.02f, 2.5f, 0.4f}, {0.2f, 0.3f, 0.1f}};
+    s.terrain = {120,
+                 65,
+                 NoiseHeightfield{5, 3, 4, 0.02f, 2.5f, 0.4f},
+                 {0.2f, 0.3f, 0.1f},
+                 TerrainLsystem{file.parent_path() / "terrain/hills.lsys", {5, -5}, 30, 2, 50, 3, {}}};
     Placement global{.mode = PlacementMode::Distance,
                      .minDistance = 3,
                      .clearance = 2,
@@ -118,9 +123,16 @@ Scene fullSceneExpected(const std::filesystem::path& file) {
     return s;
 }
 
-TEST(SceneLoad, FullySpecifiedSceneReadsBackEveryValue) {
+// kFullScene in the test's folder with the files it names (an L-system
+// without mountain modules serves the terrain too: it makes no bumps).
+std::filesystem::path writeFullScene() {
     test::writeFile("plants/tree.lsys", "Axiom: F\n");
-    const auto file = test::writeFile("full.json", kFullScene);
+    test::writeFile("terrain/hills.lsys", "Axiom: F\n");
+    return test::writeFile("full.json", kFullScene);
+}
+
+TEST(SceneLoad, FullySpecifiedSceneReadsBackEveryValue) {
+    const auto file = writeFullScene();
     const Scene expected = fullSceneExpected(file);
     // Each value differs from its default, so a key the loader ignored fails.
     const Scene defaults;
@@ -166,8 +178,7 @@ TEST(SceneLoad, ImageHeightfieldResolvesAgainstTheSceneFolder) {
 }
 
 TEST(SceneLoad, EnvironmentCarriesSunSkyFogAndGround) {
-    test::writeFile("plants/tree.lsys", "Axiom: F\n");
-    const Environment env = environmentOf(loadScene(test::writeFile("full.json", kFullScene)));
+    const Environment env = environmentOf(loadScene(writeFullScene()));
     EXPECT_EQ(env.sunRadiance, glm::vec3(1.0f, 0.9f, 0.8f) * 3.0f);
     EXPECT_EQ(env.sunElevationDegrees, 20.0f);
     EXPECT_EQ(env.skyHorizon, glm::vec3(0.7f, 0.8f, 0.9f));
@@ -198,8 +209,7 @@ TEST(SceneSeeds, DerivedSeedsAreDistinctAndFollowTheSceneSeed) {
 }
 
 TEST(SceneSeeds, ExplicitSeedsWin) {
-    test::writeFile("plants/tree.lsys", "Axiom: F\n");
-    const Scene scene = loadScene(test::writeFile("full.json", kFullScene));
+    const Scene scene = loadScene(writeFullScene());
     EXPECT_EQ(terrainSeed(scene), 5u);
     EXPECT_EQ(speciesSeed(scene, 0), 17u);
     EXPECT_EQ(placementSeed(scene, 0), 11u);
