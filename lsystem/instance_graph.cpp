@@ -92,6 +92,17 @@ PlantAsset flatten(const InstanceGraph& graph, const SurfaceLibrary& surfaces, u
     return Flattener(graph, surfaces).run();
 }
 
+std::vector<NamedInstanceStat> namedStats(const InstanceGraphStats& stats) {
+    return {{"primitives", stats.primitives},
+            {"joints", stats.joints},
+            {"nodes", uint64_t(stats.nodes)},
+            {"objects", uint64_t(stats.objects)},
+            {"instances", stats.instances},
+            {"compression", stats.compression()},
+            {"bytes_graph", uint64_t(stats.bytesGraph)},
+            {"bytes_flat", uint64_t(stats.bytesFlat)}};
+}
+
 InstanceGraphStats instanceGraphStats(const InstanceGraph& graph) {
     InstanceGraphStats stats;
     stats.nodes = graph.nodes;

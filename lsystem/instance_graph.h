@@ -27,6 +27,8 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
+#include <variant>
 #include <vector>
 
 #include "lsystem/bgrammar.h"
@@ -148,5 +150,13 @@ struct InstanceGraphStats {
 };
 
 InstanceGraphStats instanceGraphStats(const InstanceGraph& graph);
+
+// A statistic by the name `lsys instance --json` and Python's
+// instance_stats give it: the one list both print, in that order.
+struct NamedInstanceStat {
+    std::string_view name;
+    std::variant<uint64_t, double> value;
+};
+std::vector<NamedInstanceStat> namedStats(const InstanceGraphStats& stats);
 
 } // namespace lsys

@@ -218,16 +218,11 @@ int instance(const Arguments& arguments) {
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (arguments.json) {
-        nlohmann::ordered_json out = {{"primitives", stats.primitives},
-                                      {"joints", stats.joints},
-                                      {"nodes", stats.nodes},
-                                      {"objects", stats.objects},
-                                      {"instances", stats.instances},
-                                      {"compression", stats.compression()},
-                                      {"bytes_graph", stats.bytesGraph},
-                                      {"bytes_flat", stats.bytesFlat},
-                                      {"method", methodName(method)},
-                                      {"seconds", seconds}};
+        nlohmann::ordered_json out;
+        for (const lsys::NamedInstanceStat& stat : lsys::namedStats(stats))
+            std::visit([&](auto value) { out[std::string(stat.name)] = value; }, stat.value);
+        out["method"] = methodName(method);
+        out["seconds"] = seconds;
         std::cout << out.dump() << '\n';
     } else {
         std::cout << stats.primitives << " primitives (" << stats.joints << " joints) in " << stats.instances

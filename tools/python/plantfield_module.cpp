@@ -167,14 +167,8 @@ py::dict instanceStats(const PyGrammar& grammar, std::optional<int> steps, std::
         stats = lsys::instanceGraphStats(lsys::buildInstanceGraph(bgrammar, grammar.grammar, {}, surfacesFor(grammar)));
     }
     py::dict out;
-    out["primitives"] = stats.primitives;
-    out["joints"] = stats.joints;
-    out["nodes"] = stats.nodes;
-    out["objects"] = stats.objects;
-    out["instances"] = stats.instances;
-    out["compression"] = stats.compression();
-    out["bytes_graph"] = stats.bytesGraph;
-    out["bytes_flat"] = stats.bytesFlat;
+    for (const lsys::NamedInstanceStat& stat : lsys::namedStats(stats))
+        std::visit([&](auto value) { out[py::str(std::string(stat.name))] = value; }, stat.value);
     return out;
 }
 
