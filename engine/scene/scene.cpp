@@ -2,6 +2,9 @@
 // the file leaves out, and the renderer's environment settings.
 #include "engine/scene/scene.h"
 
+#include "lsystem/components/component_graph.h"
+#include "lsystem/ramification_file.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -107,6 +110,10 @@ uint32_t terrainSeed(const Scene& scene) {
 
 uint32_t speciesSeed(const Scene& scene, size_t species) {
     return scene.species[species].seed.value_or(mixSeed(scene.seed, speciesStream(species, 0)));
+}
+
+bool isPlantModelFile(const std::filesystem::path& file) {
+    return lsys::isRamificationFile(file) || lsys::components::isComponentFile(file);
 }
 
 uint32_t placementSeed(const Scene& scene, size_t species) {

@@ -234,6 +234,10 @@ std::vector<double> timesAlongPath(const CameraPath& path, uint32_t count);
 // stream each, so changing the scene seed changes the whole scene.
 uint32_t terrainSeed(const Scene& scene);
 uint32_t speciesSeed(const Scene& scene, size_t species); // its first variant's L-system seed
+
+// Whether a plant file is a model a species takes as `model` (a ramification
+// tree, .ram.json, or a component plant, .comp.json): built, not derived.
+bool isPlantModelFile(const std::filesystem::path& file);
 uint32_t placementSeed(const Scene& scene, size_t species);
 
 // The sun, sky, fog and ground settings the renderer's frame uniforms take.

@@ -2,10 +2,8 @@
 // onto its struct's defaults, so a key left out keeps the default.
 #include "engine/scene/scene.h"
 
-#include "lsystem/components/component_graph.h"
 #include "lsystem/json_reader.h"
 #include "lsystem/landscape/mountain_turtle.h"
-#include "lsystem/ramification_file.h"
 #include "lsystem/turtle_builder.h"
 #include "lsystem/vlab/object.h"
 
@@ -261,7 +259,7 @@ void readPlantSource(const JsonNode& node, const std::filesystem::path& sceneFol
         if (auto lsystemKey = member(node, key))
             failAt(*lsystemKey, "is an L-system setting; a species with a \"model\" has none", true);
     const std::filesystem::path name = readString(*model);
-    if (!lsys::isRamificationFile(name) && !lsys::components::isComponentFile(name))
+    if (!isPlantModelFile(name))
         failAt(*model, "must name a ramification tree (.ram.json) or a component plant (.comp.json), not \"" +
                            name.filename().string() + "\"");
     species.model = existingFile(*model, sceneFolder);

@@ -64,5 +64,20 @@ TEST(PlantfieldModels, PlantPreviewTakesTreeTypesAndComponentPlants) {
     }
 }
 
+// --steps and -D derive L-systems: with a model they are refused, naming the
+// file, before anything is built or written.
+TEST(PlantfieldModels, DerivationOptionsWithAModelAreRefused) {
+    const fs::path out = modelsScratch("refused") / "never.png";
+    for (const char* option : {"--steps 3", "-D N=2"}) {
+        const std::string model = (modelsDataDir / "components/sunflower.comp.json").string();
+        const CommandResult r =
+            runCommand(plantfieldBinary() + " --plant " + model + " " + option + " --capture " + out.string());
+        EXPECT_EQ(r.exitCode, 2) << option << "\n" << r.output;
+        EXPECT_NE(r.output.find("--steps and -D derive an L-system; " + model + " is a model"), std::string::npos)
+            << r.output;
+        EXPECT_FALSE(fs::exists(out)) << option;
+    }
+}
+
 } // namespace
 } // namespace pf::test

@@ -336,6 +336,12 @@ int exportCommand(const Arguments& arguments) {
                      "b-grammar)\n";
         return 1;
     }
+    if ((components || ramified) && (arguments.steps || !arguments.defines.empty() || arguments.dialect)) {
+        std::cerr << "lsys: error: -n, -D and --dialect derive an L-system; a "
+                  << (components ? "component plant" : "ramification tree")
+                  << " is built, not derived (--seed replaces its file's seed)\n";
+        return 1;
+    }
     std::optional<lsys::Grammar> grammar;
     if (!components && !ramified) {
         grammar = load(arguments);
@@ -346,7 +352,9 @@ int exportCommand(const Arguments& arguments) {
     lsys::PlantAsset plant;
     try {
         if (components) {
-            plant = lsys::components::loadComponentPlant(arguments.file, arguments.memory);
+            lsys::components::ComponentGraph graph = lsys::components::readComponentGraph(arguments.file);
+            if (arguments.seed) graph.seed = *arguments.seed;
+            plant = lsys::components::buildComponentPlant(graph, arguments.memory);
         } else if (ramified) {
             std::optional<lsys::PlantAsset> tree = generatedTree(arguments);
             if (!tree) return kBadInput;

@@ -305,6 +305,9 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
     if (!plant && (o.plantHeight || o.plantSteps || !defineTexts.empty() || app.count("--orbit") > 0 ||
                    app.count("--orbit-speed") > 0))
         return fail("--plant-height, --steps, -D, --orbit and --orbit-speed are for --plant FILE");
+    if (plant && (o.plantSteps || !defineTexts.empty()) && isPlantModelFile(o.plantPath))
+        return fail("--steps and -D derive an L-system; " + o.plantPath +
+                    " is a model, built rather than derived (--seed replaces its seed)");
     if (plant && o.instances) return fail("--instances is for scenes: --plant previews one plant");
     const bool sequence = !o.window && o.frames > 0;
     if (!frameRangeText.empty()) {

@@ -1,8 +1,5 @@
 #include "plant_preview.h"
 
-#include "lsystem/components/component_graph.h"
-#include "lsystem/ramification_file.h"
-
 #include <algorithm>
 #include <cmath>
 
@@ -37,7 +34,7 @@ Scene previewScene(const PlantfieldOptions& o) {
     const std::filesystem::path path = std::filesystem::path(o.plantPath).lexically_normal();
     species.name = path.has_filename() ? path.stem().string() : path.parent_path().filename().string();
     if (species.name.empty()) species.name = "plant";
-    if (lsys::isRamificationFile(path) || lsys::components::isComponentFile(path)) {
+    if (isPlantModelFile(path)) {
         species.model = path; // takes no defines or steps
     } else {
         species.lsystem = path;
