@@ -99,13 +99,25 @@ Located locate(std::string_view text, const std::vector<std::string>& path) {
     return found;
 }
 
-std::string lineAndColumn(std::string_view text, size_t offset) {
+// A diagnostic at offset in text, its 1-based line and column counted in bytes.
+Diagnostic diagnosticAt(const std::filesystem::path& file, std::string_view text, size_t offset, std::string message) {
     offset = std::min(offset, text.size());
     const std::string_view before = text.substr(0, offset);
-    const size_t line = 1 + std::count(before.begin(), before.end(), '\n');
     const size_t lineStart = before.rfind('\n');
-    const size_t column = offset - (lineStart == std::string_view::npos ? 0 : lineStart + 1) + 1; // in bytes
-    return std::to_string(line) + ":" + std::to_string(column);
+    Diagnostic diagnostic;
+    diagnostic.file = file.string();
+    diagnostic.line = 1 + int(std::count(before.begin(), before.end(), '\n'));
+    diagnostic.column = int(offset - (lineStart == std::string_view::npos ? 0 : lineStart + 1)) + 1;
+    diagnostic.message = std::move(message);
+    return diagnostic;
+}
+
+// The file as a whole at fault (line 0): it cannot be read, it is too large.
+[[noreturn]] void failFile(const std::filesystem::path& file, std::string message) {
+    Diagnostic diagnostic;
+    diagnostic.file = file.string();
+    diagnostic.message = std::move(message);
+    throw JsonError(std::move(diagnostic));
 }
 
 // ---- messages -------------------------------------------------------------
@@ -118,10 +130,11 @@ std::string formatNumber(double value) {
     return out.str();
 }
 
-std::string describe(Range range) {
+// typeMax: the largest value the reader's type holds; a bound at or past it is
+// the type's, not the format's, and goes unsaid.
+std::string describe(Range range, double typeMax = double(std::numeric_limits<uint32_t>::max())) {
     const bool hasMin = range.min != std::numeric_limits<float>::lowest();
-    // Bounds at or past the integer type's limit are the type's, not the format's.
-    const bool hasMax = range.max < double(std::numeric_limits<uint32_t>::max());
+    const bool hasMax = range.max < typeMax;
     if (hasMin && hasMax)
         return std::string(" in ") + (range.minOpen ? "(" : "[") + formatNumber(range.min) + ", " +
                formatNumber(range.max) + (range.maxOpen ? ")" : "]");
@@ -203,6 +216,34 @@ size_t repeatedKeyOffset(std::string_view text, std::string& key) {
     return std::string_view::npos;
 }
 
+// The offset of the bracket that first opens more than maxDepth arrays or
+// objects, or npos. A scan of the text, not a parse: it runs first, so that
+// it holds for text nlohmann::json would refuse only at its end.
+size_t tooDeepOffset(std::string_view text, uint32_t maxDepth) {
+    uint32_t depth = 0;
+    for (size_t pos = 0; pos < text.size();) {
+        const char c = text[pos];
+        if (c == '"') {
+            pos = skipString(text, pos);
+            continue;
+        }
+        if ((c == '[' || c == '{') && ++depth > maxDepth) return pos;
+        if ((c == ']' || c == '}') && depth > 0) --depth;
+        ++pos;
+    }
+    return std::string_view::npos;
+}
+
+template <typename Unsigned>
+Unsigned readUnsigned(const JsonNode& node, Range range) {
+    const double typeMax = double(std::numeric_limits<Unsigned>::max());
+    range.min = std::max(range.min, 0.0);
+    range.max = std::min(range.max, typeMax);
+    if (!node.value->is_number_integer() || !inRange(node.value->get<double>(), range))
+        failExpected(node, "an integer" + describe(range, typeMax));
+    return node.value->get<Unsigned>();
+}
+
 JsonNode childNode(const JsonNode& parent, const nlohmann::json& value, std::string token) {
     JsonNode child{parent.source, &value, parent.path};
     child.path.push_back(std::move(token));
@@ -211,15 +252,31 @@ JsonNode childNode(const JsonNode& parent, const nlohmann::json& value, std::str
 
 } // namespace
 
+JsonError::JsonError(Diagnostic located)
+    : std::runtime_error(located.file +
+                         (located.line > 0 ? ":" + std::to_string(located.line) + ":" + std::to_string(located.column)
+                                           : std::string()) +
+                         ": " + located.message),
+      diagnostic(std::move(located)) {}
+
 JsonSource readJsonFile(const std::filesystem::path& file, const JsonDocumentKind& kind) {
-    const std::string unreadable = file.string() + ": cannot read the " + kind.name + " file (not a regular file)";
+    const std::string unreadable = "cannot read the " + kind.name + " file (not a regular file)";
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) throw JsonError(unreadable);
+    if (!std::filesystem::is_regular_file(file, ec)) failFile(file, unreadable);
     FileBytes read = readFileUpTo(file, kind.maxBytes);
     if (read.problem == FileProblem::TooLarge)
-        throw JsonError(file.string() + ": the " + kind.name + " file " + fileProblemText(read.problem, kind.maxBytes));
-    if (read.problem != FileProblem::None) throw JsonError(unreadable);
-    JsonSource source{file, std::move(read.bytes), {}, kind.name};
+        failFile(file, "the " + kind.name + " file " + fileProblemText(read.problem, kind.maxBytes));
+    if (read.problem != FileProblem::None) failFile(file, unreadable);
+    return parseJsonText(std::move(read.bytes), file, kind);
+}
+
+JsonSource parseJsonText(std::string text, const std::filesystem::path& file, const JsonDocumentKind& kind) {
+    JsonSource source{file, std::move(text), {}, kind.name};
+    const auto fail = [&](size_t offset, std::string message) {
+        throw JsonError(diagnosticAt(file, source.text, offset, std::move(message)));
+    };
+    if (const size_t deep = tooDeepOffset(source.text, kind.maxDepth); deep != std::string_view::npos)
+        fail(deep, "the " + kind.name + " nests deeper than " + std::to_string(kind.maxDepth) + " levels");
     try {
         source.root = nlohmann::json::parse(source.text);
     } catch (const nlohmann::json::out_of_range& e) {
@@ -229,8 +286,7 @@ JsonSource readJsonFile(const std::filesystem::path& file, const JsonDocumentKin
         const size_t open = what.find('\''), close = what.rfind('\'');
         const std::string literal = open < close ? what.substr(open + 1, close - open - 1) : std::string();
         const size_t offset = literal.empty() ? std::string::npos : source.text.find(literal);
-        throw JsonError(file.string() + ":" + lineAndColumn(source.text, offset == std::string::npos ? 0 : offset) +
-                        ": a number too large: " + literal);
+        fail(offset == std::string::npos ? 0 : offset, "a number too large: " + literal);
     } catch (const nlohmann::json::parse_error& e) {
         // e.byte is the 1-based offset of the last character read; the
         // message after "column N: " says what was wrong there.
@@ -238,13 +294,11 @@ JsonSource readJsonFile(const std::filesystem::path& file, const JsonDocumentKin
         const size_t column = what.find("column ");
         const size_t detail = what.find(": ", column == std::string::npos ? 0 : column);
         if (detail != std::string::npos) what = what.substr(detail + 2);
-        const size_t offset = e.byte > 0 ? e.byte - 1 : 0;
-        throw JsonError(file.string() + ":" + lineAndColumn(source.text, offset) + ": " + what);
+        fail(e.byte > 0 ? e.byte - 1 : 0, what);
     }
     std::string key;
     if (const size_t repeated = repeatedKeyOffset(source.text, key); repeated != std::string_view::npos)
-        throw JsonError(file.string() + ":" + lineAndColumn(source.text, repeated) + ": \"" + key +
-                        "\" is given twice in one object");
+        fail(repeated, "\"" + key + "\" is given twice in one object");
     return source;
 }
 
@@ -259,14 +313,24 @@ std::string JsonNode::pointer() const {
 
 JsonNode rootNode(const JsonSource& source) { return {&source, &source.root, {}}; }
 
-std::string locationOf(const JsonNode& node, bool atKey) {
+namespace {
+
+Diagnostic diagnosticOf(const JsonNode& node, bool atKey, std::string message) {
     const Located at = locate(node.source->text, node.path);
-    return node.source->file.string() + ":" + lineAndColumn(node.source->text, atKey ? at.keyOffset : at.valueOffset);
+    return diagnosticAt(node.source->file, node.source->text, atKey ? at.keyOffset : at.valueOffset,
+                        std::move(message));
+}
+
+} // namespace
+
+std::string locationOf(const JsonNode& node, bool atKey) {
+    const Diagnostic at = diagnosticOf(node, atKey, {});
+    return at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column);
 }
 
 void failAt(const JsonNode& node, std::string_view message, bool atKey) {
     const std::string where = node.path.empty() ? "the " + node.source->kind : node.pointer();
-    throw JsonError(locationOf(node, atKey) + ": " + where + " " + std::string(message));
+    throw JsonError(diagnosticOf(node, atKey, where + " " + std::string(message)));
 }
 
 void requireMap(const JsonNode& node) {
@@ -318,13 +382,8 @@ double readNumber(const JsonNode& node, Range range) {
     return node.value->get<double>();
 }
 
-uint32_t readInteger(const JsonNode& node, Range range) {
-    range.min = std::max(range.min, 0.0);
-    range.max = std::min(range.max, double(std::numeric_limits<uint32_t>::max()));
-    if (!node.value->is_number_integer() || !inRange(node.value->get<double>(), range))
-        failExpected(node, "an integer" + describe(range));
-    return node.value->get<uint32_t>();
-}
+uint32_t readInteger(const JsonNode& node, Range range) { return readUnsigned<uint32_t>(node, range); }
+uint64_t readInteger64(const JsonNode& node, Range range) { return readUnsigned<uint64_t>(node, range); }
 
 std::string readString(const JsonNode& node) {
     if (!node.value->is_string()) failExpected(node, "a string");
@@ -354,6 +413,9 @@ void readField(const JsonNode& object, std::string_view key, double& out, Range 
 }
 void readField(const JsonNode& object, std::string_view key, uint32_t& out, Range range) {
     if (auto node = member(object, key)) out = readInteger(*node, range);
+}
+void readField(const JsonNode& object, std::string_view key, uint64_t& out, Range range) {
+    if (auto node = member(object, key)) out = readInteger64(*node, range);
 }
 void readField(const JsonNode& object, std::string_view key, std::optional<float>& out, Range range) {
     if (auto node = member(object, key)) out = float(readNumber(*node, range));

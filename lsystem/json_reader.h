@@ -1,5 +1,6 @@
-// Checked reading of a JSON file, shared by the scene loader (engine/scene)
-// and component plants (lsystem/components): every value carries its JSON
+// Checked reading of a JSON file, shared by the scene loader (engine/scene),
+// component plants (lsystem/components) and ramification trees
+// (lsystem/ramification_file.h): every value carries its JSON
 // pointer, and every error names the file, the line and column of the value at
 // fault and what was expected. Needs nlohmann_json (linked privately by the
 // library; its users link it themselves).
@@ -20,18 +21,29 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "lsystem/error.h"
+
 namespace lsys {
 
-// Every problem in a JSON document: "file:line:column: /json/pointer message".
+// Every problem in a JSON document: what() is "file:line:column: /json/pointer
+// message" (or "file: message" when the file as a whole is at fault, line 0);
+// `diagnostic` holds the same parts, for readers that report lsys::Diagnostics
+// with the offending line under them (formatDiagnostics).
 struct JsonError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit JsonError(Diagnostic diagnostic);
+    Diagnostic diagnostic;
 };
 
 // What kind of document a file is, for messages ("the scene file is larger
-// than 256 MiB", "the scene must be an object"), and its size limit.
+// than 256 MiB", "the scene must be an object"), its size limit and how deep
+// its arrays and objects may nest. Text nesting deeper is refused at the
+// bracket that opens one level too many, before it is parsed: the format's
+// shape is known, so deeper text is a mistake, and nlohmann::json's dump and
+// comparisons recurse as deep as a value nests.
 struct JsonDocumentKind {
     std::string name;
     size_t maxBytes = 0;
+    uint32_t maxDepth = 64; // past any of our formats' shapes
 };
 
 // The parsed document and the text it came from, for locating values.
@@ -42,8 +54,12 @@ struct JsonSource {
     std::string kind; // JsonDocumentKind::name
 };
 
-// Throws JsonError when the file cannot be read or is not JSON.
+// Throws JsonError when the file cannot be read, is not JSON, nests deeper
+// than kind.maxDepth or repeats a key in one object.
 JsonSource readJsonFile(const std::filesystem::path& file, const JsonDocumentKind& kind);
+// The same for text already read (kind.maxBytes is not checked); `file`
+// names it in errors.
+JsonSource parseJsonText(std::string text, const std::filesystem::path& file, const JsonDocumentKind& kind);
 
 // One value of a document and the path of keys and indices leading to it.
 struct JsonNode {
@@ -85,7 +101,10 @@ Range above(double min);
 Range between(double min, double max);
 
 double readNumber(const JsonNode& node, Range range);
+// Whole numbers ≥ 0 (a negative one is out of range): readInteger up to
+// 2^32 − 1, readInteger64 up to 2^64 − 1 (seeds, budgets).
 uint32_t readInteger(const JsonNode& node, Range range);
+uint64_t readInteger64(const JsonNode& node, Range range);
 std::string readString(const JsonNode& node);
 // An array of exactly N numbers, each in range.
 template <int N>
@@ -96,6 +115,7 @@ glm::vec<N, float> readVector(const JsonNode& node, Range range);
 void readField(const JsonNode& object, std::string_view key, float& out, Range range);
 void readField(const JsonNode& object, std::string_view key, double& out, Range range);
 void readField(const JsonNode& object, std::string_view key, uint32_t& out, Range range);
+void readField(const JsonNode& object, std::string_view key, uint64_t& out, Range range);
 void readField(const JsonNode& object, std::string_view key, std::optional<float>& out, Range range);
 void readField(const JsonNode& object, std::string_view key, std::optional<uint32_t>& out, Range range);
 void readField(const JsonNode& object, std::string_view key, glm::vec2& out, Range range);

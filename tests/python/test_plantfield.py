@@ -160,6 +160,6 @@ def test_ramified_tree_errors(tmp_path):
     with pytest.raises(plantfield.LsystemError) as error:
         plantfield.ramified_tree(bad)
     assert error.value.diagnostics[0][1:3] == (3, 3)
-    assert "unknown key 'twst'" in error.value.diagnostics[0][3]
+    assert error.value.diagnostics[0][3] == '/twst is an unknown key; did you mean "twist"?'
     with pytest.raises(plantfield.RamificationBudgetError):
         plantfield.ramified_tree(DATA / "ramified" / "oak.ram.json", max_branches=10)

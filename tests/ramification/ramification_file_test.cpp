@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 
 #include "lsystem/ramification_file.h"
@@ -68,6 +69,11 @@ TEST(RamificationFile, ReadsAMatrixAndItsGrowth) {
     EXPECT_EQ(tree.growth.sideAngle, 60.0);
     EXPECT_EQ(tree.seed, 7u);
     EXPECT_EQ(tree.maxBranches, 1000u);
+    // seed and max_branches are 64-bit.
+    const RamificationTree wide =
+        accepted(R"({"p": [[1]], "seed": 18446744073709551615, "max_branches": 1099511627776})");
+    EXPECT_EQ(wide.seed, std::numeric_limits<uint64_t>::max());
+    EXPECT_EQ(wide.maxBranches, uint64_t(1) << 40);
     const RamificationTree habit = accepted(R"({"p": [[1]], "side_angle_min": 75, "phyllotaxis": 137.5,
         "droop": 0.02, "stems": 5, "stem_angle": 25, "foliage": {"kind": "needles", "orders": 3, "clusters": 4,
         "per_cluster": 5, "size": 0.2, "angle": 40, "width": 0.05}})");
@@ -92,39 +98,49 @@ TEST(RamificationFile, ReadsAMatrixAndItsGrowth) {
 }
 
 TEST(RamificationFile, RefusesBadFilesAtTheirLineAndColumn) {
-    EXPECT_EQ(refusal("{\n  \"p\": [[1], [0.5, 0.5]]\n  \"twist\": 3\n}"),
-              "3:9: not JSON: syntax error while parsing object - unexpected string literal; expected '}'");
-    EXPECT_EQ(refusal("{\n  \"p\": [[1], [0.5, 0.5]],\n  \"twst\": 3\n}"),
-              "3:3: unknown key 'twst' (docs/RAMIFICATION.md lists the keys)");
-    EXPECT_EQ(refusal("{\"p\": [[1],\n      [0.5, -1]]}"), "2:13: p_22 must be a number ≥ 0, not -1");
-    EXPECT_EQ(refusal("{\"p\": [[1], [0.5]]}"), "1:13: row 2 of 'p' must hold 2 numbers (p_21 ... p_22)");
-    EXPECT_EQ(refusal("{\"p\": [[1]], \"balance\": 3, \"depth\": 2}"),
-              "1:1: give either 'p' (the matrix) or 'balance' with 'depth'");
-    EXPECT_EQ(refusal("{\"balance\": 3}"), "1:13: 'balance' needs 'depth', the number of orders");
-    EXPECT_EQ(refusal("{\"balance\": 130, \"depth\": 2}"), "1:13: 'balance' must be a number in [0, 100], not 130");
-    EXPECT_EQ(refusal("{\"p\": [[1], [0, 1]], \"depth\": 3}"),
-              "1:31: 'depth' must be at most the 2 rows of 'p' (it removes rows; 'balance' makes any depth)");
-    EXPECT_EQ(refusal("{\"p\": [[1]], \"orders\": 2}"),
-              "1:24: 'orders' must be 1, the rows of 'p' (or 'depth' with 'balance')");
-    EXPECT_EQ(refusal("{\"balance\": 3, \"depth\": 65}"), "1:25: 'depth' must be a whole number in [1, 64], not 65");
-    EXPECT_EQ(refusal("{\"p\": [[1]], \"max_branches\": 0}"),
-              "1:30: 'max_branches' must be a whole number in [1, 1099511627776], not 0");
-    EXPECT_EQ(refusal("[1]"), "1:1: a .ram.json file is one JSON object");
-    EXPECT_EQ(refusal("{\"p\": [[1]], \"foliage\": {\"kind\": \"fronds\"}}"),
-              "1:34: 'foliage/kind' must be \"leaves\" or \"needles\"");
-    EXPECT_EQ(refusal("{\"p\": [[1]], \"foliage\": {\"size\": 1}}"),
-              "1:25: 'foliage/kind' must be \"leaves\" or \"needles\"");
-    EXPECT_EQ(refusal("{\"p\": [[1]], \"foliage\": {\"kind\": \"leaves\", \"clusterz\": 2}}"),
-              "1:44: unknown key 'clusterz' (docs/RAMIFICATION.md lists the keys)");
-    EXPECT_EQ(refusal("{\"p\": [[1]], \"foliage\": {\"kind\": \"leaves\", \"clusters\": 0}}"),
-              "1:56: 'foliage/clusters' must be a whole number in [1, 64], not 0");
-    EXPECT_EQ(refusal("{\"p\": [[1]], \"stems\": 0}"), "1:23: 'stems' must be a whole number in [1, 64], not 0");
-    EXPECT_EQ(refusal("{\"p\": [[1]], \"foliage\": 3}"), "1:25: 'foliage' must be an object");
-    EXPECT_EQ(refusal("{\"p\": [[1]], \"seed\": -1}"), "1:22: 'seed' must be a whole number ≥ 0, not -1");
-    EXPECT_EQ(refusal("\xEF\xBB\xBF{\"p\": [[1]], \"zz\": 1}"),
-              "1:17: unknown key 'zz' (docs/RAMIFICATION.md lists the keys)");
-    EXPECT_EQ(refusal("{\"p\": " + std::string(100000, '[')), "1:14: nests deeper than 8 levels");
-    EXPECT_EQ(refusal("{\"p\": [[1], [0.5, 0.5], \"]]]]\" [[[[[[[]]]]]]]}"), "1:38: nests deeper than 8 levels");
+    // The file's text, and its first diagnostic as "line:column: message".
+    const std::vector<std::pair<std::string, std::string>> refusals = {
+        {"{\n  \"p\": [[1], [0.5, 0.5]]\n  \"twist\": 3\n}",
+         "3:9: syntax error while parsing object - unexpected string literal; expected '}'"},
+        {"{\n  \"p\": [[1], [0.5, 0.5]],\n  \"twst\": 3\n}", "3:3: /twst is an unknown key; did you mean \"twist\"?"},
+        {"{\"p\": [[1],\n      [0.5, -1]]}", "2:13: /p/1/1 must be a number ≥ 0 (got -1)"},
+        {"{\"p\": [[1], [0.5]]}", "1:13: /p/1 must hold 2 numbers (p_21 ... p_22), not 1"},
+        {"{\"p\": [[1], 2]}", "1:13: /p/1 must be an array of 2 numbers (p_21 ... p_22) (got 2)"},
+        {"{\"p\": []}", "1:7: /p must hold 1 to 64 rows, row k holding k numbers (got 0 rows)"},
+        {"{\"p\": [[1]], \"balance\": 3, \"depth\": 2}",
+         "1:14: /balance cannot be given together with \"p\": give the matrix or Tankard's balance slider"},
+        {"{\n}", "1:1: the ramification tree needs \"p\" (the matrix) or \"balance\" with \"depth\""},
+        {"{\"balance\": 3}", "1:13: /balance needs \"depth\", the number of orders"},
+        {"{\"balance\": 130, \"depth\": 2}", "1:13: /balance must be a number in [0, 100] (got 130)"},
+        {"{\"p\": [[1], [0, 1]], \"depth\": 3}",
+         "1:31: /depth must be at most the 2 rows of \"p\" (it removes rows; \"balance\" makes any depth)"},
+        {"{\"p\": [[1]], \"orders\": 2}", "1:24: /orders must be 1, the rows of \"p\" (or \"depth\" with \"balance\")"},
+        {"{\"p\": [[1]], \"a\": [1, 2]}", "1:19: /a must hold the 1 branch counts a_1 ... a_K, not 2"},
+        {"{\"p\": [[1]], \"a\": [-1]}", "1:20: /a/0 must be an integer ≥ 0 (got -1)"},
+        {"{\"balance\": 3, \"depth\": 65}", "1:25: /depth must be an integer in [1, 64] (got 65)"},
+        {"{\"p\": [[1]], \"max_branches\": 0}", "1:30: /max_branches must be an integer in [1, 1099511627776] (got 0)"},
+        {"[1]", "1:1: the ramification tree must be an object (got [1])"},
+        {"{\"p\": [[1]], \"foliage\": {\"kind\": \"fronds\"}}",
+         "1:34: /foliage/kind must be \"leaves\" or \"needles\" (got \"fronds\")"},
+        {"{\"p\": [[1]], \"foliage\": {\"kind\": \"needle\"}}",
+         "1:34: /foliage/kind must be \"leaves\" or \"needles\" (got \"needle\"); did you mean \"needles\"?"},
+        {"{\"p\": [[1]], \"foliage\": {\"size\": 1}}", "1:25: /foliage needs \"kind\": \"leaves\" or \"needles\""},
+        {"{\"p\": [[1]], \"foliage\": {\"kind\": \"leaves\", \"clusterz\": 2}}",
+         "1:44: /foliage/clusterz is an unknown key; did you mean \"clusters\"?"},
+        {"{\"p\": [[1]], \"foliage\": {\"kind\": \"leaves\", \"clusters\": 0}}",
+         "1:56: /foliage/clusters must be an integer in [1, 64] (got 0)"},
+        {"{\"p\": [[1]], \"stems\": 0}", "1:23: /stems must be an integer in [1, 64] (got 0)"},
+        {"{\"p\": [[1]], \"foliage\": 3}", "1:25: /foliage must be an object (got 3)"},
+        {"{\"p\": [[1]], \"seed\": -1}", "1:22: /seed must be an integer ≥ 0 (got -1)"},
+        {"{\"p\": [[1]], \"seed\": 1.5}", "1:22: /seed must be an integer ≥ 0 (got 1.5)"},
+        {"{\"p\": [[1]], \"description\": 3}", "1:29: /description must be a string (got 3)"},
+        {"{\"p\": [[1]], \"p\": [[1]]}", "1:14: \"p\" is given twice in one object"},
+        {"\xEF\xBB\xBF{\"p\": [[1]], \"seeds\": 1}", "1:17: /seeds is an unknown key; did you mean \"seed\"?"},
+        {"{\"p\": " + std::string(100000, '['), "1:14: the ramification tree nests deeper than 8 levels"},
+        {"{\"p\": [[1], [0.5, 0.5], \"]]]]\" [[[[[[[]]]]]]]}",
+         "1:38: the ramification tree nests deeper than 8 levels"},
+    };
+    for (const auto& [text, expected] : refusals) EXPECT_EQ(refusal(text), expected) << text.substr(0, 80);
     const RamificationFile missing = readRamificationFile("/nonexistent/x.ram.json");
     ASSERT_EQ(missing.diagnostics.size(), 1u);
     EXPECT_NE(missing.diagnostics[0].message.find("x.ram.json"), std::string::npos);

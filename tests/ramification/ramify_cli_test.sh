@@ -58,10 +58,15 @@ cmp -s "$WORK/oak.glb" "$WORK/oak-seed2.glb" && fail "export: --seed 2 gave the 
 expect_run budget 2 'passes its budget of 10 branches (--max-branches' -- \
     "$LSYS" ramify "$DATA/ramified/oak.ram.json" --max-branches 10 -o "$WORK/x.lsys"
 printf '{\n  "p": [[1], [0.5, 0.5]],\n  "depth": 0\n}\n' > "$WORK/bad.ram.json"
-expect_run bad-file 2 "bad.ram.json:3:12: error: 'depth' must be a whole number in \[1, 64\], not 0" -- \
+expect_run bad-file 2 'bad.ram.json:3:12: error: /depth must be an integer in \[1, 64\] (got 0)$' -- \
     "$LSYS" ramify "$WORK/bad.ram.json"
-expect_run export-bad-file 2 "bad.ram.json:3:12: error: 'depth' must be a whole number in \[1, 64\], not 0" -- \
+# The offending line, a caret under its column 12.
+expect_run bad-file-caret 2 '^             \^$' -- "$LSYS" ramify "$WORK/bad.ram.json"
+expect_run export-bad-file 2 'bad.ram.json:3:12: error: /depth must be an integer in \[1, 64\] (got 0)$' -- \
     "$LSYS" export "$WORK/bad.ram.json" -o "$WORK/x.glb"
+printf '{\n  "p": [[1]],\n  "foliage": {"kind": "leaves", "sise": 0.2}\n}\n' > "$WORK/typo.ram.json"
+expect_run misspelt-key 2 'typo.ram.json:3:33: error: /foliage/sise is an unknown key; did you mean "size"?$' -- \
+    "$LSYS" ramify "$WORK/typo.ram.json"
 expect_run plant-output 2 '-o generates a tree from a .ram.json file' -- \
     "$LSYS" ramify "$TESTDATA/figure3.lsys" -o "$WORK/x.glb"
 printf 'Axiom: F(\n' > "$WORK/bad.lsys"
