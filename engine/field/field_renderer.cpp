@@ -108,6 +108,8 @@ FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const 
     shadow_ = createShadowMap(resources_, settings_.shadowMapSize, shadowCacheMargin(settings_.shadowCache, texel));
     createDescriptors();
     createPipelines();
+    clouds_ = createCloudPass(resources_, content_.scene.clouds, uniforms_,
+                              VkSampleCountFlagBits(colourPassSamples(settings_.antialiasing)));
 }
 
 FieldRenderer::~FieldRenderer() {
@@ -339,6 +341,8 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     block.field.wind = glm::vec4(wind.wind.x, wind.wind.y, wind.wind.z, view.time);
     block.field.windDetail = glm::vec4(wind.windDetail.x, wind.windDetail.y, wind.wind.w, settings_.impostorSway);
     std::memcpy(uniforms_.mapped, &block, sizeof(block));
+    setCloudView(clouds_, content_.scene, view.time, view.camera.position,
+                 glm::normalize(view.camera.target - view.camera.position));
     // The shaders look the shadow up 1.5 texels along the normal (sunMapPosition).
     const float shadowTexel = 2.0f * settings_.shadowRadius / float(shadow_.size);
     terrainRanges_ = visibleTerrainRanges(terrainChunks_, block.frame.viewProj, view.camera.position,
@@ -476,6 +480,11 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
         // Every frame has the same scopes.
         for (const char* name : {"depth_pyramid", "occlusion", "late_draws"})
             TimedScope scope(cmd, timer, name, ScopeStart::insideRendering);
+    }
+    {
+        // Last, over everything opaque and the sky, back to front.
+        TimedScope scope(cmd, timer, "clouds", ScopeStart::insideRendering);
+        recordCloudPass(cmd, clouds_);
     }
     endTargetPass(cmd, target, timer);
 }

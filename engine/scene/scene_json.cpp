@@ -324,6 +324,24 @@ CameraPath readCamera(const JsonNode& node) {
     return camera;
 }
 
+// The cloud's spheres are derived here, so a malformed or oversized cloud
+// L-system is reported at its "lsystem" value.
+Cloud readCloud(const JsonNode& node, const std::filesystem::path& sceneFolder) {
+    requireObject(node, {"lsystem", "position", "size", "seed"});
+    Cloud cloud;
+    const JsonNode lsystem = requireMember(node, "lsystem", "the cloud's L-system file (data/clouds)");
+    cloud.lsystem = existingFile(lsystem, sceneFolder);
+    cloud.position = readVector<3>(requireMember(node, "position", "[x, y, z] in metres"), anyNumber());
+    readField(node, "size", cloud.size, above(0.0));
+    readField(node, "seed", cloud.seed, anyNumber());
+    try {
+        cloud.spheres = cloudSpheres(cloud.lsystem, cloud.seed, cloud.size, cloud.position);
+    } catch (const CloudError& error) {
+        failAt(lsystem, std::string("makes no cloud: ") + error.what());
+    }
+    return cloud;
+}
+
 void requireUniqueNames(const std::vector<Species>& species, const std::vector<JsonNode>& elements) {
     for (size_t i = 0; i < species.size(); ++i)
         for (size_t j = 0; j < i; ++j)
@@ -336,7 +354,7 @@ Scene readScene(const std::filesystem::path& file) {
     const JsonSource source = readJsonFile(file, {"scene", size_t(256) << 20});
     const JsonNode root = rootNode(source);
     requireObject(root, {"description", "seed", "terrain", "species", "placement", "sun", "sky", "fog", "wind",
-                         "physics", "camera"});
+                         "physics", "camera", "clouds"});
     const std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
 
     Scene scene;
@@ -359,6 +377,9 @@ Scene readScene(const std::filesystem::path& file) {
     if (auto wind = member(root, "wind")) scene.wind = readWind(*wind);
     if (auto physics = member(root, "physics")) scene.physics = readPhysics(*physics);
     if (auto camera = member(root, "camera")) scene.camera = readCamera(*camera);
+    if (auto clouds = member(root, "clouds"))
+        for (const JsonNode& element : arrayElements(*clouds, "an array of clouds"))
+            scene.clouds.push_back(readCloud(element, folder));
     return scene;
 }
 

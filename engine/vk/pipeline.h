@@ -36,6 +36,9 @@ struct GraphicsPipelineDesc {
     VkFormat secondColorFormat = VK_FORMAT_UNDEFINED;
     // Cull mode set per draw with vkCmdSetCullMode; cullMode is then ignored.
     bool dynamicCullMode = false;
+    // Blends the first colour attachment as premultiplied alpha
+    // (colour + destination · (1 − alpha)): transparent passes (clouds).
+    bool premultipliedAlpha = false;
 };
 
 // Pipelines are owned by `owner`.

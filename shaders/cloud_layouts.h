@@ -1,0 +1,31 @@
+// GPU layouts of the cloud pass (engine/field/cloud_pass.h, docs/CLOUDS.md),
+// shared by GLSL and C++.
+#ifndef PLANTFIELD_SHADERS_CLOUD_LAYOUTS_H
+#define PLANTFIELD_SHADERS_CLOUD_LAYOUTS_H
+
+#include "layouts.h"
+
+#ifdef __cplusplus
+namespace gpu {
+#endif
+
+// Descriptor bindings of the cloud pass's set (set 0).
+#define CLOUD_BINDING_FRAME BINDING_FRAME_UNIFORMS // FrameUniforms (layouts.h): the field's frame block
+#define CLOUD_BINDING_SPHERES 1                    // CloudBillboard[], farthest first, through a uint texel view
+
+// Vertices of one sphere's billboard: two triangles.
+#define CLOUD_BILLBOARD_VERTICES 6
+#define CLOUD_BILLBOARD_TEXELS 2
+
+// One sphere of a cloud as this frame draws it: 32 bytes.
+struct CloudBillboard {
+    vec4 sphere; // xyz world centre at this frame's time (wind drift included), w radius (m)
+    vec4 shade;  // x the sphere's height within its cloud (0 bottom, 1 top), yzw 0
+};
+
+#ifdef __cplusplus
+} // namespace gpu
+static_assert(sizeof(gpu::CloudBillboard) == CLOUD_BILLBOARD_TEXELS * 16);
+#endif
+
+#endif
