@@ -10,7 +10,7 @@ layout(set = 0, binding = CLOUD_BINDING_SPHERES) uniform usamplerBuffer billboar
 layout(location = 0) out vec3 outWorldPos;
 layout(location = 1) flat out vec4 outSphere; // xyz centre, w radius
 layout(location = 2) flat out vec4 outFog;    // vertexFog at the centre: a sphere is small against its distance
-layout(location = 3) flat out float outHeight;
+layout(location = 3) flat out vec4 outShade; // CloudBillboard::shade
 
 const vec2 kCorners[CLOUD_BILLBOARD_VERTICES] =
     vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, -1), vec2(1, 1), vec2(-1, 1));
@@ -33,6 +33,6 @@ void main() {
     outWorldPos = sphere.xyz + (side * corner.x + up * corner.y) * reach;
     outSphere = sphere;
     outFog = vertexFog(sphere.xyz);
-    outHeight = shade.x;
+    outShade = shade;
     gl_Position = frame.viewProj * vec4(outWorldPos, 1.0);
 }

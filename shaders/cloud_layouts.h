@@ -20,7 +20,7 @@ namespace gpu {
 // One sphere of a cloud as this frame draws it: 32 bytes.
 struct CloudBillboard {
     vec4 sphere; // xyz world centre at this frame's time (wind drift included), w radius (m)
-    vec4 shade;  // x the sphere's height within its cloud (0 bottom, 1 top), yzw 0
+    vec4 shade; // x the sphere's height within its cloud (0 bottom, 1 top), yzw which side of the cloud it is on (unit)
 };
 
 #ifdef __cplusplus

@@ -19,7 +19,7 @@ std::vector<gpu::CloudBillboard> cloudBillboards(const std::vector<Cloud>& cloud
     for (const Cloud& cloud : clouds)
         for (const CloudSphere& sphere : cloud.spheres) {
             const glm::vec3 centre = sphere.centre + drift;
-            billboards.push_back({glm::vec4(centre, sphere.radius), glm::vec4(sphere.height, 0.0f, 0.0f, 0.0f)});
+            billboards.push_back({glm::vec4(centre, sphere.radius), glm::vec4(sphere.height, sphere.outward)});
             depths.push_back(glm::dot(centre - camera, forward));
         }
     std::vector<uint32_t> order(billboards.size());

@@ -58,8 +58,12 @@ std::vector<CloudSphere> cloudSpheres(const std::filesystem::path& file, std::op
     const float scale = size / std::max({extent.x, extent.y, extent.z});
     const glm::vec3 bottomMiddle(0.5f * (low.x + high.x), low.y, 0.5f * (low.z + high.z));
     const float centreSpan = highestCentre - lowestCentre;
+    const glm::vec3 middle = 0.5f * (low + high), halfExtent = 0.5f * extent;
     for (CloudSphere& sphere : spheres) {
         sphere.height = centreSpan > 0.0f ? (sphere.centre.y - lowestCentre) / centreSpan : 0.5f;
+        // The ellipsoid x²/a² + y²/b² + z²/c² = k through the centre has the normal (x/a², y/b², z/c²).
+        const glm::vec3 normal = (sphere.centre - middle) / (halfExtent * halfExtent);
+        if (glm::dot(normal, normal) > 0.0f) sphere.outward = glm::normalize(normal);
         sphere.centre = base + (sphere.centre - bottomMiddle) * scale;
         sphere.radius *= scale;
     }

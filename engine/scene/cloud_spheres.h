@@ -19,6 +19,9 @@ struct CloudSphere {
     glm::vec3 centre{0.0f}; // metres
     float radius = 0.0f;    // metres
     float height = 0.0f;    // the centre's height within its cloud: 0 at the lowest centre, 1 at the highest
+    // Unit normal of the ellipsoid fitted to the cloud's box at the centre
+    // (zero at the box's middle): which side of the cloud the sphere is on.
+    glm::vec3 outward{0.0f};
     bool operator==(const CloudSphere&) const = default;
 };
 

@@ -90,6 +90,9 @@ TEST(CloudSpheres, OnlySpheresCountAndTheirHeightsSpanTheCloud) {
     EXPECT_EQ(spheres[1].centre, glm::vec3(1.0f, 2.0f + 6.0f * 1.25f, 3.0f));
     EXPECT_EQ(spheres[0].height, 0.0f);
     EXPECT_EQ(spheres[1].height, 1.0f);
+    // The box's middle is at y 3 before scaling: one sphere below it, one above.
+    EXPECT_EQ(spheres[0].outward, glm::vec3(0.0f, -1.0f, 0.0f));
+    EXPECT_EQ(spheres[1].outward, glm::vec3(0.0f, 1.0f, 0.0f));
 }
 
 struct BadCloud {
@@ -133,7 +136,7 @@ Cloud cloudOf(std::vector<CloudSphere> spheres) {
 // Farthest first along the view direction, drifted by wind velocity × time;
 // equal depths keep the clouds' order.
 TEST(CloudBillboards, DriftWithTheWindAndSortFarthestFirst) {
-    const std::vector<Cloud> clouds = {cloudOf({{{0, 100, -50}, 5, 0.0f}, {{0, 100, -300}, 8, 1.0f}}),
+    const std::vector<Cloud> clouds = {cloudOf({{{0, 100, -50}, 5, 0.0f}, {{0, 100, -300}, 8, 1.0f, {0, 0, -1}}}),
                                        cloudOf({{{40, 100, -50}, 6, 0.5f}, {{0, 100, -120}, 7, 0.25f}})};
     Wind wind;
     wind.speed = 2.0f;
@@ -145,7 +148,7 @@ TEST(CloudBillboards, DriftWithTheWindAndSortFarthestFirst) {
     for (size_t i = 0; i < 4; ++i) EXPECT_EQ(billboards[i].sphere.w, radii[i]) << i;
     EXPECT_NEAR(billboards[0].sphere.x, 20.0f, 1e-4f) << "2 m/s toward +x for 10 s";
     EXPECT_NEAR(billboards[0].sphere.z, -300.0f, 1e-4f);
-    EXPECT_EQ(billboards[0].shade.x, 1.0f);
+    EXPECT_EQ(billboards[0].shade, glm::vec4(1, 0, 0, -1)) << "height, then which side of the cloud";
     EXPECT_EQ(billboards[1].shade.x, 0.25f);
 
     // Looking the other way reverses the order.
