@@ -72,6 +72,7 @@ constexpr const char* kFullScene = R"({
   "sky": { "zenith": [0.1, 0.2, 0.5], "horizon": [0.7, 0.8, 0.9] },
   "fog": { "density": 0.01 },
   "wind": { "speed": 7, "direction": 270, "gust_strength": 0.9, "gust_speed": 8, "turbulence": 0.5 },
+  "clouds": [ { "lsystem": "clouds/puff.lsys", "position": [0, 150, -300], "size": 120, "seed": 4 } ],
   "camera": {
     "fov": 55, "near": 0.5, "far": 900,
     "keyframes": [
@@ -115,12 +116,21 @@ Scene fullSceneExpected(const std::filesystem::path& file) {
     s.fog = {0.01f};
     s.wind = {7, 270, 0.9f, 8, 0.5f};
     s.camera = {{{0, {0, 2, 10}, {0, 1, 0}, 40.0f}, {4.5, {10, 3, 0}, {0, 1, 0}, std::nullopt}}, 55, 0.5f, 900};
+    Cloud puff{.lsystem = file.parent_path() / "clouds/puff.lsys", .position = {0, 150, -300}, .size = 120, .seed = 4};
+    puff.spheres = cloudSpheres(puff.lsystem, puff.seed, puff.size, puff.position);
+    s.clouds = {puff};
     return s;
 }
 
-TEST(SceneLoad, FullySpecifiedSceneReadsBackEveryValue) {
+// kFullScene in the test's folder with the plant and cloud files it names.
+std::filesystem::path writeFullScene() {
     test::writeFile("plants/tree.lsys", "Axiom: F\n");
-    const auto file = test::writeFile("full.json", kFullScene);
+    test::writeFile("clouds/puff.lsys", "Axiom: @O(2) f(1) @O(1.5)\n");
+    return test::writeFile("full.json", kFullScene);
+}
+
+TEST(SceneLoad, FullySpecifiedSceneReadsBackEveryValue) {
+    const auto file = writeFullScene();
     const Scene expected = fullSceneExpected(file);
     // Each value differs from its default, so a key the loader ignored fails.
     const Scene defaults;
@@ -130,6 +140,7 @@ TEST(SceneLoad, FullySpecifiedSceneReadsBackEveryValue) {
     EXPECT_NE(expected.fog, defaults.fog);
     EXPECT_NE(expected.wind, defaults.wind);
     EXPECT_NE(expected.camera, defaults.camera);
+    EXPECT_NE(expected.clouds, defaults.clouds);
     EXPECT_EQ(loadScene(file), expected);
 }
 
@@ -166,8 +177,7 @@ TEST(SceneLoad, ImageHeightfieldResolvesAgainstTheSceneFolder) {
 }
 
 TEST(SceneLoad, EnvironmentCarriesSunSkyFogAndGround) {
-    test::writeFile("plants/tree.lsys", "Axiom: F\n");
-    const Environment env = environmentOf(loadScene(test::writeFile("full.json", kFullScene)));
+    const Environment env = environmentOf(loadScene(writeFullScene()));
     EXPECT_EQ(env.sunRadiance, glm::vec3(1.0f, 0.9f, 0.8f) * 3.0f);
     EXPECT_EQ(env.sunElevationDegrees, 20.0f);
     EXPECT_EQ(env.skyHorizon, glm::vec3(0.7f, 0.8f, 0.9f));
@@ -198,8 +208,7 @@ TEST(SceneSeeds, DerivedSeedsAreDistinctAndFollowTheSceneSeed) {
 }
 
 TEST(SceneSeeds, ExplicitSeedsWin) {
-    test::writeFile("plants/tree.lsys", "Axiom: F\n");
-    const Scene scene = loadScene(test::writeFile("full.json", kFullScene));
+    const Scene scene = loadScene(writeFullScene());
     EXPECT_EQ(terrainSeed(scene), 5u);
     EXPECT_EQ(speciesSeed(scene, 0), 17u);
     EXPECT_EQ(placementSeed(scene, 0), 11u);
