@@ -28,6 +28,9 @@ struct CloudSphere {
 // The most spheres one cloud may have: each is a blended billboard sorted
 // every frame, and a few thousand already make a dense cumulus.
 constexpr size_t kMaxCloudSpheres = 8192;
+// The most spheres all the clouds of a scene may have together: the
+// renderer sorts them all every frame and holds them in one buffer.
+constexpr size_t kMaxSceneCloudSpheres = 65536;
 
 // A cloud file that cannot be read, derived or drawn: the message says why
 // (with the L-system's file:line:column where there is one).

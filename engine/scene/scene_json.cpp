@@ -342,6 +342,17 @@ Cloud readCloud(const JsonNode& node, const std::filesystem::path& sceneFolder) 
     return cloud;
 }
 
+void readClouds(const JsonNode& node, const std::filesystem::path& sceneFolder, std::vector<Cloud>& clouds) {
+    size_t spheres = 0;
+    for (const JsonNode& element : arrayElements(node, "an array of clouds")) {
+        clouds.push_back(readCloud(element, sceneFolder));
+        spheres += clouds.back().spheres.size();
+        if (spheres > kMaxSceneCloudSpheres)
+            failAt(element, "brings the scene's clouds to " + std::to_string(spheres) + " spheres, more than the " +
+                                std::to_string(kMaxSceneCloudSpheres) + " a scene may have");
+    }
+}
+
 void requireUniqueNames(const std::vector<Species>& species, const std::vector<JsonNode>& elements) {
     for (size_t i = 0; i < species.size(); ++i)
         for (size_t j = 0; j < i; ++j)
@@ -377,9 +388,7 @@ Scene readScene(const std::filesystem::path& file) {
     if (auto wind = member(root, "wind")) scene.wind = readWind(*wind);
     if (auto physics = member(root, "physics")) scene.physics = readPhysics(*physics);
     if (auto camera = member(root, "camera")) scene.camera = readCamera(*camera);
-    if (auto clouds = member(root, "clouds"))
-        for (const JsonNode& element : arrayElements(*clouds, "an array of clouds"))
-            scene.clouds.push_back(readCloud(element, folder));
+    if (auto clouds = member(root, "clouds")) readClouds(*clouds, folder, scene.clouds);
     return scene;
 }
 

@@ -2,7 +2,9 @@
 // explosion cloud ahead of the camera): the cloud whitens and brightens the
 // sky where it stands and leaves every other pixel as the frame without
 // clouds has it, bit for bit; a view away from it is the cloudless frame;
-// it drifts with the wind; the same frame twice is the same pixels.
+// it drifts with the wind; the same frame twice is the same pixels; with
+// occlusion culling (the colour pass in two renderings) and with MSAA the
+// clouds are drawn over the whole frame as well.
 #include "engine/field/field_renderer.h"
 #include "engine/scene/cloud_billboards.h"
 #include "engine/vk/capture.h"
@@ -24,8 +26,9 @@ Scene withoutClouds(Scene scene) {
     return scene;
 }
 
-RgbaImage renderFrame(const GpuContext& ctx, const Scene& scene, const Camera& camera, float time) {
-    FieldRenderer renderer(ctx, buildFieldContent(scene), {});
+RgbaImage renderFrame(const GpuContext& ctx, const Scene& scene, const Camera& camera, float time,
+                      const FieldRenderSettings& settings = {}) {
+    FieldRenderer renderer(ctx, buildFieldContent(scene), settings);
     RenderTarget target = createRenderTarget(ctx, kSize, renderer.antialiasing());
     FieldView view;
     view.camera = camera;
@@ -125,6 +128,31 @@ TEST_F(CloudRenderTest, TheCloudDriftsWithTheWindAndFramesRepeat) {
         difference(first, renderFrame(ctx, withoutClouds(scene), camera, later), screenBox(scene, camera, later));
     EXPECT_EQ(atLater.changedOutside, 0u) << "the cloud is where the wind has taken it";
     EXPECT_GT(atLater.centreX, atStart.centreX + 3.0) << "30 m east in 10 s, at about 180 m";
+}
+
+// The clouds come after the late phase's plants: the frame is the one
+// without occlusion culling, bit for bit, as for plants alone.
+TEST_F(CloudRenderTest, OcclusionCullingDrawsTheSameClouds) {
+    const Scene scene = cloudScene();
+    const Camera camera = cameraAt(scene.camera, 0.0);
+    FieldRenderSettings occlusion;
+    occlusion.occlusionCulling = true;
+    EXPECT_TRUE(renderFrame(ctx, scene, camera, 0.0f, occlusion).pixels ==
+                renderFrame(ctx, scene, camera, 0.0f).pixels);
+}
+
+// With 4× MSAA the cloud pipeline draws into the multisampled image.
+TEST_F(CloudRenderTest, MultisampledFramesDrawTheCloud) {
+    const Scene scene = cloudScene();
+    const Camera camera = cameraAt(scene.camera, 0.0);
+    FieldRenderSettings msaa;
+    msaa.antialiasing.method = AntialiasMethod::msaa;
+    const CloudDifference d =
+        difference(renderFrame(ctx, scene, camera, 0.0f, msaa),
+                   renderFrame(ctx, withoutClouds(scene), camera, 0.0f, msaa), screenBox(scene, camera, 0.0f));
+    EXPECT_GT(d.changed, kSize.width * kSize.height / 40);
+    EXPECT_EQ(d.changedOutside, 0u);
+    EXPECT_GT(d.brighter, 20.0);
 }
 
 } // namespace

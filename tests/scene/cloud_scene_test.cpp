@@ -84,5 +84,26 @@ TEST(CloudScene, AMalformedCloudIsReportedAtItsSceneKeyAndInItsFile) {
     }
 }
 
+// Nine clouds of 8 192 spheres each pass the budget of one cloud but not
+// the scene's, at the ninth.
+TEST(CloudScene, TheScenesCloudsHaveASphereBudget) {
+    test::writeFile("full.lsys", "derivation length: 13\nAxiom: A\nA --> [+A] f [-A]\ninterpretation:\nA --> @O(1)\n");
+    std::string clouds;
+    for (int i = 0; i < 9; ++i)
+        clouds += std::string(i ? ",\n" : "") + "    { \"lsystem\": \"full.lsys\", \"position\": [" +
+                  std::to_string(i) + ", 100, 0] }";
+    const std::string text = sceneWithClouds(clouds);
+    try {
+        loadScene(test::writeFile("scene.json", text));
+        FAIL() << "loaded more cloud spheres than a scene may have";
+    } catch (const SceneError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(test::lineColumnOf(text, "{ \"lsystem\": \"full.lsys\", \"position\": [8") +
+                            ": /clouds/8 brings the scene's clouds to 73728 spheres, more than the 65536"),
+                  std::string::npos)
+            << what;
+    }
+}
+
 } // namespace
 } // namespace pf
