@@ -23,9 +23,25 @@ struct CloudBillboard {
     vec4 shade; // x the sphere's height within its cloud (0 bottom, 1 top), yzw which side of the cloud it is on (unit)
 };
 
+// The clouds' shadows on the ground (engine/field/cloud_shadow_pass.h): the
+// terrain drawn again over itself, multiplying the colour by the shade of
+// engine/scene/cloud_shadow.h's map. Set 0:
+#define CLOUD_SHADOW_BINDING_FRAME BINDING_FRAME_UNIFORMS // FrameUniforms
+#define CLOUD_SHADOW_BINDING_TERRAIN 1                    // TerrainVertex[] (field_layouts.h), uint texels
+#define CLOUD_SHADOW_BINDING_MAP 2                        // float transmittance per texel, R32_UINT texels
+
+// Of the ground's light, the share the sun gives and a cloud's shadow takes away.
+#define CLOUD_SHADOW_SUN_SHARE 0.7
+
+struct CloudShadowPush {
+    vec4 drift; // xz the wind's drift of the clouds since time 0 (m), y 0, w map height (texels)
+    vec4 grid;  // xy the map's origin (texel 0's centre, x and z, m), z texels per metre, w map width (texels)
+};
+
 #ifdef __cplusplus
 } // namespace gpu
 static_assert(sizeof(gpu::CloudBillboard) == CLOUD_BILLBOARD_TEXELS * 16);
+static_assert(sizeof(gpu::CloudShadowPush) == 32);
 #endif
 
 #endif

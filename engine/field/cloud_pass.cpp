@@ -38,7 +38,7 @@ CloudPass createCloudPass(GpuResources& owner, const std::vector<Cloud>& clouds,
     desc.samples = samples;
     desc.cullMode = VK_CULL_MODE_NONE;
     desc.depthWrite = false; // seen through: what lies behind a sphere is already drawn
-    desc.premultipliedAlpha = true;
+    desc.blend = GraphicsPipelineDesc::Blend::premultipliedAlpha;
     pass.pipeline = createGraphicsPipeline(owner, desc);
     return pass;
 }

@@ -1,6 +1,7 @@
 #include "engine/field/field_renderer.h"
 
 #include "engine/field/canopy.h"
+#include "engine/scene/cloud_billboards.h"
 #include "engine/vk/depth_pyramid.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/gpu_timer.h"
@@ -108,8 +109,11 @@ FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const 
     shadow_ = createShadowMap(resources_, settings_.shadowMapSize, shadowCacheMargin(settings_.shadowCache, texel));
     createDescriptors();
     createPipelines();
-    clouds_ = createCloudPass(resources_, content_.scene.clouds, uniforms_,
-                              VkSampleCountFlagBits(colourPassSamples(settings_.antialiasing)));
+    const auto samples = VkSampleCountFlagBits(colourPassSamples(settings_.antialiasing));
+    clouds_ = createCloudPass(resources_, content_.scene.clouds, uniforms_, samples);
+    cloudShadows_ =
+        createCloudShadowPass(resources_, content_.scene.clouds, sunDirection(environmentOf(content_.scene)), uniforms_,
+                              terrainVertices_, samples);
 }
 
 FieldRenderer::~FieldRenderer() {
@@ -343,6 +347,7 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     std::memcpy(uniforms_.mapped, &block, sizeof(block));
     setCloudView(clouds_, content_.scene, view.time, view.camera.position,
                  glm::normalize(view.camera.target - view.camera.position));
+    cloudDrift_ = meanWindVelocity(content_.scene.wind) * view.time;
     // The shaders look the shadow up 1.5 texels along the normal (sunMapPosition).
     const float shadowTexel = 2.0f * settings_.shadowRadius / float(shadow_.size);
     terrainRanges_ = visibleTerrainRanges(terrainChunks_, block.frame.viewProj, view.camera.position,
@@ -482,8 +487,10 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
             TimedScope scope(cmd, timer, name, ScopeStart::insideRendering);
     }
     {
-        // Last, over everything opaque and the sky, back to front.
+        // Last, over everything opaque and the sky: their shadows on the
+        // ground, then the clouds back to front.
         TimedScope scope(cmd, timer, "clouds", ScopeStart::insideRendering);
+        recordCloudShadowPass(cmd, cloudShadows_, terrainIndices_, terrainRanges_, cloudDrift_);
         recordCloudPass(cmd, clouds_);
     }
     endTargetPass(cmd, target, timer);

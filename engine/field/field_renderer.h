@@ -7,6 +7,7 @@
 #pragma once
 
 #include "engine/field/cloud_pass.h"
+#include "engine/field/cloud_shadow_pass.h"
 #include "engine/field/cluster_pass.h"
 #include "engine/field/cull_pass.h"
 #include "engine/field/impostor_atlas.h"
@@ -186,7 +187,9 @@ private:
     bool drawCanopy_ = false;       // setView: some leaf may be far this frame
     ClusterPass clusters_, shadowCacheClusters_, shadowFrameClusters_;
     FieldMotion motion_;
-    CloudPass clouds_; // spheres 0 without clouds
+    CloudPass clouds_;             // spheres 0 without clouds
+    CloudShadowPass cloudShadows_; // map.width 0 without a cloud casting a shadow
+    glm::vec3 cloudDrift_{0.0f};   // setView: the clouds' wind drift at the frame's time
 
     // The shadow cache (setView): what it holds, whether this frame draws it
     // again, where the frame's map starts in it, how often it was drawn.

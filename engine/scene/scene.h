@@ -194,6 +194,7 @@ struct Cloud {
     glm::vec3 position{0.0f};         // metres: the middle of the cloud's bottom at scene time 0
     float size = 200.0f;              // metres across the cloud's widest side
     std::optional<uint32_t> seed;     // empty: the L-system's own
+    bool shadow = false;              // casts a shadow on the ground (engine/scene/cloud_shadow.h)
     std::vector<CloudSphere> spheres; // derived as loadScene reads the cloud, in world metres at time 0
     bool operator==(const Cloud&) const = default;
 };

@@ -327,13 +327,14 @@ CameraPath readCamera(const JsonNode& node) {
 // The cloud's spheres are derived here, so a malformed or oversized cloud
 // L-system is reported at its "lsystem" value.
 Cloud readCloud(const JsonNode& node, const std::filesystem::path& sceneFolder) {
-    requireObject(node, {"lsystem", "position", "size", "seed"});
+    requireObject(node, {"lsystem", "position", "size", "seed", "shadow"});
     Cloud cloud;
     const JsonNode lsystem = requireMember(node, "lsystem", "the cloud's L-system file (data/clouds)");
     cloud.lsystem = existingFile(lsystem, sceneFolder);
     cloud.position = readVector<3>(requireMember(node, "position", "[x, y, z] in metres"), anyNumber());
     readField(node, "size", cloud.size, above(0.0));
     readField(node, "seed", cloud.seed, anyNumber());
+    readField(node, "shadow", cloud.shadow);
     try {
         cloud.spheres = cloudSpheres(cloud.lsystem, cloud.seed, cloud.size, cloud.position);
     } catch (const CloudError& error) {

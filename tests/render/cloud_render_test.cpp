@@ -4,9 +4,11 @@
 // clouds has it, bit for bit; a view away from it is the cloudless frame;
 // it drifts with the wind; the same frame twice is the same pixels; with
 // occlusion culling (the colour pass in two renderings) and with MSAA the
-// clouds are drawn over the whole frame as well.
+// clouds are drawn over the whole frame as well; a cloud's shadow darkens
+// the ground under it and moves on with the wind.
 #include "engine/field/field_renderer.h"
 #include "engine/scene/cloud_billboards.h"
+#include "engine/scene/cloud_spheres.h"
 #include "engine/vk/capture.h"
 #include "gpu_test.h"
 
@@ -153,6 +155,33 @@ TEST_F(CloudRenderTest, MultisampledFramesDrawTheCloud) {
     EXPECT_GT(d.changed, kSize.width * kSize.height / 40);
     EXPECT_EQ(d.changedOutside, 0u);
     EXPECT_GT(d.brighter, 20.0);
+}
+
+// The cloud moved so that the sun's ray through its middle (about 25 m up)
+// meets the ground at the origin; a camera 6 m above the origin looks
+// straight down into its shadow. Twenty seconds later the wind (3 m/s
+// east) has carried the shadow out of view: the frame is the one without.
+TEST_F(CloudRenderTest, AShadowDarkensTheGroundAndMovesOnWithTheWind) {
+    Scene casting = cloudScene();
+    const glm::vec3 sun = sunDirection(environmentOf(casting));
+    Cloud& cloud = casting.clouds[0];
+    ASSERT_TRUE(cloud.shadow);
+    cloud.spheres = cloudSpheres(cloud.lsystem, cloud.seed, 30.0f,
+                                 glm::vec3(sun.x, 0, sun.z) * (25.0f / sun.y) + glm::vec3(0, 10, 0));
+    Scene quiet = casting;
+    quiet.clouds[0].shadow = false;
+    Camera down;
+    down.position = {0.0f, 6.0f, 0.01f};
+    down.target = {0.0f, 0.0f, 0.0f};
+    down.fovYDegrees = 40.0f;
+
+    const RgbaImage shadowed = renderFrame(ctx, casting, down, 0.0f);
+    const RgbaImage lit = renderFrame(ctx, quiet, down, 0.0f);
+    const size_t centre = (size_t(kSize.height / 2) * kSize.width + kSize.width / 2) * 4;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_LT(shadowed.pixels[centre + c] + 15, lit.pixels[centre + c]) << "channel " << c << " is not in shadow";
+    EXPECT_TRUE(renderFrame(ctx, casting, down, 20.0f).pixels == renderFrame(ctx, quiet, down, 20.0f).pixels)
+        << "the shadow has moved on";
 }
 
 } // namespace

@@ -26,7 +26,7 @@ TEST(CloudScene, CloudsReadWithTheirSpheresRelativeToTheSceneFile) {
         "scene.json",
         sceneWithClouds("    { \"lsystem\": \"sky/puff.lsys\", \"position\": [5, 200, -30], \"size\": 40 },\n"
                         "    { \"lsystem\": \"" PLANTFIELD_DATA_DIR "/clouds/curl.lsys\", \"position\": "
-                        "[0, 150, 0], \"seed\": 2 }"));
+                        "[0, 150, 0], \"seed\": 2, \"shadow\": true }"));
     const Scene scene = loadScene(file);
     ASSERT_EQ(scene.clouds.size(), 2u);
     const Cloud& puff = scene.clouds[0];
@@ -34,11 +34,13 @@ TEST(CloudScene, CloudsReadWithTheirSpheresRelativeToTheSceneFile) {
     EXPECT_EQ(puff.position, glm::vec3(5, 200, -30));
     EXPECT_EQ(puff.size, 40.0f);
     EXPECT_EQ(puff.seed, std::nullopt);
+    EXPECT_FALSE(puff.shadow);
     EXPECT_EQ(puff.spheres, cloudSpheres(puff.lsystem, std::nullopt, 40.0f, puff.position));
     EXPECT_EQ(puff.spheres.size(), 2u);
     const Cloud& curl = scene.clouds[1];
     EXPECT_EQ(curl.size, Cloud{}.size);
     EXPECT_EQ(curl.seed, 2u);
+    EXPECT_TRUE(curl.shadow);
     EXPECT_EQ(curl.spheres, cloudSpheres(curl.lsystem, 2u, curl.size, curl.position));
     EXPECT_TRUE(loadScene(test::writeFile("none.json", sceneWithClouds(""))).clouds.empty());
 }

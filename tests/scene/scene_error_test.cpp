@@ -145,6 +145,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"cloud_size_zero",
                  PF_CLOUDS("{ \"lsystem\": " PF_CLOUD_FILE ", \"position\": [0, 99, 0], \"size\": 0 }"), "0 }",
                  "/clouds/0/size must be a number > 0 (got 0)"},
+        BadScene{"cloud_shadow_not_boolean",
+                 PF_CLOUDS("{ \"lsystem\": " PF_CLOUD_FILE ", \"position\": [0, 99, 0], \"shadow\": 1 }"), "1 }",
+                 "/clouds/0/shadow must be true or false"},
         BadScene{"cloud_without_spheres",
                  PF_CLOUDS("{ \"lsystem\": \"" PLANTFIELD_DATA_DIR
                            "/plants/fractal_tree.lsys\", \"position\": [0, 99, 0] }"),
