@@ -110,9 +110,10 @@ std::string plantsPerLodText(const FieldFrameStats& stats);
 // pass, its anti-aliasing included, and the scopes after it are nested
 // inside it: four groups of draws of the early phase (or of the one phase
 // without occlusion culling), the depth pyramid, the late cull with its
-// occlusion test, the late phase's draws, the clouds (cloud_pass.h), then
-// the anti-aliasing (target_pass.h). Without occlusion culling the three
-// late scopes are empty, without clouds the clouds scope.
+// occlusion test, the late phase's draws, the clouds' shadows and the
+// clouds (cloud_shadow_pass.h, cloud_pass.h), then the anti-aliasing
+// (target_pass.h). Without occlusion culling the three late scopes are
+// empty, without clouds the clouds scope.
 inline constexpr const char* kFieldPasses[] = {"physics",       "pose",      "clusters",   "cull",   "shadow",
                                                "colour",        "plants",    "impostors",  "canopy", "terrain_sky",
                                                "depth_pyramid", "occlusion", "late_draws", "clouds", kAntialiasScope};
