@@ -28,6 +28,19 @@ vec3 skyRadiance(vec3 dir) {
     return sky;
 }
 
+// Fog per vertex (rgb: the sky seen along the view ray, a: amount): it
+// changes slowly across a plant or a terrain cell, and the sky term is the
+// most expensive part of shading a far, small plant (or a cloud's sphere).
+vec4 vertexFog(vec3 worldPos) {
+    vec3 toPoint = worldPos - frame.cameraPosition.xyz;
+    float amount = 1.0 - exp(-length(toPoint) * frame.fog.x);
+    return vec4(skyRadiance(normalize(vec3(toPoint.x, max(toPoint.y, 0.0), toPoint.z))), amount);
+}
+
+vec3 applyVertexFog(vec3 color, vec4 fog) {
+    return mix(color, fog.rgb, fog.a);
+}
+
 // Lambert sun plus a hemispherical sky term that favours upward normals.
 vec3 shadeDiffuse(vec3 albedo, vec3 normal, float occlusion) {
     float sun = max(dot(normal, frame.sunDirection.xyz), 0.0);

@@ -148,19 +148,6 @@ bool fadeDiscards(vec2 fragCoord, uint packedFade) {
     return fadeIn ? threshold < 1.0 - coverage : threshold >= coverage;
 }
 
-// Fog per vertex (rgb: the sky seen along the view ray, a: amount): it
-// changes slowly across a plant or a terrain cell, and the sky term is the
-// most expensive part of shading a far, small plant.
-vec4 vertexFog(vec3 worldPos) {
-    vec3 toPoint = worldPos - frame.cameraPosition.xyz;
-    float amount = 1.0 - exp(-length(toPoint) * frame.fog.x);
-    return vec4(skyRadiance(normalize(vec3(toPoint.x, max(toPoint.y, 0.0), toPoint.z))), amount);
-}
-
-vec3 applyVertexFog(vec3 color, vec4 fog) {
-    return mix(color, fog.rgb, fog.a);
-}
-
 // The terrain's broadest octave of grass patches (12.5 m cells), per vertex:
 // the drawn terrain has at most a few metres between samples, over which the
 // octave is close to linear, so interpolating it loses nothing visible and

@@ -1,6 +1,7 @@
 #include "engine/field/field_renderer.h"
 
 #include "engine/field/canopy.h"
+#include "engine/scene/cloud_billboards.h"
 #include "engine/vk/depth_pyramid.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/gpu_timer.h"
@@ -127,6 +128,11 @@ FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const 
     shadow_ = createShadowMap(resources_, settings_.shadowMapSize, shadowCacheMargin(settings_.shadowCache, texel));
     createDescriptors();
     createPipelines();
+    const auto samples = VkSampleCountFlagBits(colourPassSamples(settings_.antialiasing));
+    clouds_ = createCloudPass(resources_, content_.scene.clouds, uniforms_, samples);
+    cloudShadows_ =
+        createCloudShadowPass(resources_, content_.scene.clouds, sunDirection(environmentOf(content_.scene)), uniforms_,
+                              terrainVertices_, samples);
 }
 
 FieldRenderer::~FieldRenderer() {
@@ -358,6 +364,9 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     block.field.wind = glm::vec4(wind.wind.x, wind.wind.y, wind.wind.z, view.time);
     block.field.windDetail = glm::vec4(wind.windDetail.x, wind.windDetail.y, wind.wind.w, settings_.impostorSway);
     std::memcpy(uniforms_.mapped, &block, sizeof(block));
+    setCloudView(clouds_, content_.scene, view.time, view.camera.position,
+                 glm::normalize(view.camera.target - view.camera.position));
+    cloudDrift_ = meanWindVelocity(content_.scene.wind) * view.time;
     // The shaders look the shadow up 1.5 texels along the normal (sunMapPosition).
     const float shadowTexel = 2.0f * settings_.shadowRadius / float(shadow_.size);
     terrainRanges_ = visibleTerrainRanges(terrainChunks_, block.frame.viewProj, view.camera.position,
@@ -495,6 +504,13 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
         // Every frame has the same scopes.
         for (const char* name : {"depth_pyramid", "occlusion", "late_draws"})
             TimedScope scope(cmd, timer, name, ScopeStart::insideRendering);
+    }
+    {
+        // Last, over everything opaque and the sky: their shadows on the
+        // ground, then the clouds back to front.
+        TimedScope scope(cmd, timer, "clouds", ScopeStart::insideRendering);
+        recordCloudShadowPass(cmd, cloudShadows_, terrainIndices_, terrainRanges_, cloudDrift_);
+        recordCloudPass(cmd, clouds_);
     }
     endTargetPass(cmd, target, timer);
 }

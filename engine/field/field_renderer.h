@@ -6,6 +6,8 @@
 // each) as the baseline plantbench compares against.
 #pragma once
 
+#include "engine/field/cloud_pass.h"
+#include "engine/field/cloud_shadow_pass.h"
 #include "engine/field/cluster_pass.h"
 #include "engine/field/cull_pass.h"
 #include "engine/field/impostor_atlas.h"
@@ -108,11 +110,13 @@ std::string plantsPerLodText(const FieldFrameStats& stats);
 // pass, its anti-aliasing included, and the scopes after it are nested
 // inside it: four groups of draws of the early phase (or of the one phase
 // without occlusion culling), the depth pyramid, the late cull with its
-// occlusion test, the late phase's draws, then the anti-aliasing
-// (target_pass.h). Without occlusion culling the three late scopes are empty.
-inline constexpr const char* kFieldPasses[] = {
-    "physics",   "pose",   "clusters",    "cull",          "shadow",    "colour",     "plants",
-    "impostors", "canopy", "terrain_sky", "depth_pyramid", "occlusion", "late_draws", kAntialiasScope};
+// occlusion test, the late phase's draws, the clouds' shadows and the
+// clouds (cloud_shadow_pass.h, cloud_pass.h), then the anti-aliasing
+// (target_pass.h). Without occlusion culling the three late scopes are
+// empty, without clouds the clouds scope.
+inline constexpr const char* kFieldPasses[] = {"physics",       "pose",      "clusters",   "cull",   "shadow",
+                                               "colour",        "plants",    "impostors",  "canopy", "terrain_sky",
+                                               "depth_pyramid", "occlusion", "late_draws", "clouds", kAntialiasScope};
 
 // True for the draw scopes recorded inside "colour" (those after it in
 // kFieldPasses): a frame's total adds only the others.
@@ -184,6 +188,9 @@ private:
     bool drawCanopy_ = false;       // setView: some leaf may be far this frame
     ClusterPass clusters_, shadowCacheClusters_, shadowFrameClusters_;
     FieldMotion motion_;
+    CloudPass clouds_;             // spheres 0 without clouds
+    CloudShadowPass cloudShadows_; // map.width 0 without a cloud casting a shadow
+    glm::vec3 cloudDrift_{0.0f};   // setView: the clouds' wind drift at the frame's time
 
     // The shadow cache (setView): what it holds, whether this frame draws it
     // again, where the frame's map starts in it, how often it was drawn.

@@ -1,9 +1,10 @@
 // A scene file (data/scenes/*.json, docs/SCENE_FORMAT.md) read into plain
-// structs: terrain, species, placement, sun, sky, fog, wind and camera path.
+// structs: terrain, species, placement, sun, sky, fog, wind, camera path and clouds.
 // Units are metres, degrees and seconds; y is up. Loading touches no GPU.
 #pragma once
 
 #include "engine/scene/camera.h"
+#include "engine/scene/cloud_spheres.h"
 #include "lsystem/landscape/terrain_bumps.h"
 
 #include <glm/glm.hpp>
@@ -201,6 +202,18 @@ struct CameraPath {
     bool operator==(const CameraPath&) const = default;
 };
 
+// A cloud in the sky: the spheres of an L-system (engine/scene/cloud_spheres.h,
+// docs/CLOUDS.md), drifting with the wind.
+struct Cloud {
+    std::filesystem::path lsystem;    // resolved against the scene file's folder; exists
+    glm::vec3 position{0.0f};         // metres: the middle of the cloud's bottom at scene time 0
+    float size = 200.0f;              // metres across the cloud's widest side
+    std::optional<uint32_t> seed;     // empty: the L-system's own
+    bool shadow = false;              // casts a shadow on the ground (engine/scene/cloud_shadow.h)
+    std::vector<CloudSphere> spheres; // derived as loadScene reads the cloud, in world metres at time 0
+    bool operator==(const Cloud&) const = default;
+};
+
 struct Scene {
     std::filesystem::path file; // the file it was loaded from
     std::string description;
@@ -213,6 +226,7 @@ struct Scene {
     Wind wind;
     PhysicsSettings physics;
     CameraPath camera;
+    std::vector<Cloud> clouds;
     bool operator==(const Scene&) const = default;
 };
 

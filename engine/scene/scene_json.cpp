@@ -367,6 +367,36 @@ CameraPath readCamera(const JsonNode& node) {
     return camera;
 }
 
+// The cloud's spheres are derived here, so a malformed or oversized cloud
+// L-system is reported at its "lsystem" value.
+Cloud readCloud(const JsonNode& node, const std::filesystem::path& sceneFolder) {
+    requireObject(node, {"lsystem", "position", "size", "seed", "shadow"});
+    Cloud cloud;
+    const JsonNode lsystem = requireMember(node, "lsystem", "the cloud's L-system file (data/clouds)");
+    cloud.lsystem = existingFile(lsystem, sceneFolder);
+    cloud.position = readVector<3>(requireMember(node, "position", "[x, y, z] in metres"), anyNumber());
+    readField(node, "size", cloud.size, above(0.0));
+    readField(node, "seed", cloud.seed, anyNumber());
+    readField(node, "shadow", cloud.shadow);
+    try {
+        cloud.spheres = cloudSpheres(cloud.lsystem, cloud.seed, cloud.size, cloud.position);
+    } catch (const CloudError& error) {
+        failAt(lsystem, std::string("makes no cloud: ") + error.what());
+    }
+    return cloud;
+}
+
+void readClouds(const JsonNode& node, const std::filesystem::path& sceneFolder, std::vector<Cloud>& clouds) {
+    size_t spheres = 0;
+    for (const JsonNode& element : arrayElements(node, "an array of clouds")) {
+        clouds.push_back(readCloud(element, sceneFolder));
+        spheres += clouds.back().spheres.size();
+        if (spheres > kMaxSceneCloudSpheres)
+            failAt(element, "brings the scene's clouds to " + std::to_string(spheres) + " spheres, more than the " +
+                                std::to_string(kMaxSceneCloudSpheres) + " a scene may have");
+    }
+}
+
 void requireUniqueNames(const std::vector<Species>& species, const std::vector<JsonNode>& elements) {
     for (size_t i = 0; i < species.size(); ++i)
         for (size_t j = 0; j < i; ++j)
@@ -379,7 +409,7 @@ Scene readScene(const std::filesystem::path& file) {
     const JsonSource source = readJsonFile(file, {"scene", size_t(256) << 20});
     const JsonNode root = rootNode(source);
     requireObject(root, {"description", "seed", "terrain", "species", "placement", "sun", "sky", "fog", "wind",
-                         "physics", "camera"});
+                         "physics", "camera", "clouds"});
     const std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
 
     Scene scene;
@@ -402,6 +432,7 @@ Scene readScene(const std::filesystem::path& file) {
     if (auto wind = member(root, "wind")) scene.wind = readWind(*wind);
     if (auto physics = member(root, "physics")) scene.physics = readPhysics(*physics);
     if (auto camera = member(root, "camera")) scene.camera = readCamera(*camera);
+    if (auto clouds = member(root, "clouds")) readClouds(*clouds, folder, scene.clouds);
     return scene;
 }
 

@@ -57,6 +57,15 @@ VkPipeline createGraphicsPipeline(GpuResources& owner, const GraphicsPipelineDes
     for (VkPipelineColorBlendAttachmentState& b : blendAttachments)
         b.colorWriteMask =
             VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    if (desc.blend != GraphicsPipelineDesc::Blend::none) {
+        VkPipelineColorBlendAttachmentState& b = blendAttachments[0];
+        b.blendEnable = VK_TRUE;
+        const bool multiply = desc.blend == GraphicsPipelineDesc::Blend::multiply;
+        b.srcColorBlendFactor = b.srcAlphaBlendFactor = multiply ? VK_BLEND_FACTOR_ZERO : VK_BLEND_FACTOR_ONE;
+        b.dstColorBlendFactor = b.dstAlphaBlendFactor =
+            multiply ? VK_BLEND_FACTOR_SRC_COLOR : VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     blend.attachmentCount = colorCount;
     blend.pAttachments = blendAttachments;

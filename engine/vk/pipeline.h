@@ -36,6 +36,11 @@ struct GraphicsPipelineDesc {
     VkFormat secondColorFormat = VK_FORMAT_UNDEFINED;
     // Cull mode set per draw with vkCmdSetCullMode; cullMode is then ignored.
     bool dynamicCullMode = false;
+    // How the first colour attachment is blended: replaced (opaque passes),
+    // as premultiplied alpha (colour + destination · (1 − alpha):
+    // transparent passes, the clouds) or multiplied (destination · colour:
+    // the clouds' shadows darkening the ground).
+    enum class Blend { none, premultipliedAlpha, multiply } blend = Blend::none;
 };
 
 // Pipelines are owned by `owner`.

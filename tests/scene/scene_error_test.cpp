@@ -12,6 +12,8 @@ namespace {
 #define PF_MODEL_SPECIES(keys) "{\n  \"species\": [\n    { \"name\": \"m\", " keys " }\n  ]\n}"
 #define PF_RIDGE "\"path\": \"" PLANTFIELD_DATA_DIR "/terrain/ridge.lsys\""
 #define PF_SCENE(extra) "{\n  \"species\": [" PF_SPECIES("") "]" extra "\n}"
+#define PF_CLOUD_FILE "\"" PLANTFIELD_DATA_DIR "/clouds/explosion.lsys\""
+#define PF_CLOUDS(cloud) PF_SCENE(",\n  \"clouds\": [\n    " cloud "\n  ]")
 
 struct BadScene {
     const char* name;
@@ -143,7 +145,32 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"defines_with_model", PF_MODEL_SPECIES(PF_OAK_MODEL ", \"defines\": { \"r\": 1 }"), "\"defines\"",
                  "/species/0/defines is an L-system setting; a species with a \"model\" has none"},
         BadScene{"steps_with_model", PF_MODEL_SPECIES(PF_OAK_MODEL ", \"steps\": 4"), "\"steps\"",
-                 "/species/0/steps is an L-system setting; a species with a \"model\" has none"}),
+                 "/species/0/steps is an L-system setting; a species with a \"model\" has none"},
+        // Clouds (tests/scene/cloud_scene_test.cpp loads good ones).
+        BadScene{"clouds_not_array", PF_SCENE(",\n  \"clouds\": { \"lsystem\": 1 }"), "{ \"lsystem\"",
+                 "/clouds must be an array of clouds"},
+        BadScene{"cloud_unknown_key",
+                 PF_CLOUDS("{ \"lsystem\": " PF_CLOUD_FILE ", \"position\": [0, 99, 0], \"colour\": 1 }"), "\"colour\"",
+                 "/clouds/0/colour is an unknown key (expected one of \"lsystem\", \"position\""},
+        BadScene{"cloud_without_lsystem", PF_CLOUDS("{ \"position\": [0, 99, 0] }"), "{ \"position\"",
+                 "needs \"lsystem\": the cloud's L-system file"},
+        BadScene{"cloud_without_position", PF_CLOUDS("{ \"lsystem\": " PF_CLOUD_FILE " }"), "{ \"lsystem\"",
+                 "needs \"position\": [x, y, z] in metres"},
+        BadScene{"missing_cloud_file", PF_CLOUDS("{ \"lsystem\": \"no_such_cloud.lsys\", \"position\": [0, 99, 0] }"),
+                 "\"no_such_cloud.lsys\"", "/clouds/0/lsystem names a file that does not exist"},
+        BadScene{"cloud_position_of_two", PF_CLOUDS("{ \"lsystem\": " PF_CLOUD_FILE ", \"position\": [0, 99] }"),
+                 "[0, 99]", "/clouds/0/position must be"},
+        BadScene{"cloud_size_zero",
+                 PF_CLOUDS("{ \"lsystem\": " PF_CLOUD_FILE ", \"position\": [0, 99, 0], \"size\": 0 }"), "0 }",
+                 "/clouds/0/size must be a number > 0 (got 0)"},
+        BadScene{"cloud_shadow_not_boolean",
+                 PF_CLOUDS("{ \"lsystem\": " PF_CLOUD_FILE ", \"position\": [0, 99, 0], \"shadow\": 1 }"), "1 }",
+                 "/clouds/0/shadow must be true or false"},
+        BadScene{"cloud_without_spheres",
+                 PF_CLOUDS("{ \"lsystem\": \"" PLANTFIELD_DATA_DIR
+                           "/plants/fractal_tree.lsys\", \"position\": [0, 99, 0] }"),
+                 "\"" PLANTFIELD_DATA_DIR "/plants/fractal_tree.lsys\"",
+                 "/clouds/0/lsystem makes no cloud: draws no sphere"}),
     [](const testing::TestParamInfo<BadScene>& info) { return std::string(info.param.name); });
 
 TEST(SceneErrors, AMissingFileIsASceneError) {

@@ -73,6 +73,7 @@ constexpr const char* kFullScene = R"({
   "sky": { "zenith": [0.1, 0.2, 0.5], "horizon": [0.7, 0.8, 0.9] },
   "fog": { "density": 0.01 },
   "wind": { "speed": 7, "direction": 270, "gust_strength": 0.9, "gust_speed": 8, "turbulence": 0.5 },
+  "clouds": [ { "lsystem": "clouds/puff.lsys", "position": [0, 150, -300], "size": 120, "seed": 4 } ],
   "camera": {
     "fov": 55, "near": 0.5, "far": 900,
     "keyframes": [
@@ -120,14 +121,19 @@ Scene fullSceneExpected(const std::filesystem::path& file) {
     s.fog = {0.01f};
     s.wind = {7, 270, 0.9f, 8, 0.5f};
     s.camera = {{{0, {0, 2, 10}, {0, 1, 0}, 40.0f}, {4.5, {10, 3, 0}, {0, 1, 0}, std::nullopt}}, 55, 0.5f, 900};
+    Cloud puff{.lsystem = file.parent_path() / "clouds/puff.lsys", .position = {0, 150, -300}, .size = 120, .seed = 4};
+    puff.spheres = cloudSpheres(puff.lsystem, puff.seed, puff.size, puff.position);
+    s.clouds = {puff};
     return s;
 }
 
-// kFullScene in the test's folder with the files it names (an L-system
-// without mountain modules serves the terrain too: it makes no bumps).
+// kFullScene in the test's folder with the plant, terrain and cloud files it
+// names (an L-system without mountain modules serves the terrain too: it
+// makes no bumps).
 std::filesystem::path writeFullScene() {
     test::writeFile("plants/tree.lsys", "Axiom: F\n");
     test::writeFile("terrain/hills.lsys", "Axiom: F\n");
+    test::writeFile("clouds/puff.lsys", "Axiom: @O(2) f(1) @O(1.5)\n");
     return test::writeFile("full.json", kFullScene);
 }
 
@@ -142,6 +148,7 @@ TEST(SceneLoad, FullySpecifiedSceneReadsBackEveryValue) {
     EXPECT_NE(expected.fog, defaults.fog);
     EXPECT_NE(expected.wind, defaults.wind);
     EXPECT_NE(expected.camera, defaults.camera);
+    EXPECT_NE(expected.clouds, defaults.clouds);
     EXPECT_EQ(loadScene(file), expected);
 }
 
