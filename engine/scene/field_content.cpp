@@ -136,7 +136,7 @@ PlacedField placeField(const Scene& scene, std::optional<PlantCount> count, cons
 }
 
 FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> count, const ModelProgress& progress,
-                               const lsys::MemoryBudget& memory) {
+                               const lsys::MemoryBudget& memory, ModelAssets assets) {
     PlacedField field = placeField(scene, count, memory);
     FieldContent content;
     content.scene = scene;
@@ -145,7 +145,7 @@ FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> cou
     content.plants = std::move(field.plants);
     sortPlantsByCluster(content.plants, clusterRoot(content.terrain));
     content.note = std::move(field.note);
-    content.models = buildPlantModels(scene, progress, memory);
+    content.models = buildPlantModels(scene, progress, memory, assets);
     return content;
 }
 

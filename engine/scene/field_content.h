@@ -64,9 +64,11 @@ struct FieldContent {
     std::string note; // PlacedField::note
 };
 
-// Terrain, plants (exactly `count` generated ones when given) and every species' meshes.
+// Terrain, plants (exactly `count` generated ones when given) and every
+// species' meshes, with the models' plants when `assets` keeps them.
 FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> count = std::nullopt,
                                const ModelProgress& progress = {},
-                               const lsys::MemoryBudget& memory = lsys::machineMemoryBudget());
+                               const lsys::MemoryBudget& memory = lsys::machineMemoryBudget(),
+                               ModelAssets assets = ModelAssets::Drop);
 
 } // namespace pf

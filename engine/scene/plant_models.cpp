@@ -175,7 +175,7 @@ void fillBounds(gpu::PlantModel& model, const DrawnLods& lods) {
 
 PlantModelInfo buildModel(PlantModelPool& pool, const Scene& scene, uint32_t speciesIndex, uint32_t variant,
                           const PlantSource& source, const lsys::SurfaceLibrary& surfaces,
-                          const lsys::MemoryBudget& memory) {
+                          const lsys::MemoryBudget& memory, ModelAssets assets) {
     const Species& species = scene.species[speciesIndex];
     const uint64_t seed = uint64_t(speciesSeed(scene, speciesIndex)) + variant;
     lsys::PlantAsset asset = speciesPlant(species, source, surfaces, seed, memory);
@@ -199,12 +199,14 @@ PlantModelInfo buildModel(PlantModelPool& pool, const Scene& scene, uint32_t spe
     fillBounds(info.gpu, lods);
     info.gpu.lod = glm::vec4(species.lod.reducedBelowPixels, species.lod.impostorBelowPixels, 0.1f, 0.25f);
     info.gpu.boxMax.w = species.lod.hiddenBelowPixels;
+    if (assets == ModelAssets::Keep) pool.assets.push_back({std::move(asset), scale});
     return info;
 }
 
 } // namespace
 
-PlantModelPool buildPlantModels(const Scene& scene, const ModelProgress& progress, const lsys::MemoryBudget& memory) {
+PlantModelPool buildPlantModels(const Scene& scene, const ModelProgress& progress, const lsys::MemoryBudget& memory,
+                                ModelAssets assets) {
     size_t total = 0;
     for (const Species& species : scene.species) total += species.variants;
     PlantModelPool pool;
@@ -213,7 +215,7 @@ PlantModelPool buildPlantModels(const Scene& scene, const ModelProgress& progres
         const lsys::SurfaceLibrary surfaces(lsys::meshDirectoriesFor(plantFile(scene.species[s])));
         pool.firstModel.push_back(uint32_t(pool.models.size()));
         for (uint32_t variant = 0; variant < scene.species[s].variants; ++variant) {
-            pool.models.push_back(buildModel(pool, scene, s, variant, source, surfaces, memory));
+            pool.models.push_back(buildModel(pool, scene, s, variant, source, surfaces, memory, assets));
             if (progress) progress(pool.models.size(), total, pool.models.back().name);
         }
     }

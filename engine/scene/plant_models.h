@@ -7,6 +7,7 @@
 
 #include "engine/scene/scene.h"
 #include "lsystem/memory_budget.h"
+#include "lsystem/plant_asset.h"
 #include "shaders/field_layouts.h"
 #include "shaders/physics_layouts.h"
 
@@ -47,13 +48,25 @@ struct PlantModelInfo {
     uint32_t triangles(uint32_t lod) const { return (meshes[lod][0].indexCount + meshes[lod][1].indexCount) / 3; }
 };
 
+// A model's plant before it was baked: what the whole-field export bakes
+// again with its own options (tools/plantfield/field_export.h).
+struct PlantModelAsset {
+    lsys::PlantAsset asset; // the species' material overrides applied
+    float scale = 1.0f;     // what scaled the model's meshes to the species height
+};
+
+// Whether building the pool keeps each model's PlantModelAsset: the renderer
+// needs only the meshes, so it does not hold the plants too.
+enum class ModelAssets : uint8_t { Drop, Keep };
+
 struct PlantModelPool {
     std::vector<gpu::FieldVertex> vertices;
     std::vector<uint32_t> indices;
     // Every model's skeleton (buildJointParams at the model's height scale), model after model.
     std::vector<gpu::JointParams> joints;
-    std::vector<PlantModelInfo> models; // species by species, variants in order
-    std::vector<uint32_t> firstModel;   // per species: index of its variant 0 in models
+    std::vector<PlantModelInfo> models;  // species by species, variants in order
+    std::vector<uint32_t> firstModel;    // per species: index of its variant 0 in models
+    std::vector<PlantModelAsset> assets; // per model with ModelAssets::Keep, else empty
     // The species' L-system warnings (a `//` that cuts a cpfg production, a
     // view-file label plantfield ignores …), each line naming the species and
     // file:line:column; empty when there are none. The tools print them.
@@ -65,12 +78,13 @@ struct PlantModelPool {
 using ModelProgress = std::function<void(size_t, size_t, const std::string&)>;
 
 // Derives and bakes every variant of every species, each derivation and
-// turtle within `memory`. Same scene ⇒ same pool, bit for bit. Throws
-// SceneError naming the species and its L-system or model file (with line
-// and column) when a file does not parse or derive, and
-// lsys::MemoryBudgetError / lsys::ModuleBudgetError naming the species when
-// it grows past a budget.
+// turtle within `memory`, keeping the plants as `assets` says. Same scene ⇒
+// same pool, bit for bit. Throws SceneError naming the species and its
+// L-system or model file (with line and column) when a file does not parse
+// or derive, and lsys::MemoryBudgetError / lsys::ModuleBudgetError naming
+// the species when it grows past a budget.
 PlantModelPool buildPlantModels(const Scene& scene, const ModelProgress& progress = {},
-                                const lsys::MemoryBudget& memory = lsys::machineMemoryBudget());
+                                const lsys::MemoryBudget& memory = lsys::machineMemoryBudget(),
+                                ModelAssets assets = ModelAssets::Drop);
 
 } // namespace pf

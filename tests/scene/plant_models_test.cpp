@@ -3,6 +3,8 @@
 // deterministic, and broken L-systems fail with their position.
 #include "engine/scene/plant_models.h"
 
+#include "lsystem/drawn_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -218,6 +220,35 @@ TEST(PlantModels, SameSceneGivesTheSamePoolBitForBit) {
     for (size_t m = 0; m < first.models.size(); ++m) {
         EXPECT_EQ(first.models[m].meshes, second.models[m].meshes);
         EXPECT_EQ(std::memcmp(&first.models[m].gpu, &second.models[m].gpu, sizeof(gpu::PlantModel)), 0);
+    }
+}
+
+// The renderer's pool keeps no plants; a pool that keeps them is otherwise
+// the same, and each kept plant, baked again and scaled by its kept scale,
+// is its model's meshes bit for bit, colours with the species' overrides.
+TEST(PlantModels, KeptPlantsBakeAgainToTheirModels) {
+    const pf::PlantModelPool& dropped = defaultPool();
+    EXPECT_TRUE(dropped.assets.empty());
+    const pf::PlantModelPool kept =
+        pf::buildPlantModels(defaultScene(), {}, lsys::machineMemoryBudget(), pf::ModelAssets::Keep);
+    ASSERT_EQ(kept.assets.size(), kept.models.size());
+    ASSERT_EQ(kept.indices, dropped.indices);
+    ASSERT_EQ(kept.vertices.size(), dropped.vertices.size());
+    EXPECT_EQ(
+        std::memcmp(kept.vertices.data(), dropped.vertices.data(), kept.vertices.size() * sizeof(gpu::FieldVertex)), 0);
+    for (size_t m = 0; m < kept.models.size(); ++m) {
+        const pf::PlantModelAsset& plant = kept.assets[m];
+        const auto lods = lsys::drawnLods(plant.asset);
+        forEachMesh(kept.models[m], [&](uint32_t lod, uint32_t drawClass, const pf::MeshRange& range) {
+            const lsys::DrawnMesh& mesh = lods[lod][drawClass];
+            ASSERT_EQ(range.indexCount, mesh.indices.size()) << kept.models[m].name;
+            for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+                const gpu::FieldVertex& v = kept.vertices[range.vertexOffset + i];
+                const lsys::DrawnVertex& d = mesh.vertices[i];
+                ASSERT_EQ(glm::vec3(v.position), d.position * plant.scale) << kept.models[m].name << " vertex " << i;
+                ASSERT_EQ(glm::vec3(v.albedo), plant.asset.materials.at(d.material).albedo);
+            }
+        });
     }
 }
 

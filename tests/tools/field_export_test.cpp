@@ -48,7 +48,8 @@ fs::path scratchDir(const std::string& name) {
 }
 
 const FieldContent& smallField() {
-    static const FieldContent content = buildFieldContent(loadScene(kScene));
+    static const FieldContent content =
+        buildFieldContent(loadScene(kScene), std::nullopt, {}, lsys::machineMemoryBudget(), ModelAssets::Keep);
     return content;
 }
 
@@ -281,11 +282,21 @@ TEST(FieldExport, DrawnPlantExportIsTheFieldsLod0) {
     for (size_t i = 0; i < drawn.size(); ++i) ASSERT_EQ(exported[i], drawn[i]) << "vertex " << i;
 }
 
+// A field of the leafy bush (leaf cards) scaled to 2 m, its plants kept for the export.
+const FieldContent& leafyField() {
+    static const FieldContent content = [] {
+        Scene scene = sceneDrawing("leafy_bush.lsys");
+        scene.species[0].height = 2.0f;
+        return buildFieldContent(scene, std::nullopt, {}, lsys::machineMemoryBudget(), ModelAssets::Keep);
+    }();
+    return content;
+}
+
 // The whole-field export writes a leaf card as the leaf outline the shader
 // cuts from it: each of the model's LOD0 cards (four vertices of kind leaf)
 // becomes leafOutline()'s vertices, on the card's plane within the card.
 TEST(FieldExport, LeafCardsAreLeafOutlines) {
-    const FieldContent field = buildFieldContent(sceneDrawing("leafy_bush.lsys"));
+    const FieldContent& field = leafyField();
     const PlantModelPool& pool = field.models;
     const PlantModelInfo& model = pool.models.at(pool.modelOf(0, 0));
     const MeshRange& foliage = model.meshes[LOD_FULL][DRAW_FOLIAGE];
@@ -319,6 +330,66 @@ TEST(FieldExport, LeafCardsAreLeafOutlines) {
         }
     }
     EXPECT_EQ(leafVertices, cardVertices / 4 * lsys::leafOutline().uvs.size());
+}
+
+// Every model is its plant baked as `lsys export` bakes one (leaf cards as
+// their outlines, bark and blades as the field's LOD0: the test above) and
+// scaled as the model: the same positions bit for bit, however the plant's
+// triangles look. Sorted, as the field's file writes a vertex where a
+// triangle first uses it.
+TEST(FieldExport, EveryModelIsItsPlantAsLsysExportsIt) {
+    for (const FieldContent* field : {&smallField(), &leafyField()}) {
+        const fs::path dir = scratchDir("as_lsys");
+        exportField(*field, dir / "field.glb");
+        const tinygltf::Model gltf = load(dir / "field.glb");
+        const PlantModelPool& pool = field->models;
+        ASSERT_EQ(pool.assets.size(), pool.models.size());
+        for (size_t m = 0; m < pool.models.size(); ++m) {
+            const PlantModelAsset& plant = pool.assets[m];
+            lsys::exportPlant(plant.asset, dir / "plant.glb");
+            std::vector<glm::vec3> expected = allPositions(load(dir / "plant.glb"));
+            for (glm::vec3& p : expected) p *= plant.scale;
+            std::vector<glm::vec3> exported;
+            for (const tinygltf::Mesh& mesh : gltf.meshes) {
+                if (mesh.name != pool.models[m].name) continue;
+                for (const tinygltf::Primitive& primitive : mesh.primitives) {
+                    const std::vector<float> p = floatsOf(gltf, primitive.attributes.at("POSITION"), 3);
+                    for (size_t i = 0; i < p.size(); i += 3) exported.emplace_back(p[i], p[i + 1], p[i + 2]);
+                }
+            }
+            std::sort(expected.begin(), expected.end(), lexicographic);
+            std::sort(exported.begin(), exported.end(), lexicographic);
+            ASSERT_GT(exported.size(), 0u) << pool.models[m].name;
+            ASSERT_EQ(exported.size(), expected.size()) << pool.models[m].name;
+            for (size_t i = 0; i < exported.size(); ++i)
+                ASSERT_EQ(exported[i], expected[i]) << pool.models[m].name << " vertex " << i;
+        }
+    }
+}
+
+// The memory check counts at least what is written: a budget of the file's
+// own size is refused, before anything is written.
+TEST(FieldExport, MemoryCheckCountsAtLeastTheFile) {
+    const fs::path dir = scratchDir("memory");
+    exportField(leafyField(), dir / "field.glb");
+    FieldExportOptions options;
+    options.memory.limitBytes = fs::file_size(dir / "field.glb");
+    EXPECT_THROW(exportField(leafyField(), dir / "again.glb", options), lsys::MemoryBudgetError);
+    EXPECT_FALSE(fs::exists(dir / "again.glb"));
+}
+
+// Exporting needs the models' plants: a field built for rendering alone is refused by name.
+TEST(FieldExport, RefusesAFieldBuiltWithoutItsPlants) {
+    const fs::path dir = scratchDir("no_plants");
+    const FieldContent field = buildFieldContent(sceneDrawing("leafy_bush.lsys"));
+    EXPECT_TRUE(field.models.assets.empty());
+    try {
+        exportField(field, dir / "field.glb");
+        ADD_FAILURE() << "exported without the plants";
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what()).find("ModelAssets::Keep"), std::string::npos) << error.what();
+    }
+    EXPECT_TRUE(fs::is_empty(dir));
 }
 
 TEST(FieldExport, RefusesUnknownExtensionsWithoutWriting) {

@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -18,7 +19,6 @@
 #include <map>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace pf {
@@ -29,12 +29,13 @@ using lsys::export_detail::lowercaseExtension;
 
 constexpr const char* kInstancing = "EXT_mesh_gpu_instancing";
 
-// One material of the export: a vertex's albedo and surface kind (FieldVertex::albedo).
+// One material of the export: an albedo and a surface kind, as the renderer
+// packs them into FieldVertex::albedo.
 using MaterialKey = std::array<float, 4>;
 
-const char* surfaceName(float kind) {
-    if (kind == SURFACE_LEAF) return "leaf";
-    if (kind == SURFACE_BLADE) return "blade";
+const char* surfaceName(lsys::SurfaceKind kind) {
+    if (kind == lsys::SurfaceKind::LeafCard) return "leaf";
+    if (kind == lsys::SurfaceKind::Blade) return "blade";
     return "bark";
 }
 
@@ -43,14 +44,14 @@ struct Materials {
     std::vector<lsys::Material> list;
     std::map<MaterialKey, uint32_t> index;
 
-    uint32_t of(const gpu::FieldVertex& v) {
-        const MaterialKey key{v.albedo.x, v.albedo.y, v.albedo.z, v.albedo.w};
+    uint32_t of(glm::vec3 albedo, lsys::SurfaceKind kind) {
+        const MaterialKey key{albedo.x, albedo.y, albedo.z, float(kind)};
         const auto [it, added] = index.try_emplace(key, uint32_t(list.size()));
         if (added) {
             lsys::Material& m = list.emplace_back();
-            m.name = std::string(surfaceName(v.albedo.w)) + " " + std::to_string(list.size() - 1);
-            m.albedo = {v.albedo.x, v.albedo.y, v.albedo.z};
-            m.twoSided = v.albedo.w != SURFACE_BARK; // leaf cards and blades are seen from both sides
+            m.name = std::string(surfaceName(kind)) + " " + std::to_string(list.size() - 1);
+            m.albedo = albedo;
+            m.twoSided = kind != lsys::SurfaceKind::Bark; // leaves and blades are seen from both sides
         }
         return it->second;
     }
@@ -61,51 +62,38 @@ glm::vec3 unitOr(glm::vec3 n, glm::vec3 fallback) {
     return length > 0.0f && std::isfinite(length) ? n / length : fallback;
 }
 
-glm::vec3 positionOf(const gpu::FieldVertex& v) { return glm::vec3(v.position); }
+// What the export bakes a model with: the renderer's trunk ring sides, so
+// bark matches the field's LOD0, and leaf cards as the leaf outline the
+// renderer's shader cuts from them (the file has no texture to cut with),
+// as `lsys export` bakes a plant.
+lsys::DrawnOptions modelDrawnOptions() { return lsys::exportedDrawnOptions(lsys::DrawnOptions{}.trunkSides); }
 
-// Whether the triangle is the first of a leaf card's two: a card is the quad
-// a b c d (uv (0,0) (1,0) (1,1) (0,1), in that vertex order) drawn as a b c
-// and a c d (lsystem/drawn_mesh.cpp bakeLeafCard).
-bool isLeafCardStart(const PlantModelPool& pool, const MeshRange& range, const uint32_t* corners) {
-    const gpu::FieldVertex& a = pool.vertices[range.vertexOffset + corners[0]];
-    const gpu::FieldVertex& b = pool.vertices[range.vertexOffset + corners[1]];
-    return a.albedo.w == SURFACE_LEAF && a.position.w == 0.0f && a.normal.w == 0.0f && b.position.w == 1.0f &&
-           b.normal.w == 0.0f;
-}
-
-// A model's LOD0 meshes (bark and foliage) split by material: (material,
-// mesh) pairs. Leaf cards become the mesh of the leaf outline the renderer's
-// shader cuts from them (the file has no texture to cut with).
-std::vector<std::pair<uint32_t, lsys::TriangleMesh>> modelMeshes(const PlantModelPool& pool,
-                                                                 const PlantModelInfo& model, Materials& materials) {
+// A model's LOD0 baked from its plant with modelDrawnOptions, scaled as the
+// field's model is, split by material: (material, mesh) pairs. A vertex is
+// written when a triangle first uses it, in the triangles' order.
+std::vector<std::pair<uint32_t, lsys::TriangleMesh>> modelMeshes(const PlantModelAsset& plant, Materials& materials) {
+    const lsys::PlantAsset& asset = plant.asset;
+    const lsys::DrawnClasses drawn =
+        lsys::drawnLod(asset, lsys::DrawnLod::Full, lsys::drawnScaleOf(asset), modelDrawnOptions());
+    constexpr uint32_t kUnwritten = ~0u;
     std::map<uint32_t, lsys::TriangleMesh> parts;
-    std::map<uint32_t, std::unordered_map<uint32_t, uint32_t>> remaps; // per material: pool vertex → mesh vertex
-    for (const MeshRange& range : model.meshes[LOD_FULL]) {
-        for (uint32_t t = 0; t + 2 < range.indexCount; t += 3) {
-            const uint32_t* corners = &pool.indices[range.firstIndex + t];
-            const gpu::FieldVertex& first = pool.vertices[range.vertexOffset + corners[0]];
-            const uint32_t material = materials.of(first);
-            lsys::TriangleMesh& mesh = parts[material];
-            if (first.albedo.w == SURFACE_LEAF) {
-                if (isLeafCardStart(pool, range, corners)) {
-                    const glm::vec3 a = positionOf(first);
-                    const glm::vec3 b = positionOf(pool.vertices[range.vertexOffset + corners[1]]);
-                    const glm::vec3 d = positionOf(pool.vertices[range.vertexOffset + corners[2] + 1]); // after c
-                    lsys::appendLeafOutline(mesh, a, b - a, d - a, unitOr(glm::vec3(first.normal), {0, 1, 0}));
+    for (const lsys::DrawnMesh& mesh : drawn) {
+        std::map<uint32_t, std::vector<uint32_t>> remaps; // per material: drawn vertex → mesh vertex
+        for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            const lsys::DrawnVertex& first = mesh.vertices[mesh.indices[t]];
+            const uint32_t material = materials.of(asset.materials.at(first.material).albedo, first.kind);
+            lsys::TriangleMesh& part = parts[material];
+            std::vector<uint32_t>& remap = remaps.try_emplace(material, mesh.vertices.size(), kUnwritten).first->second;
+            for (size_t c = 0; c < 3; ++c) {
+                const uint32_t corner = mesh.indices[t + c];
+                if (remap[corner] == kUnwritten) {
+                    remap[corner] = part.vertexCount();
+                    const lsys::DrawnVertex& v = mesh.vertices[corner];
+                    part.positions.push_back(v.position * plant.scale);
+                    part.normals.push_back(unitOr(v.normal, {0.0f, 1.0f, 0.0f}));
+                    part.uvs.push_back(v.uv);
                 }
-                continue;
-            }
-            std::unordered_map<uint32_t, uint32_t>& remap = remaps[material];
-            for (int c = 0; c < 3; ++c) {
-                const uint32_t vertex = range.vertexOffset + corners[c];
-                const auto [it, added] = remap.try_emplace(vertex, mesh.vertexCount());
-                if (added) {
-                    const gpu::FieldVertex& v = pool.vertices[vertex];
-                    mesh.positions.push_back(positionOf(v));
-                    mesh.normals.push_back(unitOr({v.normal.x, v.normal.y, v.normal.z}, {0.0f, 1.0f, 0.0f}));
-                    mesh.uvs.emplace_back(v.position.w, v.normal.w);
-                }
-                mesh.indices.push_back(it->second);
+                part.indices.push_back(remap[corner]);
             }
         }
     }
@@ -178,26 +166,41 @@ std::string jsonString(const std::string& text) {
     return out + '"';
 }
 
+// Bytes of a model's LOD0 as modelMeshes holds it: every index of the
+// field's LOD0 may bring a vertex (a card's six over-count its quad), each
+// leaf card its outline (every drawable surface is a card at LOD0). The
+// written meshes hold a vertex in 32 bytes; the bake, one model at a time,
+// in a DrawnVertex with its remap entry.
+struct ModelBytes {
+    uint64_t written = 0, baked = 0;
+};
+ModelBytes modelBytes(const PlantModelInfo& model, const PlantModelAsset& plant) {
+    uint64_t indices = 0, cards = 0;
+    for (const MeshRange& range : model.meshes[LOD_FULL]) indices = lsys::bytesPlus(indices, range.indexCount);
+    for (const lsys::Primitive& p : plant.asset.primitives)
+        cards += p.kind == lsys::PrimitiveKind::Surface && lsys::isDrawable(p);
+    const lsys::MeshSize outline = lsys::leafOutlineSize();
+    const uint64_t vertices = lsys::bytesPlus(indices, lsys::bytesTimes(cards, outline.vertices));
+    const uint64_t indexBytes = lsys::bytesTimes(lsys::bytesPlus(indices, lsys::bytesTimes(cards, outline.indices)), 4);
+    return {lsys::bytesPlus(lsys::bytesTimes(vertices, 32), indexBytes),
+            lsys::bytesPlus(lsys::bytesTimes(vertices, sizeof(lsys::DrawnVertex) + 4), indexBytes)};
+}
+
 // What exportField holds at once, from counts known before any mesh is built:
-// every LOD0 index may bring a vertex (32 bytes written, more while built; a
-// leaf card's six bring its outline, below),
-// the terrain's vertices and indices, the instance attributes (40 bytes a
-// plant) or the plain nodes; all of it about three times over (the meshes,
-// the glTF buffer and its copy in the file's encoding, base64 for .gltf).
+// every model's meshes (modelBytes) and the largest bake, the terrain's
+// vertices and indices, the instance attributes (40 bytes a plant) or the
+// plain nodes; all of it about three times over (the meshes, the glTF buffer
+// and its copy in the file's encoding, base64 for .gltf).
 uint64_t exportBytes(const FieldContent& content, const FieldExportOptions& options, bool binary) {
     const PlantModelPool& pool = content.models;
-    uint64_t indices = 0, leafCards = 0;
-    for (const PlantModelInfo& model : pool.models)
-        for (const MeshRange& range : model.meshes[LOD_FULL]) {
-            indices = lsys::bytesPlus(indices, range.indexCount);
-            for (uint32_t t = 0; t + 2 < range.indexCount; t += 3)
-                leafCards += isLeafCardStart(pool, range, &pool.indices[range.firstIndex + t]);
-        }
-    const lsys::LeafOutline& outline = lsys::leafOutline();
-    const uint64_t outlineBytes = outline.uvs.size() * (32 + 64) + outline.indices.size() * 4;
+    uint64_t data = 0, largestBake = 0;
+    for (size_t m = 0; m < pool.models.size(); ++m) {
+        const ModelBytes bytes = modelBytes(pool.models[m], pool.assets[m]);
+        data = lsys::bytesPlus(data, bytes.written);
+        largestBake = std::max(largestBake, bytes.baked);
+    }
     const uint64_t resolution = content.terrain.resolution;
-    uint64_t data = lsys::bytesTimes(indices, 4 + 64);
-    data = lsys::bytesPlus(data, lsys::bytesTimes(leafCards, outlineBytes));
+    data = lsys::bytesPlus(data, largestBake);
     data = lsys::bytesPlus(data, lsys::bytesTimes(resolution * resolution, 32 + 24));
     data = lsys::bytesPlus(data, lsys::bytesTimes(resolution * resolution, 6 * 4));
     data = lsys::bytesPlus(data, lsys::bytesTimes(content.plants.size(), 40));
@@ -216,14 +219,16 @@ FieldExportSummary exportField(const FieldContent& content, const std::filesyste
         const std::string extension = lowercaseExtension(path);
         if (extension != ".glb" && extension != ".gltf")
             throw std::runtime_error("unknown extension '" + path.extension().string() + "' (expected .glb or .gltf)");
+        const PlantModelPool& pool = content.models;
+        if (pool.assets.size() != pool.models.size())
+            throw std::invalid_argument("the field was built without its models' plants (ModelAssets::Keep)");
         lsys::need(options.memory, "export", exportBytes(content, options, extension == ".glb"));
         lsys::OutputFile file(path); // checks the path before the work
 
-        const PlantModelPool& pool = content.models;
         Materials materials;
         materials.list.push_back({"terrain", content.scene.terrain.albedo, false});
         std::vector<std::vector<std::pair<uint32_t, lsys::TriangleMesh>>> parts;
-        for (const PlantModelInfo& model : pool.models) parts.push_back(modelMeshes(pool, model, materials));
+        for (const PlantModelAsset& plant : pool.assets) parts.push_back(modelMeshes(plant, materials));
 
         GltfBuilder builder(materials.list);
         tinygltf::Model& gltf = builder.model;

@@ -33,13 +33,14 @@ struct FieldExportSummary {
 };
 
 // Writes the field: the terrain as one mesh, one mesh per plant model (its
-// LOD0 geometry, as the renderer draws it up close, one primitive per
-// material), materials (one per distinct albedo and surface kind, metallic 0,
-// roughness 1, leaves and blades double-sided) and the plants, as `options`
-// says. The extension (.glb or .gltf, any case) chooses the format. Written
-// to a temporary file and renamed into place (lsystem/output_file.h), so a
+// LOD0 geometry baked again from the model's plant, scaled as the model: the
+// renderer's up-close bark and blades, bit for bit, with leaf cards as the
+// leaf outlines `lsys export` writes; one primitive per material), materials (one per distinct albedo and surface kind,
+// metallic 0, roughness 1, leaves and blades double-sided) and the plants, as `options` says. The extension (.glb or
+// .gltf, any case) chooses the format. Written to a temporary file and renamed into place (lsystem/output_file.h), so a
 // failure leaves no file and never replaces one. Throws std::runtime_error
-// starting "export PATH:".
+// starting "export PATH:", also when `content` was built without its models'
+// plants (buildFieldContent with ModelAssets::Keep).
 FieldExportSummary exportField(const FieldContent& content, const std::filesystem::path& path,
                                const FieldExportOptions& options = {});
 

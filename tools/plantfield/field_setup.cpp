@@ -21,7 +21,7 @@ Scene loadSceneOf(const PlantfieldOptions& o) {
     return loadScene(o.scenePath, SceneOverrides{o.seed, o.windSpeed, o.windDirectionDegrees, o.jointBudget});
 }
 
-FieldContent loadFieldContent(const PlantfieldOptions& o, std::optional<PreviewOrbit>* orbit) {
+FieldContent loadFieldContent(const PlantfieldOptions& o, std::optional<PreviewOrbit>* orbit, ModelAssets assets) {
     const auto start = std::chrono::steady_clock::now();
     const Scene scene = loadSceneOf(o);
     std::optional<PlantCount> count;
@@ -38,7 +38,7 @@ FieldContent loadFieldContent(const PlantfieldOptions& o, std::optional<PreviewO
             std::fprintf(stderr, "\rplantfield: plant models %zu/%zu (%s)\x1b[K", done, all, name.c_str());
             if (done == all) std::fprintf(stderr, "\r\x1b[K");
         },
-        o.memory);
+        o.memory, assets);
     if (!o.plantPath.empty()) {
         const PreviewOrbit framed = framePreview(content, o);
         if (orbit) *orbit = framed;

@@ -26,8 +26,10 @@ Scene loadSceneOf(const PlantfieldOptions& o);
 
 // Throws SceneError (file:line:column) or runtime_error with a clear message.
 // With --plant, the ground is sized to the plant and `orbit` (when given) is
-// set to the preview's camera orbit.
-FieldContent loadFieldContent(const PlantfieldOptions& o, std::optional<PreviewOrbit>* orbit = nullptr);
+// set to the preview's camera orbit. `assets`: whether the models' plants are
+// kept (buildFieldContent), as the glTF export needs.
+FieldContent loadFieldContent(const PlantfieldOptions& o, std::optional<PreviewOrbit>* orbit = nullptr,
+                              ModelAssets assets = ModelAssets::Drop);
 
 FieldRenderSettings renderSettings(const PlantfieldOptions& o);
 

@@ -28,7 +28,9 @@ int listDevices(const PlantfieldOptions& o) {
 // --export / --export-placements: the field built on the CPU and written out;
 // no Vulkan instance or device is created.
 int runExport(const PlantfieldOptions& o) {
-    const FieldContent content = loadFieldContent(o);
+    // The glTF bakes the models' plants again (field_export.h); placements need none.
+    const FieldContent content =
+        loadFieldContent(o, nullptr, o.exportPath.empty() ? ModelAssets::Drop : ModelAssets::Keep);
     if (!o.exportPath.empty()) {
         const auto start = std::chrono::steady_clock::now();
         FieldExportOptions options;
