@@ -1,6 +1,7 @@
 #include "engine/field/field_renderer.h"
 
 #include "engine/field/canopy.h"
+#include "engine/field/field_uploads.h"
 #include "engine/scene/cloud_billboards.h"
 #include "engine/vk/depth_pyramid.h"
 #include "engine/vk/descriptors.h"
@@ -55,24 +56,6 @@ Buffer uploadVector(GpuResources& owner, const std::vector<T>& data, VkBufferUsa
     return createDeviceBufferWithData(owner, data.data(), data.size() * sizeof(T), usage);
 }
 
-// The vertex pool is bound whole as a storage buffer (the impostor bake) and
-// read through uint4 texel views (the draw shaders); past either device limit
-// those bindings are invalid, so the scene is refused, with the sizes, before
-// anything is uploaded.
-void requireBindableVertexPool(const GpuContext& ctx, size_t vertices) {
-    const VkPhysicalDeviceLimits& limits = ctx.properties.limits;
-    const uint64_t bytes = uint64_t(vertices) * sizeof(gpu::FieldVertex);
-    const uint64_t texels = bytes / (4 * sizeof(uint32_t));
-    if (bytes <= limits.maxStorageBufferRange && texels <= limits.maxTexelBufferElements) return;
-    const auto mib = [](uint64_t b) { return std::to_string((b + (1 << 20) - 1) >> 20) + " MiB"; };
-    throw std::runtime_error(
-        "the plant models' vertex pool (" + std::to_string(vertices) + " vertices, " + mib(bytes) +
-        ") is larger than this device binds as one buffer (" +
-        mib(std::min<uint64_t>(limits.maxStorageBufferRange, uint64_t(limits.maxTexelBufferElements) * 16)) +
-        ", maxStorageBufferRange and maxTexelBufferElements): use fewer variants, fewer "
-        "derivation steps or simpler plants");
-}
-
 // The drawn terrain keeps at most this many samples a side: far cells of a
 // finer grid are a pixel or two wide, and a CPU rasteriser pays per triangle.
 constexpr uint32_t kTerrainDrawSamples = 129;
@@ -99,13 +82,6 @@ Heightfield decimated(const Heightfield& terrain, uint32_t maxSamples) {
 }
 
 } // namespace
-
-uint64_t fieldUploadBytes(const FieldContent& content) {
-    constexpr uint64_t kPerPlant = 2 * (sizeof(gpu::FieldInstance) + sizeof(uint32_t));
-    uint64_t bytes = lsys::bytesTimes(content.plants.size(), kPerPlant);
-    bytes = lsys::bytesPlus(bytes, lsys::bytesTimes(content.models.vertices.size(), sizeof(gpu::FieldVertex)));
-    return lsys::bytesPlus(bytes, lsys::bytesTimes(content.models.indices.size(), sizeof(uint32_t)));
-}
 
 bool nestedInColourPass(std::string_view pass) {
     const auto colour = std::find(std::begin(kFieldPasses), std::end(kFieldPasses), std::string_view("colour"));

@@ -10,6 +10,7 @@
 #include "engine/field/cloud_shadow_pass.h"
 #include "engine/field/cluster_pass.h"
 #include "engine/field/cull_pass.h"
+#include "engine/field/field_uploads.h"
 #include "engine/field/impostor_atlas.h"
 #include "engine/field/shadow_cache.h"
 #include "engine/field/shadow_map.h"
@@ -56,12 +57,6 @@ struct FieldRenderSettings {
     // The host memory of the uploads (fieldUploadBytes), checked before any of them.
     lsys::MemoryBudget memory = lsys::machineMemoryBudget();
 };
-
-// What uploading the field holds in host memory at once: the instance and
-// naive lists built for the GPU and a staging copy of each, and the staging
-// copies of the vertex and index pools (saturating). The GPU side is bounded
-// by its heaps (GpuResources::allocate).
-uint64_t fieldUploadBytes(const FieldContent& content);
 
 struct FieldView {
     Camera camera;
