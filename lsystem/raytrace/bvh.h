@@ -24,7 +24,7 @@ struct BvhNode {
 };
 
 struct Bvh {
-    std::vector<BvhNode> nodes; // nodes[0] is the root; none when nothing has a box
+    std::vector<BvhNode> nodes;  // nodes[0] is the root; none when nothing has a box
     std::vector<uint32_t> items; // indices into the boxes it was built over, leaf by leaf
 };
 

@@ -12,12 +12,6 @@
 namespace lsys {
 namespace {
 
-Bounds boundsOfPoints(const std::vector<glm::vec3>& points) {
-    Bounds bounds;
-    for (const glm::vec3& p : points) bounds.extend(p);
-    return bounds;
-}
-
 void addMeshes(TracedShapes& shapes, const std::vector<SurfaceMesh>& surfaces,
                const std::vector<PolygonShape>& polygons) {
     for (const SurfaceMesh& surface : surfaces) {
@@ -37,12 +31,6 @@ Bounds widened(Bounds box) {
     box.min -= glm::vec3(margin);
     box.max += glm::vec3(margin);
     return box;
-}
-
-// The box of a local box scaled by `scale` and then placed by `frame`.
-Bounds placed(const Bounds& local, float scale, const Frame& frame) {
-    if (local.empty()) return local;
-    return transformed(Bounds{local.min * scale, local.max * scale}, frame);
 }
 
 std::optional<ShapeHit> nearestTriangle(const Ray& ray, const TriangleMesh& mesh) {
@@ -77,23 +65,29 @@ TracedShapes tracedShapesOf(const InstanceGraph& graph, const SurfaceLibrary& su
 }
 
 Primitive tracedPrimitive(const GraphPrimitive& primitive) {
-    return {primitive.frame,  primitive.kind,        primitive.material,   -1,
-            primitive.shape,  primitive.length,      primitive.startRadius, primitive.endRadius};
+    return {primitive.frame, primitive.kind,   primitive.material,    -1,
+            primitive.shape, primitive.length, primitive.startRadius, primitive.endRadius};
 }
 
 Bounds tracedBounds(const Primitive& primitive, const TracedShapes& shapes) {
     if (!isDrawable(primitive)) return {};
     switch (primitive.kind) {
     case PrimitiveKind::Segment: {
-        const float radius = std::max(primitive.startRadius, primitive.endRadius);
-        return widened(placed({glm::vec3(-radius, 0.0f, -radius), glm::vec3(radius, primitive.length, radius)}, 1.0f,
-                              primitive.frame));
+        // A frustum is the convex hull of its end discs.
+        const glm::vec3 axis = glm::normalize(primitive.frame.rotation * glm::vec3(0.0f, 1.0f, 0.0f));
+        Bounds box;
+        extendByDisc(box, primitive.frame.position, axis, primitive.startRadius);
+        extendByDisc(box, primitive.frame.position + primitive.length * axis, axis, primitive.endRadius);
+        return widened(box);
     }
     case PrimitiveKind::Sphere:
         return widened({primitive.frame.position - glm::vec3(primitive.startRadius),
                         primitive.frame.position + glm::vec3(primitive.startRadius)});
-    case PrimitiveKind::Surface:
-        return widened(placed(shapes.surfaceBounds.at(primitive.shape), primitive.length, primitive.frame));
+    case PrimitiveKind::Surface: {
+        const Bounds& local = shapes.surfaceBounds.at(primitive.shape);
+        if (local.empty()) return local;
+        return widened(transformed({local.min * primitive.length, local.max * primitive.length}, primitive.frame));
+    }
     case PrimitiveKind::Polygon: return widened(shapes.polygonBounds.at(primitive.shape));
     }
     return {};

@@ -28,7 +28,8 @@ PlantAsset handMadePlant() {
     PlantAsset plant;
     plant.materials.resize(4);
     // A cylinder from (1, 2, 3) along −X, length 2, radius 0.5: material 1.
-    plant.primitives.push_back({{glm::vec3(1, 2, 3), kHeadingMinusX}, PrimitiveKind::Segment, 1, -1, 0, 2.0f, 0.5f, 0.5f});
+    plant.primitives.push_back(
+        {{glm::vec3(1, 2, 3), kHeadingMinusX}, PrimitiveKind::Segment, 1, -1, 0, 2.0f, 0.5f, 0.5f});
     // A sphere of radius 0.5 at (0, 10, 0): material 2.
     plant.primitives.push_back({Frame{glm::vec3(0, 10, 0)}, PrimitiveKind::Sphere, 2, -1, 0, 0.0f, 0.5f, 0.0f});
     // A unit square surface on local x, y ∈ [0, 1], scaled by 3 and placed at (20, 0, 0): material 3.
@@ -66,8 +67,7 @@ TEST(FlatTracer, PlacedPrimitivesGiveAnalyticHits) {
               {0, 0, 1});
     EXPECT_FALSE(trace(tracer, Ray{glm::vec3(23.1f, 1, 4), glm::vec3(0, 0, -1)}, HitQuery::Closest));
     // The polygon faces +Z (counter-clockwise seen from above).
-    expectHit(trace(tracer, Ray{glm::vec3(0.5f, 0.5f, -8), glm::vec3(0, 0, 1)}, HitQuery::Closest), 3.0f, 3,
-              {0, 0, 1});
+    expectHit(trace(tracer, Ray{glm::vec3(0.5f, 0.5f, -8), glm::vec3(0, 0, 1)}, HitQuery::Closest), 3.0f, 3, {0, 0, 1});
     EXPECT_EQ(trace(tracer, Ray{glm::vec3(0.5f, 0.5f, -8), glm::vec3(0, 0, 1)}, HitQuery::Closest)->material, 0u);
 }
 
@@ -130,8 +130,8 @@ Comparison compareTracers(const InstanceGraph& graph, size_t rayCount) {
                                          actual->kind == expected->kind && actual->material == expected->material &&
                                          glm::dot(actual->normal, expected->normal) > 0.99f));
         if (!same && reported++ < 5)
-            ADD_FAILURE() << "ray from (" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z
-                          << ") flat " << (expected ? expected->t : -1.0f) << " graph " << (actual ? actual->t : -1.0f);
+            ADD_FAILURE() << "ray from (" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") flat "
+                          << (expected ? expected->t : -1.0f) << " graph " << (actual ? actual->t : -1.0f);
         comparison.hits += expected.has_value();
         // A shadow ray asks only whether anything is in the way.
         const std::optional<Hit> anyGraph = trace(graphTracer, ray, HitQuery::Any);
