@@ -18,7 +18,8 @@ struct Nearest {
     bool found = false;
 
     void offer(double candidate, const glm::dvec3& n) {
-        if (candidate < tMin || candidate > tMax || (found && candidate >= t)) return;
+        // Written so that a NaN (a ray of infinite or NaN coordinates) is never a hit.
+        if (!(candidate >= tMin && candidate <= tMax) || (found && candidate >= t)) return;
         t = candidate;
         normal = n;
         found = true;

@@ -122,6 +122,15 @@ TEST(IntersectTriangle, MissesOutsideParallelAndBehind) {
     EXPECT_FALSE(intersectTriangle(rayFrom({0.25f, 0.25f, 1}, {0, 0, -1}), a, b, a)); // degenerate
 }
 
+TEST(Intersect, ARayWithoutADirectionOrWithNaNsHitsNothing) {
+    const float nan = std::nanf("");
+    EXPECT_FALSE(intersectFrustum(rayFrom({-2, 1, 0}, {0, 0, 0}), 2.0f, 0.5f, 0.5f));
+    EXPECT_FALSE(intersectSphere(rayFrom({0, 0, 0}, {0, 0, 0}), 1.0f));
+    EXPECT_FALSE(intersectFrustum(rayFrom({nan, 1, 0}, {1, 0, 0}), 2.0f, 0.5f, 0.5f));
+    EXPECT_FALSE(intersectSphere(rayFrom({0, 0, -5}, {0, nan, 1}), 1.0f));
+    EXPECT_FALSE(intersectTriangle(rayFrom({0.25f, 0.25f, nan}, {0, 0, -1}), {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
+}
+
 TEST(BoxEntry, EntersAtTheNearFaceOrAtTMinInside) {
     const Bounds box{glm::vec3(-1), glm::vec3(1)};
     EXPECT_FLOAT_EQ(*boxEntry(rayFrom({-3, 0, 0}, {1, 0, 0}), box), 2.0f);
