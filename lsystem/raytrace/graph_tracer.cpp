@@ -2,15 +2,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "lsystem/turtle.h"
+
 namespace lsys {
 namespace {
-
-// The ray in the space of an instance whose frame is `frame` (rigid: the
-// same t, the same [tMin, tMax]).
-Ray intoInstance(const Ray& ray, const Frame& frame) {
-    const glm::quat toLocal = glm::inverse(frame.rotation);
-    return {toLocal * (ray.origin - frame.position), toLocal * ray.direction, ray.tMin, ray.tMax};
-}
 
 // Traces one object with the ray in its local space: true when it found a hit
 // nearer than ray.tMax, which is then lowered to it; `hit` in local space.
@@ -24,7 +19,7 @@ bool traceObject(const GraphTracer& tracer, uint32_t object, Ray& ray, HitQuery 
             found |= tracePrimitive(tracer.primitives[item.index], item.index, tracer.shapes, ray, hit);
         } else {
             const GraphInstance& instance = graph.instances[item.index];
-            Ray local = intoInstance(ray, instance.frame);
+            Ray local = rayInFrame(ray, instance.frame);
             Hit inner;
             if (traceObject(tracer, instance.object, local, query, inner)) {
                 inner.normal = glm::normalize(instance.frame.rotation * inner.normal);
@@ -42,8 +37,14 @@ bool traceObject(const GraphTracer& tracer, uint32_t object, Ray& ray, HitQuery 
 
 GraphTracer buildGraphTracer(const InstanceGraph& graph, const SurfaceLibrary& surfaces) {
     GraphTracer tracer{&graph, {}, tracedShapesOf(graph, surfaces), {}, {}};
+    // Pixel-wide lines get the world width graph export gives them (the
+    // root's box over kPixelsAcrossPlant), which flattening matches when
+    // the root's box is the plant's.
+    const float lineScale =
+        graph.pixelLines && !graph.objects.empty() ? worldPerPixel(graph.objects[graph.root].bounds) : 1.0f;
     tracer.primitives.reserve(graph.primitives.size());
-    for (const GraphPrimitive& primitive : graph.primitives) tracer.primitives.push_back(tracedPrimitive(primitive));
+    for (const GraphPrimitive& primitive : graph.primitives)
+        tracer.primitives.push_back(tracedPrimitive(primitive, lineScale));
     tracer.objectBounds.resize(graph.objects.size());
     tracer.objectBvhs.resize(graph.objects.size());
     std::vector<Bounds> itemBounds;

@@ -64,9 +64,21 @@ TracedShapes tracedShapesOf(const InstanceGraph& graph, const SurfaceLibrary& su
     return shapes;
 }
 
-Primitive tracedPrimitive(const GraphPrimitive& primitive) {
-    return {primitive.frame, primitive.kind,   primitive.material,    -1,
-            primitive.shape, primitive.length, primitive.startRadius, primitive.endRadius};
+Primitive tracedPrimitive(const GraphPrimitive& primitive, float lineScale) {
+    const float radiusScale = primitive.kind == PrimitiveKind::Segment ? lineScale : 1.0f;
+    return {primitive.frame,
+            primitive.kind,
+            primitive.material,
+            -1,
+            primitive.shape,
+            primitive.length,
+            primitive.startRadius * radiusScale,
+            primitive.endRadius * radiusScale};
+}
+
+Ray rayInFrame(const Ray& ray, const Frame& frame) {
+    const glm::quat toLocal = glm::inverse(frame.rotation);
+    return {toLocal * (ray.origin - frame.position), toLocal * ray.direction, ray.tMin, ray.tMax};
 }
 
 Bounds tracedBounds(const Primitive& primitive, const TracedShapes& shapes) {
@@ -100,12 +112,9 @@ bool tracePrimitive(const Primitive& primitive, uint32_t index, const TracedShap
         // The outline is already in the ray's space; the frame is only where it began.
         found = nearestTriangle(ray, shapes.polygons.at(primitive.shape));
     } else {
-        // Into the primitive's frame (rigid: t is unchanged), and for a
-        // surface by 1/length into its unit mesh's space.
-        const glm::quat toLocal = glm::inverse(primitive.frame.rotation);
-        Ray local = ray;
-        local.origin = toLocal * (ray.origin - primitive.frame.position);
-        local.direction = toLocal * ray.direction;
+        // Into the primitive's frame, and for a surface by 1/length into its
+        // unit mesh's space (t is unchanged).
+        Ray local = rayInFrame(ray, primitive.frame);
         switch (primitive.kind) {
         case PrimitiveKind::Segment:
             found = intersectFrustum(local, primitive.length, primitive.startRadius, primitive.endRadius);

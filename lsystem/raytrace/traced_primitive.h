@@ -28,8 +28,14 @@ TracedShapes tracedShapesOf(const PlantAsset& plant);
 // look first, then `surfaces`); throws SurfaceError for one that is missing.
 TracedShapes tracedShapesOf(const InstanceGraph& graph, const SurfaceLibrary& surfaces);
 
-// A graph primitive as the flat record the tests below take (joint left at -1).
-Primitive tracedPrimitive(const GraphPrimitive& primitive);
+// A graph primitive as the flat record the tests below take (joint left at
+// -1), a segment's radii times `lineScale` (the world size of a pixel for a
+// graph of pixel-wide lines, 1 otherwise).
+Primitive tracedPrimitive(const GraphPrimitive& primitive, float lineScale);
+
+// The ray in the space of a frame given in the ray's space: rigid, so the
+// same t and the same [tMin, tMax].
+Ray rayInFrame(const Ray& ray, const Frame& frame);
 
 // The box around what the primitive draws, in the space its frame is given
 // in, widened by a few ulps of its size so a hit on a face of the box is

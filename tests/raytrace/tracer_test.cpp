@@ -18,6 +18,7 @@
 #include "../instance_graph/instance_graph_test_support.h"
 #include "lsystem/raytrace/flat_tracer.h"
 #include "lsystem/raytrace/graph_tracer.h"
+#include "lsystem/turtle.h"
 
 namespace lsys::test {
 namespace {
@@ -190,6 +191,26 @@ TEST(GraphTracer, PolygonsInRotatedInstances) {
     ASSERT_FALSE(graph.polygons.empty());
     ASSERT_FALSE(graph.instances.empty());
     EXPECT_GT(compareTracers(graph, 3000)[size_t(PrimitiveKind::Polygon)], 20u);
+}
+
+// A vlab object drawn with pixel-wide lines: the graph tracer makes them as
+// wide as graph export does (a pixel is the root's box over
+// kPixelsAcrossPlant), not as many world units as pixels.
+TEST(GraphTracer, PixelWideLinesGetGraphExportsWidth) {
+    const InstanceGraph graph = graphOf(loadOk("plants/abop/fig2_6a_monopodial_tree"));
+    ASSERT_TRUE(graph.pixelLines);
+    const GraphTracer tracer = buildGraphTracer(graph);
+    const float pixel = worldPerPixel(graph.objects[graph.root].bounds);
+    ASSERT_GT(pixel, 0.0f);
+    ASSERT_LT(pixel, 0.1f);
+    size_t segments = 0;
+    for (size_t i = 0; i < graph.primitives.size(); ++i) {
+        if (graph.primitives[i].kind != PrimitiveKind::Segment) continue;
+        ++segments;
+        EXPECT_FLOAT_EQ(tracer.primitives[i].startRadius, graph.primitives[i].startRadius * pixel);
+        EXPECT_FLOAT_EQ(tracer.primitives[i].endRadius, graph.primitives[i].endRadius * pixel);
+    }
+    EXPECT_GT(segments, 0u);
 }
 
 TEST(GraphTracer, LeafyPlantWithDecomposition) { compareTracers(graphOf(loadOk("plants/leafy_plant.lsys")), 3000); }
