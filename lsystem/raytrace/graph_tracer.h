@@ -4,8 +4,9 @@
 // child instances by their objects' boxes placed by the instance frames); a
 // ray entering an instance is carried into the child's local frame, so every
 // object is stored once however many times it is placed (the Calgary
-// b-grammar thesis, ch. 7: hierarchical ray tracing of the instance graph;
-// Robbins' branching shadows trace the same hierarchy for shadow rays).
+// b-grammar thesis, ch. 7, ray-traces its instancing hierarchies so; Robbins
+// 1998 traces an L-system's branches near to far, ending shadow rays at their
+// first hit). The walk recurses once per level of instances, as flatten does.
 
 #include <optional>
 #include <vector>
