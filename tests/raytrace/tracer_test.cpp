@@ -111,13 +111,12 @@ std::vector<Ray> raysAt(const Bounds& bounds, size_t count, uint32_t seed) {
     return rays;
 }
 
-// The graph's frames are composed on the way down in single precision, the
-// flattened plant's once per primitive: the two place a primitive up to
-// a few single-precision ulps of the plant's size apart (within the flattening
-// tests' tolerance), so a ray
-// grazing a leaf's outline within that distance may hit in one and miss in
-// the other. At most one ray in this many may differ; a wrong transform or a
-// culled box makes far more differ.
+// The graph tracer carries the ray through each instance frame in single
+// precision, while flattening composes the frames themselves: the two place
+// a primitive a few single-precision ulps of the plant's size apart (within
+// the flattening tests' tolerance), so a ray grazing a leaf's outline or a
+// twig within that distance may hit in one and miss in the other. At most one ray in this many may differ; a wrong
+// transform or a culled box makes far more differ.
 constexpr size_t kRaysPerGrazingDifference = 1000;
 
 // Closest hits of each PrimitiveKind.
