@@ -12,8 +12,6 @@
 
 namespace lsys {
 
-namespace {
-
 void extendByDisc(Bounds& bounds, glm::vec3 centre, glm::vec3 unitNormal, float radius) {
     // A disc reaches r * sqrt(1 - n_i^2) along axis i.
     const glm::vec3 reach = std::abs(radius) * glm::sqrt(glm::max(glm::vec3(0.0f), 1.0f - unitNormal * unitNormal));
@@ -21,13 +19,11 @@ void extendByDisc(Bounds& bounds, glm::vec3 centre, glm::vec3 unitNormal, float 
     bounds.extend(centre + reach);
 }
 
-Bounds localBounds(const SurfaceMesh& mesh) {
+Bounds boundsOfPoints(const std::vector<glm::vec3>& points) {
     Bounds bounds;
-    for (const glm::vec3& p : mesh.positions) bounds.extend(p);
+    for (const glm::vec3& p : points) bounds.extend(p);
     return bounds;
 }
-
-} // namespace
 
 const std::vector<Material>& defaultPalette() {
     static const std::vector<Material> palette = {
@@ -78,7 +74,7 @@ glm::vec3 PlantAssetBuilder::addSurface(const std::string& name, const Frame& fr
             surfaceIndex_.erase(found);
             throw;
         }
-        surfaceBounds_.push_back(localBounds(asset_.surfaces.back()));
+        surfaceBounds_.push_back(boundsOfPoints(asset_.surfaces.back().positions));
     }
     const uint32_t shape = found->second;
     asset_.primitives.push_back({frame, PrimitiveKind::Surface, material, joint, shape, scale, 0.0f, 0.0f});

@@ -22,6 +22,12 @@ class SurfaceLibrary;
 
 const std::vector<Material>& defaultPalette();
 
+// Extends `bounds` by a disc of `radius` about `centre` facing the unit
+// `unitNormal`: a segment's end (the two end discs of a frustum bound it exactly).
+void extendByDisc(Bounds& bounds, glm::vec3 centre, glm::vec3 unitNormal, float radius);
+// The box of a set of points (a surface's vertices in its own space).
+Bounds boundsOfPoints(const std::vector<glm::vec3>& points);
+
 // The surface a plant of `look` draws for `name`: the look's own (a vlab
 // object's .s files) before the library's. Throws SurfaceError when neither
 // has it.

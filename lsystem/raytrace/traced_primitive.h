@@ -1,0 +1,51 @@
+#pragma once
+// One primitive under a ray, whichever plant form holds it: its bounds and
+// its exact test (docs/RAYTRACING.md, "Primitive tests"). Surfaces and
+// polygons are traced as the triangles the exporter meshes them with
+// (surfaceMesh, polygonMesh); segments and spheres exactly.
+
+#include <cstdint>
+#include <vector>
+
+#include "lsystem/instance_graph.h"
+#include "lsystem/plant_asset.h"
+#include "lsystem/primitive_mesh.h"
+#include "lsystem/raytrace/ray.h"
+#include "lsystem/surfaces.h"
+
+namespace lsys {
+
+// The triangles of a plant's surfaces and polygons, by Primitive::shape.
+struct TracedShapes {
+    std::vector<TriangleMesh> surfaces; // in the surface's own space, at scale 1
+    std::vector<Bounds> surfaceBounds;
+    std::vector<TriangleMesh> polygons; // in the space of the outline (a flat plant's, or the drawing object's)
+    std::vector<Bounds> polygonBounds;
+};
+
+TracedShapes tracedShapesOf(const PlantAsset& plant);
+// The graph's surfaces by name, looked up as flattening does (the grammar's
+// look first, then `surfaces`); throws SurfaceError for one that is missing.
+TracedShapes tracedShapesOf(const InstanceGraph& graph, const SurfaceLibrary& surfaces);
+
+// A graph primitive as the flat record the tests below take (joint left at
+// -1), a segment's radii times `lineScale` (the world size of a pixel for a
+// graph of pixel-wide lines, 1 otherwise).
+Primitive tracedPrimitive(const GraphPrimitive& primitive, float lineScale);
+
+// The ray in the space of a frame given in the ray's space: rigid, so the
+// same t and the same [tMin, tMax].
+Ray rayInFrame(const Ray& ray, const Frame& frame);
+
+// The box around what the primitive draws, in the space its frame is given
+// in, widened by a few ulps of its size so a hit on a face of the box is
+// never culled by the box test's rounding. Empty when it draws nothing
+// (isDrawable) or its shape has no triangles.
+Bounds tracedBounds(const Primitive& primitive, const TracedShapes& shapes);
+
+// Tests primitive number `index` against the ray (in the space of the
+// primitive's frame). On a hit nearer than ray.tMax it sets `hit` (the
+// normal in the ray's space), lowers ray.tMax to it and returns true.
+bool tracePrimitive(const Primitive& primitive, uint32_t index, const TracedShapes& shapes, Ray& ray, Hit& hit);
+
+} // namespace lsys
