@@ -23,6 +23,8 @@ namespace lsys {
 struct Frame {
     glm::vec3 position{0.0f};
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+
+    friend bool operator==(const Frame&, const Frame&) = default;
 };
 
 enum class PrimitiveKind : uint8_t {
@@ -41,6 +43,9 @@ struct Primitive {
     float length = 0.0f;
     float startRadius = 0.0f;
     float endRadius = 0.0f;
+
+    // Field by field: comparing the bytes would compare the padding after `kind`.
+    friend bool operator==(const Primitive&, const Primitive&) = default;
 };
 
 // One drawn segment of the skeleton in its rest pose (Crankshaw 2020's joints).

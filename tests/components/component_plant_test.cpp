@@ -7,8 +7,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cstring>
-
 namespace lsys::components {
 namespace {
 
@@ -102,13 +100,12 @@ TEST(ComponentPlant, StemsAreJointsOfOneSkeleton) {
 
 TEST(ComponentPlant, SameFileSamePlantAndTheSeedChangesIt) {
     const PlantAsset a = smallPlant(), b = smallPlant();
-    ASSERT_EQ(a.primitives.size(), b.primitives.size());
-    EXPECT_EQ(std::memcmp(a.primitives.data(), b.primitives.data(), a.primitives.size() * sizeof(Primitive)), 0);
+    EXPECT_TRUE(a.primitives == b.primitives);
     std::string reseeded = kSmallPlant;
     reseeded.replace(reseeded.find("\"seed\": 5"), 9, "\"seed\": 6");
     const PlantAsset c = loadComponentPlant(test::writeComponentFile("reseeded.comp.json", reseeded));
     ASSERT_EQ(a.primitives.size(), c.primitives.size());
-    EXPECT_NE(std::memcmp(a.primitives.data(), c.primitives.data(), a.primitives.size() * sizeof(Primitive)), 0);
+    EXPECT_FALSE(a.primitives == c.primitives);
 }
 
 TEST(ComponentPlant, MaterialsComeFromTheFileOverThePalette) {
