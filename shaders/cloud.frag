@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "common.glsl"
 
-// A semi-transparent sphere of a cloud (seed 002, ch. 24), premultiplied:
+// A semi-transparent sphere of a cloud (the clouds-and-mountains chapter, §23–24), premultiplied:
 // its opacity is the light the sphere's thickness along the pixel's ray
 // absorbs, so the rim, where the ray only grazes it, fades out smoothly.
 // Lit by the sun with a wrapped term (light scattered through the cloud

@@ -1,4 +1,4 @@
-// A cloud as the spheres its L-system draws (seed 002, ch. 24: "the shape of
+// A cloud as the spheres its L-system draws (the clouds-and-mountains chapter, §23–24: "the shape of
 // the cloud ... is built up by a large number of semi-transparent spheres",
 // each made by the sphere symbol, here `@O(d)`). Everything else the turtle
 // draws (segments, surfaces, polygons) is not part of the cloud.

@@ -1,5 +1,5 @@
-// data/scenes/highlands.json rendered headless (seed 002's L-system
-// landscapes with the forest): the massif of L-system peaks behind the
+// data/scenes/highlands.json rendered headless (the L-system landscapes of
+// the clouds-and-mountains chapter, §21–24, with the forest): the massif of L-system peaks behind the
 // valley's forest under the three layouts of L-system clouds, casting their
 // shadows, against goldens at the field's tolerance (kFieldTolerance).
 #include "field_render.h"

@@ -1,4 +1,4 @@
-// The clouds of data/clouds (seed 002, ch. 24) as the spheres their
+// The clouds of data/clouds (the clouds-and-mountains chapter, §23–24) as the spheres their
 // L-systems draw (engine/scene/cloud_spheres.h), and the frame's billboards
 // made from them (engine/scene/cloud_billboards.h).
 #include "engine/scene/cloud_billboards.h"

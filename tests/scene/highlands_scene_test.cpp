@@ -1,7 +1,6 @@
-// data/scenes/highlands.json, seed 002's landscapes together: the massif's
-// L-system peaks stand far above the noise valley where the forest grows,
-// spruce climb its flanks, the clouds float above every summit, and the
-// camera path stays above the ground and inside the terrain all the way.
+// data/scenes/highlands.json, the L-system landscapes of the clouds-and-mountains chapter (§21–24) together: the
+// massif's L-system peaks stand far above the noise valley where the forest grows, spruce climb its flanks, the clouds
+// float above every summit, and the camera path stays above the ground and inside the terrain all the way.
 #include "engine/scene/field_content.h"
 
 #include <gtest/gtest.h>
