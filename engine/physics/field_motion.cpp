@@ -30,8 +30,7 @@ SharedSkeletons sharedSkeletons(const FieldContent& content) {
         shared.ofPlant[i] = content.models.modelOf(p.species, p.variant) * phases + phase;
         copyOf[shared.ofPlant[i]] = 0;
     }
-    const float angle = glm::radians(content.scene.wind.directionDegrees);
-    const glm::vec3 along(std::sin(angle), 0.0f, -std::cos(angle));
+    const glm::vec3 along = windHeading(content.scene.wind);
     shared.set.params = pool.joints;
     for (uint32_t copy = 0; copy < copyOf.size(); ++copy) {
         if (copyOf[copy] == kUnfollowed) continue;

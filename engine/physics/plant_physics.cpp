@@ -38,11 +38,10 @@ uint32_t addSkeleton(SkeletonSet& set, uint32_t model, uint32_t firstParam, uint
 
 gpu::PhysicsUniforms makePhysicsUniforms(const Wind& wind, const PhysicsSettings& settings, float time, float dt,
                                          uint32_t subSteps, uint32_t skeletons, uint32_t joints) {
-    const float direction = glm::radians(wind.directionDegrees);
+    const glm::vec3 velocity = meanWindVelocity(wind);
     gpu::PhysicsUniforms u;
     u.gravity = gpu::vec4(0.0f, -settings.gravity, 0.0f, settings.airDensity);
-    u.wind = gpu::vec4(std::sin(direction) * wind.speed, wind.gustStrength, -std::cos(direction) * wind.speed,
-                       wind.gustSpeed);
+    u.wind = gpu::vec4(velocity.x, wind.gustStrength, velocity.z, wind.gustSpeed);
     u.windDetail = gpu::vec4(wind.turbulence, kGustWavelength, time, dt);
     u.counts = gpu::uvec4(skeletons, joints, subSteps, 0);
     return u;

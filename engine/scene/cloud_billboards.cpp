@@ -6,11 +6,6 @@
 
 namespace pf {
 
-glm::vec3 meanWindVelocity(const Wind& wind) {
-    const float direction = glm::radians(wind.directionDegrees); // clockwise from -z (north) toward +x
-    return wind.speed * glm::vec3(std::sin(direction), 0.0f, -std::cos(direction));
-}
-
 std::vector<gpu::CloudBillboard> cloudBillboards(const std::vector<Cloud>& clouds, const Wind& wind, float time,
                                                  const glm::vec3& camera, const glm::vec3& forward) {
     const glm::vec3 drift = meanWindVelocity(wind) * time;

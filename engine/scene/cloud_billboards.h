@@ -13,10 +13,6 @@
 
 namespace pf {
 
-// Metres per second the mean wind blows (its gusts and turbulence left out):
-// `speed` along `direction`, horizontal.
-glm::vec3 meanWindVelocity(const Wind& wind);
-
 // Every sphere of `clouds`, moved by meanWindVelocity(wind) · time, ordered
 // by depth along the view direction `forward` from `camera`, farthest first;
 // spheres at the same depth keep the order of the clouds and of their

@@ -112,6 +112,13 @@ uint32_t speciesSeed(const Scene& scene, size_t species) {
     return scene.species[species].seed.value_or(mixSeed(scene.seed, speciesStream(species, 0)));
 }
 
+glm::vec3 windHeading(const Wind& wind) {
+    const float direction = glm::radians(wind.directionDegrees); // clockwise from -z (north) toward +x
+    return glm::vec3(std::sin(direction), 0.0f, -std::cos(direction));
+}
+
+glm::vec3 meanWindVelocity(const Wind& wind) { return wind.speed * windHeading(wind); }
+
 bool isPlantModelFile(const std::filesystem::path& file) {
     return lsys::isRamificationFile(file) || lsys::components::isComponentFile(file);
 }

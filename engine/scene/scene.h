@@ -165,6 +165,12 @@ struct Wind {
     bool operator==(const Wind&) const = default;
 };
 
+// The horizontal unit vector the wind blows along (directionDegrees).
+glm::vec3 windHeading(const Wind& wind);
+// Metres per second the mean wind blows (its gusts and turbulence left out):
+// `speed` along windHeading.
+glm::vec3 meanWindVelocity(const Wind& wind);
+
 // The most joints a scene or --joint-budget may give near plants: their
 // states and poses take 64 bytes a joint (640 MB here), and every simulated
 // array is read through texel views of at most 2²⁷ texels on common devices.
