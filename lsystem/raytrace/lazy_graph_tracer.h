@@ -23,8 +23,8 @@ namespace lsys {
 // One object made ready to trace: GraphTracer's share of it.
 struct ExpandedObject {
     std::vector<GraphItem> items;
-    std::vector<Primitive> primitives;   // the expansion's, as flat records
-    std::vector<uint32_t> primitiveIds;  // their indices in buildInstanceGraph's graph
+    std::vector<Primitive> primitives;  // the expansion's, as flat records
+    std::vector<uint32_t> primitiveIds; // their indices in buildInstanceGraph's graph
     std::vector<GraphInstance> instances;
     TracedMeshes polygons;
     Bvh bvh; // over the items

@@ -63,7 +63,9 @@ void expectLazyIsWhole(const Grammar& grammar, std::optional<int> steps = std::n
     for (uint64_t budget : {uint64_t{1}, uint64_t{16} << 10, UINT64_MAX}) expectGraphTracersHits(graphs, budget, 500);
 }
 
-TEST(LazyGraphTracer, FractalBushFiveStepsIsTheGraphTracer) { expectLazyIsWhole(loadOk("plants/fractal_bush.lsys"), 5); }
+TEST(LazyGraphTracer, FractalBushFiveStepsIsTheGraphTracer) {
+    expectLazyIsWhole(loadOk("plants/fractal_bush.lsys"), 5);
+}
 
 TEST(LazyGraphTracer, MonopodialTreeIsTheGraphTracer) { expectLazyIsWhole(loadOk("plants/monopodial_tree.lsys")); }
 
@@ -139,8 +141,7 @@ TEST(LazyGraphTracer, ThreadsSharingACacheGiveTheSameImage) {
     const LazyGraphTracer shared = buildLazyGraphTracer(graphs.lazy, expansionStats(alone).bytesHeld / 3);
     std::vector<std::vector<Pixel>> images(4);
     std::vector<std::thread> threads;
-    for (std::vector<Pixel>& pixels : images)
-        threads.emplace_back([&] { pixels = image(shared, bounds, 64); });
+    for (std::vector<Pixel>& pixels : images) threads.emplace_back([&] { pixels = image(shared, bounds, 64); });
     for (std::thread& thread : threads) thread.join();
     for (const std::vector<Pixel>& pixels : images) EXPECT_EQ(pixels, expected);
     EXPECT_GT(expansionStats(shared).evictions, 0u);
