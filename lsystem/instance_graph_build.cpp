@@ -126,8 +126,8 @@ public:
         ObjectEntry start{initialTurtleState(settings_), glm::quat(1.0f, 0.0f, 0.0f, 0.0f), false};
         graph_.root = buildObject(bgrammar_.axiom(), start);
         if (settings_.pixelLines) growForPixelLines();
-        // A lazy graph's builder keeps its objects for replays.
-        return keepItems_ ? std::move(graph_) : graph_;
+        if (keepItems_) return std::move(graph_);
+        return graph_; // a lazy graph's builder keeps its objects for replays
     }
 
     // An object of node for this entry among the first `finished` objects

@@ -3,8 +3,8 @@
 // expansion"): least recently used first out under a byte budget, as Robbins
 // 1998 (§3) caches expanded branches. Guarded by one mutex and handing out
 // shared pointers to immutable expansions, so threads tracing at once share
-// what any of them expanded, and an expansion evicted while a ray is inside
-// it stays alive until that ray leaves.
+// what any of them expanded, and an expansion evicted while a ray uses it
+// stays alive until that ray is done.
 
 #include <cstdint>
 #include <list>

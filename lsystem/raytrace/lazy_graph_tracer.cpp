@@ -16,7 +16,7 @@ uint64_t capacityBytes(const std::vector<T>& values) {
 
 // The object's items interpreted again, with GraphTracer's records, boxes
 // and BVH; `bounds` set to the union of the item boxes.
-ExpandedObject expanded(const LazyGraphTracer& tracer, uint32_t object, Bounds& bounds) {
+ExpandedObject expandForTracing(const LazyGraphTracer& tracer, uint32_t object, Bounds& bounds) {
     ObjectExpansion expansion = expandObject(*tracer.graph, object);
     ExpandedObject expanded{std::move(expansion.items),         {},
                             std::move(expansion.primitiveIds),  std::move(expansion.instances),
@@ -44,7 +44,7 @@ ExpandedObject expanded(const LazyGraphTracer& tracer, uint32_t object, Bounds& 
 std::shared_ptr<const ExpandedObject> expansionOf(const LazyGraphTracer& tracer, uint32_t object) {
     if (std::shared_ptr<const ExpandedObject> held = findExpansion(*tracer.cache, object)) return held;
     Bounds bounds;
-    auto made = std::make_shared<const ExpandedObject>(expanded(tracer, object, bounds));
+    auto made = std::make_shared<const ExpandedObject>(expandForTracing(tracer, object, bounds));
     const uint64_t bytes = byteSize(*made);
     return holdExpansion(*tracer.cache, object, std::move(made), bytes);
 }
@@ -114,7 +114,7 @@ LazyGraphTracer buildLazyGraphTracer(const LazyInstanceGraph& graph, uint64_t bu
         tracer.lineScale = worldPerPixel(objects.objects[objects.root].bounds);
     tracer.objectBounds.resize(objects.objects.size());
     for (uint32_t object = 0; object < objects.objects.size(); ++object)
-        expanded(tracer, object, tracer.objectBounds[object]);
+        expandForTracing(tracer, object, tracer.objectBounds[object]);
     tracer.cache->budgetBytes = budgetBytes;
     tracer.cache->objects.resize(objects.objects.size());
     return tracer;
