@@ -2,8 +2,13 @@
 // body from a local entry frame (Calgary b-grammar thesis, §4.2), with the
 // turtle's own applyModule(); references to other nodes become instances of
 // objects looked up by (node, entry values read), built on first use.
+// deriveLazyInstanceGraph runs the same interpretation keeping only the
+// objects, and expandObject replays one object's interpretation on demand
+// (Robbins 1998, §3: a branch is expanded when a ray reaches its box).
 
 #include <algorithm>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -13,12 +18,14 @@
 
 #include "lsystem/error.h"
 #include "lsystem/instance_graph.h"
+#include "lsystem/instance_graph_lazy.h"
 #include "lsystem/instance_key.h"
 #include "lsystem/status_function.h"
 
 namespace lsys {
 
-namespace {
+// Named rather than anonymous: GraphDerivation, declared in a header, holds a GraphBuilder.
+namespace graph_build {
 
 // What a node's whole word does to the two stacks, and whether it cuts.
 struct NodeSummary {
@@ -77,6 +84,24 @@ struct BuiltObject {
     StatusFunction status;
 };
 
+// Per object of a lazy graph, what replaying its interpretation needs: its
+// entry, and where the build's numbering of objects and primitives stood.
+struct ObjectOrigin {
+    ObjectEntry entry;
+    uint32_t objectsBefore = 0;          // objects finished when its interpretation began
+    uint32_t firstNewChild = UINT32_MAX; // the object its first instance of a new object built
+    uint32_t primitivesBefore = 0;       // the graph's primitives then
+    uint32_t primitivesAfter = 0;        // and when it was finished
+};
+
+// Where a replayed interpretation stands in the build's numbering.
+struct Replay {
+    const ObjectOrigin& origin;
+    uint32_t objects = 0;
+    uint32_t primitives = 0;
+    ObjectExpansion& expansion;
+};
+
 // Objects of one node already built whose reads were the same mask.
 struct KeyedObjects {
     uint16_t mask = 0;
@@ -86,9 +111,9 @@ struct KeyedObjects {
 class GraphBuilder {
 public:
     GraphBuilder(const BGrammar& bgrammar, const Grammar& grammar, const InstanceGraphOptions& options,
-                 const SurfaceLibrary& surfaces)
-        : bgrammar_(bgrammar), options_(options), surfaces_(surfaces), settings_(turtleSettings(grammar)),
-          commands_(turtleCommands(grammar.symbols, grammar.style.cpfgModules)),
+                 const SurfaceLibrary& surfaces, bool keepItems)
+        : bgrammar_(bgrammar), options_(options), surfaces_(surfaces), keepItems_(keepItems),
+          settings_(turtleSettings(grammar)), commands_(turtleCommands(grammar.symbols, grammar.style.cpfgModules)),
           summaries_(summarise(bgrammar, commands_)),
           oneObject_(placesInPlant(bgrammar, commands_) || !settings_.movements.empty()),
           lookup_(bgrammar.nodes.size()) {}
@@ -101,15 +126,25 @@ public:
         ObjectEntry start{initialTurtleState(settings_), glm::quat(1.0f, 0.0f, 0.0f, 0.0f), false};
         graph_.root = buildObject(bgrammar_.axiom(), start);
         if (settings_.pixelLines) growForPixelLines();
-        return std::move(graph_);
+        if (keepItems_) return std::move(graph_);
+        return graph_; // a lazy graph's builder keeps its objects for replays
+    }
+
+    // An object of node for this entry among the first `finished` objects
+    // whose reads agree. Each (node, mask, key) names one object, entered
+    // when it was finished: limited to the objects finished at some point of
+    // the build, this is the answer the build got there.
+    std::optional<uint32_t> existingObject(uint32_t node, const ObjectEntry& entry, uint32_t finished) const {
+        for (const KeyedObjects& keyed : lookup_[node]) {
+            auto found = keyed.objects.find(styleKey(entry, keyed.mask, options_.orientationGranularity));
+            if (found != keyed.objects.end() && found->second < finished) return found->second;
+        }
+        return std::nullopt;
     }
 
     // An object of node for this entry: an existing one whose reads agree, or a new one.
     uint32_t objectFor(uint32_t node, const ObjectEntry& entry) {
-        for (const KeyedObjects& keyed : lookup_[node]) {
-            auto found = keyed.objects.find(styleKey(entry, keyed.mask, options_.orientationGranularity));
-            if (found != keyed.objects.end()) return found->second;
-        }
+        if (std::optional<uint32_t> found = existingObject(node, entry, UINT32_MAX)) return *found;
         const uint32_t object = buildObject(node, entry);
         const uint16_t mask = built_[object].reads;
         auto keyed = std::find_if(lookup_[node].begin(), lookup_[node].end(),
@@ -121,15 +156,26 @@ public:
 
     uint32_t buildObject(uint32_t node, const ObjectEntry& entry);
 
+    // The object the build placed where a replay stands: the one it found,
+    // or the one it built there (which moved its numbering past that object).
+    uint32_t replayedObjectFor(uint32_t node, const ObjectEntry& entry, Replay& replay) const {
+        if (std::optional<uint32_t> found = existingObject(node, entry, replay.objects)) return *found;
+        // Objects whose interpretations began together nest, outermost last:
+        // the replayed object's own first new child, or the outermost.
+        const uint32_t child = replay.objects == replay.origin.objectsBefore ? replay.origin.firstNewChild
+                                                                             : outermostStartedAt_[replay.objects];
+        replay.objects = child + 1;
+        replay.primitives = origins_[child].primitivesAfter;
+        return child;
+    }
+
+    ObjectExpansion expand(uint32_t object) const;
+
     // Lines drawn pixels wide become wider when flattened or exported
     // (InstanceGraph::pixelLines): every box grows by the widest of them, at
     // least what the flat plant's own bounds (within the root's) give.
     void growForPixelLines() {
-        const float perPixel = worldPerPixel(graph_.objects[graph_.root].bounds);
-        float widest = 0.0f;
-        for (const GraphPrimitive& primitive : graph_.primitives)
-            if (primitive.kind == PrimitiveKind::Segment)
-                widest = std::max({widest, primitive.startRadius * perPixel, primitive.endRadius * perPixel});
+        const float widest = widestSegmentRadius_ * worldPerPixel(graph_.objects[graph_.root].bounds);
         for (GraphObject& object : graph_.objects)
             if (!object.bounds.empty()) {
                 object.bounds.min -= glm::vec3(widest);
@@ -141,8 +187,9 @@ public:
     // primitives (and their items) would be past the budget: what it holds,
     // twice for the vectors' growth.
     void needRoomFor(uint64_t primitives) const {
-        constexpr uint64_t kObjectBytes = sizeof(GraphObject) + sizeof(BuiltObject) + sizeof(KeyedObjects);
-        uint64_t bytes = bytesTimes(graph_.objects.size() + 1, kObjectBytes);
+        const uint64_t objectBytes = sizeof(GraphObject) + sizeof(BuiltObject) + sizeof(KeyedObjects) +
+                                     (keepItems_ ? 0 : sizeof(ObjectOrigin) + sizeof(uint32_t));
+        uint64_t bytes = bytesTimes(graph_.objects.size() + 1, objectBytes);
         bytes = bytesPlus(bytes, bytesTimes(graph_.items.size() + primitives, sizeof(GraphItem)));
         bytes = bytesPlus(bytes, bytesTimes(graph_.primitives.size() + primitives, sizeof(GraphPrimitive)));
         bytes = bytesPlus(bytes, bytesTimes(graph_.instances.size(), sizeof(GraphInstance)));
@@ -152,6 +199,9 @@ public:
     const BGrammar& bgrammar_;
     const InstanceGraphOptions& options_;
     const SurfaceLibrary& surfaces_;
+    // false: a lazy graph's bounds pass, which keeps the objects and their
+    // origins but none of their items, primitives, instances or polygons.
+    const bool keepItems_;
     const TurtleSettings settings_;
     const std::vector<TurtleCommand> commands_;
     const std::vector<NodeSummary> summaries_;
@@ -163,15 +213,27 @@ public:
     std::vector<BuiltObject> built_;                // per object
     std::unordered_map<std::string, uint32_t> surfaceIndex_;
     InstanceGraph graph_;
+    uint32_t primitivesNumbered_ = 0; // graph_.primitives.size() when items are kept
+    float widestSegmentRadius_ = 0.0f;
+    std::vector<ObjectOrigin> origins_;        // per object, without kept items
+    std::vector<uint32_t> outermostStartedAt_; // by objects finished then, without kept items
 };
 
 // Interprets one object's body (inlining the nodes that cannot be objects)
-// from its local entry frame, and records its items, counts and bounds.
+// from its local entry frame, and records its items, counts and bounds:
+// building, into the graph (or, for a lazy graph, nowhere), or replaying
+// an object the build made, into an expansion.
 class ObjectInterpreter {
 public:
     ObjectInterpreter(GraphBuilder& builder, const ObjectEntry& entry)
-        : b_(builder), entry_(entry), state_(entry.style), provenance_(Provenance::pristine()),
-          chunk_(builder.surfaces_, builder.settings_.look) {
+        : ObjectInterpreter(builder, entry, &builder, nullptr) {}
+    ObjectInterpreter(const GraphBuilder& builder, Replay& replay)
+        : ObjectInterpreter(builder, replay.origin.entry, nullptr, &replay) {}
+
+private:
+    ObjectInterpreter(const GraphBuilder& builder, const ObjectEntry& entry, GraphBuilder* building, Replay* replay)
+        : b_(builder), building_(building), replay_(replay), entry_(entry), state_(entry.style),
+          provenance_(Provenance::pristine()), chunk_(builder.surfaces_, builder.settings_.look) {
         state_.position = glm::vec3(0.0f);
         state_.heading = {0.0f, 1.0f, 0.0f};
         state_.left = {-1.0f, 0.0f, 0.0f};
@@ -181,6 +243,7 @@ public:
         if (entry.polygonOpen) stack_.polygons.push_back({});
     }
 
+public:
     void interpretBody(uint32_t node) {
         for (const BodyItem& item : b_.bgrammar_.bodyOf(node)) {
             if (!item.isNode()) {
@@ -197,7 +260,7 @@ public:
     // Closes the object: appends it to the graph with its status function.
     uint32_t finish(uint32_t node) {
         flushChunk();
-        InstanceGraph& graph = b_.graph_;
+        InstanceGraph& graph = building_->graph_;
         BuiltObject built;
         built.status.exit = {state_, provenance_, resolve(state_.joint)};
         for (size_t i = 0; i < stack_.branches.size(); ++i)
@@ -209,9 +272,18 @@ public:
         graph.objects.push_back({node, static_cast<uint32_t>(graph.items.size()), static_cast<uint32_t>(items_.size()),
                                  bounds_, primitives_, static_cast<uint64_t>(joints_)});
         graph.items.insert(graph.items.end(), items_.begin(), items_.end());
-        b_.built_.push_back(std::move(built));
+        building_->built_.push_back(std::move(built));
         return object;
     }
+
+    // Closes a replayed object: its items, in the order the build made them.
+    void finishReplay() {
+        flushChunk();
+        replay_->expansion.items = std::move(items_);
+    }
+
+    // The object whose interpretation this one built first, if any.
+    uint32_t firstNewChild() const { return firstNewChild_; }
 
 private:
     size_t localPolygons() const { return stack_.polygons.size() - (entry_.polygonOpen ? 1 : 0); }
@@ -284,13 +356,15 @@ private:
         const glm::mat3 toParent(-state_.left, state_.heading, state_.up);
         ObjectEntry entry{state_, entry_.orientation * frame.rotation, !stack_.polygons.empty()};
         entry.style.tropism = glm::transpose(toParent) * state_.tropism;
-        const uint32_t child = b_.objectFor(node, entry);
+        const uint32_t child = replay_ ? b_.replayedObjectFor(node, entry, *replay_) : newOrExistingObject(node, entry);
 
         const BuiltObject& built = b_.built_[child];
         const GraphObject& object = b_.graph_.objects[child];
         reads_ |= parentReads(built.reads, provenance_, localPolygons());
-        items_.push_back({GraphItem::Kind::Instance, static_cast<uint32_t>(b_.graph_.instances.size())});
-        b_.graph_.instances.push_back({child, frame, resolve(state_.joint)});
+        if (std::vector<GraphInstance>* instances = keptInstances()) {
+            items_.push_back({GraphItem::Kind::Instance, static_cast<uint32_t>(instances->size())});
+            instances->push_back({child, frame, resolve(state_.joint)});
+        }
         bounds_.extend(transformed(object.bounds, frame));
 
         // The child's status function applied to the state where it starts.
@@ -309,11 +383,45 @@ private:
         primitives_ += object.primitives;
     }
 
-    // Moves what the turtle drew since the last instance into the graph.
+    uint32_t newOrExistingObject(uint32_t node, const ObjectEntry& entry) {
+        const size_t finished = b_.graph_.objects.size();
+        const uint32_t child = building_->objectFor(node, entry);
+        if (child >= finished && firstNewChild_ == UINT32_MAX) firstNewChild_ = child;
+        return child;
+    }
+
+    // Where instances, primitives and polygons go: the graph's arrays, a
+    // replay's expansion, or nowhere in a lazy graph's bounds pass.
+    std::vector<GraphInstance>* keptInstances() const {
+        if (replay_) return &replay_->expansion.instances;
+        return b_.keepItems_ ? &building_->graph_.instances : nullptr;
+    }
+    std::vector<GraphPrimitive>* keptPrimitives() const {
+        if (replay_) return &replay_->expansion.primitives;
+        return b_.keepItems_ ? &building_->graph_.primitives : nullptr;
+    }
+    std::vector<PolygonShape>* keptPolygons() const {
+        if (replay_) return &replay_->expansion.polygons;
+        return b_.keepItems_ ? &building_->graph_.polygons : nullptr;
+    }
+
+    // The graph's index of a surface by name; a replay finds every name the build entered.
+    uint32_t surfaceIndex(const std::string& name) {
+        if (replay_) return b_.surfaceIndex_.at(name);
+        InstanceGraph& graph = building_->graph_;
+        auto [found, added] =
+            building_->surfaceIndex_.try_emplace(name, static_cast<uint32_t>(graph.surfaceNames.size()));
+        if (added) graph.surfaceNames.push_back(name);
+        return found->second;
+    }
+
+    // Moves what the turtle drew since the last instance into the graph (or the expansion).
     void flushChunk() {
         PlantAsset drawn = chunk_.finish();
-        b_.needRoomFor(drawn.primitives.size());
-        InstanceGraph& graph = b_.graph_;
+        if (building_) b_.needRoomFor(drawn.primitives.size());
+        uint32_t& numbered = replay_ ? replay_->primitives : building_->primitivesNumbered_;
+        std::vector<GraphPrimitive>* primitives = keptPrimitives();
+        std::vector<PolygonShape>* polygons = keptPolygons();
         for (const Primitive& p : drawn.primitives) {
             GraphPrimitive primitive{p.frame, p.kind, p.material, p.shape, p.length, p.startRadius, p.endRadius};
             if (p.kind == PrimitiveKind::Segment) {
@@ -321,29 +429,33 @@ private:
                 primitive.joint = resolve(chunkSegments_[p.joint]);
                 primitive.parentJoint = resolve(joint.parent);
                 primitive.stiffness = joint.stiffness;
+                if (building_)
+                    building_->widestSegmentRadius_ =
+                        std::max({building_->widestSegmentRadius_, p.startRadius, p.endRadius});
             } else {
                 primitive.joint = resolve(p.joint);
             }
-            if (p.kind == PrimitiveKind::Surface) {
-                const std::string& name = drawn.surfaces[p.shape].name;
-                auto [found, added] =
-                    b_.surfaceIndex_.try_emplace(name, static_cast<uint32_t>(graph.surfaceNames.size()));
-                if (added) graph.surfaceNames.push_back(name);
-                primitive.shape = found->second;
+            if (p.kind == PrimitiveKind::Surface) primitive.shape = surfaceIndex(drawn.surfaces[p.shape].name);
+            if (p.kind == PrimitiveKind::Polygon && polygons) {
+                primitive.shape = static_cast<uint32_t>(polygons->size());
+                polygons->push_back(std::move(drawn.polygons[p.shape]));
             }
-            if (p.kind == PrimitiveKind::Polygon) {
-                primitive.shape = static_cast<uint32_t>(graph.polygons.size());
-                graph.polygons.push_back(std::move(drawn.polygons[p.shape]));
+            if (primitives) {
+                items_.push_back({GraphItem::Kind::Primitive, static_cast<uint32_t>(primitives->size())});
+                primitives->push_back(primitive);
             }
-            items_.push_back({GraphItem::Kind::Primitive, static_cast<uint32_t>(graph.primitives.size())});
-            graph.primitives.push_back(primitive);
+            if (replay_) replay_->expansion.primitiveIds.push_back(numbered);
+            ++numbered;
         }
         primitives_ += drawn.primitives.size();
         bounds_.extend(drawn.bounds);
         chunkSegments_.clear();
     }
 
-    GraphBuilder& b_;
+    const GraphBuilder& b_;
+    GraphBuilder* building_; // null in a replay, which changes nothing of the builder's
+    Replay* replay_;         // null while building
+    uint32_t firstNewChild_ = UINT32_MAX;
     const ObjectEntry& entry_;
     TurtleState state_;
     TurtleStack stack_;
@@ -365,19 +477,73 @@ uint32_t GraphBuilder::buildObject(uint32_t node, const ObjectEntry& entry) {
         throw DerivationError("the instance graph would hold more than " + std::to_string(options_.maxObjects) +
                               " objects");
     needRoomFor(0);
+    ObjectOrigin origin{entry, static_cast<uint32_t>(graph_.objects.size()), UINT32_MAX, primitivesNumbered_, 0};
     ObjectInterpreter interpreter(*this, entry);
     interpreter.interpretBody(node);
-    return interpreter.finish(node);
+    const uint32_t object = interpreter.finish(node);
+    if (!keepItems_) {
+        origin.firstNewChild = interpreter.firstNewChild();
+        origin.primitivesAfter = primitivesNumbered_;
+        origins_.push_back(std::move(origin));
+        // Finished last of those that began together: the outermost.
+        if (outermostStartedAt_.size() <= origins_.back().objectsBefore) outermostStartedAt_.resize(object + 1);
+        outermostStartedAt_[origins_.back().objectsBefore] = object;
+    }
+    return object;
+}
+
+ObjectExpansion GraphBuilder::expand(uint32_t object) const {
+    const ObjectOrigin& origin = origins_.at(object);
+    ObjectExpansion expansion;
+    Replay replay{origin, origin.objectsBefore, origin.primitivesBefore, expansion};
+    ObjectInterpreter interpreter(*this, replay);
+    interpreter.interpretBody(graph_.objects[object].node);
+    interpreter.finishReplay();
+    return expansion;
+}
+
+} // namespace graph_build
+
+using graph_build::GraphBuilder;
+
+namespace {
+
+void requireInterpretedWord(const BGrammar& bgrammar, const Grammar& grammar) {
+    if (!grammar.interpretation.empty() && !bgrammar.interpreted)
+        throw std::invalid_argument("the instance graph needs the b-grammar of the interpreted word "
+                                    "(BGrammarOptions::interpreted)");
 }
 
 } // namespace
 
 InstanceGraph buildInstanceGraph(const BGrammar& bgrammar, const Grammar& grammar, const InstanceGraphOptions& options,
                                  const SurfaceLibrary& surfaces) {
-    if (!grammar.interpretation.empty() && !bgrammar.interpreted)
-        throw std::invalid_argument("the instance graph needs the b-grammar of the interpreted word "
-                                    "(BGrammarOptions::interpreted)");
-    return GraphBuilder(bgrammar, grammar, options, surfaces).build();
+    requireInterpretedWord(bgrammar, grammar);
+    return GraphBuilder(bgrammar, grammar, options, surfaces, true).build();
+}
+
+// The builder of a lazy graph with what it reads: it stays, to replay objects.
+struct GraphDerivation {
+    GraphDerivation(const BGrammar& bgrammar, const Grammar& grammar, const InstanceGraphOptions& options,
+                    const SurfaceLibrary& surfaces)
+        : bgrammar(bgrammar), options(options), surfaces(surfaces.meshDirectories()),
+          builder(this->bgrammar, grammar, this->options, this->surfaces, false) {}
+    const BGrammar bgrammar;
+    const InstanceGraphOptions options;
+    const SurfaceLibrary surfaces; // the same folders, its own cache
+    GraphBuilder builder;
+};
+
+LazyInstanceGraph deriveLazyInstanceGraph(const BGrammar& bgrammar, const Grammar& grammar,
+                                          const InstanceGraphOptions& options, const SurfaceLibrary& surfaces) {
+    requireInterpretedWord(bgrammar, grammar);
+    auto derivation = std::make_shared<GraphDerivation>(bgrammar, grammar, options, surfaces);
+    InstanceGraph graph = derivation->builder.build();
+    return {std::move(graph), std::move(derivation)};
+}
+
+ObjectExpansion expandObject(const LazyInstanceGraph& graph, uint32_t object) {
+    return graph.derivation->builder.expand(object);
 }
 
 } // namespace lsys

@@ -1,7 +1,5 @@
 #include "lsystem/raytrace/graph_tracer.h"
 
-#include <glm/geometric.hpp>
-
 #include "lsystem/turtle.h"
 
 namespace lsys {
@@ -16,17 +14,12 @@ bool traceObject(const GraphTracer& tracer, uint32_t object, Ray& ray, HitQuery 
     traverseBvh(tracer.objectBvhs[object], ray, [&](uint32_t i) {
         const GraphItem& item = items[i];
         if (item.kind == GraphItem::Kind::Primitive) {
-            found |= tracePrimitive(tracer.primitives[item.index], item.index, tracer.shapes, ray, hit);
+            found |= tracePrimitive(tracer.primitives[item.index], item.index, tracer.shapes.surfaces,
+                                    tracer.shapes.polygons, ray, hit);
         } else {
-            const GraphInstance& instance = graph.instances[item.index];
-            Ray local = rayInFrame(ray, instance.frame);
-            Hit inner;
-            if (traceObject(tracer, instance.object, local, query, inner)) {
-                inner.normal = glm::normalize(instance.frame.rotation * inner.normal);
-                hit = inner;
-                ray.tMax = inner.t;
-                found = true;
-            }
+            found |= traceInstance(graph.instances[item.index], ray, hit, [&](uint32_t child, Ray& local, Hit& inner) {
+                return traceObject(tracer, child, local, query, inner);
+            });
         }
         return found && query == HitQuery::Any;
     });
@@ -52,7 +45,8 @@ GraphTracer buildGraphTracer(const InstanceGraph& graph, const SurfaceLibrary& s
         itemBounds.clear();
         for (const GraphItem& item : graph.itemsOf(object)) {
             if (item.kind == GraphItem::Kind::Primitive) {
-                itemBounds.push_back(tracedBounds(tracer.primitives[item.index], tracer.shapes));
+                itemBounds.push_back(
+                    tracedBounds(tracer.primitives[item.index], tracer.shapes.surfaces, tracer.shapes.polygons));
             } else {
                 const GraphInstance& instance = graph.instances[item.index];
                 itemBounds.push_back(transformed(tracer.objectBounds[instance.object], instance.frame));

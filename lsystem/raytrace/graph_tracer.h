@@ -11,6 +11,8 @@
 #include <optional>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "lsystem/instance_graph.h"
 #include "lsystem/raytrace/bvh.h"
 #include "lsystem/raytrace/ray.h"
@@ -26,6 +28,21 @@ struct GraphTracer {
     std::vector<Bounds> objectBounds; // of what each object's subtree draws, in its local space
     std::vector<Bvh> objectBvhs;      // over each object's items, in itemsOf order
 };
+
+// Traces an instance: the ray carried into the child's frame, traced there
+// by `traceChild(object, localRay, localHit)` (true on a hit nearer than
+// localRay.tMax), and a hit brought back, lowering ray.tMax. Shared by the
+// graph tracers, whichever way they hold an object's items.
+template <typename TraceChild>
+bool traceInstance(const GraphInstance& instance, Ray& ray, Hit& hit, TraceChild&& traceChild) {
+    Ray local = rayInFrame(ray, instance.frame);
+    Hit inner;
+    if (!traceChild(instance.object, local, inner)) return false;
+    inner.normal = glm::normalize(instance.frame.rotation * inner.normal);
+    hit = inner;
+    ray.tMax = inner.t;
+    return true;
+}
 
 // Built once: objects children first, so each object's instances are boxed
 // by boxes already known. Throws SurfaceError for a surface the graph's look

@@ -12,16 +12,13 @@
 namespace lsys {
 namespace {
 
-void addMeshes(TracedShapes& shapes, const std::vector<SurfaceMesh>& surfaces,
-               const std::vector<PolygonShape>& polygons) {
+TracedMeshes tracedSurfaces(const std::vector<SurfaceMesh>& surfaces) {
+    TracedMeshes traced;
     for (const SurfaceMesh& surface : surfaces) {
-        shapes.surfaces.push_back(surfaceMesh(surface));
-        shapes.surfaceBounds.push_back(boundsOfPoints(surface.positions));
+        traced.meshes.push_back(surfaceMesh(surface));
+        traced.bounds.push_back(boundsOfPoints(surface.positions));
     }
-    for (const PolygonShape& polygon : polygons) {
-        shapes.polygons.push_back(polygonMesh(polygon.outline));
-        shapes.polygonBounds.push_back(boundsOfPoints(shapes.polygons.back().positions));
-    }
+    return traced;
 }
 
 Bounds widened(Bounds box) {
@@ -50,18 +47,23 @@ std::optional<ShapeHit> nearestTriangle(const Ray& ray, const TriangleMesh& mesh
 
 } // namespace
 
+TracedMeshes tracedPolygons(const std::vector<PolygonShape>& polygons) {
+    TracedMeshes traced;
+    for (const PolygonShape& polygon : polygons) {
+        traced.meshes.push_back(polygonMesh(polygon.outline));
+        traced.bounds.push_back(boundsOfPoints(traced.meshes.back().positions));
+    }
+    return traced;
+}
+
 TracedShapes tracedShapesOf(const PlantAsset& plant) {
-    TracedShapes shapes;
-    addMeshes(shapes, plant.surfaces, plant.polygons);
-    return shapes;
+    return {tracedSurfaces(plant.surfaces), tracedPolygons(plant.polygons)};
 }
 
 TracedShapes tracedShapesOf(const InstanceGraph& graph, const SurfaceLibrary& surfaces) {
     std::vector<SurfaceMesh> meshes;
     for (const std::string& name : graph.surfaceNames) meshes.push_back(surfaceOfLook(graph.look, surfaces, name));
-    TracedShapes shapes;
-    addMeshes(shapes, meshes, graph.polygons);
-    return shapes;
+    return {tracedSurfaces(meshes), tracedPolygons(graph.polygons)};
 }
 
 Primitive tracedPrimitive(const GraphPrimitive& primitive, float lineScale) {
@@ -81,7 +83,7 @@ Ray rayInFrame(const Ray& ray, const Frame& frame) {
     return {toLocal * (ray.origin - frame.position), toLocal * ray.direction, ray.tMin, ray.tMax};
 }
 
-Bounds tracedBounds(const Primitive& primitive, const TracedShapes& shapes) {
+Bounds tracedBounds(const Primitive& primitive, const TracedMeshes& surfaces, const TracedMeshes& polygons) {
     if (!isDrawable(primitive)) return {};
     switch (primitive.kind) {
     case PrimitiveKind::Segment: {
@@ -96,21 +98,22 @@ Bounds tracedBounds(const Primitive& primitive, const TracedShapes& shapes) {
         return widened({primitive.frame.position - glm::vec3(primitive.startRadius),
                         primitive.frame.position + glm::vec3(primitive.startRadius)});
     case PrimitiveKind::Surface: {
-        const Bounds& local = shapes.surfaceBounds.at(primitive.shape);
+        const Bounds& local = surfaces.bounds.at(primitive.shape);
         if (local.empty()) return local;
         return widened(transformed({local.min * primitive.length, local.max * primitive.length}, primitive.frame));
     }
-    case PrimitiveKind::Polygon: return widened(shapes.polygonBounds.at(primitive.shape));
+    case PrimitiveKind::Polygon: return widened(polygons.bounds.at(primitive.shape));
     }
     return {};
 }
 
-bool tracePrimitive(const Primitive& primitive, uint32_t index, const TracedShapes& shapes, Ray& ray, Hit& hit) {
+bool tracePrimitive(const Primitive& primitive, uint32_t index, const TracedMeshes& surfaces,
+                    const TracedMeshes& polygons, Ray& ray, Hit& hit) {
     if (!isDrawable(primitive)) return false;
     std::optional<ShapeHit> found;
     if (primitive.kind == PrimitiveKind::Polygon) {
         // The outline is already in the ray's space; the frame is only where it began.
-        found = nearestTriangle(ray, shapes.polygons.at(primitive.shape));
+        found = nearestTriangle(ray, polygons.meshes.at(primitive.shape));
     } else {
         // Into the primitive's frame, and for a surface by 1/length into its
         // unit mesh's space (t is unchanged).
@@ -123,7 +126,7 @@ bool tracePrimitive(const Primitive& primitive, uint32_t index, const TracedShap
         case PrimitiveKind::Surface:
             local.origin /= primitive.length;
             local.direction /= primitive.length;
-            found = nearestTriangle(local, shapes.surfaces.at(primitive.shape));
+            found = nearestTriangle(local, surfaces.meshes.at(primitive.shape));
             break;
         case PrimitiveKind::Polygon: break;
         }

@@ -15,15 +15,21 @@
 
 namespace lsys {
 
-// The triangles of a plant's surfaces and polygons, by Primitive::shape.
+// Triangle meshes by Primitive::shape, each with its box.
+struct TracedMeshes {
+    std::vector<TriangleMesh> meshes;
+    std::vector<Bounds> bounds;
+};
+
+// The triangles of a plant's surfaces and polygons: two lists, as a lazily
+// expanded graph keeps its surfaces once and each object's polygons with it.
 struct TracedShapes {
-    std::vector<TriangleMesh> surfaces; // in the surface's own space, at scale 1
-    std::vector<Bounds> surfaceBounds;
-    std::vector<TriangleMesh> polygons; // in the space of the outline (a flat plant's, or the drawing object's)
-    std::vector<Bounds> polygonBounds;
+    TracedMeshes surfaces; // in the surface's own space, at scale 1
+    TracedMeshes polygons; // in the space of the outline (a flat plant's, or the drawing object's)
 };
 
 TracedShapes tracedShapesOf(const PlantAsset& plant);
+TracedMeshes tracedPolygons(const std::vector<PolygonShape>& polygons);
 // The graph's surfaces by name, looked up as flattening does (the grammar's
 // look first, then `surfaces`); throws SurfaceError for one that is missing.
 TracedShapes tracedShapesOf(const InstanceGraph& graph, const SurfaceLibrary& surfaces);
@@ -41,11 +47,12 @@ Ray rayInFrame(const Ray& ray, const Frame& frame);
 // in, widened by a few ulps of its size so a hit on a face of the box is
 // never culled by the box test's rounding. Empty when it draws nothing
 // (isDrawable) or its shape has no triangles.
-Bounds tracedBounds(const Primitive& primitive, const TracedShapes& shapes);
+Bounds tracedBounds(const Primitive& primitive, const TracedMeshes& surfaces, const TracedMeshes& polygons);
 
 // Tests primitive number `index` against the ray (in the space of the
 // primitive's frame). On a hit nearer than ray.tMax it sets `hit` (the
 // normal in the ray's space), lowers ray.tMax to it and returns true.
-bool tracePrimitive(const Primitive& primitive, uint32_t index, const TracedShapes& shapes, Ray& ray, Hit& hit);
+bool tracePrimitive(const Primitive& primitive, uint32_t index, const TracedMeshes& surfaces,
+                    const TracedMeshes& polygons, Ray& ray, Hit& hit);
 
 } // namespace lsys

@@ -1,0 +1,151 @@
+// The lazy graph tracer (Robbins 1998, §3): objects interpreted again from
+// the b-grammar on demand, held in an LRU cache, give GraphTracer's hits bit
+// for bit, whatever the cache's budget, from one thread or several.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "../instance_graph/instance_graph_test_support.h"
+#include "lsystem/instance_graph_lazy.h"
+#include "lsystem/raytrace/graph_tracer.h"
+#include "lsystem/raytrace/lazy_graph_tracer.h"
+#include "raytrace_test_support.h"
+
+namespace lsys::test {
+namespace {
+
+// A plant's graph both ways: built whole, and derived for lazy expansion.
+struct BothGraphs {
+    InstanceGraph whole;
+    LazyInstanceGraph lazy;
+};
+
+BothGraphs bothGraphs(const Grammar& grammar, std::optional<int> steps = std::nullopt) {
+    const BGrammar bgrammar = interpretedBGrammar(grammar, steps);
+    return {buildInstanceGraph(bgrammar, grammar), deriveLazyInstanceGraph(bgrammar, grammar)};
+}
+
+void expectSameHit(const std::optional<Hit>& actual, const std::optional<Hit>& expected) {
+    ASSERT_EQ(actual.has_value(), expected.has_value());
+    if (!expected) return;
+    EXPECT_EQ(actual->t, expected->t);
+    EXPECT_EQ(actual->primitive, expected->primitive);
+    EXPECT_EQ(actual->normal, expected->normal);
+    EXPECT_EQ(actual->kind, expected->kind);
+    EXPECT_EQ(actual->material, expected->material);
+}
+
+// Closest and any hits of seeded rays through both tracers, the lazy one
+// under `budgetBytes`.
+void expectGraphTracersHits(const BothGraphs& graphs, uint64_t budgetBytes, size_t rayCount) {
+    const GraphTracer whole = buildGraphTracer(graphs.whole);
+    const LazyGraphTracer lazy = buildLazyGraphTracer(graphs.lazy, budgetBytes);
+    size_t hits = 0;
+    for (const Ray& ray : raysAt(graphs.whole.objects[graphs.whole.root].bounds, rayCount, 5)) {
+        for (HitQuery query : {HitQuery::Closest, HitQuery::Any}) {
+            const std::optional<Hit> expected = trace(whole, ray, query);
+            expectSameHit(trace(lazy, ray, query), expected);
+            hits += expected.has_value() && query == HitQuery::Closest;
+        }
+    }
+    // Aimed into the box, some hit (a few percent of them on pixel-wide lines).
+    EXPECT_GT(hits, rayCount / 40);
+    EXPECT_LE(expansionStats(lazy).peakBytes, budgetBytes);
+}
+
+void expectLazyIsWhole(const Grammar& grammar, std::optional<int> steps = std::nullopt) {
+    const BothGraphs graphs = bothGraphs(grammar, steps);
+    for (uint64_t budget : {uint64_t{1}, uint64_t{16} << 10, UINT64_MAX}) expectGraphTracersHits(graphs, budget, 500);
+}
+
+TEST(LazyGraphTracer, FractalBushFiveStepsIsTheGraphTracer) {
+    expectLazyIsWhole(loadOk("plants/fractal_bush.lsys"), 5);
+}
+
+TEST(LazyGraphTracer, MonopodialTreeIsTheGraphTracer) { expectLazyIsWhole(loadOk("plants/monopodial_tree.lsys")); }
+
+TEST(LazyGraphTracer, LeafSurfacesAreTheGraphTracers) { expectLazyIsWhole(loadOk("plants/broadleaf.lsys")); }
+
+TEST(LazyGraphTracer, PolygonsAreTheGraphTracers) { expectLazyIsWhole(loadOk("plants/abop/fig5_5_cordate_leaf")); }
+
+TEST(LazyGraphTracer, PixelWideLinesAreTheGraphTracers) {
+    expectLazyIsWhole(loadOk("plants/abop/fig2_6a_monopodial_tree"));
+}
+
+TEST(LazyGraphTracer, LeafyPlantWithDecompositionIsTheGraphTracer) {
+    expectLazyIsWhole(loadOk("plants/leafy_plant.lsys"));
+}
+
+// A pinhole camera's closest hits, row by row: t and primitive per pixel.
+struct Pixel {
+    float t = -1.0f;
+    uint32_t primitive = UINT32_MAX;
+    friend bool operator==(const Pixel&, const Pixel&) = default;
+};
+
+std::vector<Pixel> image(const LazyGraphTracer& tracer, const Bounds& bounds, int size) {
+    const glm::vec3 centre = 0.5f * (bounds.min + bounds.max);
+    const float extent = glm::length(bounds.max - bounds.min);
+    const glm::vec3 eye = centre + glm::vec3(0.3f, 0.2f, 1.5f) * extent;
+    const glm::vec3 forward = glm::normalize(centre - eye);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
+    const glm::vec3 up = glm::cross(right, forward);
+    std::vector<Pixel> pixels;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const float u = (x + 0.5f) / size - 0.5f, v = 0.5f - (y + 0.5f) / size;
+            const std::optional<Hit> hit =
+                trace(tracer, Ray{eye, glm::normalize(forward + 0.8f * (u * right + v * up))}, HitQuery::Closest);
+            pixels.push_back(hit ? Pixel{hit->t, hit->primitive} : Pixel{});
+        }
+    return pixels;
+}
+
+TEST(LazyGraphTracer, TinyAndUnlimitedCachesGiveTheSameImage) {
+    const BothGraphs graphs = bothGraphs(loadOk("plants/fractal_bush.lsys"), 5);
+    const Bounds& bounds = graphs.whole.objects[graphs.whole.root].bounds;
+    const size_t objects = graphs.lazy.graph.objects.size();
+
+    const LazyGraphTracer unlimited = buildLazyGraphTracer(graphs.lazy, UINT64_MAX);
+    const std::vector<Pixel> expected = image(unlimited, bounds, 64);
+    EXPECT_GT(std::count_if(expected.begin(), expected.end(), [](const Pixel& p) { return p.t > 0.0f; }), 200);
+    EXPECT_EQ(expansionStats(unlimited).expansions, objects); // each once
+    EXPECT_EQ(expansionStats(unlimited).evictions, 0u);
+
+    // One byte holds nothing: every object entered is expanded, used and dropped.
+    const LazyGraphTracer none = buildLazyGraphTracer(graphs.lazy, 1);
+    EXPECT_EQ(image(none, bounds, 64), expected);
+    EXPECT_GT(expansionStats(none).expansions, 100 * objects);
+    EXPECT_EQ(expansionStats(none).peakBytes, 0u);
+
+    // Room for half of them: objects keep displacing each other.
+    const uint64_t half = expansionStats(unlimited).bytesHeld / 2;
+    const LazyGraphTracer some = buildLazyGraphTracer(graphs.lazy, half);
+    EXPECT_EQ(image(some, bounds, 64), expected);
+    EXPECT_GT(expansionStats(some).evictions, 0u);
+    EXPECT_LE(expansionStats(some).peakBytes, half);
+    EXPECT_LE(expansionStats(some).bytesHeld, half);
+}
+
+// Threads tracing one tracer share its cache: the same pixels as one thread.
+TEST(LazyGraphTracer, ThreadsSharingACacheGiveTheSameImage) {
+    const BothGraphs graphs = bothGraphs(loadOk("plants/fractal_bush.lsys"), 5);
+    const Bounds& bounds = graphs.whole.objects[graphs.whole.root].bounds;
+    const LazyGraphTracer alone = buildLazyGraphTracer(graphs.lazy, UINT64_MAX);
+    const std::vector<Pixel> expected = image(alone, bounds, 64);
+    const LazyGraphTracer shared = buildLazyGraphTracer(graphs.lazy, expansionStats(alone).bytesHeld / 3);
+    std::vector<std::vector<Pixel>> images(4);
+    std::vector<std::thread> threads;
+    for (std::vector<Pixel>& pixels : images) threads.emplace_back([&] { pixels = image(shared, bounds, 64); });
+    for (std::thread& thread : threads) thread.join();
+    for (const std::vector<Pixel>& pixels : images) EXPECT_EQ(pixels, expected);
+    EXPECT_GT(expansionStats(shared).evictions, 0u);
+}
+
+} // namespace
+} // namespace lsys::test
