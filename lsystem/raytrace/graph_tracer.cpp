@@ -22,7 +22,7 @@ bool traceObject(const GraphTracer& tracer, uint32_t object, Ray& ray, HitQuery 
             found |= tracePrimitive(tracer.primitives[item.index], item.index, tracer.shapes, ray, hit);
         } else {
             const GraphInstance& instance = graph.instances[item.index];
-            Ray local = rayInFrame(ray, instance.frame);
+            Ray local = rayInFrame(ray, instance.frame.position, tracer.instanceToLocal[item.index]);
             Hit inner;
             if (traceObject(tracer, instance.object, local, query, inner)) {
                 inner.normal = glm::normalize(instance.frame.rotation * inner.normal);
@@ -106,7 +106,7 @@ Bounds placedBounds(const GraphTracer& tracer, uint32_t object, const Frame& fra
 } // namespace
 
 GraphTracer buildGraphTracer(const InstanceGraph& graph, const SurfaceLibrary& surfaces) {
-    GraphTracer tracer{&graph, {}, tracedShapesOf(graph, surfaces), {}, {}};
+    GraphTracer tracer{&graph, {}, {}, tracedShapesOf(graph, surfaces), {}, {}};
     // Pixel-wide lines get the world width graph export gives them (the
     // root's box over kPixelsAcrossPlant), which flattening matches when
     // the root's box is the plant's.
@@ -115,6 +115,9 @@ GraphTracer buildGraphTracer(const InstanceGraph& graph, const SurfaceLibrary& s
     tracer.primitives.reserve(graph.primitives.size());
     for (const GraphPrimitive& primitive : graph.primitives)
         tracer.primitives.push_back(tracedPrimitive(primitive, lineScale));
+    tracer.instanceToLocal.reserve(graph.instances.size());
+    for (const GraphInstance& instance : graph.instances)
+        tracer.instanceToLocal.push_back(glm::inverse(instance.frame.rotation));
     tracer.objectBounds.resize(graph.objects.size());
     tracer.objectBvhs.resize(graph.objects.size());
     const BoxCosts costs = boxCostsOf(graph);

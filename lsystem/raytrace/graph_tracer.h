@@ -20,8 +20,9 @@
 namespace lsys {
 
 struct GraphTracer {
-    const InstanceGraph* graph = nullptr; // must outlive the tracer
-    std::vector<Primitive> primitives;    // InstanceGraph::primitives as flat records
+    const InstanceGraph* graph = nullptr;   // must outlive the tracer
+    std::vector<Primitive> primitives;      // InstanceGraph::primitives as flat records
+    std::vector<glm::quat> instanceToLocal; // the inverse of each InstanceGraph::instances rotation
     TracedShapes shapes;
     std::vector<Bounds> objectBounds; // of what each object's subtree draws, in its local space
     std::vector<Bvh> objectBvhs;      // over each object's items, in itemsOf order
