@@ -13,7 +13,7 @@ failures=0
 BUSH="$DATA/plants/fractal_bush.lsys"
 
 # A PNG, with the rays and their rate on stderr.
-expect_run render 0 'bush.png: 64x48, graph tracer, 3072 camera and [0-9]* shadow rays in .* rays/s on 1 thread' -- \
+expect_run render 0 'bush.png: 64x48, graph tracer, 3072 camera and [0-9]* shadow rays in .* rays/s on 1 thread), .* s in all' -- \
     "$LSYS" render "$BUSH" -n 4 -o "$WORK/bush.png" --size 64x48 --threads 1
 head -c 8 "$WORK/bush.png" | od -An -c | grep -q 'P   N   G' || fail "render: bush.png is not a PNG"
 "$LSYS" render "$BUSH" -n 4 -o "$WORK/bush3.png" --size 64x48 --threads 3 2> /dev/null
@@ -37,6 +37,8 @@ expect_run folder 2 'is a folder' -- "$LSYS" render "$BUSH" -n 2 -o "$WORK"
 expect_run flat-budget 2 'more than the flat tracer.s budget of 1000 (--max-flat-primitives' -- \
     "$LSYS" render "$BUSH" -n 4 -o "$WORK/x.png" --tracer flat --max-flat-primitives 1000
 [ -e "$WORK/x.png" ] && fail "errors: x.png was written"
+expect_run component 2 'component plant or ramification tree' -- \
+    "$LSYS" render "$DATA/components/sunflower.comp.json" -o "$WORK/x.png"
 printf 'Axiom: F\nF --> F(\n' > "$WORK/bad.lsys"
 expect_run parse-error 2 'bad.lsys:2:' -- "$LSYS" render "$WORK/bad.lsys" -o "$WORK/x.png"
 

@@ -16,9 +16,11 @@
 #include "engine/image/image.h"
 #include "engine/scene/camera.h"
 #include "lsystem/bgrammar.h"
+#include "lsystem/components/component_graph.h"
 #include "lsystem/error.h"
 #include "lsystem/instance_graph.h"
 #include "lsystem/output_file.h"
+#include "lsystem/ramification_file.h"
 #include "lsystem/raytrace/flat_tracer.h"
 #include "lsystem/raytrace/graph_tracer.h"
 #include "lsystem/raytrace/render.h"
@@ -56,7 +58,7 @@ struct RenderArguments {
     lsys::MemoryBudget memory;
 };
 
-// Comma-separated finite numbers, exactly `counts` of them (either count when two are given).
+// Comma-separated finite numbers: `count` or `orCount` of them.
 std::optional<std::vector<float>> parseNumbers(const std::string& text, size_t count, size_t orCount) {
     std::vector<float> numbers;
     const char* at = text.c_str();
@@ -137,9 +139,11 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Traces the image through `trace` and writes it; prints the rays and their rate.
+// Traces the image through `trace` and writes it; prints the rays, their
+// rate, and the time since `begun` (the plant read, its graph and tracer built).
 int renderAndWrite(const RenderArguments& arguments, const lsys::PlantTrace& trace,
-                   const std::vector<lsys::Material>& materials, const lsys::Bounds& bounds, const char* tracerName) {
+                   const std::vector<lsys::Material>& materials, const lsys::Bounds& bounds, const char* tracerName,
+                   std::chrono::steady_clock::time_point begun) {
     lsys::RenderOptions options;
     options.width = arguments.width;
     options.height = arguments.height;
@@ -165,13 +169,13 @@ int renderAndWrite(const RenderArguments& arguments, const lsys::PlantTrace& tra
     std::cerr << arguments.output << ": " << image.width << "x" << image.height << ", " << tracerName << " tracer, "
               << image.cameraRays << " camera and " << image.shadowRays << " shadow rays in " << seconds << " s ("
               << uint64_t(double(rays) / std::max(seconds, 1e-9)) << " rays/s on " << arguments.threads
-              << (arguments.threads == 1 ? " thread)\n" : " threads)\n");
+              << (arguments.threads == 1 ? " thread), " : " threads), ") << secondsSince(begun) << " s in all\n";
     return 0;
 }
 
 // The plant flattened and traced through one BVH, when it fits the budgets.
-int renderFlat(const RenderArguments& arguments, const lsys::InstanceGraph& graph,
-               const lsys::SurfaceLibrary& surfaces) {
+int renderFlat(const RenderArguments& arguments, const lsys::InstanceGraph& graph, const lsys::SurfaceLibrary& surfaces,
+               std::chrono::steady_clock::time_point begun) {
     const uint64_t primitives = lsys::instanceGraphStats(graph).primitives;
     if (primitives > arguments.maxFlatPrimitives) {
         std::cerr << arguments.file << ": error: --tracer flat: the plant has " << primitives
@@ -185,10 +189,17 @@ int renderFlat(const RenderArguments& arguments, const lsys::InstanceGraph& grap
     lsys::need(arguments.memory, "flat tracer", lsys::bytesTimes(primitives, perPrimitive));
     const lsys::PlantAsset plant = lsys::flatten(graph, surfaces, arguments.maxFlatPrimitives);
     const lsys::FlatTracer tracer = lsys::buildFlatTracer(plant);
-    return renderAndWrite(arguments, lsys::traceOf(tracer), plant.materials, graph.objects[graph.root].bounds, "flat");
+    return renderAndWrite(arguments, lsys::traceOf(tracer), plant.materials, graph.objects[graph.root].bounds, "flat",
+                          begun);
 }
 
 int runRender(const RenderArguments& arguments) {
+    const auto begun = std::chrono::steady_clock::now();
+    if (lsys::components::isComponentFile(arguments.file) || lsys::isRamificationFile(arguments.file)) {
+        std::cerr << "lsys: error: render traces an L-system's InstanceGraph; a component plant or ramification "
+                     "tree has none (lsys export writes it as a mesh)\n";
+        return kBadInput;
+    }
     if (const std::string problem = lsys::outputPathProblem(arguments.output); !problem.empty()) {
         std::cerr << "lsys: error: " << problem << '\n';
         return kBadInput;
@@ -212,10 +223,10 @@ int runRender(const RenderArguments& arguments) {
             std::cerr << arguments.file << ": error: the plant draws nothing to render\n";
             return kBadInput;
         }
-        if (arguments.flat) return renderFlat(arguments, graph, surfaces);
+        if (arguments.flat) return renderFlat(arguments, graph, surfaces, begun);
         const lsys::GraphTracer tracer = lsys::buildGraphTracer(graph, surfaces);
         return renderAndWrite(arguments, lsys::traceOf(tracer), lsys::materialsOf(graph),
-                              graph.objects[graph.root].bounds, "graph");
+                              graph.objects[graph.root].bounds, "graph", begun);
     } catch (const std::runtime_error& error) { // DerivationError, MemoryBudgetError, SurfaceError
         std::cerr << arguments.file << ": error: " << error.what() << '\n';
         return kBadInput;
