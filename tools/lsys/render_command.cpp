@@ -175,7 +175,7 @@ int renderAndWrite(const RenderArguments& arguments, const lsys::PlantTrace& tra
 
 // The plant flattened and traced through one BVH, when it fits the budgets.
 int renderFlat(const RenderArguments& arguments, const lsys::InstanceGraph& graph, const lsys::SurfaceLibrary& surfaces,
-               std::chrono::steady_clock::time_point begun) {
+               const lsys::Bounds& bounds, std::chrono::steady_clock::time_point begun) {
     const uint64_t primitives = lsys::instanceGraphStats(graph).primitives;
     if (primitives > arguments.maxFlatPrimitives) {
         std::cerr << arguments.file << ": error: --tracer flat: the plant has " << primitives
@@ -189,8 +189,7 @@ int renderFlat(const RenderArguments& arguments, const lsys::InstanceGraph& grap
     lsys::need(arguments.memory, "flat tracer", lsys::bytesTimes(primitives, perPrimitive));
     const lsys::PlantAsset plant = lsys::flatten(graph, surfaces, arguments.maxFlatPrimitives);
     const lsys::FlatTracer tracer = lsys::buildFlatTracer(plant);
-    return renderAndWrite(arguments, lsys::traceOf(tracer), plant.materials, graph.objects[graph.root].bounds, "flat",
-                          begun);
+    return renderAndWrite(arguments, lsys::traceOf(tracer), plant.materials, bounds, "flat", begun);
 }
 
 int runRender(const RenderArguments& arguments) {
@@ -219,14 +218,18 @@ int runRender(const RenderArguments& arguments) {
         graphOptions.memory = arguments.memory;
         const lsys::InstanceGraph graph =
             lsys::buildInstanceGraph(lsys::buildBGrammar(*grammar, options), *grammar, graphOptions, surfaces);
-        if (graph.objects.empty() || graph.objects[graph.root].bounds.empty()) {
+        // Either tracer's image is framed on the graph tracer's box, so the two
+        // compare pixel for pixel. Built from the objects' descendants, it is
+        // within 1 % of the flattened plant's for the 6-step fractal bush, where
+        // GraphObject::bounds, boxes of placed boxes, is 40 % wider.
+        const lsys::GraphTracer tracer = lsys::buildGraphTracer(graph, surfaces);
+        const lsys::Bounds bounds = graph.objects.empty() ? lsys::Bounds{} : tracer.objectBounds[graph.root];
+        if (bounds.empty()) {
             std::cerr << arguments.file << ": error: the plant draws nothing to render\n";
             return kBadInput;
         }
-        if (arguments.flat) return renderFlat(arguments, graph, surfaces, begun);
-        const lsys::GraphTracer tracer = lsys::buildGraphTracer(graph, surfaces);
-        return renderAndWrite(arguments, lsys::traceOf(tracer), lsys::materialsOf(graph),
-                              graph.objects[graph.root].bounds, "graph", begun);
+        if (arguments.flat) return renderFlat(arguments, graph, surfaces, bounds, begun);
+        return renderAndWrite(arguments, lsys::traceOf(tracer), lsys::materialsOf(graph), bounds, "graph", begun);
     } catch (const std::runtime_error& error) { // DerivationError, MemoryBudgetError, SurfaceError
         std::cerr << arguments.file << ": error: " << error.what() << '\n';
         return kBadInput;
