@@ -41,11 +41,14 @@ bool traceObject(const GraphTracer& tracer, uint32_t object, Ray& ray, HitQuery 
 // only translates; boxes of boxes placed level upon level (a fractal bush's
 // twelve) grow with every level. So an object's items are boxed from their
 // descendants instead, down to kMaxLookahead levels or kLookaheadBudget boxes
-// placed per object: primitives boxed in their composed frames, deeper
-// instances by their objects' boxes. The boxes still hold everything drawn,
-// so the hits are the same; fewer rays enter instances they miss.
+// placed per object (and kTotalLookaheadBudget for all objects, so a graph
+// of a million objects is built in about a second): primitives boxed in their
+// composed frames, deeper instances by their objects' boxes. The boxes still
+// hold everything drawn, so the hits are the same; fewer rays enter instances
+// they miss.
 constexpr int kMaxLookahead = 4;
 constexpr uint64_t kLookaheadBudget = 4096;
+constexpr uint64_t kTotalLookaheadBudget = uint64_t(1) << 24;
 
 // An object's BVH has one item a leaf: an instance is a whole subtree, worth
 // its own box test before the ray is carried into it, and its own place in
@@ -71,10 +74,12 @@ BoxCosts boxCostsOf(const InstanceGraph& graph) {
     return costs;
 }
 
-// How many levels down an object is boxed from: at least its own items.
-int lookahead(const BoxCosts& costs, uint32_t object) {
+// How many levels down an object is boxed from, placing at most `budget`
+// boxes beyond its own items (which it always boxes); `budget` is lowered by them.
+int lookahead(const BoxCosts& costs, uint32_t object, uint64_t& budget) {
     int depth = 1;
-    while (depth < kMaxLookahead && costs[object][depth + 1] <= kLookaheadBudget) ++depth;
+    while (depth < kMaxLookahead && costs[object][depth + 1] <= std::min(kLookaheadBudget, budget)) ++depth;
+    budget -= std::min(budget, costs[object][depth]);
     return depth;
 }
 
@@ -121,9 +126,10 @@ GraphTracer buildGraphTracer(const InstanceGraph& graph, const SurfaceLibrary& s
     tracer.objectBounds.resize(graph.objects.size());
     tracer.objectBvhs.resize(graph.objects.size());
     const BoxCosts costs = boxCostsOf(graph);
+    uint64_t lookaheadBudget = kTotalLookaheadBudget;
     std::vector<Bounds> itemBounds;
     for (uint32_t object = 0; object < graph.objects.size(); ++object) {
-        const int depth = lookahead(costs, object);
+        const int depth = lookahead(costs, object, lookaheadBudget);
         itemBounds.clear();
         for (const GraphItem& item : graph.itemsOf(object)) {
             if (item.kind == GraphItem::Kind::Primitive) {
