@@ -1,5 +1,6 @@
 // Walking an InstanceGraph: flattening it into a PlantAsset, and its sizes.
 
+#include <algorithm>
 #include <string>
 
 #include "lsystem/error.h"
@@ -90,6 +91,18 @@ PlantAsset flatten(const InstanceGraph& graph, const SurfaceLibrary& surfaces, u
                               std::to_string(graph.objects[graph.root].primitives) +
                               " primitives, more than the budget of " + std::to_string(maxPrimitives));
     return Flattener(graph, surfaces).run();
+}
+
+std::vector<Material> materialsOf(const InstanceGraph& graph) {
+    size_t used = 0;
+    std::vector<bool> twoSided;
+    for (const GraphPrimitive& primitive : graph.primitives) {
+        used = std::max<size_t>(used, primitive.material + 1);
+        if (primitive.kind != PrimitiveKind::Surface && primitive.kind != PrimitiveKind::Polygon) continue;
+        if (twoSided.size() <= primitive.material) twoSided.resize(primitive.material + 1);
+        twoSided[primitive.material] = true;
+    }
+    return materialTable(graph.look, used, twoSided);
 }
 
 std::vector<NamedInstanceStat> namedStats(const InstanceGraphStats& stats) {

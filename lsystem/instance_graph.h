@@ -136,6 +136,11 @@ InstanceGraph buildInstanceGraph(const BGrammar& bgrammar, const Grammar& gramma
 PlantAsset flatten(const InstanceGraph& graph, const SurfaceLibrary& surfaces = SurfaceLibrary{},
                    uint64_t maxPrimitives = 50'000'000);
 
+// The material table flatten(graph) gives its plant (PlantAsset::materials),
+// without flattening: every object is drawn somewhere, so the indices its
+// primitives use and the surfaces and polygons among them are the plant's.
+std::vector<Material> materialsOf(const InstanceGraph& graph);
+
 struct InstanceGraphStats {
     size_t nodes = 0;        // of the b-grammar
     size_t objects = 0;      // distinct (node, entry values read)

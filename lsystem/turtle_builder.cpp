@@ -101,19 +101,26 @@ void PlantAssetBuilder::addPolygon(const Frame& start, std::vector<glm::vec3> ou
     markTwoSided(material);
 }
 
-PlantAsset PlantAssetBuilder::finish() {
-    const bool given = look_.palette && !look_.palette->empty();
-    const std::vector<Material>& palette = given ? *look_.palette : defaultPalette();
-    size_t count = palette.size();
-    for (const Primitive& primitive : asset_.primitives) count = std::max<size_t>(count, primitive.material + 1);
-    asset_.materials.clear();
+std::vector<Material> materialTable(const PlantLook& look, size_t used, const std::vector<bool>& twoSided) {
+    const bool given = look.palette && !look.palette->empty();
+    const std::vector<Material>& palette = given ? *look.palette : defaultPalette();
+    const size_t count = std::max(palette.size(), used);
+    std::vector<Material> materials;
+    materials.reserve(count);
     for (size_t i = 0; i < count; ++i) {
         // The default palette repeats; a given one (all 256 of a colour map) has nothing past its end.
         Material material = palette[given ? (i < palette.size() ? i : 0) : i % palette.size()];
         if (i >= palette.size()) material.name.append(1, ' ').append(std::to_string(i));
-        if (i < twoSided_.size() && twoSided_[i]) material.twoSided = true;
-        asset_.materials.push_back(std::move(material));
+        if (i < twoSided.size() && twoSided[i]) material.twoSided = true;
+        materials.push_back(std::move(material));
     }
+    return materials;
+}
+
+PlantAsset PlantAssetBuilder::finish() {
+    size_t used = 0;
+    for (const Primitive& primitive : asset_.primitives) used = std::max<size_t>(used, primitive.material + 1);
+    asset_.materials = materialTable(look_, used, twoSided_);
     PlantAsset result = std::move(asset_);
     asset_ = {};
     surfaceIndex_.clear();

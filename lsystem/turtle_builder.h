@@ -22,6 +22,12 @@ class SurfaceLibrary;
 
 const std::vector<Material>& defaultPalette();
 
+// The material table of a plant drawn with `look` whose primitives use the
+// indices below `used`: the look's palette (else defaultPalette()) as
+// PlantAssetBuilder describes it, `twoSided[i]` making material i two-sided
+// (one a surface or polygon used).
+std::vector<Material> materialTable(const PlantLook& look, size_t used, const std::vector<bool>& twoSided);
+
 // Extends `bounds` by a disc of `radius` about `centre` facing the unit
 // `unitNormal`: a segment's end (the two end discs of a frustum bound it exactly).
 void extendByDisc(Bounds& bounds, glm::vec3 centre, glm::vec3 unitNormal, float radius);

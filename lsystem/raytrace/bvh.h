@@ -4,7 +4,6 @@
 // bound: the flat tracer builds one over a plant's primitives, the graph
 // tracer one per object over its items.
 
-#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -28,13 +27,14 @@ struct Bvh {
     std::vector<uint32_t> items; // indices into the boxes it was built over, leaf by leaf
 };
 
-// At most this many items in a leaf.
+// At most this many items in a leaf, by default.
 inline constexpr uint32_t kBvhLeafSize = 4;
 
 // Splits each node at the median of its boxes' centres along the longest
-// axis of those centres, down to leaves of kBvhLeafSize. Empty boxes are left
-// out (nothing to hit). Deterministic: the same boxes give the same tree.
-Bvh buildBvh(std::span<const Bounds> boxes);
+// axis of those centres, down to leaves of at most `leafSize` items (or of
+// items whose centres coincide). Empty boxes are left out (nothing to hit).
+// Deterministic: the same boxes give the same tree.
+Bvh buildBvh(std::span<const Bounds> boxes, uint32_t leafSize = kBvhLeafSize);
 
 // Visits the items whose boxes the ray meets, nearer boxes first, skipping
 // boxes that begin past ray.tMax. `visit(item)` tests the item, lowering
@@ -44,9 +44,16 @@ template <typename Visit>
 void traverseBvh(const Bvh& bvh, const Ray& ray, Visit&& visit) {
     if (bvh.nodes.empty()) return;
     // Median splits keep the depth at log2 of the items: 64 levels are plenty.
-    std::array<std::pair<uint32_t, float>, 64> stack;
+    // Left uninitialised: the graph tracer walks a BVH per instance a ray
+    // enters, and zeroing 64 entries each time would cost more than the walk.
+    struct Pending {
+        uint32_t node;
+        float entry;
+    };
+    Pending stack[64];
     size_t size = 0;
-    if (std::optional<float> entry = boxEntry(ray, bvh.nodes[0].bounds)) stack[size++] = {0, *entry};
+    const BoxRay boxRay = boxRayOf(ray); // its origin and direction stay; visit lowers tMax
+    if (std::optional<float> entry = boxEntry(boxRay, bvh.nodes[0].bounds, ray.tMax)) stack[size++] = {0, *entry};
     while (size > 0) {
         const auto [index, entry] = stack[--size];
         if (entry > ray.tMax) continue; // a nearer hit was found since it was pushed
@@ -56,8 +63,8 @@ void traverseBvh(const Bvh& bvh, const Ray& ray, Visit&& visit) {
                 if (visit(bvh.items[i])) return;
             continue;
         }
-        std::optional<float> near = boxEntry(ray, bvh.nodes[node.first].bounds);
-        std::optional<float> far = boxEntry(ray, bvh.nodes[node.first + 1].bounds);
+        std::optional<float> near = boxEntry(boxRay, bvh.nodes[node.first].bounds, ray.tMax);
+        std::optional<float> far = boxEntry(boxRay, bvh.nodes[node.first + 1].bounds, ray.tMax);
         uint32_t nearIndex = node.first, farIndex = node.first + 1;
         if (!near || (far && *far < *near)) {
             std::swap(near, far);

@@ -22,20 +22,22 @@
 namespace lsys {
 
 struct GraphTracer {
-    const InstanceGraph* graph = nullptr; // must outlive the tracer
-    std::vector<Primitive> primitives;    // InstanceGraph::primitives as flat records
+    const InstanceGraph* graph = nullptr;   // must outlive the tracer
+    std::vector<Primitive> primitives;      // InstanceGraph::primitives as flat records
+    std::vector<glm::quat> instanceToLocal; // the inverse of each InstanceGraph::instances rotation
     TracedShapes shapes;
     std::vector<Bounds> objectBounds; // of what each object's subtree draws, in its local space
     std::vector<Bvh> objectBvhs;      // over each object's items, in itemsOf order
 };
 
-// Traces an instance: the ray carried into the child's frame, traced there
+// Traces an instance (`toLocal`: the inverse of its rotation): the ray carried into the child's frame, traced there
 // by `traceChild(object, localRay, localHit)` (true on a hit nearer than
 // localRay.tMax), and a hit brought back, lowering ray.tMax. Shared by the
 // graph tracers, whichever way they hold an object's items.
 template <typename TraceChild>
-bool traceInstance(const GraphInstance& instance, Ray& ray, Hit& hit, TraceChild&& traceChild) {
-    Ray local = rayInFrame(ray, instance.frame);
+bool traceInstance(const GraphInstance& instance, const glm::quat& toLocal, Ray& ray, Hit& hit,
+                   TraceChild&& traceChild) {
+    Ray local = rayInFrame(ray, instance.frame.position, toLocal);
     Hit inner;
     if (!traceChild(instance.object, local, inner)) return false;
     inner.normal = glm::normalize(instance.frame.rotation * inner.normal);

@@ -107,22 +107,4 @@ std::optional<ShapeHit> intersectTriangle(const Ray& ray, const glm::vec3& a, co
     return nearest.result();
 }
 
-std::optional<float> boxEntry(const Ray& ray, const Bounds& box) {
-    if (box.empty()) return std::nullopt;
-    float enter = ray.tMin, leave = ray.tMax;
-    for (int axis = 0; axis < 3; ++axis) {
-        const float o = ray.origin[axis], d = ray.direction[axis];
-        if (d == 0.0f) {
-            if (o < box.min[axis] || o > box.max[axis]) return std::nullopt;
-            continue;
-        }
-        float near = (box.min[axis] - o) / d, far = (box.max[axis] - o) / d;
-        if (near > far) std::swap(near, far);
-        enter = std::max(enter, near);
-        leave = std::min(leave, far);
-        if (enter > leave) return std::nullopt;
-    }
-    return enter;
-}
-
 } // namespace lsys

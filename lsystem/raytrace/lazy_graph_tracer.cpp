@@ -82,7 +82,7 @@ bool traceObject(const LazyGraphTracer& tracer, uint32_t object, TracePins& pins
                                     tracer.surfaces, expansion.polygons, ray, hit);
         } else {
             found |=
-                traceInstance(expansion.instances[item.index], ray, hit, [&](uint32_t child, Ray& local, Hit& inner) {
+                traceInstance(expansion.instances[item.index], glm::inverse(expansion.instances[item.index].frame.rotation), ray, hit, [&](uint32_t child, Ray& local, Hit& inner) {
                     return traceObject(tracer, child, pins, local, query, inner);
                 });
         }

@@ -79,8 +79,11 @@ Primitive tracedPrimitive(const GraphPrimitive& primitive, float lineScale) {
 }
 
 Ray rayInFrame(const Ray& ray, const Frame& frame) {
-    const glm::quat toLocal = glm::inverse(frame.rotation);
-    return {toLocal * (ray.origin - frame.position), toLocal * ray.direction, ray.tMin, ray.tMax};
+    return rayInFrame(ray, frame.position, glm::inverse(frame.rotation));
+}
+
+Ray rayInFrame(const Ray& ray, const glm::vec3& position, const glm::quat& toLocal) {
+    return {toLocal * (ray.origin - position), toLocal * ray.direction, ray.tMin, ray.tMax};
 }
 
 Bounds tracedBounds(const Primitive& primitive, const TracedMeshes& surfaces, const TracedMeshes& polygons) {

@@ -42,6 +42,8 @@ Primitive tracedPrimitive(const GraphPrimitive& primitive, float lineScale);
 // The ray in the space of a frame given in the ray's space: rigid, so the
 // same t and the same [tMin, tMax].
 Ray rayInFrame(const Ray& ray, const Frame& frame);
+// The same with the frame's inverse rotation computed once beforehand.
+Ray rayInFrame(const Ray& ray, const glm::vec3& position, const glm::quat& toLocal);
 
 // The box around what the primitive draws, in the space its frame is given
 // in, widened by a few ulps of its size so a hit on a face of the box is

@@ -143,5 +143,14 @@ TEST(BoxEntry, EntersAtTheNearFaceOrAtTMinInside) {
     EXPECT_FALSE(boxEntry(rayFrom({-3, 0, 0}, {1, 0, 0}), Bounds{}));
 }
 
+TEST(BoxEntry, ARayAlongAFaceEntersAndOneJustOutsideItDoesNot) {
+    // Parallel to y and z: the slab test meets 0 · ∞ on the faces y = ±1 and z = 1.
+    const Bounds box{glm::vec3(-1), glm::vec3(1)};
+    EXPECT_FLOAT_EQ(*boxEntry(rayFrom({-3, 1, 0}, {1, 0, 0}), box), 2.0f);
+    EXPECT_FLOAT_EQ(*boxEntry(rayFrom({-3, -1, 1}, {1, 0, 0}), box), 2.0f);
+    EXPECT_FALSE(boxEntry(rayFrom({-3, std::nextafter(1.0f, 2.0f), 0}, {1, 0, 0}), box));
+    EXPECT_FALSE(boxEntry(rayFrom({-3, 0, std::nextafter(-1.0f, -2.0f)}, {1, 0, 0}), box));
+}
+
 } // namespace
 } // namespace lsys

@@ -6,6 +6,7 @@
 //   [--dialect D] -o OUT.gltf|.glb|.obj [--flat|--instanced]
 //               [--randomness K] [--granularity G] [--max-gltf-nodes N] [--geometry drawn|frusta|tubes]
 //               [--generalized-cylinders] [--sides N] [--skeleton|--no-skeleton] [--height H]
+//   lsys ramify …, lsys render … (tools/lsys/ramify_command.h, tools/lsys/render_command.h)
 //   lsys --help-turtle
 // derive, instance and export take --memory-budget SIZE (tools/memory_budget_option.h).
 // Exit codes: 0 success, 2 bad input (parse errors, budget exceeded, out of memory), 1 usage errors.
@@ -39,7 +40,9 @@
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"
 #include "lsystem/vlab/object.h"
+#include "tools/lsys/plant_loading.h"
 #include "tools/lsys/ramify_command.h"
+#include "tools/lsys/render_command.h"
 #include "tools/memory_budget_option.h"
 
 namespace {
@@ -72,36 +75,8 @@ struct Arguments {
     std::optional<float> height; // export --height: metres the plant's meshes are scaled to
 };
 
-// Parses "NAME=VALUE" items of -D into constants; reports malformed ones.
-bool parseDefines(const std::vector<std::string>& items, std::unordered_map<std::string, double>& out) {
-    for (const std::string& item : items) {
-        size_t equals = item.find('=');
-        char* end = nullptr;
-        double value = equals == std::string::npos ? 0.0 : std::strtod(item.c_str() + equals + 1, &end);
-        if (equals == std::string::npos || equals == 0 || end == item.c_str() + equals + 1 || *end != '\0') {
-            std::cerr << "lsys: error: -D expects NAME=NUMBER, got '" << item << "'\n";
-            return false;
-        }
-        out[item.substr(0, equals)] = value;
-    }
-    return true;
-}
-
-// Parses the plant (a file, or a vlab object: lsystem/vlab/object.h); on
-// problems prints them all and returns nullopt.
 std::optional<lsys::Grammar> load(const Arguments& arguments) {
-    lsys::ParseOptions options;
-    options.file = arguments.file;
-    if (!parseDefines(arguments.defines, options.defines)) return std::nullopt;
-    lsys::vlab::PlantFile plant = lsys::vlab::loadPlant(arguments.file, arguments.dialect, options);
-    lsys::ParseResult& result = plant.parsed;
-    std::cerr << lsys::formatDiagnostics(result.warnings, plant.source);
-    if (!result.ok()) {
-        std::cerr << lsys::formatDiagnostics(result.diagnostics, plant.source);
-        std::cerr << result.diagnostics.size() << (result.diagnostics.size() == 1 ? " error\n" : " errors\n");
-        return std::nullopt;
-    }
-    return std::move(result.grammar);
+    return tools::loadGrammar(arguments.file, arguments.dialect, arguments.defines);
 }
 
 // Prints what went wrong with the file, and the way out of a budget.
@@ -491,8 +466,9 @@ int check(const Arguments& arguments) {
 } // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"lsys: derive, check, instance and export L-systems written in the .lsys notation or a dialect "
-                 "(docs/DIALECTS.md)"};
+    CLI::App app{
+        "lsys: derive, check, instance, export and render L-systems written in the .lsys notation or a dialect "
+        "(docs/DIALECTS.md)"};
     app.set_version_flag("--version", std::string("lsys ") + pf::kPlantfieldVersion);
     app.require_subcommand(1);
     // Printed from the commands' definitions, so it cannot fall behind the turtle.
@@ -580,6 +556,7 @@ int main(int argc, char** argv) {
     addDrawnFormOptions(*exportSubcommand, arguments);
 
     const tools::RamifyCommand ramify = tools::addRamifyCommand(app);
+    const tools::RenderCommand render = tools::addRenderCommand(app);
 
     try {
         app.parse(argc, argv);
@@ -591,6 +568,7 @@ int main(int argc, char** argv) {
         if (instanceCommand->parsed()) return instance(arguments);
         if (exportSubcommand->parsed()) return exportCommand(arguments);
         if (ramify.command->parsed()) return ramify.run();
+        if (render.command->parsed()) return render.run();
         return check(arguments);
     } catch (const std::bad_alloc&) { // a stage the memory budget does not count
         std::cerr << "lsys: error: out of memory (--memory-budget, -n fewer steps or a smaller plant)\n";

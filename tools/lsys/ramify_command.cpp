@@ -19,13 +19,12 @@
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"
 #include "lsystem/vlab/object.h"
+#include "tools/lsys/plant_loading.h"
 #include "tools/memory_budget_option.h"
 
 namespace tools {
 
 namespace {
-
-constexpr int kBadInput = 2;
 
 struct RamifyArguments {
     std::string file;

@@ -1,0 +1,20 @@
+// lsys render: an image of one plant ray traced on the CPU through its
+// InstanceGraph or its flattened plant (lsystem/raytrace/render.h,
+// docs/RAYTRACING.md).
+#pragma once
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace tools {
+
+struct RenderCommand {
+    CLI::App* command = nullptr;
+    std::function<int()> run; // once the app has parsed `command`; the exit code
+};
+
+// Adds the `render` subcommand and its options to `app`.
+RenderCommand addRenderCommand(CLI::App& app);
+
+} // namespace tools
