@@ -10,8 +10,8 @@
 // before them, in the CPU's order. The shape tests run in single precision,
 // made stable where the CPU's double precision hides it: the quadratics are
 // solved from the point of the ray nearest the shape (Haines et al.,
-// "Precision Improvements for Ray/Sphere Intersection", Ray Tracing Gems
-// 2019, ch. 7, §7.3), in the form that does not cancel (Press et al.,
+// "Precision Improvements for Ray/Sphere Intersection", Ray Tracing Gems,
+// 2019, ch. 7), in the form that does not cancel (Press et al.,
 // Numerical Recipes §5.6).
 #ifndef PLANTFIELD_SHADERS_RAYTRACE_TRAVERSE_GLSL
 #define PLANTFIELD_SHADERS_RAYTRACE_TRAVERSE_GLSL

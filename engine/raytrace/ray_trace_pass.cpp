@@ -4,8 +4,10 @@
 
 #include "shaders/raytrace_rays_comp.spv.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 
 namespace pf {
 namespace {

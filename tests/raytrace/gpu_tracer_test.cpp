@@ -41,7 +41,7 @@ constexpr size_t kRaysPerGrazingDifference = 1000;
 
 gpu::RtRay gpuRay(const Ray& ray) { return {ray.origin, ray.tMin, ray.direction, ray.tMax}; }
 
-std::optional<Hit> cpuHit(const gpu::RtHit& hit) {
+std::optional<Hit> asHit(const gpu::RtHit& hit) {
     if (hit.primitive == RAYTRACE_NO_HIT) return std::nullopt;
     return Hit{hit.t, lsys::PrimitiveKind(hit.kind), hit.material, hit.primitive, hit.normal};
 }
@@ -99,7 +99,7 @@ protected:
         std::vector<gpu::RtRay> shortened;
         for (size_t i = 0; i < rays.size(); ++i) {
             const std::optional<Hit> expected = trace(tracer, rays[i], HitQuery::Closest);
-            const std::optional<Hit> actual = cpuHit(closest[i]);
+            const std::optional<Hit> actual = asHit(closest[i]);
             result.hits += expected.has_value();
             if (expected) ++result.byKind[size_t(expected->kind)];
             if (!sameAnswer(actual, expected)) {
