@@ -3,6 +3,7 @@
 // holds them, and graphs the traversal's fixed arrays cannot hold refused.
 
 #include "../instance_graph/instance_graph_test_support.h"
+#include "chain_graph.h"
 #include "engine/raytrace/gpu_graph.h"
 
 #include <gtest/gtest.h>
@@ -74,32 +75,6 @@ TEST(GpuGraph, HoldsEveryObjectsBvhWithGlobalIndices) {
     EXPECT_GE(packed.levels, 2u);
     EXPECT_LE(packed.levels, uint32_t(RAYTRACE_MAX_LEVELS));
     EXPECT_LE(packed.stackDepth, uint32_t(RAYTRACE_STACK_SIZE));
-}
-
-// A chain of `depth` objects, each drawing `segments` segments side by side
-// and placing the one before it (raised by one unit).
-InstanceGraph chainGraph(uint32_t depth, uint32_t segments) {
-    InstanceGraph graph;
-    for (uint32_t object = 0; object < depth; ++object) {
-        lsys::GraphObject o;
-        o.itemStart = uint32_t(graph.items.size());
-        for (uint32_t s = 0; s < segments; ++s) {
-            lsys::GraphPrimitive segment;
-            segment.frame.position = glm::vec3(float(s), 0.0f, 0.0f);
-            segment.length = 1.0f;
-            segment.startRadius = segment.endRadius = 0.1f;
-            graph.items.push_back({GraphItem::Kind::Primitive, uint32_t(graph.primitives.size())});
-            graph.primitives.push_back(segment);
-        }
-        if (object > 0) {
-            graph.items.push_back({GraphItem::Kind::Instance, uint32_t(graph.instances.size())});
-            graph.instances.push_back({object - 1, lsys::Frame{glm::vec3(0.0f, 1.0f, 0.0f)}});
-        }
-        o.itemCount = uint32_t(graph.items.size()) - o.itemStart;
-        graph.objects.push_back(o);
-    }
-    graph.root = depth - 1;
-    return graph;
 }
 
 TEST(GpuGraph, CountsTheInstanceLevelsARayCanCross) {
