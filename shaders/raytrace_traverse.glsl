@@ -232,22 +232,18 @@ RtTraceHit rtTrace(vec3 origin, vec3 direction, float tMin, float tMax, uint roo
         vec3 o = levelOrigin[top.level], d = levelDirection[top.level];
         RtNode node = rtNodes[top.node];
         if (node.count == 0) {
-            float near, far;
-            uint nearIndex = node.first, farIndex = node.first + 1;
-            bool hasNear = rtBoxEntry(o, d, tMin, tMax, rtNodes[nearIndex].boundsMin, rtNodes[nearIndex].boundsMax, near);
-            bool hasFar = rtBoxEntry(o, d, tMin, tMax, rtNodes[farIndex].boundsMin, rtNodes[farIndex].boundsMax, far);
-            if (!hasNear || (hasFar && far < near)) {
-                bool swapHas = hasNear;
-                hasNear = hasFar;
-                hasFar = swapHas;
-                float swapEntry = near;
-                near = far;
-                far = swapEntry;
-                nearIndex = farIndex;
-                farIndex = node.first;
+            uint a = node.first, b = node.first + 1;
+            float entryA, entryB;
+            bool hitA = rtBoxEntry(o, d, tMin, tMax, rtNodes[a].boundsMin, rtNodes[a].boundsMax, entryA);
+            bool hitB = rtBoxEntry(o, d, tMin, tMax, rtNodes[b].boundsMin, rtNodes[b].boundsMax, entryB);
+            // The nearer is pushed last, so it is visited first (the first on a tie, as lsys::traverseBvh).
+            if (hitB && (!hitA || entryB < entryA)) {
+                if (hitA) stack[size++] = RtStackEntry(a, top.level, 0, entryA);
+                stack[size++] = RtStackEntry(b, top.level, 0, entryB);
+            } else if (hitA) {
+                if (hitB) stack[size++] = RtStackEntry(b, top.level, 0, entryB);
+                stack[size++] = RtStackEntry(a, top.level, 0, entryA);
             }
-            if (hasFar) stack[size++] = RtStackEntry(farIndex, top.level, 0, far);
-            if (hasNear) stack[size++] = RtStackEntry(nearIndex, top.level, 0, near);
             continue;
         }
         for (uint i = top.item; i < node.count; ++i) {
