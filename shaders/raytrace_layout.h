@@ -97,14 +97,14 @@ struct RtRay {
 };
 
 // lsys::Hit: the normal unit, in the space of the traced ray; primitive is
-// RAYTRACE_NO_HIT for a miss (then nothing else is meaningful).
+// RAYTRACE_NO_HIT for a miss (then only stackUsed is meaningful).
 struct RtHit {
     vec3 normal;
     float t;
     uint primitive;
     uint kind;
     uint material;
-    uint pad;
+    uint stackUsed; // the most stack entries the ray's walk held: packGraph's bound is tested against it
 };
 
 struct RtTracePush {

@@ -23,10 +23,10 @@ void main() {
     RtRay ray = rays[index];
     RtTraceHit traced =
         rtTrace(ray.origin, ray.direction, ray.tMin, ray.tMax, push.rootNode, push.query == RAYTRACE_QUERY_ANY);
-    RtHit hit = RtHit(vec3(0.0), 0.0, RAYTRACE_NO_HIT, 0, 0, 0);
+    RtHit hit = RtHit(vec3(0.0), 0.0, RAYTRACE_NO_HIT, 0, 0, traced.stackUsed);
     if (traced.primitive != RAYTRACE_NO_HIT) {
         RtPrimitive primitive = rtPrimitives[traced.primitive];
-        hit = RtHit(traced.normal, traced.t, traced.primitive, primitive.kind, primitive.material, 0);
+        hit = RtHit(traced.normal, traced.t, traced.primitive, primitive.kind, primitive.material, traced.stackUsed);
     }
     hits[index] = hit;
 }

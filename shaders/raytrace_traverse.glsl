@@ -207,13 +207,14 @@ struct RtTraceHit {
     float t;
     uint primitive;
     vec3 normal;
+    uint stackUsed; // the most entries the stack held
 };
 
 // As lsys::trace(GraphTracer): the nearest hit in [tMin, tMax] (anyHit
 // false) or the first found, from the root object's root node; primitive
 // is RAYTRACE_NO_HIT when nothing was hit.
 RtTraceHit rtTrace(vec3 origin, vec3 direction, float tMin, float tMax, uint rootNode, bool anyHit) {
-    RtTraceHit hit = RtTraceHit(tMax, RAYTRACE_NO_HIT, vec3(0.0));
+    RtTraceHit hit = RtTraceHit(tMax, RAYTRACE_NO_HIT, vec3(0.0), 0);
     // The ray in each level's space, and the rotation of the instance that
     // placed the level in the one above (which turns a normal back).
     vec3 levelOrigin[RAYTRACE_MAX_LEVELS], levelDirection[RAYTRACE_MAX_LEVELS];
@@ -227,6 +228,7 @@ RtTraceHit rtTrace(vec3 origin, vec3 direction, float tMin, float tMax, uint roo
         rtBoxEntry(origin, direction, tMin, tMax, rtNodes[rootNode].boundsMin, rtNodes[rootNode].boundsMax, entry))
         stack[size++] = RtStackEntry(rootNode, 0, 0, entry);
     while (size > 0) {
+        hit.stackUsed = max(hit.stackUsed, size);
         RtStackEntry top = stack[--size];
         if (top.entry > tMax) continue; // a nearer hit was found since it was pushed
         vec3 o = levelOrigin[top.level], d = levelDirection[top.level];
@@ -254,7 +256,9 @@ RtTraceHit rtTrace(vec3 origin, vec3 direction, float tMin, float tMax, uint roo
                     // Back to the traced ray's space, level by level as the CPU's recursion returns.
                     for (uint level = top.level; level > 0; --level)
                         normal = normalize(rtRotate(levelRotation[level], normal));
-                    hit = RtTraceHit(tMax, item, normal);
+                    hit.t = tMax;
+                    hit.primitive = item;
+                    hit.normal = normal;
                     if (anyHit) return hit;
                 }
                 continue;

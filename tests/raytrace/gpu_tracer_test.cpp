@@ -76,6 +76,7 @@ struct Comparison {
     size_t differing = 0;           // rays the GPU answers differently (all grazing)
     size_t coincident = 0;          // the same hit on another copy of the CPU's primitive
     float largestRelativeT = 0.0f;  // between the same hits
+    uint32_t stackUsed = 0;         // the most stack entries a ray's walk held
     std::array<size_t, 4> byKind{}; // closest hits of each PrimitiveKind
 };
 
@@ -97,6 +98,10 @@ protected:
         const std::vector<gpu::RtHit> any = traceRays(ctx, pass, gpuRays, HitQuery::Any);
 
         Comparison result;
+        // packGraph's bound on the stack holds for every walk.
+        for (const std::vector<gpu::RtHit>* hits : {&closest, &any})
+            for (const gpu::RtHit& hit : *hits) result.stackUsed = std::max(result.stackUsed, hit.stackUsed);
+        EXPECT_LE(result.stackUsed, packed.stackDepth);
         std::vector<gpu::RtRay> shortened;
         for (size_t i = 0; i < rays.size(); ++i) {
             const std::optional<Hit> expected = trace(tracer, rays[i], HitQuery::Closest);
@@ -137,9 +142,9 @@ protected:
         // The rays are aimed into the box: a good part of them must hit something.
         EXPECT_GT(result.hits, rayCount / 20);
         std::printf("%zu rays, %zu hit, %zu differ (grazing), %zu on a coincident copy, t within %.2g; %u levels, "
-                    "stack %u\n",
+                    "stack %u of at most %u\n",
                     rayCount, result.hits, result.differing, result.coincident, result.largestRelativeT, packed.levels,
-                    packed.stackDepth);
+                    result.stackUsed, packed.stackDepth);
         return result;
     }
 };
