@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <numbers>
 #include <optional>
-#include <random>
 #include <string>
 #include <vector>
 
