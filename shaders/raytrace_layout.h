@@ -16,16 +16,23 @@ using uint = uint32_t;
 
 #define RAYTRACE_GROUP_SIZE 64 // invocations of raytrace_rays.comp, one a ray
 
-// The graph's buffers (RAYTRACE_GRAPH_SET, chosen by the shader that
-// includes raytrace_traverse.glsl) and raytrace_rays.comp's rays and hits.
+// The graph's uniform texel buffers (RAYTRACE_GRAPH_SET, chosen by the
+// shader that includes raytrace_traverse.glsl; uint views of 16-byte texels,
+// a record RAYTRACE_*_TEXELS of them, or of 4-byte texels) and
+// raytrace_rays.comp's storage buffers of rays and hits.
 #define RAYTRACE_BINDING_NODES 0        // RtNode[]
-#define RAYTRACE_BINDING_ITEMS 1        // uint[]: a leaf's items (RAYTRACE_ITEM_INSTANCE or a primitive index)
-#define RAYTRACE_BINDING_OBJECT_ROOTS 2 // uint[] per object: its BVH's root node, or RAYTRACE_NO_NODE
+#define RAYTRACE_BINDING_ITEMS 1        // uint[] (4-byte texels): RAYTRACE_ITEM_INSTANCE | an instance, or a primitive
+#define RAYTRACE_BINDING_OBJECT_ROOTS 2 // uint[] (4-byte texels) per object: its BVH's root node, or RAYTRACE_NO_NODE
 #define RAYTRACE_BINDING_INSTANCES 3    // RtInstance[]
 #define RAYTRACE_BINDING_PRIMITIVES 4   // RtPrimitive[], by InstanceGraph::primitives index
 #define RAYTRACE_BINDING_TRIANGLES 5    // RtTriangle[] of surfaces and polygons
 #define RAYTRACE_BINDING_RAYS 6         // RtRay[]
 #define RAYTRACE_BINDING_HITS 7         // RtHit[], one per ray
+
+#define RAYTRACE_NODE_TEXELS 2
+#define RAYTRACE_INSTANCE_TEXELS 2
+#define RAYTRACE_PRIMITIVE_TEXELS 4
+#define RAYTRACE_TRIANGLE_TEXELS 3
 
 // The traversal's fixed arrays: the instance levels a ray is carried through
 // (the root object is level 0) and the stack of nodes still to visit. A graph
@@ -116,10 +123,10 @@ struct RtTracePush {
 
 #ifdef __cplusplus
 } // namespace gpu
-static_assert(sizeof(gpu::RtNode) == 32);
-static_assert(sizeof(gpu::RtInstance) == 32);
-static_assert(sizeof(gpu::RtPrimitive) == 64);
-static_assert(sizeof(gpu::RtTriangle) == 48);
+static_assert(sizeof(gpu::RtNode) == 16 * RAYTRACE_NODE_TEXELS);
+static_assert(sizeof(gpu::RtInstance) == 16 * RAYTRACE_INSTANCE_TEXELS);
+static_assert(sizeof(gpu::RtPrimitive) == 16 * RAYTRACE_PRIMITIVE_TEXELS);
+static_assert(sizeof(gpu::RtTriangle) == 16 * RAYTRACE_TRIANGLE_TEXELS);
 static_assert(sizeof(gpu::RtRay) == 32);
 static_assert(sizeof(gpu::RtHit) == 32);
 static_assert(sizeof(gpu::RtTracePush) == 16);

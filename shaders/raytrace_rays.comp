@@ -25,7 +25,7 @@ void main() {
         rtTrace(ray.origin, ray.direction, ray.tMin, ray.tMax, push.rootNode, push.query == RAYTRACE_QUERY_ANY);
     RtHit hit = RtHit(vec3(0.0), 0.0, RAYTRACE_NO_HIT, 0, 0, traced.stackUsed);
     if (traced.primitive != RAYTRACE_NO_HIT) {
-        RtPrimitive primitive = rtPrimitives[traced.primitive];
+        RtPrimitive primitive = rtPrimitiveAt(traced.primitive);
         hit = RtHit(traced.normal, traced.t, traced.primitive, primitive.kind, primitive.material, traced.stackUsed);
     }
     hits[index] = hit;

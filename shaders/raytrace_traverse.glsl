@@ -22,24 +22,47 @@
 #define RAYTRACE_GRAPH_SET 0
 #endif
 
-layout(std430, set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_NODES) readonly buffer RtNodes {
-    RtNode rtNodes[];
-};
-layout(std430, set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_ITEMS) readonly buffer RtItems {
-    uint rtItems[];
-};
-layout(std430, set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_OBJECT_ROOTS) readonly buffer RtObjectRoots {
-    uint rtObjectRoots[];
-};
-layout(std430, set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_INSTANCES) readonly buffer RtInstances {
-    RtInstance rtInstances[];
-};
-layout(std430, set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_PRIMITIVES) readonly buffer RtPrimitives {
-    RtPrimitive rtPrimitives[];
-};
-layout(std430, set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_TRIANGLES) readonly buffer RtTriangles {
-    RtTriangle rtTriangleList[];
-};
+// The graph is read through uniform texel buffers (uint views, 16-byte
+// texels, a record's stride in RAYTRACE_*_TEXELS; items and object roots
+// 4-byte texels): lavapipe gathers a texel for all SIMD lanes at once, where
+// it reads a storage buffer at a per-invocation index one lane at a time.
+layout(set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_NODES) uniform usamplerBuffer rtNodeTexels;
+layout(set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_ITEMS) uniform usamplerBuffer rtItemTexels;
+layout(set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_OBJECT_ROOTS) uniform usamplerBuffer rtObjectRootTexels;
+layout(set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_INSTANCES) uniform usamplerBuffer rtInstanceTexels;
+layout(set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_PRIMITIVES) uniform usamplerBuffer rtPrimitiveTexels;
+layout(set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_TRIANGLES) uniform usamplerBuffer rtTriangleTexels;
+
+RtNode rtNodeAt(uint i) {
+    int t = int(i) * RAYTRACE_NODE_TEXELS;
+    uvec4 low = texelFetch(rtNodeTexels, t), high = texelFetch(rtNodeTexels, t + 1);
+    return RtNode(uintBitsToFloat(low.xyz), low.w, uintBitsToFloat(high.xyz), high.w);
+}
+
+uint rtItemAt(uint i) { return texelFetch(rtItemTexels, int(i)).x; }
+uint rtObjectRootAt(uint i) { return texelFetch(rtObjectRootTexels, int(i)).x; }
+
+RtInstance rtInstanceAt(uint i) {
+    int t = int(i) * RAYTRACE_INSTANCE_TEXELS;
+    uvec4 placed = texelFetch(rtInstanceTexels, t + 1);
+    return RtInstance(uintBitsToFloat(texelFetch(rtInstanceTexels, t)), uintBitsToFloat(placed.xyz), placed.w);
+}
+
+RtPrimitive rtPrimitiveAt(uint i) {
+    int t = int(i) * RAYTRACE_PRIMITIVE_TEXELS;
+    uvec4 placed = texelFetch(rtPrimitiveTexels, t + 1), size = texelFetch(rtPrimitiveTexels, t + 2);
+    uvec4 triangles = texelFetch(rtPrimitiveTexels, t + 3);
+    return RtPrimitive(uintBitsToFloat(texelFetch(rtPrimitiveTexels, t)), uintBitsToFloat(placed.xyz), placed.w,
+                       uintBitsToFloat(size.x), uintBitsToFloat(size.y), uintBitsToFloat(size.z), size.w, triangles.x,
+                       triangles.y, 0, 0);
+}
+
+RtTriangle rtTriangleAt(uint i) {
+    int t = int(i) * RAYTRACE_TRIANGLE_TEXELS;
+    return RtTriangle(uintBitsToFloat(texelFetch(rtTriangleTexels, t)),
+                      uintBitsToFloat(texelFetch(rtTriangleTexels, t + 1)),
+                      uintBitsToFloat(texelFetch(rtTriangleTexels, t + 2)));
+}
 
 // q·v·q* as glm computes it (a unit quaternion, xyz w).
 vec3 rtRotate(vec4 q, vec3 v) {
@@ -162,7 +185,7 @@ void rtNearestTriangle(inout RtNearest n, vec3 o, vec3 d, uint first, uint count
     for (uint i = first; i < first + count; ++i) {
         float t;
         vec3 normal;
-        if (rtTriangle(o, d, n.tMin, n.tMax, rtTriangleList[i], t, normal)) {
+        if (rtTriangle(o, d, n.tMin, n.tMax, rtTriangleAt(i), t, normal)) {
             n.t = n.tMax = t;
             n.normal = normal;
             n.found = true;
@@ -225,19 +248,19 @@ RtTraceHit rtTrace(vec3 origin, vec3 direction, float tMin, float tMax, uint roo
     uint size = 0;
     float entry;
     if (rootNode != RAYTRACE_NO_NODE &&
-        rtBoxEntry(origin, direction, tMin, tMax, rtNodes[rootNode].boundsMin, rtNodes[rootNode].boundsMax, entry))
+        rtBoxEntry(origin, direction, tMin, tMax, rtNodeAt(rootNode).boundsMin, rtNodeAt(rootNode).boundsMax, entry))
         stack[size++] = RtStackEntry(rootNode, 0, 0, entry);
     while (size > 0) {
         hit.stackUsed = max(hit.stackUsed, size);
         RtStackEntry top = stack[--size];
         if (top.entry > tMax) continue; // a nearer hit was found since it was pushed
         vec3 o = levelOrigin[top.level], d = levelDirection[top.level];
-        RtNode node = rtNodes[top.node];
+        RtNode node = rtNodeAt(top.node);
         if (node.count == 0) {
             uint a = node.first, b = node.first + 1;
             float entryA, entryB;
-            bool hitA = rtBoxEntry(o, d, tMin, tMax, rtNodes[a].boundsMin, rtNodes[a].boundsMax, entryA);
-            bool hitB = rtBoxEntry(o, d, tMin, tMax, rtNodes[b].boundsMin, rtNodes[b].boundsMax, entryB);
+            bool hitA = rtBoxEntry(o, d, tMin, tMax, rtNodeAt(a).boundsMin, rtNodeAt(a).boundsMax, entryA);
+            bool hitB = rtBoxEntry(o, d, tMin, tMax, rtNodeAt(b).boundsMin, rtNodeAt(b).boundsMax, entryB);
             // The nearer is pushed last, so it is visited first (the first on a tie, as lsys::traverseBvh).
             if (hitB && (!hitA || entryB < entryA)) {
                 if (hitA) stack[size++] = RtStackEntry(a, top.level, 0, entryA);
@@ -249,10 +272,10 @@ RtTraceHit rtTrace(vec3 origin, vec3 direction, float tMin, float tMax, uint roo
             continue;
         }
         for (uint i = top.item; i < node.count; ++i) {
-            uint item = rtItems[node.first + i];
+            uint item = rtItemAt(node.first + i);
             if ((item & RAYTRACE_ITEM_INSTANCE) == 0) {
                 vec3 normal;
-                if (rtTracePrimitive(rtPrimitives[item], o, d, tMin, tMax, normal)) {
+                if (rtTracePrimitive(rtPrimitiveAt(item), o, d, tMin, tMax, normal)) {
                     // Back to the traced ray's space, level by level as the CPU's recursion returns.
                     for (uint level = top.level; level > 0; --level)
                         normal = normalize(rtRotate(levelRotation[level], normal));
@@ -263,15 +286,15 @@ RtTraceHit rtTrace(vec3 origin, vec3 direction, float tMin, float tMax, uint roo
                 }
                 continue;
             }
-            RtInstance instance = rtInstances[item & ~RAYTRACE_ITEM_INSTANCE];
-            uint childRoot = rtObjectRoots[instance.object];
+            RtInstance instance = rtInstanceAt(item & ~RAYTRACE_ITEM_INSTANCE);
+            uint childRoot = rtObjectRootAt(instance.object);
             uint child = top.level + 1;
             levelOrigin[child] = rtRotateBack(instance.rotation, o - instance.position);
             levelDirection[child] = rtRotateBack(instance.rotation, d);
             levelRotation[child] = instance.rotation;
             if (childRoot == RAYTRACE_NO_NODE ||
-                !rtBoxEntry(levelOrigin[child], levelDirection[child], tMin, tMax, rtNodes[childRoot].boundsMin,
-                            rtNodes[childRoot].boundsMax, entry))
+                !rtBoxEntry(levelOrigin[child], levelDirection[child], tMin, tMax, rtNodeAt(childRoot).boundsMin,
+                            rtNodeAt(childRoot).boundsMax, entry))
                 continue;
             // The child is walked whole before the rest of this leaf.
             if (i + 1 < node.count) stack[size++] = RtStackEntry(top.node, top.level, i + 1, top.entry);

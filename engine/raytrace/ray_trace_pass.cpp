@@ -14,31 +14,34 @@ namespace {
 
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 
+// A device-local copy of the array and its view of `format` texels.
 template <class T>
-Buffer uploadArray(GpuResources& owner, const std::vector<T>& array) {
-    return createDeviceBufferWithData(owner, array.data(), array.size() * sizeof(T),
-                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+VkBufferView uploadArray(GpuResources& owner, const std::vector<T>& array, VkFormat format) {
+    const Buffer buffer = createDeviceBufferWithData(owner, array.data(), array.size() * sizeof(T),
+                                                     VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+    return createTexelView(owner, buffer, format);
 }
 
 } // namespace
 
 GpuGraphBuffers uploadGraph(GpuResources& owner, const GpuGraph& graph) {
-    return {uploadArray(owner, graph.nodes),
-            uploadArray(owner, graph.items),
-            uploadArray(owner, graph.objectRoots),
-            uploadArray(owner, graph.instances),
-            uploadArray(owner, graph.primitives),
-            uploadArray(owner, graph.triangles),
+    constexpr VkFormat kRecords = VK_FORMAT_R32G32B32A32_UINT, kWords = VK_FORMAT_R32_UINT;
+    return {uploadArray(owner, graph.nodes, kRecords),
+            uploadArray(owner, graph.items, kWords),
+            uploadArray(owner, graph.objectRoots, kWords),
+            uploadArray(owner, graph.instances, kRecords),
+            uploadArray(owner, graph.primitives, kRecords),
+            uploadArray(owner, graph.triangles, kRecords),
             graph.rootNode};
 }
 
 std::vector<DescriptorBinding> graphBindings(const GpuGraphBuffers& graph, VkShaderStageFlags stages) {
-    return {storageBuffer(RAYTRACE_BINDING_NODES, stages, graph.nodes),
-            storageBuffer(RAYTRACE_BINDING_ITEMS, stages, graph.items),
-            storageBuffer(RAYTRACE_BINDING_OBJECT_ROOTS, stages, graph.objectRoots),
-            storageBuffer(RAYTRACE_BINDING_INSTANCES, stages, graph.instances),
-            storageBuffer(RAYTRACE_BINDING_PRIMITIVES, stages, graph.primitives),
-            storageBuffer(RAYTRACE_BINDING_TRIANGLES, stages, graph.triangles)};
+    return {texelBuffer(RAYTRACE_BINDING_NODES, stages, graph.nodes),
+            texelBuffer(RAYTRACE_BINDING_ITEMS, stages, graph.items),
+            texelBuffer(RAYTRACE_BINDING_OBJECT_ROOTS, stages, graph.objectRoots),
+            texelBuffer(RAYTRACE_BINDING_INSTANCES, stages, graph.instances),
+            texelBuffer(RAYTRACE_BINDING_PRIMITIVES, stages, graph.primitives),
+            texelBuffer(RAYTRACE_BINDING_TRIANGLES, stages, graph.triangles)};
 }
 
 RayTracePass createRayTracePass(GpuResources& owner, const GpuGraphBuffers& graph, uint32_t capacity) {

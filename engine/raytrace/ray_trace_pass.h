@@ -12,19 +12,21 @@
 
 namespace pf {
 
-// Device-local copies of the packed arrays, at RAYTRACE_BINDING_NODES to
-// RAYTRACE_BINDING_TRIANGLES.
+// Uint views of device-local copies of the packed arrays, bound at
+// RAYTRACE_BINDING_NODES to RAYTRACE_BINDING_TRIANGLES as uniform texel
+// buffers.
 struct GpuGraphBuffers {
-    Buffer nodes;
-    Buffer items;
-    Buffer objectRoots;
-    Buffer instances;
-    Buffer primitives;
-    Buffer triangles;
+    VkBufferView nodes = VK_NULL_HANDLE;
+    VkBufferView items = VK_NULL_HANDLE;
+    VkBufferView objectRoots = VK_NULL_HANDLE;
+    VkBufferView instances = VK_NULL_HANDLE;
+    VkBufferView primitives = VK_NULL_HANDLE;
+    VkBufferView triangles = VK_NULL_HANDLE;
     uint32_t rootNode = RAYTRACE_NO_NODE;
 };
 
-// Owned by `owner`.
+// Owned by `owner`; throws when an array holds more texels than the
+// device's maxTexelBufferElements.
 GpuGraphBuffers uploadGraph(GpuResources& owner, const GpuGraph& graph);
 
 // The graph's entries of a descriptor table, for a pass whose shader
