@@ -105,11 +105,11 @@ GpuGraph packGraph(const lsys::GraphTracer& tracer) {
     if (packed.levels > RAYTRACE_MAX_LEVELS)
         throw GpuGraphError("a ray can be carried through " + std::to_string(packed.levels) +
                             " levels of instances; the GPU traversal holds " + std::to_string(RAYTRACE_MAX_LEVELS) +
-                            " (RAYTRACE_MAX_LEVELS, shaders/raytrace_layout.h)");
+                            " (RAYTRACE_MAX_LEVELS, shaders/raytrace_layouts.h)");
     if (packed.stackDepth > RAYTRACE_STACK_SIZE)
         throw GpuGraphError("tracing the graph can need " + std::to_string(packed.stackDepth) +
                             " stack entries; the GPU traversal holds " + std::to_string(RAYTRACE_STACK_SIZE) +
-                            " (RAYTRACE_STACK_SIZE, shaders/raytrace_layout.h)");
+                            " (RAYTRACE_STACK_SIZE, shaders/raytrace_layouts.h)");
     return packed;
 }
 

@@ -3,8 +3,8 @@
 // shared by GLSL (shaders/raytrace_traverse.glsl) and C++. Every object's
 // BVH (lsystem/raytrace/bvh.h) is stored in one node array; node and item
 // indices are global, so the traversal needs no per-object offsets.
-#ifndef PLANTFIELD_SHADERS_RAYTRACE_LAYOUT_H
-#define PLANTFIELD_SHADERS_RAYTRACE_LAYOUT_H
+#ifndef PLANTFIELD_SHADERS_RAYTRACE_LAYOUTS_H
+#define PLANTFIELD_SHADERS_RAYTRACE_LAYOUTS_H
 
 #ifdef __cplusplus
 #include <glm/glm.hpp>
