@@ -20,9 +20,10 @@ bool traceObject(const GraphTracer& tracer, uint32_t object, Ray& ray, HitQuery 
             found |= tracePrimitive(tracer.primitives[item.index], item.index, tracer.shapes.surfaces,
                                     tracer.shapes.polygons, ray, hit);
         } else {
-            found |= traceInstance(graph.instances[item.index], tracer.instanceToLocal[item.index], ray, hit, [&](uint32_t child, Ray& local, Hit& inner) {
-                return traceObject(tracer, child, local, query, inner);
-            });
+            found |= traceInstance(graph.instances[item.index], tracer.instanceToLocal[item.index], ray, hit,
+                                   [&](uint32_t child, Ray& local, Hit& inner) {
+                                       return traceObject(tracer, child, local, query, inner);
+                                   });
         }
         return found && query == HitQuery::Any;
     });

@@ -81,10 +81,11 @@ bool traceObject(const LazyGraphTracer& tracer, uint32_t object, TracePins& pins
             found |= tracePrimitive(expansion.primitives[item.index], expansion.primitiveIds[item.index],
                                     tracer.surfaces, expansion.polygons, ray, hit);
         } else {
-            found |=
-                traceInstance(expansion.instances[item.index], glm::inverse(expansion.instances[item.index].frame.rotation), ray, hit, [&](uint32_t child, Ray& local, Hit& inner) {
-                    return traceObject(tracer, child, pins, local, query, inner);
-                });
+            found |= traceInstance(expansion.instances[item.index],
+                                   glm::inverse(expansion.instances[item.index].frame.rotation), ray, hit,
+                                   [&](uint32_t child, Ray& local, Hit& inner) {
+                                       return traceObject(tracer, child, pins, local, query, inner);
+                                   });
         }
         return found && query == HitQuery::Any;
     });

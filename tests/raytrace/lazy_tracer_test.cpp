@@ -14,7 +14,7 @@
 #include "lsystem/instance_graph_lazy.h"
 #include "lsystem/raytrace/graph_tracer.h"
 #include "lsystem/raytrace/lazy_graph_tracer.h"
-#include "raytrace_test_support.h"
+#include "seeded_rays.h"
 
 namespace lsys::test {
 namespace {

@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <numbers>
 #include <optional>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -19,7 +18,7 @@
 #include "lsystem/raytrace/flat_tracer.h"
 #include "lsystem/raytrace/graph_tracer.h"
 #include "lsystem/turtle.h"
-#include "raytrace_test_support.h"
+#include "seeded_rays.h"
 
 namespace lsys::test {
 namespace {

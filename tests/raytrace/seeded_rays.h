@@ -1,14 +1,17 @@
 #pragma once
-// Rays the tracer tests share.
+// The rays the tracer tests shoot at a plant, the same for the CPU tracers
+// and the GPU traversal.
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <random>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "lsystem/plant_asset.h"
 #include "lsystem/raytrace/ray.h"
 
 namespace lsys::test {
