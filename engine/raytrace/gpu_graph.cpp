@@ -53,8 +53,10 @@ GpuGraph packGraph(const lsys::GraphTracer& tracer) {
         throw GpuGraphError("the graph has more primitives or instances than a GPU item can index (2^31)");
     GpuGraph packed;
 
-    const std::vector<TriangleRange> surfaceTriangles = appendTriangles(packed.triangles, tracer.shapes.surfaces);
-    const std::vector<TriangleRange> polygonTriangles = appendTriangles(packed.triangles, tracer.shapes.polygons);
+    const std::vector<TriangleRange> surfaceTriangles =
+        appendTriangles(packed.triangles, tracer.shapes.surfaces.meshes);
+    const std::vector<TriangleRange> polygonTriangles =
+        appendTriangles(packed.triangles, tracer.shapes.polygons.meshes);
     packed.primitives.reserve(tracer.primitives.size());
     for (const lsys::Primitive& p : tracer.primitives) {
         TriangleRange triangles;

@@ -44,12 +44,6 @@ constexpr int kMaxLookahead = 4;
 constexpr uint64_t kLookaheadBudget = 4096;
 constexpr uint64_t kTotalLookaheadBudget = uint64_t(1) << 24;
 
-// An object's BVH has one item a leaf: an instance is a whole subtree, worth
-// its own box test before the ray is carried into it, and its own place in
-// the near-to-far order, so a closest-hit query finds the nearer subtree's
-// hit before it walks a farther one.
-constexpr uint32_t kObjectLeafSize = 1;
-
 // Per object, the boxes placed to box it looking 0 to kMaxLookahead levels down.
 using BoxCosts = std::vector<std::array<uint64_t, kMaxLookahead + 1>>;
 
@@ -79,10 +73,11 @@ int lookahead(const BoxCosts& costs, uint32_t object, uint64_t& budget) {
 
 Bounds placedPrimitiveBounds(const GraphTracer& tracer, const Primitive& primitive, const Frame& frame) {
     // A polygon's outline is in its object's space already; its frame is not applied.
-    if (primitive.kind == PrimitiveKind::Polygon) return transformed(tracedBounds(primitive, tracer.shapes), frame);
+    if (primitive.kind == PrimitiveKind::Polygon)
+        return transformed(tracedBounds(primitive, tracer.shapes.surfaces, tracer.shapes.polygons), frame);
     Primitive placed = primitive;
     placed.frame = compose(frame, primitive.frame);
-    return tracedBounds(placed, tracer.shapes);
+    return tracedBounds(placed, tracer.shapes.surfaces, tracer.shapes.polygons);
 }
 
 // The box of what `object` draws placed by `frame`, its items boxed
@@ -135,7 +130,7 @@ GraphTracer buildGraphTracer(const InstanceGraph& graph, const SurfaceLibrary& s
             }
             tracer.objectBounds[object].extend(itemBounds.back());
         }
-        tracer.objectBvhs[object] = buildBvh(itemBounds, kObjectLeafSize);
+        tracer.objectBvhs[object] = buildBvh(itemBounds, kGraphObjectLeafSize);
     }
     return tracer;
 }

@@ -30,6 +30,12 @@ struct GraphTracer {
     std::vector<Bvh> objectBvhs;      // over each object's items, in itemsOf order
 };
 
+// An object's BVH (in either graph tracer) has one item a leaf: an instance is a whole subtree, worth
+// its own box test before the ray is carried into it, and its own place in
+// the near-to-far order, so a closest-hit query finds the nearer subtree's
+// hit before it walks a farther one.
+inline constexpr uint32_t kGraphObjectLeafSize = 1;
+
 // Traces an instance (`toLocal`: the inverse of its rotation): the ray carried into the child's frame, traced there
 // by `traceChild(object, localRay, localHit)` (true on a hit nearer than
 // localRay.tMax), and a hit brought back, lowering ray.tMax. Shared by the

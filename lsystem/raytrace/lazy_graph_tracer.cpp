@@ -36,7 +36,7 @@ ExpandedObject expandForTracing(const LazyGraphTracer& tracer, uint32_t object, 
         }
         bounds.extend(itemBounds.back());
     }
-    expanded.bvh = buildBvh(itemBounds);
+    expanded.bvh = buildBvh(itemBounds, kGraphObjectLeafSize);
     return expanded;
 }
 

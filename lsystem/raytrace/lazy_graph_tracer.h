@@ -2,9 +2,10 @@
 // Tracing a LazyInstanceGraph (docs/RAYTRACING.md, "Lazy expansion"), after
 // Robbins 1998, §3: an object's items are interpreted from the b-grammar
 // only when a ray enters the object's box, kept in an LRU cache under a byte
-// budget, and interpreted again when needed after eviction. The hits are
-// GraphTracer's on buildInstanceGraph's graph, bit for bit, whatever the
-// budget: the boxes, the BVHs and the traversal are the same.
+// budget, and interpreted again when needed after eviction. Its closest hits
+// are GraphTracer's on buildInstanceGraph's graph whatever the budget (where
+// copies of a shape overlap exactly, possibly the other copy): instances are
+// boxed by their objects' boxes only, since descendants are not at hand.
 
 #include <cstdint>
 #include <memory>

@@ -63,7 +63,7 @@ TEST(GpuGraph, HoldsEveryObjectsBvhWithGlobalIndices) {
         EXPECT_EQ(p.extent, expected.length);
         if (expected.kind != lsys::PrimitiveKind::Surface) continue;
         ++surfaces;
-        const lsys::TriangleMesh& mesh = tracer.shapes.surfaces[expected.shape];
+        const lsys::TriangleMesh& mesh = tracer.shapes.surfaces.meshes[expected.shape];
         ASSERT_EQ(p.triangleCount, mesh.triangleCount());
         EXPECT_EQ(glm::vec3(packed.triangles[p.firstTriangle].b), mesh.positions[mesh.indices[1]]);
     }

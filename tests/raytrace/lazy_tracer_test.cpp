@@ -30,41 +30,60 @@ BothGraphs bothGraphs(const Grammar& grammar, std::optional<int> steps = std::nu
     return {buildInstanceGraph(bgrammar, grammar), deriveLazyInstanceGraph(bgrammar, grammar)};
 }
 
-void expectSameHit(const std::optional<Hit>& actual, const std::optional<Hit>& expected) {
+// Which primitives overlap exactly: none, or copies of one shape placed at
+// the same spot along different paths of instances (the fractal bush's
+// F → FF stacks unit segments that way), where which copy a walk meets
+// first is the order of the walk, and the copies' normals differ in their
+// last bits (each rotated back along its own path).
+enum class Overlaps { None, CoincidentCopies };
+
+void expectSameHit(const std::optional<Hit>& actual, const std::optional<Hit>& expected, Overlaps overlaps) {
     ASSERT_EQ(actual.has_value(), expected.has_value());
     if (!expected) return;
     EXPECT_EQ(actual->t, expected->t);
-    EXPECT_EQ(actual->primitive, expected->primitive);
-    EXPECT_EQ(actual->normal, expected->normal);
     EXPECT_EQ(actual->kind, expected->kind);
     EXPECT_EQ(actual->material, expected->material);
+    if (overlaps == Overlaps::CoincidentCopies) {
+        EXPECT_LT(glm::distance(actual->normal, expected->normal), 1e-4f); // float rotations, 5 levels
+        return;
+    }
+    EXPECT_EQ(actual->primitive, expected->primitive);
+    EXPECT_EQ(actual->normal, expected->normal);
 }
 
 // Closest and any hits of seeded rays through both tracers, the lazy one
 // under `budgetBytes`.
-void expectGraphTracersHits(const BothGraphs& graphs, uint64_t budgetBytes, size_t rayCount) {
+void expectGraphTracersHits(const BothGraphs& graphs, uint64_t budgetBytes, size_t rayCount, Overlaps overlaps) {
     const GraphTracer whole = buildGraphTracer(graphs.whole);
     const LazyGraphTracer lazy = buildLazyGraphTracer(graphs.lazy, budgetBytes);
     size_t hits = 0;
     for (const Ray& ray : raysAt(graphs.whole.objects[graphs.whole.root].bounds, rayCount, 5)) {
-        for (HitQuery query : {HitQuery::Closest, HitQuery::Any}) {
-            const std::optional<Hit> expected = trace(whole, ray, query);
-            expectSameHit(trace(lazy, ray, query), expected);
-            hits += expected.has_value() && query == HitQuery::Closest;
-        }
+        const std::optional<Hit> expected = trace(whole, ray, HitQuery::Closest);
+        expectSameHit(trace(lazy, ray, HitQuery::Closest), expected, overlaps);
+        hits += expected.has_value();
+        // Any hit is whichever the walk meets first, and the graph tracer
+        // boxes instances from their descendants where the lazy one has only
+        // the child's box, so their walks differ: both must agree that
+        // something is in the way, and the lazy one's hit be no nearer than
+        // the closest.
+        const std::optional<Hit> any = trace(lazy, ray, HitQuery::Any);
+        ASSERT_EQ(any.has_value(), expected.has_value());
+        if (any) EXPECT_GE(any->t, expected->t);
     }
     // Aimed into the box, some hit (a few percent of them on pixel-wide lines).
     EXPECT_GT(hits, rayCount / 40);
     EXPECT_LE(expansionStats(lazy).peakBytes, budgetBytes);
 }
 
-void expectLazyIsWhole(const Grammar& grammar, std::optional<int> steps = std::nullopt) {
+void expectLazyIsWhole(const Grammar& grammar, std::optional<int> steps = std::nullopt,
+                       Overlaps overlaps = Overlaps::None) {
     const BothGraphs graphs = bothGraphs(grammar, steps);
-    for (uint64_t budget : {uint64_t{1}, uint64_t{16} << 10, UINT64_MAX}) expectGraphTracersHits(graphs, budget, 500);
+    for (uint64_t budget : {uint64_t{1}, uint64_t{16} << 10, UINT64_MAX})
+        expectGraphTracersHits(graphs, budget, 500, overlaps);
 }
 
 TEST(LazyGraphTracer, FractalBushFiveStepsIsTheGraphTracer) {
-    expectLazyIsWhole(loadOk("plants/fractal_bush.lsys"), 5);
+    expectLazyIsWhole(loadOk("plants/fractal_bush.lsys"), 5, Overlaps::CoincidentCopies);
 }
 
 TEST(LazyGraphTracer, MonopodialTreeIsTheGraphTracer) { expectLazyIsWhole(loadOk("plants/monopodial_tree.lsys")); }
