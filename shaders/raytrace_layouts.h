@@ -39,7 +39,7 @@ using uint = uint32_t;
 // that could need more is refused when it is packed (packGraph), never cut
 // short on the GPU.
 #define RAYTRACE_MAX_LEVELS 16
-#define RAYTRACE_STACK_SIZE 64
+#define RAYTRACE_STACK_SIZE 96
 
 #define RAYTRACE_NO_NODE 0xffffffffu
 #define RAYTRACE_NO_HIT 0xffffffffu        // RtHit::primitive of a ray that hit nothing

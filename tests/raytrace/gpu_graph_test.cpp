@@ -93,7 +93,7 @@ TEST(GpuGraph, RefusesMoreInstanceLevelsThanTheTraversalHolds) {
 }
 
 // 64 segments and an instance make a BVH of height 6 (leaves of 4) in every
-// object: 14 levels of them can need more than 64 stack entries.
+// object: 14 levels of them can need more than 96 stack entries.
 TEST(GpuGraph, RefusesAGraphNeedingADeeperStack) {
     const InstanceGraph graph = chainGraph(14, 64);
     try {
