@@ -68,7 +68,9 @@ void expectGraphTracersHits(const BothGraphs& graphs, uint64_t budgetBytes, size
         // the closest.
         const std::optional<Hit> any = trace(lazy, ray, HitQuery::Any);
         ASSERT_EQ(any.has_value(), expected.has_value());
-        if (any) EXPECT_GE(any->t, expected->t);
+        if (any) {
+            EXPECT_GE(any->t, expected->t);
+        }
     }
     // Aimed into the box, some hit (a few percent of them on pixel-wide lines).
     EXPECT_GT(hits, rayCount / 40);
