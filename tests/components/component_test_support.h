@@ -6,8 +6,8 @@
 
 namespace lsys::components::test {
 
-// Writes text to a file of this name in a folder of the test binary's own
-// and returns its path.
+// Writes text to a file of this name in the running test's own folder and
+// returns its path.
 std::filesystem::path writeComponentFile(std::string_view name, std::string_view text);
 
 } // namespace lsys::components::test

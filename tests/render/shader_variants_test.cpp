@@ -93,6 +93,8 @@ TEST_P(ShaderVariantsTest, FramesFromNewCamerasAndTimesCompileNoShader) {
     const Tour& scene = GetParam();
     const fs::path cache = fs::path(PLANTFIELD_TEST_OUTPUT_DIR) / ("shader_variants_cache_" + std::string(scene.scene));
     fs::remove_all(cache);
+    // Mesa makes only the cache's last folder: a fresh build has no output folder yet.
+    fs::create_directories(cache.parent_path());
     if (renderTour(cache, scene.scene, tour(0.0f, 0.0f, scene.target)).find("llvmpipe") == std::string::npos)
         GTEST_SKIP() << "the shader variants checked are lavapipe's";
     const size_t warm = cachedShaders(cache);

@@ -6,15 +6,7 @@
 
 namespace pf::test {
 
-std::filesystem::path testFolder() {
-    const testing::TestInfo* info = testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string(info->test_suite_name()) + "." + info->name();
-    for (char& c : name)
-        if (c == '/') c = '_';
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "plantfield_scene_tests" / name;
-    std::filesystem::create_directories(folder);
-    return folder;
-}
+std::filesystem::path testFolder() { return testFolder("plantfield_scene_tests"); }
 
 std::filesystem::path writeFile(const std::string& name, std::string_view text) {
     const std::filesystem::path path = testFolder() / name;

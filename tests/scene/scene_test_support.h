@@ -2,6 +2,7 @@
 #pragma once
 
 #include "engine/scene/scene.h"
+#include "test_folder.h"
 
 #include <filesystem>
 #include <string>
@@ -12,7 +13,7 @@
 
 namespace pf::test {
 
-// A fresh folder for the running test (ctest runs tests in parallel).
+// The running test's folder of scene files.
 std::filesystem::path testFolder();
 
 // Writes text to testFolder()/name and returns the path.
