@@ -24,6 +24,7 @@ layout(set = 0, binding = FIELD_BINDING_SKELETONS) uniform usamplerBuffer skelet
 layout(set = 0, binding = FIELD_BINDING_POSES) uniform usamplerBuffer poseTexels;        // JointPose[]
 layout(set = 0, binding = FIELD_BINDING_INSTANCE_SKELETON) uniform usamplerBuffer instanceSkeletonTexels; // uint
 layout(set = 0, binding = FIELD_BINDING_IMPOSTOR_OUTLINES) uniform usamplerBuffer outlineTexels; // per atlas layer
+layout(set = 0, binding = FIELD_BINDING_TRACED_SUN) uniform sampler2D tracedSun; // per pixel (r)
 
 FieldInstance fieldInstanceAt(uint i) {
     int t = int(i) * FIELD_INSTANCE_TEXELS;
@@ -148,6 +149,12 @@ bool fadeDiscards(vec2 fragCoord, uint packedFade) {
     return fadeIn ? threshold < 1.0 - coverage : threshold >= coverage;
 }
 
+// A plant mesh's fragment that no pass draws: dithered out of a fading
+// plant, or outside a leaf card's outline (SURFACE_LEAF).
+bool plantFragmentDiscarded(vec2 fragCoord, uint packedFade, float kind, vec2 uv) {
+    return fadeDiscards(fragCoord, packedFade) || (kind > 0.5 && kind < 1.5 && leafCutOut(uv));
+}
+
 // The terrain's broadest octave of grass patches (12.5 m cells), per vertex:
 // the drawn terrain has at most a few metres between samples, over which the
 // octave is close to linear, so interpolating it loses nothing visible and
@@ -167,9 +174,9 @@ vec3 sunMapPosition(vec3 worldPos, vec3 normal) {
 }
 
 // Sun visibility at sunMapPosition `ndc`: 2×2 PCF of the shadow map, fully
-// lit outside it or when shadows are off.
+// lit outside it or when the sun's visibility comes from elsewhere.
 float sunVisibilityAt(vec3 ndc) {
-    if (field.viewport.w < 0.5) return 1.0;
+    if (field.viewport.w != FIELD_SUN_SHADOW_MAP) return 1.0;
     vec2 uv = ndc.xy * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0) return 1.0;
     // One tap: the comparison sampler filters linearly, a 2×2 PCF.
@@ -199,6 +206,23 @@ vec3 sunwardNormal(vec3 normal) {
 vec3 shadeField(vec3 albedo, vec3 normal, vec3 worldPos, float occlusion, float transmission) {
     float visibility = sunVisibilityAt(sunMapPosition(worldPos, sunwardNormal(normal)));
     return shadeFieldSeen(albedo, normal, visibility, occlusion, transmission);
+}
+
+// The sun's visibility at a fragment of a surface the traced-sun pass saw
+// (plants of the cull's mesh lists, the shadowed terrain chunks): its ray's
+// result at the pixel (`fragCoord`: gl_FragCoord.xy) with ray-traced
+// shadows, else the shadow map's at sunMapPosition `ndc`.
+float sunVisibilityOf(vec2 fragCoord, vec3 ndc) {
+    if (field.viewport.w == FIELD_SUN_TRACED) return texelFetch(tracedSun, ivec2(fragCoord), 0).r;
+    return sunVisibilityAt(ndc);
+}
+
+// Where the traced-sun pass starts a fragment's ray: the point of the
+// plant's rest pose (the pose the traced graph holds, so a swaying leaf is
+// shadowed as at rest, never by its own resting copy), a centimetre off the
+// surface on its sunward side, so the ray leaves the triangle it starts on.
+vec4 tracedSunOrigin(vec3 restPos, vec3 normal) {
+    return vec4(restPos + sunwardNormal(normal) * 0.01, 1.0);
 }
 
 #endif

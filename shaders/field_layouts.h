@@ -88,6 +88,12 @@ using uint = uint32_t;
 #define FIELD_BINDING_CANOPY 14                    // CanopyCell[] per node, CANOPY_CELLS each
 #define FIELD_BINDING_CANOPY_FAR 15                // uint: the camera's far nodes (the canopy's instances)
 #define FIELD_BINDING_IMPOSTOR_SHADOW 16           // sampler2DArray: impostor shadow frames, coverage (r)
+#define FIELD_BINDING_TRACED_SUN 17                // sampler2D: per pixel, the traced sun's visibility (r)
+
+// FieldFrame::viewport.w: where the sun's visibility comes from.
+#define FIELD_SUN_UNSHADOWED 0.0 // nowhere: every surface facing the sun is lit
+#define FIELD_SUN_SHADOW_MAP 1.0 // the shadow map (shadow_map.h)
+#define FIELD_SUN_TRACED 2.0     // per pixel, a ray to the sun (engine/field/traced_sun_pass.h)
 
 // Descriptor binding of the impostor bake (its own set 0).
 #define IMPOSTOR_BAKE_BINDING_VERTICES 0 // FieldVertex[]
@@ -238,7 +244,7 @@ struct FieldPush {
 struct FieldFrame {
     mat4 sunViewProj;      // world → shadow map clip space
     mat4 sunCacheViewProj; // world → the shadow cache's clip space (the frame's map is a window of it)
-    vec4 viewport;         // x width, y height (pixels), z shadow map texel size (m), w 1 when shadows are on
+    vec4 viewport;         // x width, y height (pixels), z shadow map texel size (m), w FIELD_SUN_*
     vec4 wind;             // xz direction × speed (m/s), y gust strength, w time (s)
     vec4 windDetail; // x turbulence, y gust wavelength (m), z gust front speed (m/s), w impostor sway (m per m/s of
                      // gust, at the top)

@@ -22,6 +22,7 @@
 layout(location = 0) out vec3 outWorldPos;
 layout(location = 1) out vec2 outUv;
 layout(location = 2) flat out uint outLayer; // the atlas frame shown
+layout(location = 3) out vec3 outRestPos;      // outWorldPos before the wind's lean (traced_origin_impostor.frag)
 layout(location = 4) flat out uint outFade;
 layout(location = 5) flat out float outYaw;
 layout(location = 6) out vec4 outFog;
@@ -73,6 +74,7 @@ void main() {
                     impostorFrameUp(quadAzimuth, sinE, cosE) * ((2.0 * height - 1.0) * halfExtent.y);
 
     outWorldPos = plantToWorld(inst, plantPos);
+    outRestPos = outWorldPos;
     // Far plants have no skeleton: the quad's top leans with the gusts and
     // turbulence (the wind beyond its mean), growing with height squared.
     // Like the skeletons, which start at rest at time 0, the lean rises over
@@ -95,7 +97,8 @@ void main() {
     // beyond the far plane, and the rasteriser drops their triangles before
     // any fragment.
     if ((ring > 0u && v.position.z > 0.5) ||
-        impostorPartOf(instanceSphere(inst, m), field.sunViewProj, field.viewport.z, field.viewport.w > 0.5) !=
+        impostorPartOf(instanceSphere(inst, m), field.sunViewProj, field.viewport.z,
+                       field.viewport.w != FIELD_SUN_UNSHADOWED) !=
             fieldPush.impostorPart)
         gl_Position = vec4(0.0, 0.0, 2.0, 1.0);
 }

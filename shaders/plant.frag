@@ -14,15 +14,15 @@ layout(location = 6) in vec4 inFog;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    if (fadeDiscards(gl_FragCoord.xy, inFade)) discard;
+    if (plantFragmentDiscarded(gl_FragCoord.xy, inFade, inKind, inUv)) discard;
     bool foliage = inKind > 0.5;
-    if (foliage && inKind < 1.5 && leafCutOut(inUv)) discard;
 
     vec3 n = normalize(inNormal);
     if (foliage && !gl_FrontFacing) n = -n; // two-sided: light the side we see
     vec3 albedo = surfaceAlbedo(inAlbedo, inKind, inUv);
     // Foliage inside a crown sees less sky; bark near the ground too.
     float occlusion = foliage ? 0.75 : 0.85;
-    vec3 color = shadeField(albedo, n, inWorldPos, occlusion, foliage ? kFoliageTransmission : 0.0);
+    float sun = sunVisibilityOf(gl_FragCoord.xy, sunMapPosition(inWorldPos, sunwardNormal(n)));
+    vec3 color = shadeFieldSeen(albedo, n, sun, occlusion, foliage ? kFoliageTransmission : 0.0);
     outColor = vec4(toneMap(applyVertexFog(color, inFog)), 1.0);
 }

@@ -10,6 +10,5 @@ layout(location = 4) flat in uint inFade;
 layout(location = 5) flat in float inKind;
 
 void main() {
-    if (fadeDiscards(gl_FragCoord.xy, inFade)) discard;
-    if (inKind > 0.5 && inKind < 1.5 && leafCutOut(inUv)) discard;
+    if (plantFragmentDiscarded(gl_FragCoord.xy, inFade, inKind, inUv)) discard;
 }

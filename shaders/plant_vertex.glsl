@@ -11,6 +11,7 @@ layout(location = 3) out vec2 outUv;
 layout(location = 4) flat out uint outFade;
 layout(location = 5) flat out float outKind;
 layout(location = 6) out vec4 outFog;
+layout(location = 7) out vec3 outRestPos; // before the pose: where traced_origin_plant.frag starts the sun's ray
 
 void main() {
     VisiblePlant p = visiblePlant(gl_InstanceIndex);
@@ -20,6 +21,7 @@ void main() {
     // Skinning: every vertex follows its joint's pose.
     JointPose pose = plantJointPose(p.index, v.joint.x);
     outWorldPos = plantToWorld(inst, posePoint(pose, v.position.xyz));
+    outRestPos = plantToWorld(inst, v.position.xyz);
     outNormal = plantNormalToWorld(inst, quatRotate(pose.rotation, v.normal.xyz));
     outAlbedo = v.albedo.rgb;
     outUv = vec2(v.position.w, v.normal.w);

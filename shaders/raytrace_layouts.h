@@ -30,7 +30,7 @@ using uint = uint32_t;
 #define RAYTRACE_BINDING_HITS 7         // RtHit[], one per ray
 
 #define RAYTRACE_NODE_TEXELS 2
-#define RAYTRACE_INSTANCE_TEXELS 2
+#define RAYTRACE_INSTANCE_TEXELS 3
 #define RAYTRACE_PRIMITIVE_TEXELS 4
 #define RAYTRACE_TRIANGLE_TEXELS 3
 
@@ -64,11 +64,16 @@ struct RtNode {
     uint count;
 };
 
-// A child object placed in its parent's space by a rigid frame.
+// A child object placed in its parent's space by a rigid frame and a
+// uniform scale (1 in a plant's graph; a field's plants are scaled).
 struct RtInstance {
     vec4 rotation; // unit quaternion, xyz w
     vec3 position;
     uint object;
+    float scale; // the child's metres per parent metre, > 0
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 // lsys::Primitive as GraphTracer holds it (a segment's radii already scaled
@@ -89,8 +94,11 @@ struct RtPrimitive {
     uint pad1;
 };
 
+// The w of each corner is free for the includer's cut-out test
+// (RAYTRACE_CUT_OUT in raytrace_traverse.glsl): a field's leaf cards keep
+// their texture coordinates there.
 struct RtTriangle {
-    vec4 a; // xyz, w unused
+    vec4 a; // xyz, w free
     vec4 b;
     vec4 c;
 };

@@ -1,7 +1,11 @@
 // The hierarchical traversal of lsys::trace(GraphTracer) on the GPU
 // (docs/RAYTRACING.md, "The GPU traversal"), over the graph packed by
 // engine/raytrace/gpu_graph.h. The includer defines RAYTRACE_GRAPH_SET, the
-// set holding the graph's buffers (0 when it does not).
+// set holding the graph's buffers (0 when it does not), and may define
+// RAYTRACE_CUT_OUT and then, after the include, the function
+// `bool rtCutOut(uint material, uint triangle, vec2 barycentric)`: true
+// where a hit on a polygon's triangle is to be ignored (the transparent
+// part of an alpha-tested leaf card, so its shadow has the leaf's outline).
 //
 // GLSL has no recursion: one stack holds the nodes still to visit of every
 // object on the way down, each entry with its instance level, and the ray in
@@ -33,6 +37,10 @@ layout(set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_INSTANCES) uniform u
 layout(set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_PRIMITIVES) uniform usamplerBuffer rtPrimitiveTexels;
 layout(set = RAYTRACE_GRAPH_SET, binding = RAYTRACE_BINDING_TRIANGLES) uniform usamplerBuffer rtTriangleTexels;
 
+#ifdef RAYTRACE_CUT_OUT
+bool rtCutOut(uint material, uint triangle, vec2 barycentric);
+#endif
+
 RtNode rtNodeAt(uint i) {
     int t = int(i) * RAYTRACE_NODE_TEXELS;
     uvec4 low = texelFetch(rtNodeTexels, t), high = texelFetch(rtNodeTexels, t + 1);
@@ -45,7 +53,8 @@ uint rtObjectRootAt(uint i) { return texelFetch(rtObjectRootTexels, int(i)).x; }
 RtInstance rtInstanceAt(uint i) {
     int t = int(i) * RAYTRACE_INSTANCE_TEXELS;
     uvec4 placed = texelFetch(rtInstanceTexels, t + 1);
-    return RtInstance(uintBitsToFloat(texelFetch(rtInstanceTexels, t)), uintBitsToFloat(placed.xyz), placed.w);
+    return RtInstance(uintBitsToFloat(texelFetch(rtInstanceTexels, t)), uintBitsToFloat(placed.xyz), placed.w,
+                      uintBitsToFloat(texelFetch(rtInstanceTexels, t + 2).x), 0, 0, 0);
 }
 
 RtPrimitive rtPrimitiveAt(uint i) {
@@ -161,8 +170,10 @@ void rtSphere(inout RtNearest n, vec3 o, vec3 d, float radius) {
 }
 
 // As lsys::intersectTriangle (Möller and Trumbore 1997), from either side;
-// true with t and the unnormalised normal (b − a) × (c − a) on a hit in [tMin, tMax].
-bool rtTriangle(vec3 o, vec3 d, float tMin, float tMax, RtTriangle tri, out float t, out vec3 normal) {
+// true with t, the unnormalised normal (b − a) × (c − a) and the hit's
+// barycentric coordinates of b and c on a hit in [tMin, tMax].
+bool rtTriangle(vec3 o, vec3 d, float tMin, float tMax, RtTriangle tri, out float t, out vec3 normal,
+                out vec2 barycentric) {
     vec3 edge1 = tri.b.xyz - tri.a.xyz, edge2 = tri.c.xyz - tri.a.xyz;
     vec3 p = cross(d, edge2);
     float determinant = dot(edge1, p);
@@ -176,16 +187,22 @@ bool rtTriangle(vec3 o, vec3 d, float tMin, float tMax, RtTriangle tri, out floa
     if (v < 0.0 || u + v > 1.0) return false;
     t = dot(edge2, q) * inverse;
     normal = cross(edge1, edge2);
+    barycentric = vec2(u, v);
     return t >= tMin && t <= tMax;
 }
 
 // The nearest of a primitive's triangles, each tested up to the nearest so
-// far (as lsys's nearestTriangle).
-void rtNearestTriangle(inout RtNearest n, vec3 o, vec3 d, uint first, uint count) {
+// far (as lsys's nearestTriangle); a polygon's hits the includer cuts out
+// are not hits.
+void rtNearestTriangle(inout RtNearest n, vec3 o, vec3 d, uint first, uint count, uint material, bool polygon) {
     for (uint i = first; i < first + count; ++i) {
         float t;
         vec3 normal;
-        if (rtTriangle(o, d, n.tMin, n.tMax, rtTriangleAt(i), t, normal)) {
+        vec2 barycentric;
+        if (rtTriangle(o, d, n.tMin, n.tMax, rtTriangleAt(i), t, normal, barycentric)) {
+#ifdef RAYTRACE_CUT_OUT
+            if (polygon && rtCutOut(material, i, barycentric)) continue;
+#endif
             n.t = n.tMax = t;
             n.normal = normal;
             n.found = true;
@@ -199,7 +216,7 @@ void rtNearestTriangle(inout RtNearest n, vec3 o, vec3 d, uint first, uint count
 bool rtTracePrimitive(RtPrimitive primitive, vec3 o, vec3 d, float tMin, inout float tMax, out vec3 normal) {
     RtNearest n = RtNearest(tMin, tMax, 0.0, vec3(0.0), false);
     if (primitive.kind == RAYTRACE_KIND_POLYGON) {
-        rtNearestTriangle(n, o, d, primitive.firstTriangle, primitive.triangleCount);
+        rtNearestTriangle(n, o, d, primitive.firstTriangle, primitive.triangleCount, primitive.material, true);
     } else {
         vec3 localO = rtRotateBack(primitive.rotation, o - primitive.position);
         vec3 localD = rtRotateBack(primitive.rotation, d);
@@ -209,7 +226,7 @@ bool rtTracePrimitive(RtPrimitive primitive, vec3 o, vec3 d, float tMin, inout f
             rtSphere(n, localO, localD, primitive.startRadius);
         else // a surface's unit mesh, scaled by its length (t is unchanged)
             rtNearestTriangle(n, localO / primitive.extent, localD / primitive.extent, primitive.firstTriangle,
-                        primitive.triangleCount);
+                              primitive.triangleCount, primitive.material, false);
         n.normal = rtRotate(primitive.rotation, n.normal);
     }
     if (!n.found) return false;
@@ -289,8 +306,9 @@ RtTraceHit rtTrace(vec3 origin, vec3 direction, float tMin, float tMax, uint roo
             RtInstance instance = rtInstanceAt(item & ~RAYTRACE_ITEM_INSTANCE);
             uint childRoot = rtObjectRootAt(instance.object);
             uint child = top.level + 1;
-            levelOrigin[child] = rtRotateBack(instance.rotation, o - instance.position);
-            levelDirection[child] = rtRotateBack(instance.rotation, d);
+            // Scaled with the child, the direction keeps t the same parameter in both spaces.
+            levelOrigin[child] = rtRotateBack(instance.rotation, o - instance.position) / instance.scale;
+            levelDirection[child] = rtRotateBack(instance.rotation, d) / instance.scale;
             levelRotation[child] = instance.rotation;
             if (childRoot == RAYTRACE_NO_NODE ||
                 !rtBoxEntry(levelOrigin[child], levelDirection[child], tMin, tMax, rtNodeAt(childRoot).boundsMin,

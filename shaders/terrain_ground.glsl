@@ -21,6 +21,6 @@ vec4 groundColour(const bool shadowed) {
     vec3 earth = vec3(0.16, 0.12, 0.08) * mix(0.8, 1.1, valueNoise(p * 1.7));
     float slope = 1.0 - n.y;
     vec3 albedo = mix(grass, earth, smoothstep(0.18, 0.35, slope + 0.1 * (patches - 0.5)));
-    vec3 color = shadeFieldSeen(albedo, n, shadowed ? sunVisibilityAt(inSunMap) : 1.0, 1.0, 0.0);
+    vec3 color = shadeFieldSeen(albedo, n, shadowed ? sunVisibilityOf(gl_FragCoord.xy, inSunMap) : 1.0, 1.0, 0.0);
     return vec4(toneMap(applyVertexFog(color, inFog)), 1.0);
 }

@@ -94,6 +94,11 @@ FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const 
     if (content_.plants.empty()) throw std::runtime_error("the scene places no plant");
     if (content_.plants.size() > FIELD_MAX_INSTANCES)
         throw std::runtime_error("at most " + std::to_string(FIELD_MAX_INSTANCES) + " plants can be drawn");
+    // The traced pass runs before the colour pass, over the plants the cull
+    // lists then; occlusion culling adds plants between the colour pass's parts.
+    if (settings_.shadows == SunShadows::traced && settings_.occlusionCulling)
+        throw std::runtime_error("ray-traced shadows and occlusion culling do not go together: the rays start from "
+                                 "what a frame draws before its colour pass, and occlusion culling draws more in it");
     lsys::need(settings_.memory, "GPU uploads", fieldUploadBytes(content_));
     requireBindableVertexPool(ctx_, content_.models.vertices.size());
     uniforms_ = createHostBuffer(resources_, sizeof(FieldUniformBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
@@ -148,12 +153,7 @@ void FieldRenderer::uploadGeometry() {
 void FieldRenderer::uploadInstances() {
     PlantModelPool& pool = content_.models;
     const uint32_t plantCount = uint32_t(content_.plants.size());
-    std::vector<gpu::FieldInstance> instances(plantCount);
-    for (uint32_t i = 0; i < plantCount; ++i) {
-        const PlantInstance& p = content_.plants[i];
-        instances[i] = {glm::vec4(p.position, p.scale), glm::vec4(p.rotation, p.windPhase, 0.0f, 0.0f),
-                        glm::uvec4(pool.modelOf(p.species, p.variant), p.species, p.variant, 0u)};
-    }
+    std::vector<gpu::FieldInstance> instances = fieldInstancesOf(content_);
     std::vector<gpu::PlantModel> models;
     for (const PlantModelInfo& info : pool.models) models.push_back(info.gpu);
     assignVisibleLists(models, instances);
@@ -195,6 +195,7 @@ void FieldRenderer::uploadInstances() {
     shadowCacheCasters_ = createCullPass(resources_, inputs);
     inputs.near = clustered ? &shadowFrameClusters_.near : nullptr;
     shadowFrameCasters_ = createCullPass(resources_, inputs);
+    createTracedSun(instances);
 }
 
 // The quadtree over the plants (in cluster order since buildFieldContent)
@@ -251,7 +252,8 @@ void FieldRenderer::createDescriptors() {
         texels(FIELD_BINDING_IMPOSTOR_OUTLINES, outlines_, uint4),
         texels(FIELD_BINDING_CLUSTER_NODES, clustered ? clusterNodes_ : placeholder, uint4),
         texels(FIELD_BINDING_CANOPY, clustered ? canopy_ : placeholder, uint4),
-        texels(FIELD_BINDING_CANOPY_FAR, clustered ? clusters_.far : placeholder, uint1)};
+        texels(FIELD_BINDING_CANOPY_FAR, clustered ? clusters_.far : placeholder, uint1),
+        sampledImage(FIELD_BINDING_TRACED_SUN, kDrawStages, tracedSun_.sampler, tracedSun_.images.visibility.view)};
     auto withVisible = [&](const Buffer& visible) {
         std::vector<DescriptorBinding> table = drawTable;
         for (DescriptorBinding& b : table)
@@ -313,6 +315,7 @@ void FieldRenderer::createPipelines() {
     pipelines_.impostor = make(impostor, VK_CULL_MODE_NONE);
     pipelines_.sunlitImpostor = make(sunlitImpostor, VK_CULL_MODE_NONE);
     pipelines_.canopy = make(canopy, VK_CULL_MODE_NONE); // canopyMeshIndices: skirts last
+    createTracedOriginPipelines(desc, {plant.vertex, impostor.vertex, terrain.vertex});
 
     // Depth only, seen from the sun: both sides of everything cast shadows.
     desc.colorFormat = VK_FORMAT_UNDEFINED;
@@ -332,7 +335,10 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     planShadows(view, sunDirection(env), extent, block.frame.viewProj, block.field);
     block.field.viewport =
         glm::vec4(float(extent.width), float(extent.height), 2.0f * settings_.shadowRadius / float(shadow_.size),
-                  settings_.shadows ? 1.0f : 0.0f);
+                  settings_.shadows == SunShadows::none        ? FIELD_SUN_UNSHADOWED
+                  : settings_.shadows == SunShadows::shadowMap ? FIELD_SUN_SHADOW_MAP
+                                                               : FIELD_SUN_TRACED);
+    sizeTracedSun(extent);
     advanceFieldMotion(motion_, view.time, view.firstFrame, view.camera.position, view.realTime);
     // The physics pass's wind field, for the shaders that sway without a skeleton.
     const gpu::PhysicsUniforms wind =
@@ -347,7 +353,8 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     const float shadowTexel = 2.0f * settings_.shadowRadius / float(shadow_.size);
     terrainRanges_ = visibleTerrainRanges(terrainChunks_, block.frame.viewProj, view.camera.position,
                                           pixelsPerMetre(glm::radians(view.camera.fovYDegrees), extent.height),
-                                          settings_.shadows ? std::optional(block.field.sunViewProj) : std::nullopt,
+                                          settings_.shadows != SunShadows::none ? std::optional(block.field.sunViewProj)
+                                                                                : std::nullopt,
                                           2.0f * shadowTexel);
 
     gpu::CullUniforms cull =
@@ -504,7 +511,8 @@ void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuT
     }
     {
         TimedScope scope(cmd, timer, "shadow");
-        if (settings_.shadows) recordShadowPass(cmd);
+        if (settings_.shadows == SunShadows::shadowMap) recordShadowPass(cmd);
+        if (settings_.shadows == SunShadows::traced) recordTracedSunPass(cmd, false);
     }
     recordColourPass(cmd, target, false, timer);
 }
@@ -516,7 +524,8 @@ void FieldRenderer::recordNaive(VkCommandBuffer cmd, const RenderTarget& target,
     { TimedScope scope(cmd, timer, "cull"); }
     {
         TimedScope scope(cmd, timer, "shadow");
-        if (settings_.shadows) recordNaiveShadowPass(cmd);
+        if (settings_.shadows == SunShadows::shadowMap) recordNaiveShadowPass(cmd);
+        if (settings_.shadows == SunShadows::traced) recordTracedSunPass(cmd, true);
     }
     recordColourPass(cmd, target, true, timer);
 }
@@ -537,63 +546,6 @@ void FieldRenderer::drawPlantsNaive(VkCommandBuffer cmd, bool bark, bool foliage
     }
 }
 
-uint32_t FieldFrameStats::visibleEntries() const {
-    uint32_t entries = 0;
-    for (uint32_t plants : plantsPerLod) entries += plants;
-    return entries;
-}
-
-uint32_t FieldFrameStats::culled() const {
-    const uint32_t shown = visibleEntries() + clusterFarPlants;
-    return instances > shown ? instances - shown : 0;
-}
-
-std::string plantsPerLodText(const FieldFrameStats& stats) {
-    std::string text;
-    for (uint32_t lod = 0; lod < LOD_COUNT; ++lod)
-        text += (lod ? "  " : "") + std::string(kLodNames[lod]) + " " + std::to_string(stats.plantsPerLod[lod]);
-    return text;
-}
-
-FieldFrameStats FieldRenderer::readStats() const {
-    const CullCounts counts = readCullCounts(cull_);
-    FieldFrameStats stats;
-    stats.instances = uint32_t(content_.plants.size());
-    stats.plantsPerLod = counts.perLod;
-    stats.draws = counts.drawsPerClass;
-    stats.occluded = counts.occluded;
-    if (settings_.shadows) {
-        stats.shadowCastersPerLod = readCullCounts(shadowFrameCasters_).perLod;
-        stats.shadowCacheCasters = readCullCounts(shadowCacheCasters_).perLod[LOD_IMPOSTOR];
-        stats.shadowCacheRenders = shadowCacheRenders_;
-    }
-    if (settings_.clusters.enabled) {
-        const std::array<uint32_t, CLUSTER_STAT_COUNT> cut = readClusterStats(clusters_);
-        stats.clustersFar = cut[CLUSTER_STAT_FAR];
-        stats.clusterFarPlants = cut[CLUSTER_STAT_FAR_PLANTS];
-        stats.nearLeaves = cut[CLUSTER_STAT_NEAR_LEAVES];
-        stats.nearPlants = cut[CLUSTER_STAT_NEAR_PLANTS];
-        stats.triangles += uint64_t(stats.clustersFar) * (clusters_.farMesh.indexCount / 3);
-    }
-    const PlantModelPool& pool = content_.models;
-    for (size_t m = 0; m < pool.models.size(); ++m) {
-        const PlantModelInfo& model = pool.models[m];
-        for (uint32_t lod = 0; lod < kMeshLodCount; ++lod)
-            stats.triangles += uint64_t(counts.perModelLod[m * LOD_COUNT + lod]) * model.triangles(lod);
-        stats.triangles +=
-            uint64_t(counts.perModelLod[m * LOD_COUNT + LOD_IMPOSTOR]) * (kOutlineCorners - 2) * model.gpu.impostor.z;
-    }
-    return stats;
-}
-
-uint64_t FieldRenderer::naiveTriangles() const {
-    uint64_t triangles = 0;
-    const PlantModelPool& pool = content_.models;
-    for (const PlantInstance& p : content_.plants)
-        triangles += pool.models[pool.modelOf(p.species, p.variant)].triangles(LOD_FULL);
-    return triangles;
-}
-
-VkDeviceSize FieldRenderer::gpuBytes() const { return resources_.bytes(); }
+VkDeviceSize FieldRenderer::gpuBytes() const { return resources_.bytes() + tracedSun_.images.resources->bytes(); }
 
 } // namespace pf

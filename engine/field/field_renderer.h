@@ -14,10 +14,13 @@
 #include "engine/field/impostor_atlas.h"
 #include "engine/field/shadow_cache.h"
 #include "engine/field/shadow_map.h"
+#include "engine/field/sun_shadows.h"
+#include "engine/field/traced_sun_pass.h"
 #include "engine/physics/field_motion.h"
 #include "engine/scene/camera.h"
 #include "engine/scene/field_content.h"
 #include "engine/scene/terrain_chunks.h"
+#include "engine/vk/pipeline.h"
 #include "engine/vk/render_target.h"
 #include "engine/vk/target_pass.h"
 
@@ -41,7 +44,7 @@ struct ClusterSettings {
 
 struct FieldRenderSettings {
     Antialiasing antialiasing; // FXAA unless set (antialiasing.h)
-    bool shadows = true;
+    SunShadows shadows = SunShadows::shadowMap;
     uint32_t shadowMapSize = 1024;
     float shadowRadius = 60.0f; // metres: half the side of the shadowed square ahead of the camera
     ShadowCacheSettings shadowCache;
@@ -80,7 +83,7 @@ struct FieldFrameStats {
     uint64_t triangles = 0;                         // colour pass, plants and canopy
     uint32_t occluded =
         0; // in view and large enough to draw, hidden by the depth pyramid (0 without occlusion culling)
-    // The sun's shadow map (zero with shadows off): plants drawn into this
+    // The sun's shadow map (zero without it): plants drawn into this
     // frame's map on top of the cache, per LOD; impostors the cache holds
     // (as last drawn); times this renderer has drawn the cache.
     std::array<uint32_t, LOD_COUNT> shadowCastersPerLod{};
@@ -153,7 +156,8 @@ private:
         VkPipeline sky = VK_NULL_HANDLE, terrain = VK_NULL_HANDLE, sunlitTerrain = VK_NULL_HANDLE,
                    bark = VK_NULL_HANDLE, foliage = VK_NULL_HANDLE, impostor = VK_NULL_HANDLE,
                    sunlitImpostor = VK_NULL_HANDLE, canopy = VK_NULL_HANDLE, plantShadow = VK_NULL_HANDLE,
-                   impostorShadow = VK_NULL_HANDLE;
+                   impostorShadow = VK_NULL_HANDLE, originBark = VK_NULL_HANDLE, originFoliage = VK_NULL_HANDLE,
+                   originImpostor = VK_NULL_HANDLE, originTerrain = VK_NULL_HANDLE;
     };
 
     const GpuContext& ctx_;
@@ -173,6 +177,7 @@ private:
     std::array<MeshRange, 3> billboards_{}; // 1, 2, 3 quads
     ImpostorAtlas atlas_;
     ShadowMap shadow_;
+    TracedSunPass tracedSun_; // without ray-traced shadows: no graph, a visibility of one texel, 1
     CullPass cull_;
     CullPass shadowCacheCasters_, shadowFrameCasters_; // CullKind::ShadowCasters: SHADOW_CULL_CACHE, _FRAME
     // With clusters: the quadtree, the camera's cut and the leaves meeting
@@ -213,6 +218,14 @@ private:
     void recordShadowCache(VkCommandBuffer cmd) const;
     void recordShadowPass(VkCommandBuffer cmd) const;
     void recordNaiveShadowPass(VkCommandBuffer cmd) const;
+    void createTracedSun(const std::vector<gpu::FieldInstance>& instances);
+    // The vertex shaders the origins pass shares with the colour pass.
+    struct TracedOriginVertices {
+        VkShaderModule plant, impostor, terrain;
+    };
+    void createTracedOriginPipelines(GraphicsPipelineDesc desc, const TracedOriginVertices& vertices);
+    void sizeTracedSun(VkExtent2D extent);
+    void recordTracedSunPass(VkCommandBuffer cmd, bool naive) const;
     void pushFieldPass(VkCommandBuffer cmd, uint32_t pass, uint32_t impostorPart = IMPOSTOR_PART_NONE) const;
     void drawShadowCasters(VkCommandBuffer cmd, const CullPass& casters, VkDescriptorSet set, uint32_t pass) const;
     void recordColourPass(VkCommandBuffer cmd, const RenderTarget& target, bool naive, GpuTimer* timer) const;

@@ -22,7 +22,7 @@ constexpr float kShadowDepthRadius = 250.0f;
 // view-projections of the frame's map and of the cache.
 void FieldRenderer::planShadows(const FieldView& view, const glm::vec3& sun, VkExtent2D extent,
                                 const glm::mat4& cameraViewProj, gpu::FieldFrame& field) {
-    if (!settings_.shadows) return;
+    if (settings_.shadows == SunShadows::none) return;
     const glm::vec3 forward = glm::normalize(view.camera.target - view.camera.position);
     // Shadows where they are seen large: a square reaching ahead of the camera.
     const float radius = settings_.shadowRadius;
@@ -36,6 +36,12 @@ void FieldRenderer::planShadows(const FieldView& view, const glm::vec3& sun, VkE
     frame.camera = view.camera.position;
     frame.pixelsPerMetre = pixelsPerMetre(glm::radians(view.camera.fovYDegrees), extent.height);
     frame.forcedLod = view.forcedLod.value_or(LOD_NOT_FORCED);
+    // Ray-traced shadows use the square only to choose the terrain chunks
+    // whose pixels trace (visibleTerrainRanges): no map, no casters.
+    if (settings_.shadows == SunShadows::traced) {
+        field.sunViewProj = sunViewProjection(frame.square, kShadowDepthRadius);
+        return;
+    }
 
     // A first frame draws the cache for its own camera, so a capture does not
     // depend on the frames before it.

@@ -60,18 +60,9 @@ ShadowMap createShadowMap(GpuResources& owner, uint32_t size, uint32_t cacheMarg
     // Sampled before the first shadow pass (e.g. a frame with shadows off):
     // start in the layout the shaders read, cleared to "lit". The cache needs
     // nothing: it is drawn before the first copy out of it.
-    submitAndWait(owner.ctx(), [&](VkCommandBuffer cmd) {
-        imageBarrier(cmd, map.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT,
-                     {VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL});
-        const VkClearDepthStencilValue far{1.0f, 0};
-        const VkImageSubresourceRange range{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-        vkCmdClearDepthStencilImage(cmd, map.depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &far, 1, &range);
-        imageBarrier(cmd, map.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT,
-                     {VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
-                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
-    });
+    VkClearValue far{};
+    far.depthStencil = {1.0f, 0};
+    clearForSampling(owner.ctx(), map.depth, VK_IMAGE_ASPECT_DEPTH_BIT, far);
     return map;
 }
 

@@ -34,9 +34,10 @@ std::vector<TriangleRange> appendTriangles(std::vector<gpu::RtTriangle>& triangl
     return ranges;
 }
 
-// Nodes on the longest path from the root to a leaf; 0 without nodes.
-// Children always follow their parent in Bvh::nodes (buildBvh appends them).
-uint32_t heightOf(const lsys::Bvh& bvh) {
+} // namespace
+
+uint32_t bvhHeight(const lsys::Bvh& bvh) {
+    // Children always follow their parent in Bvh::nodes (buildBvh appends them).
     std::vector<uint32_t> height(bvh.nodes.size(), 1);
     for (size_t i = bvh.nodes.size(); i-- > 0;) {
         const lsys::BvhNode& node = bvh.nodes[i];
@@ -45,7 +46,29 @@ uint32_t heightOf(const lsys::Bvh& bvh) {
     return height.empty() ? 0 : height[0];
 }
 
-} // namespace
+uint32_t appendObjectBvh(GpuGraph& packed, const lsys::Bvh& bvh, std::span<const uint32_t> itemWords) {
+    const auto nodeBase = uint32_t(packed.nodes.size()), itemBase = uint32_t(packed.items.size());
+    for (const lsys::BvhNode& node : bvh.nodes)
+        packed.nodes.push_back({node.bounds.min, node.count > 0 ? itemBase + node.first : nodeBase + node.first,
+                                node.bounds.max, node.count});
+    for (uint32_t i : bvh.items) packed.items.push_back(itemWords[i]);
+    if (packed.nodes.size() >= RAYTRACE_NO_NODE) throw GpuGraphError("the graph has more BVH nodes than 2^32 - 1");
+    return bvh.nodes.empty() ? RAYTRACE_NO_NODE : nodeBase;
+}
+
+void setRoot(GpuGraph& packed, uint32_t rootNode, uint32_t levels, uint32_t stackDepth) {
+    packed.rootNode = rootNode;
+    packed.levels = levels;
+    packed.stackDepth = stackDepth;
+    if (levels > RAYTRACE_MAX_LEVELS)
+        throw GpuGraphError("a ray can be carried through " + std::to_string(levels) +
+                            " levels of instances; the GPU traversal holds " + std::to_string(RAYTRACE_MAX_LEVELS) +
+                            " (RAYTRACE_MAX_LEVELS, shaders/raytrace_layouts.h)");
+    if (stackDepth > RAYTRACE_STACK_SIZE)
+        throw GpuGraphError("tracing the graph can need " + std::to_string(stackDepth) +
+                            " stack entries; the GPU traversal holds " + std::to_string(RAYTRACE_STACK_SIZE) +
+                            " (RAYTRACE_STACK_SIZE, shaders/raytrace_layouts.h)");
+}
 
 GpuGraph packGraph(const lsys::GraphTracer& tracer) {
     const lsys::InstanceGraph& graph = *tracer.graph;
@@ -66,7 +89,8 @@ GpuGraph packGraph(const lsys::GraphTracer& tracer) {
                                      p.startRadius, p.endRadius, p.material, triangles.first, triangles.count, 0, 0});
     }
     for (const lsys::GraphInstance& instance : graph.instances)
-        packed.instances.push_back({quatAsVec4(instance.frame.rotation), instance.frame.position, instance.object});
+        packed.instances.push_back(
+            {quatAsVec4(instance.frame.rotation), instance.frame.position, instance.object, 1.0f, 0, 0, 0});
 
     // Per object, children first: the levels and stack entries a ray entering
     // it can need. Walking an object's BVH keeps at most one entry per node on
@@ -77,41 +101,24 @@ GpuGraph packGraph(const lsys::GraphTracer& tracer) {
     for (uint32_t object = 0; object < graph.objects.size(); ++object) {
         const lsys::Bvh& bvh = tracer.objectBvhs[object];
         const std::span<const lsys::GraphItem> items = graph.itemsOf(object);
-        const auto nodeBase = uint32_t(packed.nodes.size()), itemBase = uint32_t(packed.items.size());
-        packed.objectRoots.push_back(bvh.nodes.empty() ? RAYTRACE_NO_NODE : nodeBase);
-        for (const lsys::BvhNode& node : bvh.nodes)
-            packed.nodes.push_back({node.bounds.min, node.count > 0 ? itemBase + node.first : nodeBase + node.first,
-                                    node.bounds.max, node.count});
+        std::vector<uint32_t> itemWords(items.size());
+        for (size_t i = 0; i < items.size(); ++i)
+            itemWords[i] = items[i].kind == lsys::GraphItem::Kind::Primitive ? items[i].index
+                                                                             : RAYTRACE_ITEM_INSTANCE | items[i].index;
+        packed.objectRoots.push_back(appendObjectBvh(packed, bvh, itemWords));
         uint32_t childLevels = 0, childStack = 0;
         for (uint32_t i : bvh.items) {
-            const lsys::GraphItem& item = items[i];
-            if (item.kind == lsys::GraphItem::Kind::Primitive) {
-                packed.items.push_back(item.index);
-                continue;
-            }
-            packed.items.push_back(RAYTRACE_ITEM_INSTANCE | item.index);
-            const uint32_t child = graph.instances[item.index].object;
+            if (items[i].kind == lsys::GraphItem::Kind::Primitive) continue;
+            const uint32_t child = graph.instances[items[i].index].object;
             childLevels = std::max(childLevels, levels[child]);
             childStack = std::max(childStack, stackDepth[child]);
         }
         if (bvh.nodes.empty()) continue;
         levels[object] = 1 + childLevels;
-        stackDepth[object] = heightOf(bvh) + std::max(1u, childStack);
+        stackDepth[object] = bvhHeight(bvh) + std::max(1u, childStack);
     }
-    if (packed.nodes.size() >= RAYTRACE_NO_NODE) throw GpuGraphError("the graph has more BVH nodes than 2^32 - 1");
-    if (graph.objects.empty()) return packed;
-
-    packed.rootNode = packed.objectRoots[graph.root];
-    packed.levels = levels[graph.root];
-    packed.stackDepth = stackDepth[graph.root];
-    if (packed.levels > RAYTRACE_MAX_LEVELS)
-        throw GpuGraphError("a ray can be carried through " + std::to_string(packed.levels) +
-                            " levels of instances; the GPU traversal holds " + std::to_string(RAYTRACE_MAX_LEVELS) +
-                            " (RAYTRACE_MAX_LEVELS, shaders/raytrace_layouts.h)");
-    if (packed.stackDepth > RAYTRACE_STACK_SIZE)
-        throw GpuGraphError("tracing the graph can need " + std::to_string(packed.stackDepth) +
-                            " stack entries; the GPU traversal holds " + std::to_string(RAYTRACE_STACK_SIZE) +
-                            " (RAYTRACE_STACK_SIZE, shaders/raytrace_layouts.h)");
+    if (!graph.objects.empty())
+        setRoot(packed, packed.objectRoots[graph.root], levels[graph.root], stackDepth[graph.root]);
     return packed;
 }
 

@@ -10,6 +10,7 @@
 #include "lsystem/raytrace/graph_tracer.h"
 
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -36,5 +37,17 @@ struct GpuGraphError : std::runtime_error {
 // RAYTRACE_MAX_LEVELS instance levels or need more than RAYTRACE_STACK_SIZE
 // stack entries, or when an index does not fit its field.
 GpuGraph packGraph(const lsys::GraphTracer& tracer);
+
+// The parts both packers (packGraph, packFieldGraph) build graphs from.
+// Nodes on the longest path from the BVH's root to a leaf; 0 without nodes.
+uint32_t bvhHeight(const lsys::Bvh& bvh);
+// Appends an object's BVH to `packed`: its nodes with global indices, its
+// items in leaf order as `itemWords` packs them (by the index the BVH was
+// built over: a primitive's index, or RAYTRACE_ITEM_INSTANCE | an instance).
+// Returns its root node, RAYTRACE_NO_NODE when it has none.
+uint32_t appendObjectBvh(GpuGraph& packed, const lsys::Bvh& bvh, std::span<const uint32_t> itemWords);
+// Sets rootNode, levels and stackDepth from the root object's, and throws
+// GpuGraphError when the traversal's fixed arrays cannot hold them.
+void setRoot(GpuGraph& packed, uint32_t rootNode, uint32_t levels, uint32_t stackDepth);
 
 } // namespace pf

@@ -149,4 +149,13 @@ FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> cou
     return content;
 }
 
+std::vector<gpu::FieldInstance> fieldInstancesOf(const FieldContent& content) {
+    std::vector<gpu::FieldInstance> instances;
+    instances.reserve(content.plants.size());
+    for (const PlantInstance& p : content.plants)
+        instances.push_back({glm::vec4(p.position, p.scale), glm::vec4(p.rotation, p.windPhase, 0.0f, 0.0f),
+                             glm::uvec4(content.models.modelOf(p.species, p.variant), p.species, p.variant, 0u)});
+    return instances;
+}
+
 } // namespace pf

@@ -71,4 +71,8 @@ FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> cou
                                const lsys::MemoryBudget& memory = lsys::machineMemoryBudget(),
                                ModelAssets assets = ModelAssets::Drop);
 
+// The plants as the GPU holds them (FieldInstance, shaders/field_layouts.h),
+// in content order: position and scale, yaw and wind phase, model and ids.
+std::vector<gpu::FieldInstance> fieldInstancesOf(const FieldContent& content);
+
 } // namespace pf

@@ -245,4 +245,22 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccess
     vkCmdPipelineBarrier2(cmd, &dep);
 }
 
+void clearForSampling(const GpuContext& ctx, const Image& image, VkImageAspectFlags aspect, const VkClearValue& value) {
+    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+        imageBarrier(cmd, image.image, aspect,
+                     {VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL});
+        const VkImageSubresourceRange range{aspect, 0, 1, 0, 1};
+        if (aspect == VK_IMAGE_ASPECT_COLOR_BIT)
+            vkCmdClearColorImage(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &value.color, 1, &range);
+        else
+            vkCmdClearDepthStencilImage(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &value.depthStencil, 1,
+                                        &range);
+        imageBarrier(cmd, image.image, aspect,
+                     {VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+    });
+}
+
 } // namespace pf

@@ -82,6 +82,11 @@ struct ImageTransition {
 VkImageMemoryBarrier2 imageMemoryBarrier(VkImage image, const VkImageSubresourceRange& range, const ImageTransition& t);
 // Records the barrier for the first mip and layer of `image`.
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, const ImageTransition& t);
+
+// Clears a one-level image (colour, or depth with VK_IMAGE_ASPECT_DEPTH_BIT)
+// and leaves it in SHADER_READ_ONLY_OPTIMAL for fragment shaders, waiting
+// for it: an image the shaders may sample before any pass writes it.
+void clearForSampling(const GpuContext& ctx, const Image& image, VkImageAspectFlags aspect, const VkClearValue& value);
 // A global memory dependency (synchronization2).
 void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
                    VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);

@@ -31,15 +31,19 @@ void discardPreviousFrame(VkCommandBuffer cmd, const RenderTarget& target) {
                       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+    discardDepthAttachment(cmd, target.depth.image);
+}
+
+} // namespace
+
+void discardDepthAttachment(VkCommandBuffer cmd, VkImage depth) {
     const VkPipelineStageFlags2 depthStages =
         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-    imageBarrier(cmd, target.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT,
+    imageBarrier(cmd, depth, VK_IMAGE_ASPECT_DEPTH_BIT,
                  {depthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, depthStages,
                   VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                   VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
 }
-
-} // namespace
 
 void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target, TargetPassPart part) {
     const bool msaa = target.samples != VK_SAMPLE_COUNT_1_BIT;
@@ -72,19 +76,21 @@ void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target, TargetPass
         clearedDepthAttachment(target.depth.view, part == TargetPassPart::first ? VK_ATTACHMENT_STORE_OP_STORE
                                                                                 : VK_ATTACHMENT_STORE_OP_DONT_CARE);
     if (load) depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    beginFlippedRendering(cmd, target.extent, color, depth);
+}
 
+void beginFlippedRendering(VkCommandBuffer cmd, VkExtent2D extent, const VkRenderingAttachmentInfo& color,
+                           const VkRenderingAttachmentInfo& depth) {
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, target.extent};
+    rendering.renderArea = {{0, 0}, extent};
     rendering.layerCount = 1;
     rendering.colorAttachmentCount = 1;
     rendering.pColorAttachments = &color;
     rendering.pDepthAttachment = &depth;
     vkCmdBeginRendering(cmd, &rendering);
-
     // Negative height flips y so world and clip space stay y-up.
-    const VkViewport viewport{
-        0.0f, float(target.extent.height), float(target.extent.width), -float(target.extent.height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, target.extent};
+    const VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, extent};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
 }

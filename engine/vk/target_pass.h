@@ -28,6 +28,14 @@ enum class TargetPassPart {
 // world and clip space stay y-up (pipeline.h: front faces are counter-clockwise).
 // A `first` part ends with vkCmdEndRendering, the others with endTargetPass.
 void beginTargetPass(VkCommandBuffer cmd, const RenderTarget& target, TargetPassPart part = TargetPassPart::whole);
+// Begins dynamic rendering of one colour and one depth attachment over
+// `extent` with beginTargetPass's viewport: a pass whose pixels are the
+// colour pass's (the traced sun's origins).
+void beginFlippedRendering(VkCommandBuffer cmd, VkExtent2D extent, const VkRenderingAttachmentInfo& color,
+                           const VkRenderingAttachmentInfo& depth);
+// A depth attachment's last frame of tests done and its contents dropped,
+// in DEPTH_ATTACHMENT_OPTIMAL for a pass that clears it.
+void discardDepthAttachment(VkCommandBuffer cmd, VkImage depth);
 // A depth attachment in DEPTH_ATTACHMENT_OPTIMAL cleared to the far plane (1)
 // at the start of rendering; `store` keeps it (a shadow map) or drops it.
 VkRenderingAttachmentInfo clearedDepthAttachment(VkImageView view, VkAttachmentStoreOp store);

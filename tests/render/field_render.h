@@ -21,7 +21,7 @@ struct FieldShot {
     double time = 0.0;
     std::optional<Camera> camera; // replaces the scene's camera path
     std::optional<uint32_t> forcedLod;
-    bool shadows = true;
+    SunShadows shadows = SunShadows::shadowMap;
     Antialiasing antialiasing; // the renderer's default
 };
 

@@ -65,7 +65,7 @@ TEST_P(LodTest, ImpostorMatchesFullDetailAtTheSwitchDistance) {
     camera.fovYDegrees = fov;
     camera.target = glm::vec3(model.sphere);
     camera.position = camera.target + glm::vec3(0.0f, std::sin(elevation), std::cos(elevation)) * distance;
-    FieldShot shot{.scene = "test_lod.json", .size = size, .camera = camera, .shadows = false};
+    FieldShot shot{.scene = "test_lod.json", .size = size, .camera = camera, .shadows = SunShadows::none};
     shot.forcedLod = LOD_FULL;
     const FieldShotResult full = renderField(ctx, shot);
     shot.forcedLod = LOD_IMPOSTOR;

@@ -97,7 +97,7 @@ std::vector<int> shadowDarkening(const RgbaImage& lit, const RgbaImage& shadowed
 // swaying tree and bushes cast move from one frame to the next.
 TEST_F(ShadowCacheTest, ShadowsOfSwayingPlantsMoveWhileTheCacheIsKept) {
     FieldRenderSettings noShadows;
-    noShadows.shadows = false;
+    noShadows.shadows = SunShadows::none;
     FieldSequence shadowed(ctx, "gust.json", {320, 240});
     FieldSequence lit(ctx, "gust.json", {320, 240}, noShadows);
     const Camera camera = cameraAt(shadowed.scene().camera, 0.0);

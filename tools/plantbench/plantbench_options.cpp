@@ -108,7 +108,7 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     app.add_option("--size", sizeText, "Render size as WIDTHxHEIGHT (1 to 16384 per side)")->default_str(sizeText);
     AntialiasFlags antialias;
     addAntialiasOptions(app, antialias);
-    app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
+    addSunShadowsOptions(app, o.shadows);
     app.add_flag("--occlusion", o.occlusionCulling,
                  "Occlusion culling against the depth pyramid (docs/CULLING.md; off by default)");
     app.add_flag("!--no-clusters", o.clusters,

@@ -1,6 +1,7 @@
 // Command-line options of plantbench, parsed and checked before any GPU work.
 #pragma once
 
+#include "engine/field/sun_shadows.h"
 #include "engine/vk/antialiasing.h"
 #include "lsystem/memory_budget.h"
 
@@ -30,7 +31,7 @@ struct PlantbenchOptions {
     uint32_t warmup = 2;          // frames rendered first and not measured
     uint32_t width = 1280, height = 720;
     Antialiasing antialiasing;
-    bool shadows = true;
+    SunShadows shadows = SunShadows::shadowMap;
     bool occlusionCulling = false;     // true: --occlusion
     bool clusters = true;              // false: --no-clusters
     double time = 0.0;                 // scene time of the camera on its path

@@ -168,7 +168,7 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
         rows.push_back(row);
     }
     out << "plantbench: " << result.scenePath << " on " << result.device << ", " << o.width << "x" << o.height << ", "
-        << antialiasingText(o.antialiasing) << ", shadows " << (o.shadows ? "on" : "off") << ", occlusion culling "
+        << antialiasingText(o.antialiasing) << ", shadows " << sunShadowsName(o.shadows) << ", occlusion culling "
         << (o.occlusionCulling ? "on" : "off") << ", median of " << o.frames << " frames after " << o.warmup
         << " warm-up";
     if (o.pathTimes) out << ", the worst of " << *o.pathTimes << " times along the camera path";
@@ -194,7 +194,7 @@ nlohmann::json sweepJson(const PlantbenchOptions& o, const SweepResult& result) 
     j["size"] = {o.width, o.height};
     j["antialiasing"] = antialiasMethodName(o.antialiasing.method);
     j["samples"] = colourPassSamples(o.antialiasing);
-    j["shadows"] = o.shadows;
+    j["shadows"] = sunShadowsName(o.shadows);
     j["occlusion_culling"] = o.occlusionCulling;
     j["time"] = o.pathTimes ? nlohmann::json(nullptr) : nlohmann::json(o.time);
     j["path"] = o.pathTimes ? nlohmann::json(*o.pathTimes) : nlohmann::json(nullptr);

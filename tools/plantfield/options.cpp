@@ -107,6 +107,17 @@ void addAntialiasOptions(CLI::App& app, AntialiasFlags& flags) {
         ->check(CLI::IsMember({2, 4, 8}));
 }
 
+void addSunShadowsOptions(CLI::App& app, SunShadows& shadows) {
+    app.add_option_function<std::string>(
+           "--shadows", [&shadows](const std::string& name) { shadows = *sunShadowsNamed(name); },
+           "The sun's shadows: map (a shadow map over the field near the camera), raytraced (a ray a pixel\n"
+           "to the sun through the field's plants, docs/RAYTRACING.md) or none (default map)")
+        ->check(CLI::IsMember({"map", "raytraced", "none"}))
+        ->type_name("map|raytraced|none");
+    app.add_flag_callback(
+        "--no-shadows", [&shadows] { shadows = SunShadows::none; }, "No sun shadows (--shadows none)");
+}
+
 std::optional<Antialiasing> antialiasingOf(const AntialiasFlags& flags, std::string* problem) {
     Antialiasing aa;
     aa.method = *antialiasMethodNamed(flags.method);
@@ -230,7 +241,7 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
         ->check(CLI::Range(uint32_t(0), kMaxJointBudget));
     app.add_option("--lod", o.forcedLod, "Draw every visible plant at this LOD: 0 full, 1 reduced, 2 impostor")
         ->check(CLI::Range(0, 2));
-    app.add_flag("!--no-shadows", o.shadows, "Do not draw the sun's shadow map");
+    addSunShadowsOptions(app, o.shadows);
     app.add_flag("--occlusion", o.occlusionCulling,
                  "Occlusion culling: do not draw the plants behind the depth pyramid of what the previous\n"
                  "frame's visible plants and the terrain cover (docs/CULLING.md; off by default: on a CPU\n"

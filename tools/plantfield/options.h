@@ -1,6 +1,7 @@
 // Command-line options of plantfield, parsed and checked before any GPU work.
 #pragma once
 
+#include "engine/field/sun_shadows.h"
 #include "engine/scene/scene.h"
 #include "engine/vk/antialiasing.h"
 #include "lsystem/memory_budget.h"
@@ -56,6 +57,8 @@ struct AntialiasFlags {
     std::optional<uint32_t> samples;
 };
 void addAntialiasOptions(CLI::App& app, AntialiasFlags& flags);
+// --shadows map|raytraced|none and --no-shadows (none), the same on both.
+void addSunShadowsOptions(CLI::App& app, SunShadows& shadows);
 // What the flags choose, or nullopt with `problem` set when --samples comes
 // with another method than msaa.
 std::optional<Antialiasing> antialiasingOf(const AntialiasFlags& flags, std::string* problem);
@@ -89,7 +92,7 @@ struct PlantfieldOptions {
     std::optional<float> windSpeed;            // replaces the scene's wind speed (m/s)
     std::optional<float> windDirectionDegrees; // and direction, clockwise from north (-z) toward +x
     std::optional<uint32_t> jointBudget;       // replaces the scene's physics.joint_budget
-    bool shadows = true;
+    SunShadows shadows = SunShadows::shadowMap;
     bool shadowCache = true;       // false: every frame draws its static shadow casters again
     bool occlusionCulling = false; // --occlusion: plants behind the depth pyramid are not drawn
     bool clusters = true;          // false: every plant through the per-plant cull, no far canopy (--no-clusters)

@@ -1,0 +1,71 @@
+// Ray-traced sun shadows (docs/RAYTRACING.md, "Ray-traced sun shadows"):
+// exact shadows of the plants, one ray a pixel, in place of the shadow map.
+// Three steps a frame. The origins pass draws what the colour pass will
+// show of the plant meshes and the shadowed terrain chunks once more, each
+// pixel writing where its ray starts (shaders/traced_origin_*.frag). The
+// trace (shaders/traced_sun.comp) sends each ray towards the sun through
+// the field's graph (engine/raytrace/field_graph.h), ending at the first hit
+// (Robbins 1998, "Branching Shadows", ends shadow rays so), and writes the
+// pixel's visibility. The colour pass reads it at its fragment
+// (sunVisibilityOf, shaders/field_common.glsl). The graph holds the plants
+// at rest, and the rays start from the rest pose of what they light: a
+// swaying plant carries the shadows it has at rest.
+#pragma once
+
+#include "engine/raytrace/gpu_graph.h"
+#include "engine/raytrace/ray_trace_pass.h"
+#include "engine/scene/plant_models.h"
+#include "engine/vk/compute_set.h"
+#include "engine/vk/resources.h"
+
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <span>
+
+namespace pf {
+
+constexpr VkFormat kTracedOriginFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+
+// The images of one frame size.
+struct TracedSunImages {
+    std::unique_ptr<GpuResources> resources;
+    Image origins;    // the origins pass's colour: xyz where the ray starts, w 1 (0: no ray); then read by the trace
+    Image depth;      // the origins pass's own
+    Image visibility; // r32f: 1 lit, 0 in shadow; written by the trace, sampled by the colour pass
+    VkExtent2D extent{};
+};
+
+struct TracedSunPass {
+    GpuGraphBuffers graph;
+    ComputeSet set; // the graph, origins and visibility; TracedSunPush
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VkSampler sampler = VK_NULL_HANDLE; // nearest: the colour pass fetches its own pixel
+    TracedSunImages images;
+    float rayLength = 0.0f; // metres: across the whole field
+};
+
+// Packs and uploads the field's graph; owned by `owner`. Images come with
+// the first resizeTracedSunImages.
+TracedSunPass createTracedSunPass(GpuResources& owner, const PlantModelPool& models,
+                                  std::span<const gpu::FieldInstance> plants, float fieldDiagonal);
+
+// Images of `extent` for frames that do not trace (one texel), their
+// visibility sampled as 1 everywhere, ready for the colour pass.
+TracedSunImages createTracedSunImages(const GpuContext& ctx, VkExtent2D extent);
+
+// Makes the pass's images for `extent` when its last frame was another size
+// (only while no frame is in flight). True when they were made again: the
+// colour pass's descriptor of the visibility must then be written again.
+bool resizeTracedSunImages(const GpuContext& ctx, TracedSunPass& pass, VkExtent2D extent);
+
+// The origins pass: after it, draw the surfaces with the traced_origin_*
+// pipelines, the colour pass's view and viewport.
+void beginTracedOrigins(VkCommandBuffer cmd, const TracedSunImages& images);
+void endTracedOrigins(VkCommandBuffer cmd, const TracedSunImages& images);
+
+// The trace, `sun` the unit direction towards the sun; leaves the
+// visibility for the colour pass's fragment shaders.
+void recordTracedSun(VkCommandBuffer cmd, const TracedSunPass& pass, const glm::vec3& sun);
+
+} // namespace pf
