@@ -29,7 +29,6 @@
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"
 #include "tools/lsys/plant_loading.h"
-#include "tools/memory_budget_option.h"
 
 namespace tools {
 
@@ -46,12 +45,7 @@ constexpr uint64_t kDefaultCacheBudget = uint64_t{256} << 20;
 
 enum class TracerKind { Graph, Flat, Lazy };
 
-struct RenderArguments {
-    std::string file;
-    std::optional<int> steps;
-    std::optional<uint64_t> seed;
-    std::vector<std::string> defines;
-    std::optional<lsys::Dialect> dialect;
+struct RenderArguments : DerivationArguments {
     std::string output;
     uint32_t width = 1280, height = 720;
     std::optional<lsys::PinholeCamera> camera; // --camera; else framed from --view
@@ -64,8 +58,6 @@ struct RenderArguments {
     uint32_t samples = 1;
     bool shadows = true;
     bool ground = true;
-    size_t maxModules = 50'000'000;
-    lsys::MemoryBudget memory;
 };
 
 // Comma-separated finite numbers: `count` or `orCount` of them.
@@ -250,20 +242,14 @@ int runRender(const RenderArguments& arguments) {
         std::cerr << "lsys: error: " << problem << '\n';
         return kBadInput;
     }
-    const std::optional<lsys::Grammar> grammar = loadGrammar(arguments.file, arguments.dialect, arguments.defines);
+    const std::optional<lsys::Grammar> grammar = loadGrammar(arguments);
     if (!grammar) return kBadInput;
     const lsys::SurfaceLibrary surfaces(lsys::meshDirectoriesFor(arguments.file));
     try {
         lsys::need(arguments.memory, "image", lsys::bytesTimes(uint64_t(arguments.width) * arguments.height, 4));
-        lsys::BGrammarOptions options;
-        options.steps = arguments.steps;
-        options.seed = arguments.seed;
-        options.interpreted = true; // the word the turtle reads
-        options.maxModules = arguments.maxModules;
-        options.memory = arguments.memory;
         lsys::InstanceGraphOptions graphOptions;
         graphOptions.memory = arguments.memory;
-        const lsys::BGrammar bgrammar = lsys::buildBGrammar(*grammar, options);
+        const lsys::BGrammar bgrammar = lsys::buildBGrammar(*grammar, bgrammarOptions(arguments));
         if (arguments.tracer == TracerKind::Lazy)
             return renderLazy(arguments, bgrammar, *grammar, graphOptions, surfaces, begun);
         const lsys::InstanceGraph graph = lsys::buildInstanceGraph(bgrammar, *grammar, graphOptions, surfaces);
@@ -286,16 +272,7 @@ int runRender(const RenderArguments& arguments) {
 }
 
 void addOptions(CLI::App& command, RenderArguments& arguments) {
-    command.add_option("FILE", arguments.file, "plant file (.lsys, .l, any dialect) or vlab object folder")->required();
-    command.add_option("-n,--steps", arguments.steps, "Derivation steps (default: the file's 'derivation length:')")
-        ->check(CLI::Range(0, lsys::kMaxDerivationLength));
-    command.add_option("--seed", arguments.seed, "Random seed (default: the file's 'seed:')");
-    command.add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
-    command
-        .add_option_function<std::string>(
-            "--dialect", [&arguments](const std::string& name) { arguments.dialect = lsys::dialectFromName(name); },
-            "Input notation: " + lsys::knownDialects() + " (default: the file's, else by extension)")
-        ->check(accepting(lsys::dialectFromName, "is not a dialect (expected " + lsys::knownDialects() + ")"));
+    addDerivationOptions(command, arguments);
     command.add_option("-o,--output", arguments.output, "The image: a PNG file")->required();
     command
         .add_option_function<std::string>(
@@ -372,7 +349,6 @@ void addOptions(CLI::App& command, RenderArguments& arguments) {
     command.add_flag("!--no-ground", arguments.ground, "Sky below the horizon instead of a ground plane at the base");
     command.add_option("--max-modules", arguments.maxModules, "Module budget when the word must be derived first")
         ->check(CLI::PositiveNumber);
-    addMemoryBudgetOption(command, arguments.memory);
 }
 
 } // namespace
