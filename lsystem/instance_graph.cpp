@@ -1,10 +1,11 @@
-// Walking an InstanceGraph: flattening it into a PlantAsset, and its sizes.
+// Walking an InstanceGraph: flattening it into a PlantAsset, its materials and its sizes.
 
 #include <algorithm>
 #include <string>
 
 #include "lsystem/error.h"
 #include "lsystem/instance_graph.h"
+#include "lsystem/instance_graph_lazy.h"
 #include "lsystem/turtle.h"
 #include "lsystem/turtle_builder.h"
 
@@ -68,6 +69,22 @@ size_t bytesOf(const std::vector<T>& v) {
     return v.size() * sizeof(T);
 }
 
+// The materials primitives use, and which of them a surface or polygon uses
+// (two-sided, as the turtle makes them).
+struct MaterialUse {
+    size_t used = 0;
+    std::vector<bool> twoSided;
+};
+
+void noteMaterials(MaterialUse& use, const std::vector<GraphPrimitive>& primitives) {
+    for (const GraphPrimitive& primitive : primitives) {
+        use.used = std::max<size_t>(use.used, primitive.material + 1);
+        if (primitive.kind != PrimitiveKind::Surface && primitive.kind != PrimitiveKind::Polygon) continue;
+        if (use.twoSided.size() <= primitive.material) use.twoSided.resize(primitive.material + 1);
+        use.twoSided[primitive.material] = true;
+    }
+}
+
 } // namespace
 
 Frame compose(const Frame& parent, const Frame& local) {
@@ -94,15 +111,16 @@ PlantAsset flatten(const InstanceGraph& graph, const SurfaceLibrary& surfaces, u
 }
 
 std::vector<Material> materialsOf(const InstanceGraph& graph) {
-    size_t used = 0;
-    std::vector<bool> twoSided;
-    for (const GraphPrimitive& primitive : graph.primitives) {
-        used = std::max<size_t>(used, primitive.material + 1);
-        if (primitive.kind != PrimitiveKind::Surface && primitive.kind != PrimitiveKind::Polygon) continue;
-        if (twoSided.size() <= primitive.material) twoSided.resize(primitive.material + 1);
-        twoSided[primitive.material] = true;
-    }
-    return materialTable(graph.look, used, twoSided);
+    MaterialUse use;
+    noteMaterials(use, graph.primitives);
+    return materialTable(graph.look, use.used, use.twoSided);
+}
+
+std::vector<Material> materialsOf(const LazyInstanceGraph& graph) {
+    MaterialUse use;
+    for (uint32_t object = 0; object < graph.graph.objects.size(); ++object)
+        noteMaterials(use, expandObject(graph, object).primitives);
+    return materialTable(graph.graph.look, use.used, use.twoSided);
 }
 
 std::vector<NamedInstanceStat> namedStats(const InstanceGraphStats& stats) {

@@ -45,6 +45,10 @@ LazyInstanceGraph deriveLazyInstanceGraph(const BGrammar& bgrammar, const Gramma
                                           const InstanceGraphOptions& options = {},
                                           const SurfaceLibrary& surfaces = SurfaceLibrary{});
 
+// materialsOf(buildInstanceGraph(…)) without the whole graph: every object
+// expanded once, one at a time.
+std::vector<Material> materialsOf(const LazyInstanceGraph& graph);
+
 // The items of one object, interpreted again. Changes nothing: threads may
 // expand objects of one graph at once.
 ObjectExpansion expandObject(const LazyInstanceGraph& graph, uint32_t object);

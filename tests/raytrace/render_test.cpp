@@ -1,7 +1,7 @@
 // Images ray traced on the CPU (lsystem/raytrace/render.h): the framed camera
 // sees the whole box, the bytes do not depend on the thread count, shadow
-// rays darken the ground under a sphere, and the graph and its flattened
-// plant give the same picture.
+// rays darken the ground under a sphere, the graph and its flattened plant
+// give the same picture, and the material tables of both forms of a graph.
 
 #include <gtest/gtest.h>
 
@@ -13,6 +13,7 @@
 #include <glm/ext/matrix_transform.hpp>
 
 #include "../instance_graph/instance_graph_test_support.h"
+#include "lsystem/instance_graph_lazy.h"
 #include "lsystem/raytrace/flat_tracer.h"
 #include "lsystem/raytrace/graph_tracer.h"
 #include "lsystem/raytrace/render.h"
@@ -172,9 +173,7 @@ TEST(RenderImage, TheGraphAndItsFlattenedPlantGiveTheSamePicture) {
     }
 }
 
-void expectMaterialsOfFlattened(const InstanceGraph& graph) {
-    const std::vector<Material> expected = flatten(graph).materials;
-    const std::vector<Material> actual = materialsOf(graph);
+void expectSameMaterials(const std::vector<Material>& actual, const std::vector<Material>& expected) {
     ASSERT_EQ(actual.size(), expected.size());
     for (size_t i = 0; i < actual.size(); ++i) {
         EXPECT_EQ(actual[i].name, expected[i].name) << "material " << i;
@@ -188,14 +187,32 @@ TEST(MaterialsOf, TheGraphsTableIsTheFlattenedPlants) {
     for (const char* file :
          {"plants/broadleaf.lsys", "plants/fractal_bush.lsys", "plants/abop/fig1_24d_bracketed_plant"}) {
         SCOPED_TRACE(file);
-        expectMaterialsOfFlattened(graphOf(loadOk(file)));
+        const InstanceGraph graph = graphOf(loadOk(file));
+        expectSameMaterials(materialsOf(graph), flatten(graph).materials);
     }
     // A polygon of material 12 (the palette repeated: "fruit 12", one-sided until a polygon uses it).
     SCOPED_TRACE("polygon");
     const InstanceGraph graph = graphOf(parseOk("Axiom: A\nA --> F;(12){.-f.+f.+f.}\n"), 1);
     ASSERT_EQ(materialsOf(graph).size(), 13u);
     EXPECT_TRUE(materialsOf(graph)[12].twoSided);
-    expectMaterialsOfFlattened(graph);
+    expectSameMaterials(materialsOf(graph), flatten(graph).materials);
+}
+
+// The lazy graph's table, from its objects expanded one by one, is the whole
+// graph's: the same plants, and a polygon's material made two-sided.
+TEST(MaterialsOf, TheLazyGraphsTableIsTheWholeGraphs) {
+    const auto expectLazyTableIsWhole = [](const Grammar& grammar, std::optional<int> steps) {
+        const BGrammar bgrammar = interpretedBGrammar(grammar, steps);
+        expectSameMaterials(materialsOf(deriveLazyInstanceGraph(bgrammar, grammar)),
+                            materialsOf(buildInstanceGraph(bgrammar, grammar)));
+    };
+    for (const char* file :
+         {"plants/broadleaf.lsys", "plants/fractal_bush.lsys", "plants/abop/fig1_24d_bracketed_plant"}) {
+        SCOPED_TRACE(file);
+        expectLazyTableIsWhole(loadOk(file), std::nullopt);
+    }
+    SCOPED_TRACE("polygon");
+    expectLazyTableIsWhole(parseOk("Axiom: A\nA --> F;(12){.-f.+f.+f.}\n"), 1);
 }
 
 } // namespace

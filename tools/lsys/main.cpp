@@ -43,27 +43,19 @@
 #include "tools/lsys/plant_loading.h"
 #include "tools/lsys/ramify_command.h"
 #include "tools/lsys/render_command.h"
-#include "tools/memory_budget_option.h"
 
 namespace {
 
-constexpr int kBadInput = 2;
+using tools::kBadInput;
 // --sides: a segment's ring needs 3 sides; past 1024 a plant's mesh is
 // thousands of times its default size for no visible gain.
 constexpr uint32_t kMinSides = 3, kMaxSides = 1024;
 
-struct Arguments {
-    std::string file;
-    std::optional<int> steps;
-    std::optional<uint64_t> seed;
-    std::vector<std::string> defines;
-    std::optional<lsys::Dialect> dialect; // none: the file's "dialect:" line, else cpfg for a .l file, else native
+struct Arguments : tools::DerivationArguments {
     bool print = false;
     std::string printFormat = "text"; // --format: "text" or "cpfg"
     std::string compareWith;          // --compare: a string file to compare the derived string with
     bool json = false;
-    size_t maxModules = 50'000'000;
-    lsys::MemoryBudget memory; // --memory-budget
     int threads = 2;
     int randomness = 0;
     lsys::BGrammarLimits limits;
@@ -74,10 +66,6 @@ struct Arguments {
     lsys::GraphExportOptions graphExportOptions;
     std::optional<float> height; // export --height: metres the plant's meshes are scaled to
 };
-
-std::optional<lsys::Grammar> load(const Arguments& arguments) {
-    return tools::loadGrammar(arguments.file, arguments.dialect, arguments.defines);
-}
 
 // Prints what went wrong with the file, and the way out of a budget.
 int failed(const Arguments& arguments, const std::exception& error) {
@@ -116,7 +104,7 @@ int compare(const Arguments& arguments, const lsys::Grammar& grammar, const lsys
 }
 
 int derive(const Arguments& arguments) {
-    std::optional<lsys::Grammar> grammar = load(arguments);
+    std::optional<lsys::Grammar> grammar = tools::loadGrammar(arguments);
     if (!grammar) return kBadInput;
     const lsys::DeriveOptions options = deriveOptions(arguments);
     auto start = std::chrono::steady_clock::now();
@@ -156,16 +144,12 @@ const char* methodName(lsys::BGrammarMethod method) {
     return "";
 }
 
-// The b-grammar of the word the turtle reads, as `instance` and `export --instanced` build it.
-lsys::BGrammarOptions bgrammarOptions(const Arguments& arguments) {
-    lsys::BGrammarOptions options;
-    options.steps = arguments.steps;
-    options.seed = arguments.seed;
-    options.interpreted = true; // the word the turtle reads
+// The b-grammar of the word the turtle reads, as `instance` and `export
+// --instanced` build it: with --randomness and the graph's budgets.
+lsys::BGrammarOptions instanceBGrammarOptions(const Arguments& arguments) {
+    lsys::BGrammarOptions options = tools::bgrammarOptions(arguments);
     options.randomness = arguments.randomness;
     options.limits = arguments.limits;
-    options.maxModules = arguments.maxModules;
-    options.memory = arguments.memory;
     return options;
 }
 
@@ -176,9 +160,9 @@ lsys::InstanceGraphOptions graphOptions(const Arguments& arguments) {
 }
 
 int instance(const Arguments& arguments) {
-    std::optional<lsys::Grammar> grammar = load(arguments);
+    std::optional<lsys::Grammar> grammar = tools::loadGrammar(arguments);
     if (!grammar) return kBadInput;
-    const lsys::BGrammarOptions options = bgrammarOptions(arguments);
+    const lsys::BGrammarOptions options = instanceBGrammarOptions(arguments);
     auto start = std::chrono::steady_clock::now();
     lsys::InstanceGraphStats stats;
     lsys::BGrammarMethod method;
@@ -258,7 +242,7 @@ int exportGraph(const Arguments& arguments, const lsys::Grammar& grammar) {
     const lsys::SurfaceLibrary surfaces(lsys::meshDirectoriesFor(arguments.file));
     lsys::InstanceGraph graph;
     try {
-        graph = lsys::buildInstanceGraph(lsys::buildBGrammar(grammar, bgrammarOptions(arguments)), grammar,
+        graph = lsys::buildInstanceGraph(lsys::buildBGrammar(grammar, instanceBGrammarOptions(arguments)), grammar,
                                          graphOptions(arguments), surfaces);
     } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
         return failed(arguments, error);
@@ -319,7 +303,7 @@ int exportCommand(const Arguments& arguments) {
     }
     std::optional<lsys::Grammar> grammar;
     if (!components && !ramified) {
-        grammar = load(arguments);
+        grammar = tools::loadGrammar(arguments);
         if (!grammar) return kBadInput;
         if (arguments.instanced) return exportGraph(arguments, *grammar);
     }
@@ -359,31 +343,6 @@ int exportCommand(const Arguments& arguments) {
     std::cerr << arguments.output << ": " << plant.primitives.size() << " primitives, " << plant.joints.size()
               << " joints" << scaleNote(arguments, scale) << " (" << seconds << " s)\n";
     return 0;
-}
-
-// --dialect NAME, any case; an unknown name is a usage error (exit code 2).
-void addDialectOption(CLI::App& command, Arguments& arguments) {
-    command
-        .add_option_function<std::string>(
-            "--dialect", [&arguments](const std::string& name) { arguments.dialect = lsys::dialectFromName(name); },
-            "Input notation: " + lsys::knownDialects() +
-                " (default: the file's 'dialect:' line, else cpfg for a .l file, else native)")
-        ->check([](const std::string& name) {
-            return lsys::dialectFromName(name)
-                       ? std::string()
-                       : "unknown dialect '" + name + "' (expected " + lsys::knownDialects() + ")";
-        });
-}
-
-// FILE, -n, --seed, -D and --dialect: what every command that derives takes.
-void addDerivationOptions(CLI::App& command, Arguments& arguments) {
-    command.add_option("FILE", arguments.file, "plant file (.lsys, .l, any dialect) or vlab object folder")->required();
-    command.add_option("-n,--steps", arguments.steps, "Derivation steps (default: the file's 'derivation length:')")
-        ->check(CLI::Range(0, lsys::kMaxDerivationLength));
-    command.add_option("--seed", arguments.seed, "Random seed (default: the file's 'seed:')");
-    command.add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
-    addDialectOption(command, arguments);
-    tools::addMemoryBudgetOption(command, arguments.memory);
 }
 
 // --randomness and --granularity: how the InstanceGraph is built.
@@ -458,7 +417,7 @@ void addDrawnFormOptions(CLI::App& command, Arguments& arguments) {
 }
 
 int check(const Arguments& arguments) {
-    if (!load(arguments)) return kBadInput;
+    if (!tools::loadGrammar(arguments)) return kBadInput;
     std::cout << arguments.file << ": ok\n";
     return 0;
 }
@@ -482,7 +441,7 @@ int main(int argc, char** argv) {
     Arguments arguments;
 
     CLI::App* deriveCommand = app.add_subcommand("derive", "Derive an L-system and report, print or count the result");
-    addDerivationOptions(*deriveCommand, arguments);
+    tools::addDerivationOptions(*deriveCommand, arguments);
     deriveCommand->add_flag("--print", arguments.print, "Print the final string, e.g. F(1,0.5)[+A(2)]");
     deriveCommand
         ->add_option("--format", arguments.printFormat,
@@ -499,10 +458,7 @@ int main(int argc, char** argv) {
     deriveCommand->add_option("--threads", arguments.threads, "Rewriting threads")->check(CLI::Range(1, 64));
 
     CLI::App* checkCommand = app.add_subcommand("check", "Parse a file and report every problem without deriving");
-    checkCommand->add_option("FILE", arguments.file, "plant file (.lsys, .l, any dialect) or vlab object folder")
-        ->required();
-    checkCommand->add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
-    addDialectOption(*checkCommand, arguments);
+    tools::addPlantFileOptions(*checkCommand, arguments);
 
     CLI::App* instanceCommand = app.add_subcommand(
         "instance",
@@ -514,7 +470,7 @@ int main(int argc, char** argv) {
         "bytes_graph = the graph's memory, bytes_flat = primitives x one flat primitive record. Context-free rules are "
         "shared by (module, remaining steps); context-sensitive, cut or random ones (without --randomness) are derived "
         "and compressed (SEQUITUR). docs/INSTANCING.md");
-    addDerivationOptions(*instanceCommand, arguments);
+    tools::addDerivationOptions(*instanceCommand, arguments);
     addGraphOptions(*instanceCommand, arguments);
     instanceCommand->add_flag(
         "--json", arguments.json,
@@ -536,7 +492,7 @@ int main(int argc, char** argv) {
         "Derive and interpret an L-system, build a component plant (FILE.comp.json, docs/COMPONENTS.md) or generate "
         "a ramification tree (FILE.ram.json, --seed replacing its 'seed'; docs/RAMIFICATION.md), and write the plant "
         "as glTF 2.0 (.gltf, .glb) or OBJ (docs/EXPORT.md)");
-    addDerivationOptions(*exportSubcommand, arguments);
+    tools::addDerivationOptions(*exportSubcommand, arguments);
     exportSubcommand->add_option("-o,--output", arguments.output, "Output file: .gltf, .glb or .obj")->required();
     exportSubcommand->add_flag_callback(
         "--flat", [&arguments] { arguments.instanced = false; },

@@ -7,6 +7,7 @@
 #include "lsystem/error.h"
 #include "lsystem/parser.h"
 #include "lsystem/vlab/object.h"
+#include "tools/memory_budget_option.h"
 
 namespace tools {
 namespace {
@@ -28,12 +29,34 @@ bool parseDefines(const std::vector<std::string>& items, std::unordered_map<std:
 
 } // namespace
 
-std::optional<lsys::Grammar> loadGrammar(const std::string& file, const std::optional<lsys::Dialect>& dialect,
-                                         const std::vector<std::string>& defines) {
+void addPlantFileOptions(CLI::App& command, DerivationArguments& arguments) {
+    command.add_option("FILE", arguments.file, "plant file (.lsys, .l, any dialect) or vlab object folder")->required();
+    command.add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
+    command
+        .add_option_function<std::string>(
+            "--dialect", [&arguments](const std::string& name) { arguments.dialect = lsys::dialectFromName(name); },
+            "Input notation: " + lsys::knownDialects() +
+                " (default: the file's 'dialect:' line, else cpfg for a .l file, else native)")
+        ->check([](const std::string& name) {
+            return lsys::dialectFromName(name)
+                       ? std::string()
+                       : "unknown dialect '" + name + "' (expected " + lsys::knownDialects() + ")";
+        });
+}
+
+void addDerivationOptions(CLI::App& command, DerivationArguments& arguments) {
+    addPlantFileOptions(command, arguments);
+    command.add_option("-n,--steps", arguments.steps, "Derivation steps (default: the file's 'derivation length:')")
+        ->check(CLI::Range(0, lsys::kMaxDerivationLength));
+    command.add_option("--seed", arguments.seed, "Random seed (default: the file's 'seed:')");
+    addMemoryBudgetOption(command, arguments.memory);
+}
+
+std::optional<lsys::Grammar> loadGrammar(const DerivationArguments& arguments) {
     lsys::ParseOptions options;
-    options.file = file;
-    if (!parseDefines(defines, options.defines)) return std::nullopt;
-    lsys::vlab::PlantFile plant = lsys::vlab::loadPlant(file, dialect, options);
+    options.file = arguments.file;
+    if (!parseDefines(arguments.defines, options.defines)) return std::nullopt;
+    lsys::vlab::PlantFile plant = lsys::vlab::loadPlant(arguments.file, arguments.dialect, options);
     lsys::ParseResult& result = plant.parsed;
     std::cerr << lsys::formatDiagnostics(result.warnings, plant.source);
     if (!result.ok()) {
@@ -42,6 +65,16 @@ std::optional<lsys::Grammar> loadGrammar(const std::string& file, const std::opt
         return std::nullopt;
     }
     return std::move(result.grammar);
+}
+
+lsys::BGrammarOptions bgrammarOptions(const DerivationArguments& arguments) {
+    lsys::BGrammarOptions options;
+    options.steps = arguments.steps;
+    options.seed = arguments.seed;
+    options.interpreted = true; // the word the turtle reads
+    options.maxModules = arguments.maxModules;
+    options.memory = arguments.memory;
+    return options;
 }
 
 } // namespace tools

@@ -1,23 +1,51 @@
-// Reading the plant file a deriving command starts from: the file or vlab
-// object in its dialect, with -D's constants, its problems printed.
+// The plant file a deriving command starts from: FILE, -n, --seed, -D,
+// --dialect and --memory-budget on the command line, the file or vlab object
+// read in its dialect with -D's constants (its problems printed), and the
+// b-grammar of the word the turtle reads.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
+#include "lsystem/bgrammar.h"
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/grammar.h"
+#include "lsystem/memory_budget.h"
 
 namespace tools {
 
 // lsys' exit status for bad input: a file's problems, a budget exceeded.
 inline constexpr int kBadInput = 2;
 
-// Parses `file` (lsystem/vlab/object.h: a file or a vlab object folder) with
-// `defines` ("NAME=VALUE" items of -D) overriding its #define constants.
-// Prints warnings to stderr; on problems prints them all and returns nullopt.
-std::optional<lsys::Grammar> loadGrammar(const std::string& file, const std::optional<lsys::Dialect>& dialect,
-                                         const std::vector<std::string>& defines);
+// What every command that derives a plant file reads from its command line.
+struct DerivationArguments {
+    std::string file;
+    std::optional<int> steps;
+    std::optional<uint64_t> seed;
+    std::vector<std::string> defines;     // -D's "NAME=VALUE" items
+    std::optional<lsys::Dialect> dialect; // none: the file's "dialect:" line, else cpfg for a .l file, else native
+    size_t maxModules = 50'000'000;       // --max-modules, which each command words for itself
+    lsys::MemoryBudget memory;            // --memory-budget
+};
+
+// FILE, -D and --dialect: what reading the file takes (lsys check).
+void addPlantFileOptions(CLI::App& command, DerivationArguments& arguments);
+
+// The file's options, -n, --seed and --memory-budget: what deriving it takes.
+void addDerivationOptions(CLI::App& command, DerivationArguments& arguments);
+
+// Parses the file (lsystem/vlab/object.h: a file or a vlab object folder)
+// with -D's constants overriding its #define constants. Prints warnings to
+// stderr; on problems prints them all and returns nullopt.
+std::optional<lsys::Grammar> loadGrammar(const DerivationArguments& arguments);
+
+// The options of the b-grammar of the word the turtle reads, as lsys
+// instance, export --instanced and render build it.
+lsys::BGrammarOptions bgrammarOptions(const DerivationArguments& arguments);
 
 } // namespace tools

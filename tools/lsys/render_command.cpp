@@ -19,15 +19,16 @@
 #include "lsystem/components/component_graph.h"
 #include "lsystem/error.h"
 #include "lsystem/instance_graph.h"
+#include "lsystem/instance_graph_lazy.h"
 #include "lsystem/output_file.h"
 #include "lsystem/ramification_file.h"
 #include "lsystem/raytrace/flat_tracer.h"
 #include "lsystem/raytrace/graph_tracer.h"
+#include "lsystem/raytrace/lazy_graph_tracer.h"
 #include "lsystem/raytrace/render.h"
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"
 #include "tools/lsys/plant_loading.h"
-#include "tools/memory_budget_option.h"
 
 namespace tools {
 
@@ -36,26 +37,27 @@ namespace {
 // --size: past 16384 pixels a side the image alone is a gigabyte.
 constexpr uint32_t kMaxImageSide = 16384;
 constexpr uint32_t kMaxSamples = 256;
+// --cache-budget's default: the expansions of the plants in data/ take
+// kilobytes (docs/RAYTRACING.md, "Lazy expansion"), so this holds all of a
+// plant's unless its single objects are large, and is a small share of the
+// memory of a machine that renders.
+constexpr uint64_t kDefaultCacheBudget = uint64_t{256} << 20;
 
-struct RenderArguments {
-    std::string file;
-    std::optional<int> steps;
-    std::optional<uint64_t> seed;
-    std::vector<std::string> defines;
-    std::optional<lsys::Dialect> dialect;
+enum class TracerKind { Graph, Flat, Lazy };
+
+struct RenderArguments : DerivationArguments {
     std::string output;
     uint32_t width = 1280, height = 720;
     std::optional<lsys::PinholeCamera> camera; // --camera; else framed from --view
     lsys::ViewAngles view;
     pf::Environment environment; // the renderer's sun and sky, --sun turning the sun
-    bool flat = false;           // --tracer flat
+    TracerKind tracer = TracerKind::Graph;
     uint64_t maxFlatPrimitives = 10'000'000;
+    std::optional<uint64_t> cacheBudget; // --cache-budget, --tracer lazy only
     uint32_t threads = std::max(1u, std::thread::hardware_concurrency());
     uint32_t samples = 1;
     bool shadows = true;
     bool ground = true;
-    size_t maxModules = 50'000'000;
-    lsys::MemoryBudget memory;
 };
 
 // Comma-separated finite numbers: `count` or `orCount` of them.
@@ -192,8 +194,45 @@ int renderFlat(const RenderArguments& arguments, const lsys::InstanceGraph& grap
     return renderAndWrite(arguments, lsys::traceOf(tracer), plant.materials, bounds, "flat", begun);
 }
 
+// The lazy tracer's budget: --cache-budget, else the default within the memory budget.
+uint64_t cacheBudgetOf(const RenderArguments& arguments) {
+    if (!arguments.cacheBudget) return std::min(kDefaultCacheBudget, arguments.memory.limitBytes);
+    lsys::need(arguments.memory, "expansion cache (--cache-budget)", *arguments.cacheBudget);
+    return *arguments.cacheBudget;
+}
+
+// The plant traced without building its whole graph: objects expanded from
+// the b-grammar as rays reach them, held under --cache-budget (Robbins 1998,
+// §3). Framed on the lazy tracer's box of the root, which places the
+// children's boxes rather than their descendants' and so can be wider than
+// the graph tracer's: the same --camera gives the graph tracer's image.
+int renderLazy(const RenderArguments& arguments, const lsys::BGrammar& bgrammar, const lsys::Grammar& grammar,
+               const lsys::InstanceGraphOptions& graphOptions, const lsys::SurfaceLibrary& surfaces,
+               std::chrono::steady_clock::time_point begun) {
+    const uint64_t budget = cacheBudgetOf(arguments);
+    const lsys::LazyInstanceGraph graph = lsys::deriveLazyInstanceGraph(bgrammar, grammar, graphOptions, surfaces);
+    const lsys::LazyGraphTracer tracer = lsys::buildLazyGraphTracer(graph, budget, surfaces);
+    const lsys::Bounds bounds = graph.graph.objects.empty() ? lsys::Bounds{} : tracer.objectBounds[graph.graph.root];
+    if (bounds.empty()) {
+        std::cerr << arguments.file << ": error: the plant draws nothing to render\n";
+        return kBadInput;
+    }
+    const int status =
+        renderAndWrite(arguments, lsys::traceOf(tracer), lsys::materialsOf(graph), bounds, "lazy", begun);
+    const lsys::ExpansionStats stats = lsys::expansionStats(tracer);
+    if (status == 0)
+        std::cerr << "lazy tracer: " << graph.graph.objects.size() << " objects, " << stats.expansions
+                  << " expansions, " << stats.evictions << " evictions, at most " << lsys::formatBytes(stats.peakBytes)
+                  << " held of a " << lsys::formatBytes(budget) << " cache budget\n";
+    return status;
+}
+
 int runRender(const RenderArguments& arguments) {
     const auto begun = std::chrono::steady_clock::now();
+    if (arguments.cacheBudget && arguments.tracer != TracerKind::Lazy) {
+        std::cerr << "lsys: error: --cache-budget sizes the lazy tracer's expansion cache; it needs --tracer lazy\n";
+        return kBadInput;
+    }
     if (lsys::components::isComponentFile(arguments.file) || lsys::isRamificationFile(arguments.file)) {
         std::cerr << "lsys: error: render traces an L-system's InstanceGraph; a component plant or ramification "
                      "tree has none (lsys export writes it as a mesh)\n";
@@ -203,23 +242,19 @@ int runRender(const RenderArguments& arguments) {
         std::cerr << "lsys: error: " << problem << '\n';
         return kBadInput;
     }
-    const std::optional<lsys::Grammar> grammar = loadGrammar(arguments.file, arguments.dialect, arguments.defines);
+    const std::optional<lsys::Grammar> grammar = loadGrammar(arguments);
     if (!grammar) return kBadInput;
     const lsys::SurfaceLibrary surfaces(lsys::meshDirectoriesFor(arguments.file));
     try {
         lsys::need(arguments.memory, "image", lsys::bytesTimes(uint64_t(arguments.width) * arguments.height, 4));
-        lsys::BGrammarOptions options;
-        options.steps = arguments.steps;
-        options.seed = arguments.seed;
-        options.interpreted = true; // the word the turtle reads
-        options.maxModules = arguments.maxModules;
-        options.memory = arguments.memory;
         lsys::InstanceGraphOptions graphOptions;
         graphOptions.memory = arguments.memory;
-        const lsys::InstanceGraph graph =
-            lsys::buildInstanceGraph(lsys::buildBGrammar(*grammar, options), *grammar, graphOptions, surfaces);
-        // Either tracer's image is framed on the graph tracer's box, so the two
-        // compare pixel for pixel. Built from the objects' descendants, it is
+        const lsys::BGrammar bgrammar = lsys::buildBGrammar(*grammar, bgrammarOptions(arguments));
+        if (arguments.tracer == TracerKind::Lazy)
+            return renderLazy(arguments, bgrammar, *grammar, graphOptions, surfaces, begun);
+        const lsys::InstanceGraph graph = lsys::buildInstanceGraph(bgrammar, *grammar, graphOptions, surfaces);
+        // The graph and flat tracers' images are framed on the graph tracer's
+        // box, so the two compare pixel for pixel. Built from the objects' descendants, it is
         // within 1 % of the flattened plant's for the 6-step fractal bush, where
         // GraphObject::bounds, boxes of placed boxes, is 40 % wider.
         const lsys::GraphTracer tracer = lsys::buildGraphTracer(graph, surfaces);
@@ -228,7 +263,7 @@ int runRender(const RenderArguments& arguments) {
             std::cerr << arguments.file << ": error: the plant draws nothing to render\n";
             return kBadInput;
         }
-        if (arguments.flat) return renderFlat(arguments, graph, surfaces, bounds, begun);
+        if (arguments.tracer == TracerKind::Flat) return renderFlat(arguments, graph, surfaces, bounds, begun);
         return renderAndWrite(arguments, lsys::traceOf(tracer), lsys::materialsOf(graph), bounds, "graph", begun);
     } catch (const std::runtime_error& error) { // DerivationError, MemoryBudgetError, SurfaceError
         std::cerr << arguments.file << ": error: " << error.what() << '\n';
@@ -237,16 +272,7 @@ int runRender(const RenderArguments& arguments) {
 }
 
 void addOptions(CLI::App& command, RenderArguments& arguments) {
-    command.add_option("FILE", arguments.file, "plant file (.lsys, .l, any dialect) or vlab object folder")->required();
-    command.add_option("-n,--steps", arguments.steps, "Derivation steps (default: the file's 'derivation length:')")
-        ->check(CLI::Range(0, lsys::kMaxDerivationLength));
-    command.add_option("--seed", arguments.seed, "Random seed (default: the file's 'seed:')");
-    command.add_option("-D,--define", arguments.defines, "Override a #define constant: NAME=VALUE (repeatable)");
-    command
-        .add_option_function<std::string>(
-            "--dialect", [&arguments](const std::string& name) { arguments.dialect = lsys::dialectFromName(name); },
-            "Input notation: " + lsys::knownDialects() + " (default: the file's, else by extension)")
-        ->check(accepting(lsys::dialectFromName, "is not a dialect (expected " + lsys::knownDialects() + ")"));
+    addDerivationOptions(command, arguments);
     command.add_option("-o,--output", arguments.output, "The image: a PNG file")->required();
     command
         .add_option_function<std::string>(
@@ -287,15 +313,31 @@ void addOptions(CLI::App& command, RenderArguments& arguments) {
         ->check(accepting(parseAngles, "is not AZ,EL: two numbers in degrees, the elevation between -90 and 90"));
     command
         .add_option_function<std::string>(
-            "--tracer", [&arguments](const std::string& name) { arguments.flat = name == "flat"; },
-            "graph (default: through the InstanceGraph, every object stored once) or flat (the flattened plant in "
-            "one BVH, within --max-flat-primitives)")
-        ->check(CLI::IsMember({"graph", "flat"}))
-        ->type_name("graph|flat");
+            "--tracer",
+            [&arguments](const std::string& name) {
+                arguments.tracer = name == "flat"   ? TracerKind::Flat
+                                   : name == "lazy" ? TracerKind::Lazy
+                                                    : TracerKind::Graph;
+            },
+            "graph (default: through the InstanceGraph, every object stored once), flat (the flattened plant in "
+            "one BVH, within --max-flat-primitives) or lazy (each object expanded from the b-grammar when a ray "
+            "reaches it, held within --cache-budget; framed on its own, possibly wider, box)")
+        ->check(CLI::IsMember({"graph", "flat", "lazy"}))
+        ->type_name("graph|flat|lazy");
     command
         .add_option("--max-flat-primitives", arguments.maxFlatPrimitives,
                     "The most primitives --tracer flat flattens (default 10000000)")
         ->check(CLI::PositiveNumber);
+    command
+        .add_option_function<std::string>(
+            "--cache-budget",
+            [&arguments](const std::string& text) { arguments.cacheBudget = lsys::parseByteSize(text); },
+            "With --tracer lazy only: the most the expanded objects may hold, e.g. 64M, 1G or bytes; past it the "
+            "least recently used are dropped and expanded again when a ray needs them (default " +
+                lsys::formatBytes(kDefaultCacheBudget) + ", at most the memory budget)")
+        ->type_name("SIZE")
+        ->check(
+            accepting(lsys::parseByteSize, "is not a size: expected bytes or a number with K, M, G or T, e.g. 64M"));
     command
         .add_option("--threads", arguments.threads,
                     "Threads tracing rows (default: every core, " + std::to_string(arguments.threads) +
@@ -307,7 +349,6 @@ void addOptions(CLI::App& command, RenderArguments& arguments) {
     command.add_flag("!--no-ground", arguments.ground, "Sky below the horizon instead of a ground plane at the base");
     command.add_option("--max-modules", arguments.maxModules, "Module budget when the word must be derived first")
         ->check(CLI::PositiveNumber);
-    addMemoryBudgetOption(command, arguments.memory);
 }
 
 } // namespace
@@ -315,10 +356,10 @@ void addOptions(CLI::App& command, RenderArguments& arguments) {
 RenderCommand addRenderCommand(CLI::App& app) {
     auto arguments = std::make_shared<RenderArguments>();
     CLI::App* command = app.add_subcommand(
-        "render",
-        "Ray trace one plant on the CPU into a PNG (docs/RAYTRACING.md): its InstanceGraph traced without "
-        "flattening, lit by plantfield's sun with ray-traced shadows and its sky, on a ground plane, framed from "
-        "its box. Prints the rays traced and their rate");
+        "render", "Ray trace one plant on the CPU into a PNG (docs/RAYTRACING.md): its InstanceGraph traced without "
+                  "flattening (or expanded lazily, --tracer lazy), lit by plantfield's sun with ray-traced shadows and "
+                  "its sky, on a ground plane, framed from "
+                  "its box. Prints the rays traced and their rate");
     addOptions(*command, *arguments);
     return {command, [arguments] { return runRender(*arguments); }};
 }

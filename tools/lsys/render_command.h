@@ -1,6 +1,6 @@
 // lsys render: an image of one plant ray traced on the CPU through its
-// InstanceGraph or its flattened plant (lsystem/raytrace/render.h,
-// docs/RAYTRACING.md).
+// InstanceGraph, its flattened plant or its objects expanded lazily
+// (lsystem/raytrace/render.h, docs/RAYTRACING.md).
 #pragma once
 
 #include <functional>
