@@ -99,7 +99,7 @@ Camera worldCamera(const lsys::PinholeCamera& camera, const PlantPlacement& plac
 // as a ray through the centre decides).
 RgbaImage rasterised(const GpuContext& ctx, const FieldContent& content, const Camera& camera) {
     FieldRenderSettings settings;
-    settings.shadows = false;
+    settings.shadows = SunShadows::none;
     settings.antialiasing.method = AntialiasMethod::none;
     settings.clusters.enabled = false; // the one plant through the per-plant cull, wherever it is moved
     FieldRenderer renderer(ctx, content, settings);
