@@ -198,6 +198,17 @@ TEST(WideBvh, VisitsNearerBoxesFirstAndStopsWhenAsked) {
     expectNearerBoxesFirst(1, [&](const Ray& ray, auto&& visit) { traverseWideBvh(wide, ray, visit); });
 }
 
+// A node's unused lanes are never entered, though a ray passes where their
+// (zero) planes lie.
+TEST(WideBvh, UnusedLanesAreNeverEntered) {
+    const std::vector<Bounds> boxes{{glm::vec3(2), glm::vec3(3)}};
+    const WideBvh wide = widen(buildBvh(boxes, 1)); // one lane of four used
+    traverseWideBvh(wide, Ray{glm::vec3(0, 0, -1), glm::vec3(0, 0, 1)}, [](uint32_t) {
+        ADD_FAILURE() << "visited an item the ray misses";
+        return false;
+    });
+}
+
 // A ray along a face of a box enters it, as boxEntry says (its NaN ignored).
 TEST(WideBvh, ARayAlongAFaceEntersTheBox) {
     const std::vector<Bounds> boxes{{glm::vec3(0), glm::vec3(1)}, {glm::vec3(5), glm::vec3(6)}};
