@@ -8,28 +8,6 @@
 namespace lsys {
 namespace {
 
-// Traces one object with the ray in its local space: true when it found a hit
-// nearer than ray.tMax, which is then lowered to it; `hit` in local space.
-bool traceObject(const GraphTracer& tracer, uint32_t object, Ray& ray, HitQuery query, Hit& hit) {
-    const InstanceGraph& graph = *tracer.graph;
-    const std::span<const GraphItem> items = graph.itemsOf(object);
-    bool found = false;
-    traverseBvh(tracer.objectBvhs[object], ray, [&](uint32_t i) {
-        const GraphItem& item = items[i];
-        if (item.kind == GraphItem::Kind::Primitive) {
-            found |= tracePrimitive(tracer.primitives[item.index], item.index, tracer.shapes.surfaces,
-                                    tracer.shapes.polygons, ray, hit);
-        } else {
-            found |= traceInstance(graph.instances[item.index], tracer.instanceToLocal[item.index], ray, hit,
-                                   [&](uint32_t child, Ray& local, Hit& inner) {
-                                       return traceObject(tracer, child, local, query, inner);
-                                   });
-        }
-        return found && query == HitQuery::Any;
-    });
-    return found;
-}
-
 // An instance's box in its parent is the box of its object's box placed by
 // its frame, which is larger than what the object draws unless the frame
 // only translates; boxes of boxes placed level upon level (a fractal bush's
@@ -97,18 +75,150 @@ Bounds placedBounds(const GraphTracer& tracer, uint32_t object, const Frame& fra
     return bounds;
 }
 
+// At most this many primitives over all flattened objects.
+constexpr uint64_t kFlattenedTotal = uint64_t(1) << 19;
+
+// Appends what `object` draws, placed by `frame` (none: the flattened object
+// itself, whose own primitives keep their records), to `flat`.
+void flattenSubtree(const GraphTracer& tracer, uint32_t object, const Frame* frame, FlattenedObject& flat,
+                    std::vector<Bounds>& boxes) {
+    const InstanceGraph& graph = *tracer.graph;
+    for (const GraphItem& item : graph.itemsOf(object)) {
+        if (item.kind == GraphItem::Kind::Instance) {
+            const GraphInstance& instance = graph.instances[item.index];
+            const Frame placed = frame ? compose(*frame, instance.frame) : instance.frame;
+            flattenSubtree(tracer, instance.object, &placed, flat, boxes);
+            continue;
+        }
+        const Primitive& primitive = tracer.primitives[item.index];
+        const Bounds box = frame ? placedPrimitiveBounds(tracer, primitive, *frame)
+                                 : tracedBounds(primitive, tracer.shapes.surfaces, tracer.shapes.polygons);
+        if (box.empty()) continue;
+        FlattenedObject::Leaf leaf{primitive.frame, tracer.primitiveToLocal[item.index], item.index};
+        if (primitive.kind == PrimitiveKind::Polygon) {
+            leaf.frame = frame ? *frame : Frame{};
+            leaf.toLocal = glm::inverse(leaf.frame.rotation);
+        } else if (frame) {
+            leaf.frame = compose(*frame, primitive.frame);
+            leaf.toLocal = glm::inverse(leaf.frame.rotation);
+        }
+        flat.leaves.push_back(leaf);
+        boxes.push_back(box);
+    }
+}
+
+FlattenedObject flattenedObject(const GraphTracer& tracer, uint32_t object) {
+    FlattenedObject flat;
+    std::vector<Bounds> boxes;
+    flattenSubtree(tracer, object, nullptr, flat, boxes);
+    flat.bvh = widen(buildBvh(boxes, kGraphObjectLeafSize));
+    // The leaves in the order the BVH's leaves hold them, so a walk reads
+    // them from nearby memory rather than across the flattening order.
+    std::vector<FlattenedObject::Leaf> leaves;
+    leaves.reserve(flat.bvh.items.size());
+    for (uint32_t& item : flat.bvh.items) {
+        leaves.push_back(flat.leaves[item]);
+        item = uint32_t(leaves.size() - 1);
+    }
+    flat.leaves = std::move(leaves);
+    return flat;
+}
+
+// Tests a flattened object's leaf against the ray in the object's space, as
+// tracePrimitive does with the primitive placed there: a polygon after
+// carrying the ray into the frame of the object that drew it, its normal
+// turned back.
+bool traceLeaf(const GraphTracer& tracer, const FlattenedObject::Leaf& leaf, Ray& ray, Hit& hit) {
+    Primitive placed = tracer.primitives[leaf.primitive];
+    if (placed.kind != PrimitiveKind::Polygon) {
+        placed.frame = leaf.frame;
+        return tracePrimitive(placed, leaf.toLocal, leaf.primitive, tracer.shapes.surfaces, tracer.shapes.polygons, ray,
+                              hit);
+    }
+    Ray local = rayInFrame(ray, leaf.frame.position, leaf.toLocal);
+    if (!tracePrimitive(placed, leaf.toLocal, leaf.primitive, tracer.shapes.surfaces, tracer.shapes.polygons, local,
+                        hit))
+        return false;
+    hit.normal = glm::normalize(leaf.frame.rotation * hit.normal);
+    ray.tMax = hit.t;
+    return true;
+}
+
+bool traceFlattened(const GraphTracer& tracer, const FlattenedObject& flat, Ray& ray, HitQuery query, Hit& hit) {
+    bool found = false;
+    traverseWideBvh(flat.bvh, ray, [&](uint32_t i) {
+        found |= traceLeaf(tracer, flat.leaves[i], ray, hit);
+        return found && query == HitQuery::Any;
+    });
+    return found;
+}
+
+// Traces one object with the ray in its local space: true when it found a hit
+// nearer than ray.tMax, which is then lowered to it; `hit` in local space.
+bool traceObject(const GraphTracer& tracer, uint32_t object, Ray& ray, HitQuery query, Hit& hit) {
+    if (tracer.flattenedIndex[object] != kNotFlattened)
+        return traceFlattened(tracer, tracer.flattened[tracer.flattenedIndex[object]], ray, query, hit);
+    const InstanceGraph& graph = *tracer.graph;
+    const std::span<const GraphItem> items = graph.itemsOf(object);
+    bool found = false;
+    traverseWideBvh(tracer.objectWideBvhs[object], ray, [&](uint32_t i) {
+        const GraphItem& item = items[i];
+        if (item.kind == GraphItem::Kind::Primitive) {
+            found |= tracePrimitive(tracer.primitives[item.index], tracer.primitiveToLocal[item.index], item.index,
+                                    tracer.shapes.surfaces, tracer.shapes.polygons, ray, hit);
+        } else {
+            found |= traceInstance(graph.instances[item.index], tracer.instanceToLocal[item.index], ray, hit,
+                                   [&](uint32_t child, Ray& local, Hit& inner) {
+                                       return traceObject(tracer, child, local, query, inner);
+                                   });
+        }
+        return found && query == HitQuery::Any;
+    });
+    return found;
+}
+
+// What the CPU walk enters, parents first (the reverse of the graph's
+// order): the root, and the children of every object entered but not
+// flattened.
+void prepareWalk(GraphTracer& tracer, uint64_t flattenedPrimitives) {
+    const InstanceGraph& graph = *tracer.graph;
+    tracer.flattenedIndex.assign(graph.objects.size(), kNotFlattened);
+    tracer.objectWideBvhs.resize(graph.objects.size());
+    if (graph.objects.empty()) return;
+    std::vector<bool> entered(graph.objects.size(), false);
+    entered[graph.root] = true;
+    uint64_t flattenedTotal = 0;
+    for (uint32_t object = uint32_t(graph.objects.size()); object-- > 0;) {
+        if (!entered[object]) continue;
+        const uint64_t primitives = graph.objects[object].primitives;
+        if (flattenedPrimitives > 0 && primitives <= flattenedPrimitives &&
+            flattenedTotal + primitives <= kFlattenedTotal) {
+            flattenedTotal += primitives;
+            tracer.flattenedIndex[object] = uint32_t(tracer.flattened.size());
+            tracer.flattened.push_back(flattenedObject(tracer, object));
+            continue;
+        }
+        tracer.objectWideBvhs[object] = widen(tracer.objectBvhs[object]);
+        for (const GraphItem& item : graph.itemsOf(object))
+            if (item.kind == GraphItem::Kind::Instance) entered[graph.instances[item.index].object] = true;
+    }
+}
+
 } // namespace
 
-GraphTracer buildGraphTracer(const InstanceGraph& graph, const SurfaceLibrary& surfaces) {
-    GraphTracer tracer{&graph, {}, {}, tracedShapesOf(graph, surfaces), {}, {}};
+GraphTracer buildGraphTracer(const InstanceGraph& graph, const SurfaceLibrary& surfaces, uint64_t flattenedPrimitives) {
+    GraphTracer tracer{&graph, {}, {}, {}, tracedShapesOf(graph, surfaces), {}, {}, {}, {}, {}};
     // Pixel-wide lines get the world width graph export gives them (the
     // root's box over kPixelsAcrossPlant), which flattening matches when
     // the root's box is the plant's.
     const float lineScale =
         graph.pixelLines && !graph.objects.empty() ? worldPerPixel(graph.objects[graph.root].bounds) : 1.0f;
     tracer.primitives.reserve(graph.primitives.size());
-    for (const GraphPrimitive& primitive : graph.primitives)
+    tracer.primitiveToLocal.reserve(graph.primitives.size());
+    for (const GraphPrimitive& primitive : graph.primitives) {
         tracer.primitives.push_back(tracedPrimitive(primitive, lineScale));
+        tracer.primitiveToLocal.push_back(glm::inverse(primitive.frame.rotation));
+    }
     tracer.instanceToLocal.reserve(graph.instances.size());
     for (const GraphInstance& instance : graph.instances)
         tracer.instanceToLocal.push_back(glm::inverse(instance.frame.rotation));
@@ -132,6 +242,7 @@ GraphTracer buildGraphTracer(const InstanceGraph& graph, const SurfaceLibrary& s
         }
         tracer.objectBvhs[object] = buildBvh(itemBounds, kGraphObjectLeafSize);
     }
+    prepareWalk(tracer, flattenedPrimitives);
     return tracer;
 }
 

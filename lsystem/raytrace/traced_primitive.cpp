@@ -78,10 +78,6 @@ Primitive tracedPrimitive(const GraphPrimitive& primitive, float lineScale) {
             primitive.endRadius * radiusScale};
 }
 
-Ray rayInFrame(const Ray& ray, const Frame& frame) {
-    return rayInFrame(ray, frame.position, glm::inverse(frame.rotation));
-}
-
 Ray rayInFrame(const Ray& ray, const glm::vec3& position, const glm::quat& toLocal) {
     return {toLocal * (ray.origin - position), toLocal * ray.direction, ray.tMin, ray.tMax};
 }
@@ -112,6 +108,11 @@ Bounds tracedBounds(const Primitive& primitive, const TracedMeshes& surfaces, co
 
 bool tracePrimitive(const Primitive& primitive, uint32_t index, const TracedMeshes& surfaces,
                     const TracedMeshes& polygons, Ray& ray, Hit& hit) {
+    return tracePrimitive(primitive, glm::inverse(primitive.frame.rotation), index, surfaces, polygons, ray, hit);
+}
+
+bool tracePrimitive(const Primitive& primitive, const glm::quat& toLocal, uint32_t index, const TracedMeshes& surfaces,
+                    const TracedMeshes& polygons, Ray& ray, Hit& hit) {
     if (!isDrawable(primitive)) return false;
     std::optional<ShapeHit> found;
     if (primitive.kind == PrimitiveKind::Polygon) {
@@ -120,7 +121,7 @@ bool tracePrimitive(const Primitive& primitive, uint32_t index, const TracedMesh
     } else {
         // Into the primitive's frame, and for a surface by 1/length into its
         // unit mesh's space (t is unchanged).
-        Ray local = rayInFrame(ray, primitive.frame);
+        Ray local = rayInFrame(ray, primitive.frame.position, toLocal);
         switch (primitive.kind) {
         case PrimitiveKind::Segment:
             found = intersectFrustum(local, primitive.length, primitive.startRadius, primitive.endRadius);

@@ -39,10 +39,9 @@ TracedShapes tracedShapesOf(const InstanceGraph& graph, const SurfaceLibrary& su
 // graph of pixel-wide lines, 1 otherwise).
 Primitive tracedPrimitive(const GraphPrimitive& primitive, float lineScale);
 
-// The ray in the space of a frame given in the ray's space: rigid, so the
-// same t and the same [tMin, tMax].
-Ray rayInFrame(const Ray& ray, const Frame& frame);
-// The same with the frame's inverse rotation computed once beforehand.
+// The ray in the space of a frame given in the ray's space (its position,
+// and the inverse of its rotation): rigid, so the same t and the same
+// [tMin, tMax].
 Ray rayInFrame(const Ray& ray, const glm::vec3& position, const glm::quat& toLocal);
 
 // The box around what the primitive draws, in the space its frame is given
@@ -55,6 +54,10 @@ Bounds tracedBounds(const Primitive& primitive, const TracedMeshes& surfaces, co
 // primitive's frame). On a hit nearer than ray.tMax it sets `hit` (the
 // normal in the ray's space), lowers ray.tMax to it and returns true.
 bool tracePrimitive(const Primitive& primitive, uint32_t index, const TracedMeshes& surfaces,
+                    const TracedMeshes& polygons, Ray& ray, Hit& hit);
+// The same with the inverse of the primitive's rotation computed once
+// beforehand (a tracer that tests each primitive many times keeps it).
+bool tracePrimitive(const Primitive& primitive, const glm::quat& toLocal, uint32_t index, const TracedMeshes& surfaces,
                     const TracedMeshes& polygons, Ray& ray, Hit& hit);
 
 } // namespace lsys

@@ -105,11 +105,12 @@ constexpr size_t kRaysPerGrazingDifference = 1000;
 // Closest hits of each PrimitiveKind.
 using HitsByKind = std::array<size_t, 4>;
 
-// Closest and any hits through the graph and through its flattened plant.
-HitsByKind compareTracers(const InstanceGraph& graph, size_t rayCount) {
+// Closest and any hits through the graph, walked with objects flattened up
+// to `flattenedPrimitives`, and through its flattened plant.
+HitsByKind compareTracers(const InstanceGraph& graph, size_t rayCount, uint64_t flattenedPrimitives) {
     const PlantAsset flat = flatten(graph);
     const FlatTracer flatTracer = buildFlatTracer(flat);
-    const GraphTracer graphTracer = buildGraphTracer(graph);
+    const GraphTracer graphTracer = buildGraphTracer(graph, SurfaceLibrary{}, flattenedPrimitives);
     size_t hits = 0, differing = 0;
     HitsByKind byKind{};
     for (const Ray& ray : raysAt(flat.bounds, rayCount, 7)) {
@@ -143,8 +144,18 @@ HitsByKind compareTracers(const InstanceGraph& graph, size_t rayCount) {
     EXPECT_LE(differing, rayCount / kRaysPerGrazingDifference) << differing << " of " << rayCount << " rays differ";
     // The rays are aimed into the box: a good part of them must hit something.
     EXPECT_GT(hits, rayCount / 20);
-    std::printf("%zu rays, %zu hit, %zu differ\n", rayCount, hits, differing);
+    std::printf("%zu rays, %zu hit, %zu differ (objects of up to %llu primitives flattened)\n", rayCount, hits,
+                differing, static_cast<unsigned long long>(flattenedPrimitives));
     return byKind;
+}
+
+// The same for each walk: objects flattened as by default (these plants
+// whole), a few levels of small ones flattened under instances walked one by
+// one, and every instance walked.
+HitsByKind compareTracers(const InstanceGraph& graph, size_t rayCount) {
+    for (uint64_t flattenedPrimitives : {uint64_t{64}, kNoFlattening})
+        compareTracers(graph, rayCount, flattenedPrimitives);
+    return compareTracers(graph, rayCount, kFlattenedPrimitives);
 }
 
 TEST(GraphTracer, FractalBushFourSteps) { compareTracers(graphOf(loadOk("plants/fractal_bush.lsys"), 4), 3000); }
@@ -193,6 +204,28 @@ TEST(GraphTracer, PixelWideLinesGetGraphExportsWidth) {
         EXPECT_FLOAT_EQ(tracer.primitives[i].endRadius, graph.primitives[i].endRadius * pixel);
     }
     EXPECT_GT(segments, 0u);
+}
+
+// The walk enters the root and the children of every object it does not
+// flatten; of those, objects drawing at most the budget are flattened. The
+// 7-step bush's objects draw 8^k unit segments (k = 1 … 7): the 5-step one
+// (32 768) is flattened whole, the 6- and 7-step ones are walked instance by
+// instance, the smaller ones only inside the flattened one.
+TEST(GraphTracer, FlattensTheLargestObjectsWithinTheBudget) {
+    const InstanceGraph graph = graphOf(loadOk("plants/fractal_bush.lsys"), 7);
+    const GraphTracer tracer = buildGraphTracer(graph);
+    ASSERT_EQ(tracer.flattened.size(), 1u);
+    for (uint32_t object = 0; object < graph.objects.size(); ++object) {
+        const uint64_t primitives = graph.objects[object].primitives;
+        SCOPED_TRACE(primitives);
+        EXPECT_EQ(tracer.flattenedIndex[object] != kNotFlattened, primitives == 32768u);
+        EXPECT_EQ(tracer.objectWideBvhs[object].nodes.empty(), primitives <= 32768u);
+        if (tracer.flattenedIndex[object] != kNotFlattened) {
+            EXPECT_EQ(tracer.flattened[tracer.flattenedIndex[object]].leaves.size(), primitives);
+        }
+    }
+    const GraphTracer unflattened = buildGraphTracer(graph, SurfaceLibrary{}, kNoFlattening);
+    EXPECT_TRUE(unflattened.flattened.empty());
 }
 
 TEST(GraphTracer, LeafyPlantWithDecomposition) { compareTracers(graphOf(loadOk("plants/leafy_plant.lsys")), 3000); }
