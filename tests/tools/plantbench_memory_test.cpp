@@ -3,6 +3,8 @@
 // the limit (tools/plantbench/memory_check.h).
 #include "memory_check.h"
 
+#include "engine/raytrace/field_graph.h"
+
 #include <gtest/gtest.h>
 
 namespace pf {
@@ -31,6 +33,22 @@ TEST(PlantbenchMemory, FieldEstimateGrowsWithThePlants) {
     EXPECT_EQ(estimatedHostBytes(1000, CountMode::Densify), 1000 * kHostBytesPerPlant);
     // At natural densities the grown terrain's heights come on top.
     EXPECT_EQ(estimatedHostBytes(1000, CountMode::NaturalDensity), 1000 * (kHostBytesPerPlant + 16 * 4));
+}
+
+// Ray-traced shadows add the field's graph (a model's triangles once, every
+// plant's instance) and three frame-sized images.
+TEST(PlantbenchMemory, FieldEstimateCountsTheTracedShadowsGraphAndImages) {
+    const uint64_t pixels = uint64_t(1280) * 720;
+    PlantModelPool pool;
+    pool.models.resize(1);
+    pool.indices.resize(3000);
+    pool.models[0].meshes[LOD_FULL][DRAW_BARK] = {0, 3000, 0};
+    const uint64_t map = estimatedFieldBytes(1000, &pool, 1280, 720, kMsaa4);
+    const uint64_t traced = estimatedFieldBytes(1000, &pool, 1280, 720, kMsaa4, SunShadows::traced);
+    EXPECT_EQ(traced - map, fieldGraphBytes(pool, 1000) + pixels * 24);
+    EXPECT_GT(fieldGraphBytes(pool, 1000), fieldGraphBytes(PlantModelPool{}, 1000)) << "the model's triangles";
+    EXPECT_GT(fieldGraphBytes(PlantModelPool{}, 1000), 1000u * sizeof(gpu::RtInstance)) << "the plants' instances";
+    EXPECT_EQ(estimatedFieldBytes(1000, &pool, 1280, 720, kMsaa4, SunShadows::none), map);
 }
 
 // FXAA's one-sample image the colour pass draws into, besides the finished one.

@@ -1,11 +1,12 @@
 #include "memory_check.h"
 
+#include "engine/raytrace/field_graph.h"
 #include "shaders/field_layouts.h"
 
 namespace pf {
 
 uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_t width, uint32_t height,
-                             const Antialiasing& antialiasing) {
+                             const Antialiasing& antialiasing, SunShadows shadows) {
     // An instance, its visible entries in the camera's lists and in both
     // shadow-caster passes' lists, its LOD state and its naive entry.
     constexpr uint64_t kPerPlant = sizeof(gpu::FieldInstance) + 3 * LOD_COUNT * 4 + 4 + 4;
@@ -22,6 +23,8 @@ uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_
     const uint64_t pyramid = pixels * 4 * 4 / 3;
     uint64_t bytes = count * kPerPlant + target + capture + pyramid + kShadowMap;
     if (pool) bytes += pool->vertices.size() * sizeof(gpu::FieldVertex) + pool->indices.size() * 4;
+    if (shadows == SunShadows::traced)
+        bytes += fieldGraphBytes(pool ? *pool : PlantModelPool{}, count) + pixels * (16 + 4 + 4);
     return bytes;
 }
 

@@ -3,6 +3,7 @@
 // check is unit-tested with made-up limits (tests/tools/plantbench_memory_test.cpp).
 #pragma once
 
+#include "engine/field/sun_shadows.h"
 #include "engine/scene/field_content.h"
 #include "engine/scene/natural_density.h"
 #include "engine/scene/plant_models.h"
@@ -26,9 +27,11 @@ struct HeapCapacity {
 // instance (48 B), a visible-list entry per LOD (LOD_COUNT × 4 B), the LOD state
 // (4 B) and the naive list entry (4 B); the model pool's vertices and
 // indices when known; the render target (with its MSAA or FXAA image), its
-// capture buffer and the shadow map.
+// capture buffer and the shadow map; with ray-traced shadows also the
+// field's graph (fieldGraphBytes, the models' triangles when known) and the
+// frame's origins, depth and visibility (24 B a pixel).
 uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_t width, uint32_t height,
-                             const Antialiasing& antialiasing);
+                             const Antialiasing& antialiasing, SunShadows shadows = SunShadows::shadowMap);
 
 // Host bytes building a field of `count` plants needs at its peak
 // (kHostBytesPerPlant each, docs/PLANTBENCH.md): placement's grid and

@@ -199,7 +199,8 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
     r.terrainSize = content.scene.terrain.size;
     r.placementNote = content.note;
     // Again with the model pool's size, now known.
-    refuseIf(gpuMemoryProblem(count, estimatedFieldBytes(count, &content.models, o.width, o.height, o.antialiasing),
+    refuseIf(gpuMemoryProblem(count,
+                              estimatedFieldBytes(count, &content.models, o.width, o.height, o.antialiasing, o.shadows),
                               ctx.properties.deviceName, heap));
 
     FieldRenderSettings settings;
@@ -251,7 +252,7 @@ void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, S
     const bool hostHoldsGpu = ctx.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     // Refuse the whole sweep up front rather than after hours of smaller counts.
     for (uint64_t count : o.counts) {
-        const uint64_t gpuBytes = estimatedFieldBytes(count, nullptr, o.width, o.height, o.antialiasing);
+        const uint64_t gpuBytes = estimatedFieldBytes(count, nullptr, o.width, o.height, o.antialiasing, o.shadows);
         refuseIf(gpuMemoryProblem(count, gpuBytes, ctx.properties.deviceName, heap));
         const std::string host =
             hostMemoryProblem(count, estimatedHostBytes(count, countMode(o)) + (hostHoldsGpu ? gpuBytes : 0), o.memory);
