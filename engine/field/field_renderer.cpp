@@ -253,7 +253,7 @@ void FieldRenderer::createDescriptors() {
         texels(FIELD_BINDING_CLUSTER_NODES, clustered ? clusterNodes_ : placeholder, uint4),
         texels(FIELD_BINDING_CANOPY, clustered ? canopy_ : placeholder, uint4),
         texels(FIELD_BINDING_CANOPY_FAR, clustered ? clusters_.far : placeholder, uint1),
-        sampledImage(FIELD_BINDING_TRACED_SUN, kDrawStages, tracedSun_.sampler, tracedSun_.images.visibility.view)};
+        tracedSunBinding(tracedSun_, kDrawStages)};
     auto withVisible = [&](const Buffer& visible) {
         std::vector<DescriptorBinding> table = drawTable;
         for (DescriptorBinding& b : table)

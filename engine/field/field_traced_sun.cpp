@@ -11,14 +11,13 @@
 #include "shaders/traced_origin_terrain_frag.spv.h"
 
 #include <cmath>
+#include <utility>
 
 namespace pf {
 
 void FieldRenderer::createTracedSun(const std::vector<gpu::FieldInstance>& instances) {
     if (settings_.shadows != SunShadows::traced) {
-        tracedSun_.images = createTracedSunImages(ctx_, {1, 1});
-        VkSamplerCreateInfo nearest{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-        tracedSun_.sampler = createSampler(resources_, nearest);
+        tracedSun_ = createUntracedSunPass(resources_);
         return;
     }
     // A ray from anywhere on the field reaches past every plant within the
@@ -59,9 +58,8 @@ void FieldRenderer::createTracedOriginPipelines(GraphicsPipelineDesc desc, const
 // The colour pass's sets sample the visibility of the frame's size.
 void FieldRenderer::sizeTracedSun(VkExtent2D extent) {
     if (settings_.shadows != SunShadows::traced || !resizeTracedSunImages(ctx_, tracedSun_, extent)) return;
-    const DescriptorBinding visibility =
-        sampledImage(FIELD_BINDING_TRACED_SUN, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
-                     tracedSun_.sampler, tracedSun_.images.visibility.view);
+    // A write names no stages: the sets' layout keeps the colour pass's.
+    const DescriptorBinding visibility = tracedSunBinding(tracedSun_, VK_SHADER_STAGE_FRAGMENT_BIT);
     for (VkDescriptorSet set : {drawSet_, naiveSet_, shadowCacheSet_, shadowFrameSet_})
         writeSet(ctx_.device, set, {&visibility, 1});
 }
@@ -75,16 +73,14 @@ void FieldRenderer::recordTracedSunPass(VkCommandBuffer cmd, bool naive) const {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &set, 0, nullptr);
     pushFieldPass(cmd, FIELD_PASS_COLOUR);
     vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.originBark);
-    if (naive)
-        drawPlantsNaive(cmd, true, false);
-    else
-        drawClassIndirect(cmd, ctx_, cull_, DRAW_BARK, CULL_PHASE_ALL);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.originFoliage);
-    if (naive)
-        drawPlantsNaive(cmd, false, true);
-    else
-        drawClassIndirect(cmd, ctx_, cull_, DRAW_FOLIAGE, CULL_PHASE_ALL);
+    for (const auto& [drawClass, pipeline] : {std::pair{uint32_t(DRAW_BARK), pipelines_.originBark},
+                                              std::pair{uint32_t(DRAW_FOLIAGE), pipelines_.originFoliage}}) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+        if (naive)
+            drawPlantsNaive(cmd, drawClass == DRAW_BARK, drawClass == DRAW_FOLIAGE);
+        else
+            drawClassIndirect(cmd, ctx_, cull_, drawClass, CULL_PHASE_ALL);
+    }
     if (!naive) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.originImpostor);
         pushFieldPass(cmd, FIELD_PASS_COLOUR, IMPOSTOR_PART_SHADOWED);

@@ -3,6 +3,7 @@
 #include "engine/raytrace/field_graph.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/target_pass.h"
+#include "shaders/field_layouts.h"
 #include "shaders/traced_sun_layouts.h"
 
 #include "shaders/traced_sun_comp.spv.h"
@@ -20,8 +21,8 @@ std::vector<DescriptorBinding> traceTable(const TracedSunPass& pass) {
     return table;
 }
 
-} // namespace
-
+// Images of `extent`, their visibility 1 everywhere until a trace writes
+// it, in the layout the colour pass samples.
 TracedSunImages createTracedSunImages(const GpuContext& ctx, VkExtent2D extent) {
     TracedSunImages images;
     images.resources = std::make_unique<GpuResources>(ctx);
@@ -34,26 +35,35 @@ TracedSunImages createTracedSunImages(const GpuContext& ctx, VkExtent2D extent) 
     images.visibility = createImage(
         *images.resources, {extent, VK_FORMAT_R32_SFLOAT,
                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
-    // Lit everywhere until a trace writes it, in the layout the colour pass samples.
     VkClearValue lit{};
     lit.color = {{1.0f, 1.0f, 1.0f, 1.0f}};
     clearForSampling(ctx, images.visibility, VK_IMAGE_ASPECT_COLOR_BIT, lit);
     return images;
 }
 
-TracedSunPass createTracedSunPass(GpuResources& owner, const PlantModelPool& models,
-                                  std::span<const gpu::FieldInstance> plants, float fieldDiagonal) {
-    const GpuGraph packed = packFieldGraph(models, plants);
+} // namespace
+
+TracedSunPass createUntracedSunPass(GpuResources& owner) {
     TracedSunPass pass;
-    pass.graph = uploadGraph(owner, packed);
-    pass.rayLength = fieldDiagonal;
     VkSamplerCreateInfo nearest{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     nearest.addressModeU = nearest.addressModeV = nearest.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     pass.sampler = createSampler(owner, nearest);
     pass.images = createTracedSunImages(owner.ctx(), {1, 1});
+    return pass;
+}
+
+TracedSunPass createTracedSunPass(GpuResources& owner, const PlantModelPool& models,
+                                  std::span<const gpu::FieldInstance> plants, float fieldDiagonal) {
+    TracedSunPass pass = createUntracedSunPass(owner);
+    pass.graph = uploadGraph(owner, packFieldGraph(models, plants));
+    pass.rayLength = fieldDiagonal;
     pass.set = createComputeSet(owner, traceTable(pass), sizeof(gpu::TracedSunPush));
     pass.pipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_traced_sun_comp);
     return pass;
+}
+
+DescriptorBinding tracedSunBinding(const TracedSunPass& pass, VkShaderStageFlags stages) {
+    return sampledImage(FIELD_BINDING_TRACED_SUN, stages, pass.sampler, pass.images.visibility.view);
 }
 
 bool resizeTracedSunImages(const GpuContext& ctx, TracedSunPass& pass, VkExtent2D extent) {

@@ -45,14 +45,16 @@ struct TracedSunPass {
     float rayLength = 0.0f; // metres: across the whole field
 };
 
-// Packs and uploads the field's graph; owned by `owner`. Images come with
-// the first resizeTracedSunImages.
+// A renderer that does not trace: no graph, images of one texel whose
+// visibility the colour pass samples as 1. Owned by `owner`.
+TracedSunPass createUntracedSunPass(GpuResources& owner);
+// Packs and uploads the field's graph; owned by `owner`. Its images are of
+// one texel until the first resizeTracedSunImages.
 TracedSunPass createTracedSunPass(GpuResources& owner, const PlantModelPool& models,
                                   std::span<const gpu::FieldInstance> plants, float fieldDiagonal);
 
-// Images of `extent` for frames that do not trace (one texel), their
-// visibility sampled as 1 everywhere, ready for the colour pass.
-TracedSunImages createTracedSunImages(const GpuContext& ctx, VkExtent2D extent);
+// The colour pass's entry of the pass's visibility (FIELD_BINDING_TRACED_SUN).
+DescriptorBinding tracedSunBinding(const TracedSunPass& pass, VkShaderStageFlags stages);
 
 // Makes the pass's images for `extent` when its last frame was another size
 // (only while no frame is in flight). True when they were made again: the

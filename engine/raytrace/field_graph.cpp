@@ -1,5 +1,7 @@
 #include "engine/raytrace/field_graph.h"
 
+#include "lsystem/instance_graph.h"
+
 #include <glm/gtc/packing.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -58,18 +60,6 @@ ModelObject appendModelTriangles(GpuGraph& packed, const PlantModelPool& pool, c
     return object;
 }
 
-// The box of a plant: its model's box turned by its yaw, scaled and placed.
-lsys::Bounds placedBounds(const lsys::Bounds& model, const gpu::RtInstance& plant) {
-    const glm::quat rotation(plant.rotation.w, plant.rotation.x, plant.rotation.y, plant.rotation.z);
-    lsys::Bounds placed;
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? model.max.x : model.min.x, (corner & 2) ? model.max.y : model.min.y,
-                          (corner & 4) ? model.max.z : model.min.z);
-        placed.extend(plant.position + rotation * (p * plant.scale));
-    }
-    return placed;
-}
-
 } // namespace
 
 uint64_t fieldGraphBytes(const PlantModelPool& models, size_t plants) {
@@ -109,8 +99,10 @@ GpuGraph packFieldGraph(const PlantModelPool& models, std::span<const gpu::Field
                                        0,
                                        0};
         itemWords.push_back(RAYTRACE_ITEM_INSTANCE | uint32_t(packed.instances.size()));
-        boxes.push_back(objects.at(model).bounds.empty() ? lsys::Bounds{}
-                                                         : placedBounds(objects[model].bounds, instance));
+        // The model's box scaled (an empty one stays empty), turned by the yaw and placed.
+        const lsys::Bounds& local = objects.at(model).bounds;
+        boxes.push_back(
+            lsys::transformed({local.min * instance.scale, local.max * instance.scale}, {instance.position, yaw}));
         packed.instances.push_back(instance);
     }
     // A plant is a whole subtree: one a leaf, as the graph tracer's objects (kGraphObjectLeafSize).

@@ -23,14 +23,13 @@ namespace pf {
 // triangles a leaf cost more tests per ray.
 inline constexpr uint32_t kFieldTrianglesPerPrimitive = 4;
 
-// A primitive's material in the field graph is its triangles' SURFACE_*
-// kind; the cut-out test of leaf cards (shaders/traced_sun.comp) reads the
-// texture coordinates each triangle corner keeps in its w, two halves packed
-// (glm::packHalf2x16).
 // Host bytes packFieldGraph needs at most for these models and this many
 // plants: checked against a memory budget before packing.
 uint64_t fieldGraphBytes(const PlantModelPool& models, size_t plants);
 
+// A primitive's material is its triangles' SURFACE_* kind; the cut-out test
+// of leaf cards (shaders/traced_sun.comp) reads the texture coordinates each
+// triangle corner keeps in its w, two halves packed (glm::packHalf2x16).
 // Throws GpuGraphError when the traversal's arrays cannot hold the field.
 GpuGraph packFieldGraph(const PlantModelPool& models, std::span<const gpu::FieldInstance> plants);
 

@@ -23,6 +23,12 @@ FieldShotResult FieldSequence::frame(const FieldView& view) {
     return result;
 }
 
+std::vector<int> shadowDarkening(const RgbaImage& lit, const RgbaImage& shadowed) {
+    std::vector<int> d(lit.pixels.size() / 4);
+    for (size_t i = 0; i < d.size(); ++i) d[i] = int(lit.pixels[i * 4 + 1]) - int(shadowed.pixels[i * 4 + 1]);
+    return d;
+}
+
 FieldShotResult renderField(const GpuContext& ctx, const FieldShot& shot) {
     FieldRenderSettings settings;
     settings.shadows = shot.shadows;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace pf::test {
 
@@ -32,6 +33,10 @@ struct FieldShotResult {
 
 // One frame of a fresh renderer.
 FieldShotResult renderField(const GpuContext& ctx, const FieldShot& shot);
+
+// Green-channel darkening by shadows at each pixel: the frame without
+// shadows minus the frame with them.
+std::vector<int> shadowDarkening(const RgbaImage& lit, const RgbaImage& shadowed);
 
 // One renderer drawing frame after frame, as a window or a --frames sequence does.
 class FieldSequence {

@@ -85,14 +85,6 @@ TEST_F(ShadowCacheTest, FrameDrawnWithTheCacheEqualsTheMapDrawnFromScratch) {
     EXPECT_LE(diff.failingFraction, kFieldTolerance.failingPixelFraction);
 }
 
-// Green-channel darkening by shadows at each pixel: the frame without
-// shadows minus the frame with them.
-std::vector<int> shadowDarkening(const RgbaImage& lit, const RgbaImage& shadowed) {
-    std::vector<int> d(lit.pixels.size() / 4);
-    for (size_t i = 0; i < d.size(); ++i) d[i] = int(lit.pixels[i * 4 + 1]) - int(shadowed.pixels[i * 4 + 1]);
-    return d;
-}
-
 // gust.json from its camera: while the cache is kept, the shadows the
 // swaying tree and bushes cast move from one frame to the next.
 TEST_F(ShadowCacheTest, ShadowsOfSwayingPlantsMoveWhileTheCacheIsKept) {

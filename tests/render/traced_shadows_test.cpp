@@ -31,9 +31,8 @@ FieldShot nearShot(SunShadows shadows) {
 constexpr int kShadowedDarkening = 12;
 
 std::vector<bool> shadowedPixels(const RgbaImage& lit, const RgbaImage& shadowed) {
-    std::vector<bool> inShadow(lit.pixels.size() / 4);
-    for (size_t i = 0; i < inShadow.size(); ++i)
-        inShadow[i] = int(lit.pixels[i * 4 + 1]) - int(shadowed.pixels[i * 4 + 1]) > kShadowedDarkening;
+    std::vector<bool> inShadow;
+    for (int darkening : shadowDarkening(lit, shadowed)) inShadow.push_back(darkening > kShadowedDarkening);
     return inShadow;
 }
 
