@@ -9,7 +9,7 @@
 // pose_ms the passes' own scopes (recordPhysicsPass); wall_ms adds the
 // submit and the wait. The counter joint_steps_per_ms is joints × sub-steps per
 // millisecond of that time (GPU: timestamps; CPU: wall time of one thread).
-#include "options.h"
+#include "tools/field_options.h"
 
 #include "engine/physics/physics_pass.h"
 #include "engine/scene/plant_models.h"

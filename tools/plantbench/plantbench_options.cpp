@@ -1,11 +1,8 @@
 #include "plantbench_options.h"
 
-#include "tools/plantfield/options.h"
-
-#include "engine/vk/device.h"
 #include "lsystem/output_file.h"
 #include "shaders/field_layouts.h"
-#include "tools/memory_budget_option.h"
+#include "tools/field_options.h"
 
 #include <CLI/CLI.hpp>
 #include <plantfield_version.h>
@@ -81,9 +78,7 @@ bool onPath(const std::string& program) {
 
 std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, int* exitCode) {
     PlantbenchOptions o;
-    o.validation = validationWantedByDefault();
-    o.scenePath = defaultScenePath();
-    std::string countsText, sizeText = "1280x720";
+    std::string countsText;
 
     CLI::App app{"plantbench: measures how the GPU-driven field frame's cost grows with the number of plants\n"
                  "(docs/PLANTBENCH.md). For each count it builds the scene's field with that many plants, renders\n"
@@ -93,10 +88,8 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
                "  plantbench --counts 1000,10000,100000 --compare naive\n"
                "  plantbench data/scenes/valley.json --counts 1000000 --path 8   the worst frame along the path\n"
                "  plantbench data/scenes/default.json --counts 1000,10000 --json sweep.json --csv sweep.csv "
-               "--plot sweep.png\n"
-               "Environment: PLANTFIELD_DEVICE picks the device by name, PLANTFIELD_VALIDATION=1 turns on\n"
-               "the Khronos validation layer, PLANTFIELD_DATA_DIR replaces the data folder.");
-    app.add_option("scene", o.scenePath, "Scene file (.json)")->default_str("data/scenes/default.json");
+               "--plot sweep.png\n" +
+               std::string(kFieldToolEnvironment));
     app.add_option("--counts", countsText, "Plant counts to measure, comma-separated, e.g. 1000,10000,100000")
         ->required();
     app.add_option("--frames", o.frames, "Measured frames per count")
@@ -105,17 +98,8 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     app.add_option("--warmup", o.warmup, "Frames rendered before measuring (shaders compile on the first)")
         ->check(CLI::Range(0u, 100000u))
         ->default_val(o.warmup);
-    app.add_option("--size", sizeText, "Render size as WIDTHxHEIGHT (1 to 16384 per side)")->default_str(sizeText);
-    AntialiasFlags antialias;
-    addAntialiasOptions(app, antialias);
-    addSunShadowsOptions(app, o.shadows);
-    app.add_flag("--occlusion", o.occlusionCulling,
-                 "Occlusion culling against the depth pyramid (docs/CULLING.md; off by default)");
-    app.add_flag("!--no-clusters", o.clusters,
-                 "Send every plant through the per-plant cull every frame, no far canopy (docs/CLUSTERS.md)");
-    checkFiniteIn(*app.add_option("--time", o.time, "Scene time of the camera on the scene's camera path, seconds")
-                       ->default_val(o.time),
-                  0.0, kMaxSceneTime);
+    FieldToolTexts shared;
+    addFieldToolOptions(app, o, shared);
     std::string pathText;
     app.add_option("--path", pathText,
                    "Measure at K times spread evenly over the camera path (default " +
@@ -143,42 +127,18 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     app.add_option("--json", o.jsonPath, "Write the results as JSON to this file");
     app.add_option("--csv", o.csvPath, "Write one row per count as CSV to this file");
     app.add_option("--plot", o.plotPath, "Draw ms per pass against plants (log-log) to this PNG with gnuplot");
-    app.add_option("--seed", o.seed, "Replace the scene's seed (terrain, plants and placement change)");
-    app.add_option("--device", o.deviceName, "Use the Vulkan device whose name contains this text");
-    app.add_flag("--validation,!--no-validation", o.validation,
-                 "Enable the Khronos validation layer (default: on in debug builds)");
-    tools::addMemoryBudgetOption(app, o.memory);
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        if (e.get_exit_code() == 0) {
-            *exitCode = app.exit(e);
-            return std::nullopt;
-        }
-        std::cerr << "plantbench: error: " << e.what() << "\nRun 'plantbench --help' for usage.\n";
-        *exitCode = 2;
-        return std::nullopt;
-    }
-
+    if (!parseToolCommandLine(app, argc, argv, "plantbench", exitCode)) return std::nullopt;
     auto fail = [&](const std::string& message) {
-        std::cerr << "plantbench: error: " << message << "\n";
-        *exitCode = 2;
+        reportBadOption("plantbench", message, exitCode);
         return std::nullopt;
     };
     std::string problem;
     const auto counts = parseCounts(countsText, FIELD_MAX_INSTANCES, &problem);
     if (!counts) return fail("invalid --counts '" + countsText + "': " + problem);
     o.counts = *counts;
-    const std::optional<ImageSize> size = parseImageSize(sizeText);
-    if (!size)
-        return fail("invalid --size '" + sizeText +
-                    "': expected WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720");
-    o.width = size->width;
-    o.height = size->height;
-    const std::optional<Antialiasing> antialiasing = antialiasingOf(antialias, &problem);
-    if (!antialiasing) return fail(problem);
-    o.antialiasing = *antialiasing;
+    problem = finishFieldToolOptions(shared, o);
+    if (!problem.empty()) return fail(problem);
     o.compareNaive = compare == "naive";
     if (app.count("--path")) {
         const auto times = parsePathTimes(pathText, &problem);

@@ -1,9 +1,7 @@
 // Command-line options of plantbench, parsed and checked before any GPU work.
 #pragma once
 
-#include "engine/field/sun_shadows.h"
-#include "engine/vk/antialiasing.h"
-#include "lsystem/memory_budget.h"
+#include "tools/field_options.h"
 
 #include <cstdint>
 #include <optional>
@@ -24,17 +22,11 @@ inline constexpr uint32_t kMaxPathTimes = 1000;
 // kDefaultPathTimes. nullopt for anything else, `problem` says why.
 std::optional<uint32_t> parsePathTimes(const std::string& text, std::string* problem);
 
-struct PlantbenchOptions {
-    std::string scenePath;
-    std::vector<uint64_t> counts; // plants per sweep step, in the order given
-    uint32_t frames = 10;         // measured frames per count (and per path)
-    uint32_t warmup = 2;          // frames rendered first and not measured
-    uint32_t width = 1280, height = 720;
-    Antialiasing antialiasing;
-    SunShadows shadows = SunShadows::shadowMap;
-    bool occlusionCulling = false;     // true: --occlusion
-    bool clusters = true;              // false: --no-clusters
-    double time = 0.0;                 // scene time of the camera on its path
+// Besides the options both field tools take (tools/field_options.h).
+struct PlantbenchOptions : FieldToolOptions {
+    std::vector<uint64_t> counts;      // plants per sweep step, in the order given
+    uint32_t frames = 10;              // measured frames per count (and per path)
+    uint32_t warmup = 2;               // frames rendered first and not measured
     std::optional<uint32_t> pathTimes; // --path: measure at this many times along the camera path instead
     // --fly: the camera follows its path through the measured frames, this
     // many frames a scene second, as in a window; otherwise it stays.
@@ -43,10 +35,6 @@ struct PlantbenchOptions {
     bool compareNaive = false;
     uint64_t naiveMax = 100000; // counts above this skip the naive path
     std::string jsonPath, csvPath, plotPath;
-    std::optional<uint32_t> seed;
-    std::string deviceName;
-    bool validation = false;
-    lsys::MemoryBudget memory; // --memory-budget: every count's host memory, and each stage building it
 };
 
 // Parses argv. On --help prints usage and sets *exitCode to 0; on a bad flag

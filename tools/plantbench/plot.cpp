@@ -111,7 +111,7 @@ std::string script(const PlantbenchOptions& o, const SweepResult& result, const 
                    const std::string& terminal, const std::string& output) {
     const std::string scene = fs::path(result.scenePath).filename().string();
     std::ostringstream title;
-    title << "plantbench: " << scene << " on " << result.device << ", " << o.width << "x" << o.height << ", "
+    title << "plantbench: " << scene << " on " << result.device << ", " << o.size.width << "x" << o.size.height << ", "
           << antialiasingText(o.antialiasing) << ", median of " << o.frames << " frames";
     // With --path every count's point is its worst time's.
     const std::string panelTitle = o.pathTimes ? "Milliseconds per frame, the worst of " +

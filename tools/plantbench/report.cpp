@@ -167,10 +167,10 @@ void printSummaryTable(std::ostream& out, const PlantbenchOptions& o, const Swee
         row.push_back(cell(naiveRatio(r), 1));
         rows.push_back(row);
     }
-    out << "plantbench: " << result.scenePath << " on " << result.device << ", " << o.width << "x" << o.height << ", "
-        << antialiasingText(o.antialiasing) << ", shadows " << sunShadowsName(o.shadows) << ", occlusion culling "
-        << (o.occlusionCulling ? "on" : "off") << ", median of " << o.frames << " frames after " << o.warmup
-        << " warm-up";
+    out << "plantbench: " << result.scenePath << " on " << result.device << ", " << o.size.width << "x" << o.size.height
+        << ", " << antialiasingText(o.antialiasing) << ", shadows " << sunShadowsName(o.shadows)
+        << ", occlusion culling " << (o.occlusionCulling ? "on" : "off") << ", median of " << o.frames
+        << " frames after " << o.warmup << " warm-up";
     if (o.pathTimes) out << ", the worst of " << *o.pathTimes << " times along the camera path";
     if (o.flyFps) out << ", the camera flying at " << fixed(*o.flyFps, 1) << " frames a second";
     out << (o.densify ? ", counts densified on the scene's terrain" : ", counts at the scene's densities") << "\n";
@@ -191,7 +191,7 @@ nlohmann::json sweepJson(const PlantbenchOptions& o, const SweepResult& result) 
     nlohmann::json j;
     j["scene"] = result.scenePath;
     j["device"] = result.device;
-    j["size"] = {o.width, o.height};
+    j["size"] = {o.size.width, o.size.height};
     j["antialiasing"] = antialiasMethodName(o.antialiasing.method);
     j["samples"] = colourPassSamples(o.antialiasing);
     j["shadows"] = sunShadowsName(o.shadows);

@@ -199,9 +199,9 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
     r.terrainSize = content.scene.terrain.size;
     r.placementNote = content.note;
     // Again with the model pool's size, now known.
-    refuseIf(gpuMemoryProblem(count,
-                              estimatedFieldBytes(count, &content.models, o.width, o.height, o.antialiasing, o.shadows),
-                              ctx.properties.deviceName, heap));
+    refuseIf(gpuMemoryProblem(
+        count, estimatedFieldBytes(count, &content.models, o.size.width, o.size.height, o.antialiasing, o.shadows),
+        ctx.properties.deviceName, heap));
 
     FieldRenderSettings settings;
     settings.antialiasing = o.antialiasing;
@@ -211,7 +211,7 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
     settings.memory = o.memory;
     showProgress(progress, 0.0, "uploading the field and baking impostors");
     FieldRenderer renderer(ctx, std::move(content), settings);
-    FrameResources frame(ctx, {o.width, o.height}, renderer.antialiasing());
+    FrameResources frame(ctx, {o.size.width, o.size.height}, renderer.antialiasing());
 
     const bool naive = o.compareNaive && count <= o.naiveMax;
     const std::vector<double> times = measuredTimes(o, scene);
@@ -252,7 +252,8 @@ void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, S
     const bool hostHoldsGpu = ctx.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     // Refuse the whole sweep up front rather than after hours of smaller counts.
     for (uint64_t count : o.counts) {
-        const uint64_t gpuBytes = estimatedFieldBytes(count, nullptr, o.width, o.height, o.antialiasing, o.shadows);
+        const uint64_t gpuBytes =
+            estimatedFieldBytes(count, nullptr, o.size.width, o.size.height, o.antialiasing, o.shadows);
         refuseIf(gpuMemoryProblem(count, gpuBytes, ctx.properties.deviceName, heap));
         const std::string host =
             hostMemoryProblem(count, estimatedHostBytes(count, countMode(o)) + (hostHoldsGpu ? gpuBytes : 0), o.memory);

@@ -1,19 +1,14 @@
 #include "options.h"
 
 #include "engine/image/video_encoder.h"
-#include "engine/vk/device.h"
 #include "lsystem/output_file.h"
 #include "shaders/field_layouts.h"
-#include "tools/data_dir.h"
-#include "tools/memory_budget_option.h"
 
 #include <CLI/CLI.hpp>
 #include <plantfield_version.h>
 
 #include <cctype>
 #include <charconv>
-#include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <initializer_list>
 #include <iostream>
@@ -21,35 +16,6 @@
 #include <vector>
 
 namespace pf {
-namespace {
-
-constexpr uint32_t kMaxImageSide = 16384;
-
-bool parseSide(const char* first, const char* last, uint32_t& out) {
-    auto [end, ec] = std::from_chars(first, last, out);
-    return ec == std::errc() && end == last && out > 0 && out <= kMaxImageSide;
-}
-
-// The whole of `text` as a finite number, or nullopt (from_chars takes "nan"
-// and "inf", and parses a prefix).
-template <class T>
-std::optional<T> finiteNumber(std::string_view text) {
-    T value{};
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
-    return value;
-}
-
-} // namespace
-
-std::optional<ImageSize> parseImageSize(const std::string& text) {
-    const size_t x = text.find('x');
-    if (x == std::string::npos || x == 0 || x + 1 == text.size()) return std::nullopt;
-    ImageSize size;
-    const char* s = text.data();
-    if (!parseSide(s, s + x, size.width) || !parseSide(s + x + 1, s + text.size(), size.height)) return std::nullopt;
-    return size;
-}
 
 std::optional<Wind> parseWind(const std::string& text) {
     const size_t comma = text.find(',');
@@ -79,64 +45,8 @@ std::optional<FrameRange> parseFrameRange(const std::string& text) {
     return range;
 }
 
-void checkFiniteIn(CLI::Option& option, double min, double max) {
-    option.check(
-        [min, max](const std::string& text) -> std::string {
-            const std::optional<double> number = finiteNumber<double>(text);
-            if (!number) return "'" + text + "' is not a finite number";
-            const double value = *number;
-            if (value < min || value > max)
-                return "'" + text + "' is outside " + CLI::detail::to_string(min) + " to " +
-                       CLI::detail::to_string(max);
-            return {};
-        },
-        "FINITE");
-}
-
-void addAntialiasOptions(CLI::App& app, AntialiasFlags& flags) {
-    const CLI::Validator method(
-        [](std::string& name) { return antialiasMethodNamed(name) ? "" : "expected fxaa, msaa or none"; },
-        "fxaa|msaa|none");
-    app.add_option("--aa", flags.method,
-                   "Anti-aliasing: fxaa (one sample a pixel, then an FXAA pass), msaa (--samples a pixel,\n"
-                   "resolved) or none")
-        ->check(method)
-        ->default_str(flags.method);
-    app.add_option("--samples", flags.samples,
-                   "With --aa msaa: samples a pixel, 2, 4 or 8 (default 4; lowered to what the device supports)")
-        ->check(CLI::IsMember({2, 4, 8}));
-}
-
-void addSunShadowsOptions(CLI::App& app, SunShadows& shadows) {
-    app.add_option_function<std::string>(
-           "--shadows", [&shadows](const std::string& name) { shadows = *sunShadowsNamed(name); },
-           "The sun's shadows: map (a shadow map over the field near the camera), raytraced (a ray a pixel\n"
-           "to the sun through the field's plants, docs/RAYTRACING.md) or none (default map)")
-        ->check(CLI::IsMember({"map", "raytraced", "none"}))
-        ->type_name("map|raytraced|none");
-    app.add_flag_callback(
-        "--no-shadows", [&shadows] { shadows = SunShadows::none; }, "No sun shadows (--shadows none)");
-}
-
-std::optional<Antialiasing> antialiasingOf(const AntialiasFlags& flags, std::string* problem) {
-    Antialiasing aa;
-    aa.method = *antialiasMethodNamed(flags.method);
-    if (flags.samples && aa.method != AntialiasMethod::msaa) {
-        *problem =
-            "--samples is the MSAA sample count: it needs --aa msaa (anti-aliasing is --aa " + flags.method + ")";
-        return std::nullopt;
-    }
-    aa.msaaSamples = flags.samples.value_or(aa.msaaSamples);
-    return aa;
-}
-
-std::string defaultScenePath() { return dataDirectory() + "/scenes/default.json"; }
-
 std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, int* exitCode) {
     PlantfieldOptions o;
-    o.validation = validationWantedByDefault();
-    std::string sizeText = "1280x720";
-    o.scenePath = defaultScenePath();
 
     CLI::App app{"plantfield: renders a field of L-system plants (a scene file, docs/SCENE_FORMAT.md), in a window\n"
                  "or headless to PNG."};
@@ -151,10 +61,10 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                "  plantfield --capture frame.png --aa msaa            4x multisampling instead of FXAA\n"
                "  plantfield --export field.glb                       the default forest as glTF, no GPU needed\n"
                "  plantfield --plant data/plants/spruce.lsys --capture s.png   one plant, framed by an orbit camera\n"
-               "  plantfield --plant my_plant.lsys --window --watch   regrown in the window at each save\n"
-               "Environment: PLANTFIELD_DEVICE picks the device by name, PLANTFIELD_VALIDATION=1 turns on\n"
-               "the Khronos validation layer, PLANTFIELD_DATA_DIR replaces the data folder.");
-    app.add_option("scene", o.scenePath, "Scene file (.json)")->default_str("data/scenes/default.json");
+               "  plantfield --plant my_plant.lsys --window --watch   regrown in the window at each save\n" +
+               std::string(kFieldToolEnvironment));
+    FieldToolTexts shared;
+    addFieldToolOptions(app, o, shared);
     app.add_option("--plant", o.plantPath,
                    "Preview one plant instead of a scene: an L-system file (.lsys, .l), a vlab object folder,\n"
                    "a ramification tree (.ram.json) or a component plant (.comp.json),\n"
@@ -176,8 +86,6 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                                   "With --plant: degrees the camera turns around the plant a scene second (--frames)"),
                   -36000.0, 36000.0);
     app.add_option("--capture", o.capturePath, "Render one frame headless and write it to this PNG file");
-    app.add_option("--size", sizeText, "Image or window size as WIDTHxHEIGHT (1 to 16384 per side)")
-        ->default_str("1280x720");
     app.add_flag("--window", o.window, "Open a window: camera-path playback and free flight");
     app.add_flag("--watch", o.watch,
                  "With --window: rebuild whenever the scene file, a plant file it uses (L-system, vlab object\n"
@@ -207,14 +115,12 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                    "run's; the frames before A are rendered too, not written, for the motion they carry\n"
                    "(docs/FARM.md)")
         ->type_name("A:B");
-    checkFiniteIn(*app.add_option("--time", o.time, "Scene time of the (first) frame in seconds"), 0.0, kMaxSceneTime);
     app.add_option("--instances", o.instances,
                    "Exactly this many generated plants at the scene's densities: they fill a square around the\n"
                    "origin that grows with N, the noise terrain growing with it (hand-placed plants come on top)")
         ->check(CLI::Range(uint64_t(1), uint64_t(FIELD_MAX_INSTANCES)));
     app.add_flag("--densify", o.densify,
                  "With --instances: keep the scene's terrain and scale every plant distance to fit N on it");
-    app.add_option("--seed", o.seed, "Replace the scene's seed (terrain, plants and placement change)");
     app.add_flag(
         "--stats", o.stats,
         "Print JSON statistics of the (last) frame: plants per LOD, culled, occluded, draws, triangles, GPU ms per\n"
@@ -241,51 +147,18 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
         ->check(CLI::Range(uint32_t(0), kMaxJointBudget));
     app.add_option("--lod", o.forcedLod, "Draw every visible plant at this LOD: 0 full, 1 reduced, 2 impostor")
         ->check(CLI::Range(0, 2));
-    addSunShadowsOptions(app, o.shadows);
-    app.add_flag("--occlusion", o.occlusionCulling,
-                 "Occlusion culling: do not draw the plants behind the depth pyramid of what the previous\n"
-                 "frame's visible plants and the terrain cover (docs/CULLING.md; off by default: on a CPU\n"
-                 "rasteriser it costs more than it saves)");
     app.add_flag("!--no-shadow-cache", o.shadowCache,
                  "Draw the shadow map's static casters again every frame instead of keeping them while the camera "
                  "stays near");
-    app.add_flag("!--no-clusters", o.clusters,
-                 "Send every plant through the per-plant cull every frame: no quadtree of clusters, no far canopy\n"
-                 "(docs/CLUSTERS.md)");
-    app.add_option("--device", o.deviceName, "Use the Vulkan device whose name contains this text");
     app.add_flag("--list-devices", o.listDevices, "List the Vulkan devices and exit");
-    app.add_flag("--validation,!--no-validation", o.validation,
-                 "Enable the Khronos validation layer (default: on in debug builds)");
-    AntialiasFlags antialias;
-    addAntialiasOptions(app, antialias);
-    tools::addMemoryBudgetOption(app, o.memory);
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        if (e.get_exit_code() == 0) {
-            *exitCode = app.exit(e);
-            return std::nullopt;
-        }
-        std::cerr << "plantfield: error: " << e.what() << "\nRun 'plantfield --help' for usage.\n";
-        *exitCode = 2;
-        return std::nullopt;
-    }
-
+    if (!parseToolCommandLine(app, argc, argv, "plantfield", exitCode)) return std::nullopt;
     auto fail = [&](const std::string& message) {
-        std::cerr << "plantfield: error: " << message << "\n";
-        *exitCode = 2;
+        reportBadOption("plantfield", message, exitCode);
         return std::nullopt;
     };
-    const std::optional<ImageSize> size = parseImageSize(sizeText);
-    if (!size)
-        return fail("invalid --size '" + sizeText +
-                    "': expected WIDTHxHEIGHT with each side 1 to 16384, e.g. 1280x720");
-    o.size = *size;
-    std::string problem;
-    const std::optional<Antialiasing> antialiasing = antialiasingOf(antialias, &problem);
-    if (!antialiasing) return fail(problem);
-    o.antialiasing = *antialiasing;
+    const std::string problem = finishFieldToolOptions(shared, o);
+    if (!problem.empty()) return fail(problem);
     if (!windText.empty()) {
         const std::optional<Wind> wind = parseWind(windText);
         if (!wind)

@@ -1,7 +1,7 @@
 #include "render_bindings.h"
 
 #include "tools/data_dir.h"
-#include "tools/plantfield/options.h"
+#include "tools/field_options.h"
 
 #include "engine/image/image.h"
 #include "engine/offline/frame_stats_json.h"
@@ -41,7 +41,7 @@ std::string defaultScenePath() {
     // dataDirectoryFrom takes a file's path and looks beside its folder.
     return pf::dataDirectoryFrom(std::getenv("PLANTFIELD_DATA_DIR"), module, PLANTFIELD_INSTALL_DATA_RELATIVE,
                                  PLANTFIELD_DATA_DIR) +
-           "/scenes/default.json"; // as plantfield's defaultScenePath (tools/plantfield/options.h)
+           "/scenes/default.json"; // as the tools' defaultScenePath (tools/field_options.h)
 }
 
 // What plantfield.render and Renderer take besides the scene.
