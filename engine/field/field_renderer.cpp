@@ -83,11 +83,6 @@ Heightfield decimated(const Heightfield& terrain, uint32_t maxSamples) {
 
 } // namespace
 
-bool nestedInColourPass(std::string_view pass) {
-    const auto colour = std::find(std::begin(kFieldPasses), std::end(kFieldPasses), std::string_view("colour"));
-    return std::find(std::next(colour), std::end(kFieldPasses), pass) != std::end(kFieldPasses);
-}
-
 FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const FieldRenderSettings& settings)
     : ctx_(ctx), content_(std::move(content)), settings_(settings), resources_(ctx) {
     settings_.antialiasing = supportedAntialiasing(ctx_, settings.antialiasing);
@@ -390,7 +385,7 @@ void FieldRenderer::pushFieldPass(VkCommandBuffer cmd, uint32_t pass, uint32_t i
 void FieldRenderer::drawPlantLists(VkCommandBuffer cmd, uint32_t phase, GpuTimer* timer) const {
     const bool late = phase == CULL_PHASE_LATE;
     {
-        TimedScope scope(cmd, late ? nullptr : timer, "plants", ScopeStart::insideRendering);
+        TimedFieldScope scope(cmd, late ? nullptr : timer, FieldScope::plants, ScopeStart::insideRendering);
         vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.bark);
         drawClassIndirect(cmd, ctx_, cull_, DRAW_BARK, phase);
@@ -401,7 +396,7 @@ void FieldRenderer::drawPlantLists(VkCommandBuffer cmd, uint32_t phase, GpuTimer
         // The list twice: those the shadow map may reach, then the rest with
         // no shadow lookup (shaders/sunlit_select.h); each draw drops the
         // other's impostors in its vertex shader.
-        TimedScope scope(cmd, late ? nullptr : timer, "impostors", ScopeStart::insideRendering);
+        TimedFieldScope scope(cmd, late ? nullptr : timer, FieldScope::impostors, ScopeStart::insideRendering);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.impostor);
         pushFieldPass(cmd, FIELD_PASS_COLOUR, IMPOSTOR_PART_SHADOWED);
         drawClassIndirect(cmd, ctx_, cull_, DRAW_IMPOSTOR, phase);
@@ -417,14 +412,14 @@ void FieldRenderer::drawPlantLists(VkCommandBuffer cmd, uint32_t phase, GpuTimer
 void FieldRenderer::recordLatePhase(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const {
     vkCmdEndRendering(cmd);
     {
-        TimedScope scope(cmd, timer, "depth_pyramid");
+        TimedFieldScope scope(cmd, timer, FieldScope::depthPyramid);
         recordDepthPyramid(cmd, target.pyramid);
     }
     {
-        TimedScope scope(cmd, timer, "occlusion");
+        TimedFieldScope scope(cmd, timer, FieldScope::occlusion);
         recordCullPass(cmd, cull_, CULL_PHASE_LATE, target.pyramid.readSet);
     }
-    TimedScope scope(cmd, timer, "late_draws");
+    TimedFieldScope scope(cmd, timer, FieldScope::lateDraws);
     beginTargetPass(cmd, target, TargetPassPart::last);
     pushFieldPass(cmd, FIELD_PASS_COLOUR);
     drawPlantLists(cmd, CULL_PHASE_LATE, timer);
@@ -435,8 +430,8 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
     // The whole pass, anti-aliasing included, is one scope: tiling and CPU
     // rasterisers (lavapipe) shade at the end of the pass, so the draw scopes
     // inside it measure only their share of vertex work and binning there.
-    // The FXAA pass (kAntialiasScope) is a rendering of its own after it.
-    TimedScope pass(cmd, timer, "colour");
+    // The FXAA pass (FieldScope::antialias) is a rendering of its own after it.
+    TimedFieldScope pass(cmd, timer, FieldScope::colour);
     const bool twoParts = !naive && occlusion();
     const VkDescriptorSet set = naive ? naiveSet_ : drawSet_;
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineLayout_, 0, 1, &set, 0, nullptr);
@@ -444,19 +439,20 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
     pushFieldPass(cmd, FIELD_PASS_COLOUR);
     if (naive) {
         {
-            TimedScope scope(cmd, timer, "plants", ScopeStart::insideRendering);
+            TimedFieldScope scope(cmd, timer, FieldScope::plants, ScopeStart::insideRendering);
             vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.bark);
             drawPlantsNaive(cmd, true, false);
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.foliage);
             drawPlantsNaive(cmd, false, true);
         }
-        TimedScope scope(cmd, timer, "impostors", ScopeStart::insideRendering); // the naive baseline draws no impostors
+        TimedFieldScope scope(cmd, timer, FieldScope::impostors,
+                              ScopeStart::insideRendering); // the naive baseline draws no impostors
     } else {
         drawPlantLists(cmd, twoParts ? CULL_PHASE_EARLY : CULL_PHASE_ALL, timer);
     }
     {
-        TimedScope scope(cmd, timer, "canopy", ScopeStart::insideRendering);
+        TimedFieldScope scope(cmd, timer, FieldScope::canopy, ScopeStart::insideRendering);
         if (!naive && settings_.clusters.enabled && drawCanopy_) {
             // One instance per far node; the cluster pass wrote the count.
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.canopy);
@@ -465,7 +461,7 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
         }
     }
     {
-        TimedScope scope(cmd, timer, "terrain_sky", ScopeStart::insideRendering);
+        TimedFieldScope scope(cmd, timer, FieldScope::terrainSky, ScopeStart::insideRendering);
         // Last, behind everything: only pixels no plant covers are shaded
         // (the depth test runs before these shaders, which never discard).
         // With occlusion culling the terrain is the early phase's main
@@ -485,13 +481,13 @@ void FieldRenderer::recordColourPass(VkCommandBuffer cmd, const RenderTarget& ta
         recordLatePhase(cmd, target, timer);
     } else {
         // Every frame has the same scopes.
-        for (const char* name : {"depth_pyramid", "occlusion", "late_draws"})
-            TimedScope scope(cmd, timer, name, ScopeStart::insideRendering);
+        for (FieldScope late : {FieldScope::depthPyramid, FieldScope::occlusion, FieldScope::lateDraws})
+            TimedFieldScope scope(cmd, timer, late, ScopeStart::insideRendering);
     }
     {
         // Last, over everything opaque and the sky: their shadows on the
         // ground, then the clouds back to front.
-        TimedScope scope(cmd, timer, "clouds", ScopeStart::insideRendering);
+        TimedFieldScope scope(cmd, timer, FieldScope::clouds, ScopeStart::insideRendering);
         recordCloudShadowPass(cmd, cloudShadows_, terrainIndices_, terrainRanges_, cloudDrift_);
         recordCloudPass(cmd, clouds_);
     }
@@ -502,15 +498,15 @@ void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuT
     if (timer) resetGpuTimer(cmd, *timer);
     recordFieldMotion(cmd, motion_, timer);
     {
-        TimedScope scope(cmd, timer, "clusters");
+        TimedFieldScope scope(cmd, timer, FieldScope::clusters);
         if (settings_.clusters.enabled) recordClusterPass(cmd, clusters_);
     }
     {
-        TimedScope scope(cmd, timer, "cull");
+        TimedFieldScope scope(cmd, timer, FieldScope::cull);
         recordCullPass(cmd, cull_, occlusion() ? CULL_PHASE_EARLY : CULL_PHASE_ALL);
     }
     {
-        TimedScope scope(cmd, timer, "shadow");
+        TimedFieldScope scope(cmd, timer, FieldScope::shadow);
         if (settings_.shadows == SunShadows::shadowMap) recordShadowPass(cmd);
         if (settings_.shadows == SunShadows::traced) recordTracedSunPass(cmd, false);
     }
@@ -520,10 +516,10 @@ void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuT
 void FieldRenderer::recordNaive(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const {
     if (timer) resetGpuTimer(cmd, *timer);
     recordFieldMotion(cmd, motion_, timer);
-    { TimedScope scope(cmd, timer, "clusters"); }
-    { TimedScope scope(cmd, timer, "cull"); }
+    { TimedFieldScope scope(cmd, timer, FieldScope::clusters); }
+    { TimedFieldScope scope(cmd, timer, FieldScope::cull); }
     {
-        TimedScope scope(cmd, timer, "shadow");
+        TimedFieldScope scope(cmd, timer, FieldScope::shadow);
         if (settings_.shadows == SunShadows::shadowMap) recordNaiveShadowPass(cmd);
         if (settings_.shadows == SunShadows::traced) recordTracedSunPass(cmd, true);
     }

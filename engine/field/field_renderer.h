@@ -10,6 +10,7 @@
 #include "engine/field/cloud_shadow_pass.h"
 #include "engine/field/cluster_pass.h"
 #include "engine/field/cull_pass.h"
+#include "engine/field/field_scopes.h"
 #include "engine/field/field_uploads.h"
 #include "engine/field/impostor_atlas.h"
 #include "engine/field/shadow_cache.h"
@@ -28,7 +29,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <string_view>
 
 namespace pf {
 
@@ -104,22 +104,6 @@ struct FieldFrameStats {
 // "full 3  reduced 40  impostor 900": plants per LOD, for logs and the overlay.
 std::string plantsPerLodText(const FieldFrameStats& stats);
 
-// GPU timer scope names, in recording order. "colour" is the whole colour
-// pass, its anti-aliasing included, and the scopes after it are nested
-// inside it: four groups of draws of the early phase (or of the one phase
-// without occlusion culling), the depth pyramid, the late cull with its
-// occlusion test, the late phase's draws, the clouds' shadows and the
-// clouds (cloud_shadow_pass.h, cloud_pass.h), then the anti-aliasing
-// (target_pass.h). Without occlusion culling the three late scopes are
-// empty, without clouds the clouds scope.
-inline constexpr const char* kFieldPasses[] = {"physics",       "pose",      "clusters",   "cull",   "shadow",
-                                               "colour",        "plants",    "impostors",  "canopy", "terrain_sky",
-                                               "depth_pyramid", "occlusion", "late_draws", "clouds", kAntialiasScope};
-
-// True for the draw scopes recorded inside "colour" (those after it in
-// kFieldPasses): a frame's total adds only the others.
-bool nestedInColourPass(std::string_view pass);
-
 class FieldRenderer {
 public:
     FieldRenderer(const GpuContext& ctx, FieldContent content, const FieldRenderSettings& settings);
@@ -133,7 +117,7 @@ public:
     void setView(const FieldView& view, VkExtent2D extent);
     // Into a target made with antialiasing(). Leaves target.color in
     // TRANSFER_SRC_OPTIMAL. With a timer, writes one scope per entry of
-    // kFieldPasses.
+    // kFieldScopes (field_scopes.h).
     void record(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer = nullptr) const;
     // The baseline: no culling, no LOD, one vkCmdDrawIndexed per plant and class.
     void recordNaive(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer = nullptr) const;
