@@ -2,6 +2,7 @@
 
 #include "engine/field/canopy.h"
 #include "engine/field/field_uploads.h"
+#include "engine/field/visible_lists.h"
 #include "engine/scene/cloud_billboards.h"
 #include "engine/vk/depth_pyramid.h"
 #include "engine/vk/descriptors.h"
@@ -357,7 +358,7 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
                          extent.height, view.deltaTime, view.firstFrame, view.forcedLod.value_or(0xFFFFFFFFu));
     const glm::uvec2 viewport(extent.width, extent.height);
     setOcclusionUniforms(cull, viewMatrix(view.camera), projectionMatrix(view.camera, viewport), viewport,
-                         view.camera.nearPlane, uint32_t(depthPyramidExtents(extent).size()));
+                         view.camera.nearPlane, uint32_t(depthPyramidExtents({extent.width, extent.height}).size()));
     setCullUniforms(cull_, cull);
     if (!settings_.clusters.enabled) return;
     const uint32_t cut = view.forcedCut.value_or(CLUSTER_CUT_AUTO);

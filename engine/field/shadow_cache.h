@@ -7,7 +7,7 @@
 // it again otherwise.
 #pragma once
 
-#include "engine/field/shadow_map.h"
+#include "engine/field/sun_square.h"
 
 #include <cstdint>
 
