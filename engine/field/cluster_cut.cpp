@@ -16,6 +16,15 @@ gpu::ClusterUniforms makeClusterUniforms(const std::array<glm::vec4, 6>& planes,
     return u;
 }
 
+bool canopyCanBeDrawn(std::span<const gpu::ClusterNode> nodes, const glm::vec4& camera, uint32_t cut,
+                      float thresholdPixels) {
+    const gpu::ClusterNode& root = nodes.back();
+    const glm::vec3 eye(camera);
+    const glm::vec3 farthest = glm::max(glm::abs(eye - glm::vec3(root.boxMin)), glm::abs(eye - glm::vec3(root.boxMax)));
+    const float leafPixels = gpu::pixelsAtDistance(0.5f * nodes[0].square.w, camera.w, glm::length(farthest));
+    return cut == CLUSTER_CUT_ALL_FAR || (cut == CLUSTER_CUT_AUTO && leafPixels < thresholdPixels);
+}
+
 CpuClusterCut clusterCutOnCpu(std::span<const gpu::ClusterNode> nodes, uint32_t leafCount,
                               const gpu::ClusterUniforms& uniforms) {
     CpuClusterCut cut;

@@ -1,5 +1,7 @@
 #include "engine/field/cull_uniforms.h"
 
+#include "engine/image/depth_pyramid_levels.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -35,6 +37,15 @@ void setOcclusionUniforms(gpu::CullUniforms& u, const glm::mat4& view, const glm
     u.view = view;
     u.projection = glm::vec4(projection[0][0], projection[1][1], projection[2][2], projection[3][2]);
     u.viewport = glm::vec4(float(viewport.x), float(viewport.y), nearPlane, float(pyramidLevels));
+}
+
+gpu::CullUniforms cameraCullUniforms(const glm::mat4& viewProj, const Camera& camera, glm::uvec2 viewport,
+                                     float deltaSeconds, bool firstFrame, uint32_t forcedLod) {
+    gpu::CullUniforms u = makeCullUniforms(viewProj, camera.position, glm::radians(camera.fovYDegrees), viewport.y,
+                                           deltaSeconds, firstFrame, forcedLod);
+    setOcclusionUniforms(u, viewMatrix(camera), projectionMatrix(camera, viewport), viewport, camera.nearPlane,
+                         uint32_t(depthPyramidExtents({viewport.x, viewport.y}).size()));
+    return u;
 }
 
 } // namespace pf

@@ -3,6 +3,7 @@
 // what the late phase's occlusion test needs (docs/CULLING.md). CPU only.
 #pragma once
 
+#include "engine/scene/camera.h"
 #include "shaders/field_layouts.h"
 
 #include <glm/glm.hpp>
@@ -32,5 +33,10 @@ gpu::CullUniforms makeCullUniforms(const glm::mat4& viewProj, const glm::vec3& c
 // viewport, its near plane and the levels of its depth pyramid.
 void setOcclusionUniforms(gpu::CullUniforms& uniforms, const glm::mat4& view, const glm::mat4& projection,
                           glm::uvec2 viewport, float nearPlane, uint32_t pyramidLevels);
+// Both for the frame's camera (`viewProj` its view-projection, as the frame
+// uniforms have it) over `viewport`, its depth pyramid's levels
+// (depthPyramidExtents).
+gpu::CullUniforms cameraCullUniforms(const glm::mat4& viewProj, const Camera& camera, glm::uvec2 viewport,
+                                     float deltaSeconds, bool firstFrame, uint32_t forcedLod);
 
 } // namespace pf

@@ -9,6 +9,10 @@
 
 namespace pf {
 
+// Metres the sun's box of a square reaches either side of its depth: its
+// view-projections' (sunViewProjection) depth range.
+constexpr float kSunDepthRadius = 250.0f;
+
 // A square of the sun's texel grid: the orthographic view along the sun
 // whose texels are `texel` metres wide, cut into whole texels, and the depth
 // its range is centred on.

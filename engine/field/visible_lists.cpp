@@ -25,6 +25,22 @@ void assignVisibleLists(std::span<gpu::PlantModel> models, std::span<const gpu::
     }
 }
 
+FieldPlants fieldPlantsOf(FieldContent& content) {
+    PlantModelPool& pool = content.models;
+    FieldPlants plants;
+    plants.instances = fieldInstancesOf(content);
+    for (const PlantModelInfo& info : pool.models) plants.models.push_back(info.gpu);
+    assignVisibleLists(plants.models, plants.instances);
+    for (size_t m = 0; m < pool.models.size(); ++m) pool.models[m].gpu.lists = plants.models[m].lists;
+    return plants;
+}
+
+std::vector<uint32_t> naiveVisibleList(uint32_t plantCount) {
+    std::vector<uint32_t> naive(plantCount);
+    for (uint32_t i = 0; i < plantCount; ++i) naive[i] = i | (VISIBLE_COVERAGE_MAX << VISIBLE_COVERAGE_SHIFT);
+    return naive;
+}
+
 std::vector<uint32_t> allPlantChunks(uint32_t instanceCount, uint32_t maxGroupsPerRow) {
     const uint32_t chunks = (instanceCount + CULL_GROUP_SIZE - 1) / CULL_GROUP_SIZE;
     const uint32_t row = std::min(chunks, maxGroupsPerRow);
