@@ -1,12 +1,11 @@
 #include "engine/field/cluster_pass.h"
 
 #include "engine/vk/pipeline.h"
-#include "shaders/cluster_select.h"
+#include "shaders/cluster_layouts.h"
 
 #include "shaders/cluster_comp.spv.h"
 #include "shaders/near_dispatch_comp.spv.h"
 
-#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <stdexcept>
@@ -63,16 +62,6 @@ ClusterPass createClusterPass(GpuResources& owner, const ClusterTree& tree, cons
     pass.clusterPipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_cluster_comp);
     pass.dispatchPipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_near_dispatch_comp);
     return pass;
-}
-
-gpu::ClusterUniforms makeClusterUniforms(const std::array<glm::vec4, 6>& planes, const glm::vec4& camera, uint32_t cut,
-                                         float thresholdPixels, bool firstFrame) {
-    gpu::ClusterUniforms u{};
-    std::copy(planes.begin(), planes.end(), u.frustum);
-    u.camera = camera;
-    u.counts = glm::uvec4(0, 0, cut, firstFrame ? 1u : 0u);
-    u.threshold = glm::vec4(thresholdPixels, 0, 0, 0);
-    return u;
 }
 
 void setClusterUniforms(const ClusterPass& pass, gpu::ClusterUniforms uniforms) {
@@ -132,23 +121,6 @@ std::array<uint32_t, CLUSTER_STAT_COUNT> readClusterStats(const ClusterPass& pas
     std::array<uint32_t, CLUSTER_STAT_COUNT> stats{};
     std::memcpy(stats.data(), pass.readback.mapped, sizeof(stats));
     return stats;
-}
-
-CpuClusterCut clusterCutOnCpu(std::span<const gpu::ClusterNode> nodes, uint32_t leafCount,
-                              const gpu::ClusterUniforms& uniforms) {
-    CpuClusterCut cut;
-    for (uint32_t n = 0; n < nodes.size(); ++n) {
-        const gpu::ClusterNode& node = nodes[n];
-        const uint32_t parent = node.range.z;
-        const float parentPixels = parent == CLUSTER_NONE ? CLUSTER_ROOT_PARENT_PIXELS
-                                                          : gpu::clusterCellPixels(nodes[parent], uniforms.camera);
-        const uint32_t decision = gpu::clusterDecision(node, gpu::clusterCellPixels(node, uniforms.camera),
-                                                       parentPixels, gpu::clusterInFrustum(node, uniforms), uniforms);
-        cut.decisions.push_back(decision);
-        if (decision == CLUSTER_FAR) cut.far.push_back(n);
-        if (decision == CLUSTER_NEAR && n < leafCount) cut.near.push_back(n);
-    }
-    return cut;
 }
 
 } // namespace pf

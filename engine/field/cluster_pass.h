@@ -6,6 +6,7 @@
 // use the same pass with CLUSTER_CUT_BOX_ONLY: the leaves meeting its box.
 #pragma once
 
+#include "engine/field/cluster_cut.h"
 #include "engine/scene/clusters.h"
 #include "engine/vk/compute_set.h"
 #include "engine/vk/resources.h"
@@ -43,10 +44,8 @@ struct ClusterPass {
 ClusterPass createClusterPass(GpuResources& owner, const ClusterTree& tree, const Buffer& nodes,
                               const gpu::DrawCommand& farMesh);
 
-// Frustum (or the sun's box) planes, camera, cut and threshold; counts.x/y and
-// limits are filled from the pass by setClusterUniforms.
-gpu::ClusterUniforms makeClusterUniforms(const std::array<glm::vec4, 6>& planes, const glm::vec4& camera, uint32_t cut,
-                                         float thresholdPixels, bool firstFrame);
+// Per frame, before record: the uniforms (makeClusterUniforms,
+// cluster_cut.h) with the counts and limits filled from the pass.
 void setClusterUniforms(const ClusterPass& pass, gpu::ClusterUniforms uniforms);
 
 // Clears the lists, picks the cut, writes the cull's indirect dispatch, and
@@ -60,13 +59,5 @@ void drawCanopyIndirect(VkCommandBuffer cmd, const GpuContext& ctx, const Cluste
 
 // The counters of the last recorded frame (after its fence), CLUSTER_STAT_*.
 std::array<uint32_t, CLUSTER_STAT_COUNT> readClusterStats(const ClusterPass& pass);
-
-// The same cut on the CPU: decision per node, the far nodes and near leaves sorted.
-struct CpuClusterCut {
-    std::vector<uint32_t> decisions; // CLUSTER_CULLED, _COVERED, _FAR, _NEAR per node
-    std::vector<uint32_t> far, near;
-};
-CpuClusterCut clusterCutOnCpu(std::span<const gpu::ClusterNode> nodes, uint32_t leafCount,
-                              const gpu::ClusterUniforms& uniforms);
 
 } // namespace pf

@@ -1,10 +1,9 @@
 #include "engine/field/cull_pass.h"
 
+#include "engine/field/visible_lists.h"
 #include "engine/vk/depth_pyramid.h"
 #include "engine/vk/pipeline.h"
 #include "shaders/cluster_layouts.h"
-#include "shaders/lod_select.h"
-#include "shaders/occlusion_test.h"
 
 #include "shaders/build_draws_comp.spv.h"
 #include "shaders/cull_comp.spv.h"
@@ -12,7 +11,6 @@
 #include "shaders/shadow_cull_comp.spv.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -44,33 +42,6 @@ VkDeviceSize counterWords(const CullPass& pass) { return CULL_PHASE_REGIONS * co
 uint32_t regionOf(uint32_t phase) { return phase == CULL_PHASE_LATE ? 1u : 0u; }
 
 } // namespace
-
-std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProj) {
-    // Gribb–Hartmann: clip-space tests −w ≤ x,y ≤ w and 0 ≤ z ≤ w are planes
-    // in world space made of the matrix rows (glm is column-major: m[c][r]).
-    auto row = [&](int r) { return glm::vec4(viewProj[0][r], viewProj[1][r], viewProj[2][r], viewProj[3][r]); };
-    std::array<glm::vec4, 6> planes = {row(3) + row(0), row(3) - row(0), row(3) + row(1),
-                                       row(3) - row(1), row(2),          row(3) - row(2)};
-    for (glm::vec4& p : planes) p /= glm::length(glm::vec3(p));
-    return planes;
-}
-
-void assignVisibleLists(std::span<gpu::PlantModel> models, std::span<const gpu::FieldInstance> instances) {
-    std::vector<uint32_t> perModel(models.size(), 0);
-    for (const gpu::FieldInstance& inst : instances) {
-        if (inst.ids.x >= models.size())
-            throw std::runtime_error("field instance refers to model " + std::to_string(inst.ids.x) + " of " +
-                                     std::to_string(models.size()));
-        ++perModel[inst.ids.x];
-    }
-    const uint32_t total = uint32_t(instances.size());
-    uint32_t first = 0;
-    for (size_t m = 0; m < models.size(); ++m) {
-        for (uint32_t lod = 0; lod < LOD_COUNT; ++lod) models[m].lists[lod] = lod * total + first;
-        models[m].lists[PLANT_MODEL_LIST_CAPACITY] = perModel[m];
-        first += perModel[m];
-    }
-}
 
 CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
     const GpuContext& ctx = owner.ctx();
@@ -155,28 +126,6 @@ CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
     return pass;
 }
 
-float pixelsPerMetre(float fovYRadians, uint32_t viewportHeight) {
-    return float(viewportHeight) / (2.0f * std::tan(fovYRadians * 0.5f));
-}
-
-gpu::CullUniforms makeCullUniforms(const glm::mat4& viewProj, const glm::vec3& cameraPosition, float fovYRadians,
-                                   uint32_t viewportHeight, float deltaSeconds, bool firstFrame, uint32_t forcedLod) {
-    gpu::CullUniforms u{};
-    const std::array<glm::vec4, 6> planes = frustumPlanes(viewProj);
-    std::copy(planes.begin(), planes.end(), u.frustum);
-    u.camera = glm::vec4(cameraPosition, pixelsPerMetre(fovYRadians, viewportHeight));
-    u.counts = glm::uvec4(0, 0, forcedLod, firstFrame ? 1u : 0u);
-    u.timing = glm::vec4(deltaSeconds, 0, 0, 0);
-    return u;
-}
-
-void setOcclusionUniforms(gpu::CullUniforms& u, const glm::mat4& view, const glm::mat4& projection, glm::uvec2 viewport,
-                          float nearPlane, uint32_t pyramidLevels) {
-    u.view = view;
-    u.projection = glm::vec4(projection[0][0], projection[1][1], projection[2][2], projection[3][2]);
-    u.viewport = glm::vec4(float(viewport.x), float(viewport.y), nearPlane, float(pyramidLevels));
-}
-
 void setCullUniforms(const CullPass& pass, const gpu::CullUniforms& uniforms) { writeCullUniforms(pass, uniforms); }
 
 void setCullUniforms(const CullPass& pass, const gpu::ShadowCullUniforms& uniforms) {
@@ -254,17 +203,6 @@ void drawClassIndirect(VkCommandBuffer cmd, const GpuContext& ctx, const CullPas
         vkCmdDrawIndexedIndirect(cmd, pass.allCommands.buffer, first + VkDeviceSize(i) * stride, 1, stride);
 }
 
-std::vector<uint32_t> allPlantChunks(uint32_t instanceCount, uint32_t maxGroupsPerRow) {
-    const uint32_t chunks = (instanceCount + CULL_GROUP_SIZE - 1) / CULL_GROUP_SIZE;
-    const uint32_t row = std::min(chunks, maxGroupsPerRow);
-    std::vector<uint32_t> words = {chunks, row, row ? (chunks + row - 1) / row : 0, 1};
-    for (uint32_t c = 0; c < chunks; ++c) {
-        words.push_back(c * CULL_GROUP_SIZE);
-        words.push_back(std::min<uint32_t>(instanceCount - c * CULL_GROUP_SIZE, CULL_GROUP_SIZE));
-    }
-    return words;
-}
-
 CullCounts readCullCounts(const CullPass& pass) {
     const auto* words = static_cast<const uint32_t*>(pass.readback.mapped);
     const size_t perRegion = countersPerRegion(pass);
@@ -277,60 +215,6 @@ CullCounts readCullCounts(const CullPass& pass) {
         out.drawsPerClass[c] = drawCounts[c] + drawCounts[DRAW_CLASS_COUNT + c];
     for (size_t i = 0; i < out.perModelLod.size(); ++i) out.perLod[i % LOD_COUNT] += out.perModelLod[i];
     return out;
-}
-
-CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span<const gpu::PlantModel> models,
-                        const gpu::CullUniforms& uniforms, std::vector<uint32_t>& state) {
-    const CpuNearRange all{0, uint32_t(instances.size()), false};
-    return cullOnCpu(instances, models, uniforms, state, std::span(&all, 1));
-}
-
-CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span<const gpu::PlantModel> models,
-                        const gpu::CullUniforms& uniforms, std::vector<uint32_t>& state,
-                        std::span<const CpuNearRange> near) {
-    state.resize(instances.size(), LOD_STATE_SETTLED << 8);
-    CpuCullResult out;
-    out.lists.resize(models.size() * LOD_COUNT);
-    const glm::vec4* f = uniforms.frustum;
-    for (const CpuNearRange& range : near)
-        for (uint32_t i = range.first; i < range.first + range.count; ++i) {
-            const gpu::FieldInstance& inst = instances[i];
-            const uint32_t m = inst.ids.x;
-            const gpu::PlantModel& model = models[m];
-            const glm::vec4 sphere = gpu::instanceSphere(inst, model);
-            const float pixels = gpu::projectedPixels(sphere, uniforms.camera);
-            const bool inside = gpu::sphereInFrustum(sphere, f[0], f[1], f[2], f[3], f[4], f[5]) &&
-                                gpu::largeEnoughToDraw(pixels, model, uniforms.counts.z);
-            const uint32_t next = gpu::nextLodState(state[i], inside, pixels, model.lod, uniforms.counts.z,
-                                                    uniforms.counts.w == 1u || range.restart, uniforms.timing.x);
-            state[i] = next;
-            if (!inside) continue;
-            const uint32_t progress = gpu::lodStateProgress(next);
-            std::vector<uint32_t>* lists = &out.lists[size_t(m) * LOD_COUNT];
-            if (progress == LOD_STATE_SETTLED) {
-                lists[gpu::lodStateCurrent(next)].push_back(gpu::visibleEntry(i, 0, VISIBLE_COVERAGE_MAX));
-                continue;
-            }
-            const uint32_t coverageIn = gpu::fadeInCoverage(progress);
-            lists[gpu::lodStateCurrent(next)].push_back(gpu::visibleEntry(i, VISIBLE_FADE_IN_BIT, coverageIn));
-            lists[gpu::lodStateFrom(next)].push_back(gpu::visibleEntry(i, 0, VISIBLE_COVERAGE_MAX - coverageIn));
-        }
-    for (std::vector<uint32_t>& list : out.lists) std::sort(list.begin(), list.end());
-    return out;
-}
-
-bool sphereOccludedOnCpu(const glm::vec4& sphere, const gpu::CullUniforms& u,
-                         const std::vector<std::vector<float>>& pyramid) {
-    const glm::vec4 viewSphere(glm::vec3(u.view * glm::vec4(glm::vec3(sphere), 1.0f)), sphere.w);
-    if (gpu::sphereNearCamera(viewSphere, u.viewport.z)) return false;
-    const glm::uvec4 pixels =
-        gpu::rectPixels(gpu::sphereScreenRect(viewSphere, u.projection), glm::vec2(u.viewport.x, u.viewport.y));
-    const uint32_t level = gpu::pyramidLevel(pixels, uint32_t(u.viewport.w));
-    const glm::uvec4 t = pixels >> (level + 1u);
-    const uint32_t width = depthPyramidExtents({uint32_t(u.viewport.x), uint32_t(u.viewport.y)})[level].width;
-    auto at = [&](uint32_t x, uint32_t y) { return pyramid[level][size_t(y) * width + x]; };
-    const float farthest = std::max(std::max(at(t.x, t.y), at(t.z, t.y)), std::max(at(t.x, t.w), at(t.z, t.w)));
-    return !(gpu::sphereNearestDepth(viewSphere, u.projection) <= farthest);
 }
 
 } // namespace pf

@@ -11,30 +11,16 @@
 // plant.
 #pragma once
 
+#include "engine/field/cull_uniforms.h"
 #include "engine/vk/compute_set.h"
 #include "engine/vk/resources.h"
 #include "shaders/field_layouts.h"
-
-#include <glm/glm.hpp>
 
 #include <array>
 #include <span>
 #include <vector>
 
 namespace pf {
-
-// The six planes of a view-projection (Vulkan clip space, depth 0..1),
-// normalised, normals pointing inward.
-std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProj);
-
-// The visible-list layout the cull pass appends into: for each LOD l, for
-// each model m in order, a region of (instances of m) entries, so
-// lists[l] = l · instanceCount + (instances of models before m) and
-// lists[PLANT_MODEL_LIST_CAPACITY] = instances of m, and no list can
-// overflow. Fills lists of every model from the instances' ids.x; the
-// visible buffer then holds LOD_COUNT · instanceCount entries. Throws when
-// an instance names a model that does not exist.
-void assignVisibleLists(std::span<gpu::PlantModel> models, std::span<const gpu::FieldInstance> instances);
 
 // What the pass decides per instance before build_draws.comp makes the draws.
 enum class CullKind {
@@ -87,22 +73,8 @@ struct CullPass {
 // instances than FIELD_MAX_INSTANCES. What the pass creates is owned by `owner`.
 CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs);
 
-// Pixels per metre at one metre of distance of a camera with this vertical
-// field of view over this many pixels (CullUniforms::camera.w).
-float pixelsPerMetre(float fovYRadians, uint32_t viewportHeight);
-
-// Per frame, before record: frustum, camera, forced LOD, delta time.
-// `firstFrame` resets every instance's LOD state to settled at its target LOD
-// (and has the early phase draw nothing). counts.x and counts.y (instances,
-// templates) are left 0: setCullUniforms fills them from the pass.
-gpu::CullUniforms makeCullUniforms(const glm::mat4& viewProj, const glm::vec3& cameraPosition, float fovYRadians,
-                                   uint32_t viewportHeight, float deltaSeconds, bool firstFrame,
-                                   uint32_t forcedLod = 0xFFFFFFFFu);
-// What the late phase's occlusion test needs (CullUniforms::view, projection,
-// viewport): the camera's view and projection (perspectiveRH_ZO), the
-// viewport, its near plane and the levels of its depth pyramid.
-void setOcclusionUniforms(gpu::CullUniforms& uniforms, const glm::mat4& view, const glm::mat4& projection,
-                          glm::uvec2 viewport, float nearPlane, uint32_t pyramidLevels);
+// Per frame, before record: the uniforms (makeCullUniforms, cull_uniforms.h)
+// with counts.x and counts.y filled from the pass.
 void setCullUniforms(const CullPass& pass, const gpu::CullUniforms& uniforms);
 // The same for a CullKind::ShadowCasters pass (engine/field/shadow_casters.h makes them).
 void setCullUniforms(const CullPass& pass, const gpu::ShadowCullUniforms& uniforms);
@@ -123,10 +95,6 @@ void recordCullPass(VkCommandBuffer cmd, const CullPass& pass, uint32_t phase = 
 void drawClassIndirect(VkCommandBuffer cmd, const GpuContext& ctx, const CullPass& pass, uint32_t drawClass,
                        uint32_t phase = CULL_PHASE_ALL);
 
-// Every plant of a field in chunks of CULL_GROUP_SIZE, with the near list's
-// header (cluster_layouts.h): what a cull pass without clusters runs over.
-std::vector<uint32_t> allPlantChunks(uint32_t instanceCount, uint32_t maxGroupsPerRow);
-
 // Counters of the last recorded frame (read after its fence), both phases summed.
 struct CullCounts {
     std::vector<uint32_t> perModelLod;                      // [model · LOD_COUNT + lod] entries in that list
@@ -135,29 +103,5 @@ struct CullCounts {
     uint32_t occluded = 0; // in view and large enough to draw, hidden by the depth pyramid (the late phase)
 };
 CullCounts readCullCounts(const CullPass& pass);
-
-// The same decision on the CPU (the reference the tests check the GPU
-// against): the LOD list entries instance i gets this frame, updating state.
-struct CpuCullResult {
-    std::vector<std::vector<uint32_t>> lists; // [model · LOD_COUNT + lod] visible entries, sorted
-};
-// A run of plants the cull goes over (one near leaf); `restart`: as on a first frame.
-struct CpuNearRange {
-    uint32_t first = 0, count = 0;
-    bool restart = false;
-};
-CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span<const gpu::PlantModel> models,
-                        const gpu::CullUniforms& uniforms, std::vector<uint32_t>& state);
-// Over these plants only (the others keep their state).
-CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span<const gpu::PlantModel> models,
-                        const gpu::CullUniforms& uniforms, std::vector<uint32_t>& state,
-                        std::span<const CpuNearRange> near);
-
-// The late phase's occlusion test on the CPU (shaders/occlusion_test.h):
-// true when the world-space sphere (xyz centre, w radius) lies behind every
-// pixel of its screen rectangle in `pyramid` (depthPyramidOnCpu's levels),
-// with the uniforms' view, projection and viewport.
-bool sphereOccludedOnCpu(const glm::vec4& sphere, const gpu::CullUniforms& uniforms,
-                         const std::vector<std::vector<float>>& pyramid);
 
 } // namespace pf

@@ -1,8 +1,26 @@
 #include "engine/field/shadow_cache.h"
 
+#include "engine/field/cull_uniforms.h"
+
 #include <cmath>
 
 namespace pf {
+
+ShadowView shadowViewAhead(const Camera& camera, const glm::vec3& sunDirection, float radius, uint32_t texels,
+                           uint32_t viewportHeight, uint32_t forcedLod) {
+    const glm::vec3 forward = glm::normalize(camera.target - camera.position);
+    const glm::vec3 flatForward = glm::length(glm::vec2(forward.x, forward.z)) > 1e-3f
+                                      ? glm::normalize(glm::vec3(forward.x, 0.0f, forward.z))
+                                      : glm::vec3(0.0f);
+    const glm::vec3 focus = camera.position + flatForward * (0.6f * radius);
+    ShadowView frame;
+    frame.square = sunSquareAround(sunDirection, focus, radius, texels);
+    frame.sunDirection = sunDirection;
+    frame.camera = camera.position;
+    frame.pixelsPerMetre = pixelsPerMetre(glm::radians(camera.fovYDegrees), viewportHeight);
+    frame.forcedLod = forcedLod;
+    return frame;
+}
 
 uint32_t shadowCacheMargin(const ShadowCacheSettings& settings, float texel) {
     return uint32_t(std::ceil(settings.reach / texel));

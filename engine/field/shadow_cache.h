@@ -7,7 +7,8 @@
 // it again otherwise.
 #pragma once
 
-#include "engine/field/shadow_map.h"
+#include "engine/field/sun_square.h"
+#include "engine/scene/camera.h"
 
 #include <cstdint>
 
@@ -28,6 +29,12 @@ struct ShadowView {
     float pixelsPerMetre = 0.0f; // the camera's at one metre (makeCullUniforms)
     uint32_t forcedLod = 0xFFFFFFFFu;
 };
+
+// The frame's view from the sun: a square of `texels` texels, 2·radius
+// metres wide, reaching ahead of `camera` (shadows where they are seen
+// large), for a viewport `viewportHeight` pixels high.
+ShadowView shadowViewAhead(const Camera& camera, const glm::vec3& sunDirection, float radius, uint32_t texels,
+                           uint32_t viewportHeight, uint32_t forcedLod);
 
 // Texels the cache reaches past the frame's map on every side: the camera's
 // reach, so a square that moves with it stays inside.

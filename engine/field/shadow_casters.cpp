@@ -1,5 +1,6 @@
 #include "engine/field/shadow_casters.h"
 
+#include "engine/field/cull_uniforms.h"
 #include "shaders/shadow_select.h"
 
 #include <algorithm>

@@ -4,10 +4,10 @@
 // between the cache of static casters (impostors for every camera the cache
 // serves, drawn at rest) and the frame's casters drawn on top of it every
 // frame (the nearer plants: full meshes, which sway with their skeletons,
-// where the camera targets LOD0, impostors elsewhere).
+// where the camera targets LOD0, impostors elsewhere). CPU only.
 #pragma once
 
-#include "engine/field/cull_pass.h"
+#include "engine/field/cull_reference.h"
 #include "engine/field/shadow_cache.h"
 
 #include <span>

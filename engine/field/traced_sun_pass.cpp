@@ -8,6 +8,9 @@
 
 #include "shaders/traced_sun_comp.spv.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace pf {
 namespace {
 
@@ -52,11 +55,20 @@ TracedSunPass createUntracedSunPass(GpuResources& owner) {
     return pass;
 }
 
-TracedSunPass createTracedSunPass(GpuResources& owner, const PlantModelPool& models,
-                                  std::span<const gpu::FieldInstance> plants, float fieldDiagonal) {
+TracedSunPass createTracedSunPass(GpuResources& owner, const FieldContent& content,
+                                  std::span<const gpu::FieldInstance> plants, const lsys::MemoryBudget& memory) {
+    // A ray from anywhere on the field reaches past every plant within the
+    // diagonal of the terrain and the height of the tallest crown.
+    float top = 0.0f;
+    for (const PlantModelInfo& model : content.models.models) top = std::max(top, model.gpu.boxMax.y);
+    float highest = 0.0f;
+    for (const PlantInstance& plant : content.plants) highest = std::max(highest, plant.scale);
+    const float reach = std::sqrt(2.0f) * content.terrain.size + top * highest + 1000.0f;
+    lsys::need(memory, "the field's graph for ray-traced shadows",
+               fieldGraphBytes(content.models, content.plants.size()));
     TracedSunPass pass = createUntracedSunPass(owner);
-    pass.graph = uploadGraph(owner, packFieldGraph(models, plants));
-    pass.rayLength = fieldDiagonal;
+    pass.graph = uploadGraph(owner, packFieldGraph(content.models, plants));
+    pass.rayLength = reach;
     pass.set = createComputeSet(owner, traceTable(pass), sizeof(gpu::TracedSunPush));
     pass.pipeline = createComputePipeline(owner, pass.set.pipelineLayout, spirv_traced_sun_comp);
     return pass;

@@ -14,9 +14,10 @@
 
 #include "engine/raytrace/gpu_graph.h"
 #include "engine/raytrace/ray_trace_pass.h"
-#include "engine/scene/plant_models.h"
+#include "engine/scene/field_content.h"
 #include "engine/vk/compute_set.h"
 #include "engine/vk/resources.h"
+#include "lsystem/memory_budget.h"
 
 #include <glm/glm.hpp>
 
@@ -48,10 +49,12 @@ struct TracedSunPass {
 // A renderer that does not trace: no graph, images of one texel whose
 // visibility the colour pass samples as 1. Owned by `owner`.
 TracedSunPass createUntracedSunPass(GpuResources& owner);
-// Packs and uploads the field's graph; owned by `owner`. Its images are of
-// one texel until the first resizeTracedSunImages.
-TracedSunPass createTracedSunPass(GpuResources& owner, const PlantModelPool& models,
-                                  std::span<const gpu::FieldInstance> plants, float fieldDiagonal);
+// Packs and uploads the graph of `content`'s plants (`plants`, its
+// fieldInstancesOf), the graph's host memory checked against `memory`
+// first (lsys::need); its rays reach across the whole field. Owned by
+// `owner`. Its images are of one texel until the first resizeTracedSunImages.
+TracedSunPass createTracedSunPass(GpuResources& owner, const FieldContent& content,
+                                  std::span<const gpu::FieldInstance> plants, const lsys::MemoryBudget& memory);
 
 // The colour pass's entry of the pass's visibility (FIELD_BINDING_TRACED_SUN).
 DescriptorBinding tracedSunBinding(const TracedSunPass& pass, VkShaderStageFlags stages);

@@ -1,5 +1,7 @@
 #include "frame_stats_json.h"
 
+#include "engine/field/field_scopes.h"
+
 #include <nlohmann/json.hpp>
 
 namespace pf {
@@ -37,7 +39,8 @@ std::string frameStatsJson(const OfflineRenderer& offline, const std::string& sc
     double total = 0;
     for (const ScopeTime& s : offline.gpuTimes()) {
         ms[s.name] = s.milliseconds;
-        if (!nestedInColourPass(s.name)) total += s.milliseconds;
+        const std::optional<FieldScope> scope = fieldScopeNamed(s.name);
+        if (!scope || !fieldScope(*scope).insideColour) total += s.milliseconds;
     }
     ms["total"] = total;
     j["gpu_ms"] = ms;

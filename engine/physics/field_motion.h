@@ -73,7 +73,7 @@ FieldMotion createFieldMotion(GpuResources& owner, const FieldContent& content);
 // every step at the scene's sub-step.
 void advanceFieldMotion(FieldMotion& motion, double time, bool restart, const glm::vec3& camera, bool realTime);
 // Records the planned frame: the copies, then the physics and pose passes
-// (timer scopes "physics", with any catch-up, and "pose").
+// (timer scopes kPhysicsScope, with any catch-up, and kPoseScope).
 void recordFieldMotion(VkCommandBuffer cmd, const FieldMotion& motion, GpuTimer* timer = nullptr);
 
 // The shared skeleton copies of a model follow each other along the wind

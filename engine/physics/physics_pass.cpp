@@ -193,7 +193,7 @@ void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, std::span<c
             throw std::invalid_argument("a physics dispatch takes at most " +
                                         std::to_string(PHYSICS_MAX_DISPATCH_SUB_STEPS) + " sub-steps, not " +
                                         std::to_string(d.subSteps));
-    if (timer) beginScopeOutsideRendering(cmd, *timer, "physics");
+    if (timer) beginScopeOutsideRendering(cmd, *timer, kPhysicsScope);
     for (size_t i = 0; i < dispatches.size(); ++i) {
         if (i > 0) {
             // This dispatch reads the states and poses the one before wrote.
@@ -204,7 +204,7 @@ void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, std::span<c
         const bool last = i + 1 == dispatches.size();
         if (last && timer) {
             endScope(cmd, *timer);
-            beginScopeOutsideRendering(cmd, *timer, "pose");
+            beginScopeOutsideRendering(cmd, *timer, kPoseScope);
         }
         recordPoseLevels(cmd, pass);
     }

@@ -45,13 +45,18 @@ PhysicsPass createPhysicsPass(GpuResources& owner, const SkeletonSet& set);
 // the time (windDetail.z) and sub-step count (counts.z) with its own.
 void setPhysicsUniforms(const PhysicsPass& pass, const gpu::PhysicsUniforms& uniforms);
 
+// The timer scopes recordPhysicsPass records (engine/field/field_scopes.h
+// lists them among the frame's).
+inline constexpr const char* kPhysicsScope = "physics";
+inline constexpr const char* kPoseScope = "pose";
+
 // Records, for each dispatch in order, its physics sub-steps (none when 0,
 // at most PHYSICS_MAX_DISPATCH_SUB_STEPS, else std::invalid_argument)
 // then the pose levels, with the barriers that order the first after the
 // previous frame's vertex reads of the poses, each dispatch after the poses
 // of the one before, and make the last poses visible to vertex shaders. With
-// a timer, everything up to the last pose levels is scope "physics" and those
-// are "pose" (both recorded unless the set is empty). No dispatch at all
+// a timer, everything up to the last pose levels is scope kPhysicsScope and
+// those are kPoseScope (both recorded unless the set is empty). No dispatch at all
 // poses once. Compute only: record it outside rendering.
 void recordPhysicsPass(VkCommandBuffer cmd, const PhysicsPass& pass, std::span<const gpu::PhysicsDispatch> dispatches,
                        GpuTimer* timer = nullptr);

@@ -34,15 +34,6 @@ DescriptorBinding pyramidRead(VkSampler sampler, VkImageView view) {
 
 } // namespace
 
-std::vector<VkExtent2D> depthPyramidExtents(VkExtent2D extent) {
-    std::vector<VkExtent2D> extents;
-    do {
-        extent = {(extent.width + 1) / 2, (extent.height + 1) / 2};
-        extents.push_back(extent);
-    } while (extent.width > 1 || extent.height > 1);
-    return extents;
-}
-
 VkDescriptorSetLayout createDepthPyramidReadLayout(GpuResources& owner) {
     const DescriptorBinding table[] = {pyramidRead(VK_NULL_HANDLE, VK_NULL_HANDLE)};
     return createSetLayout(owner, table);
@@ -50,7 +41,8 @@ VkDescriptorSetLayout createDepthPyramidReadLayout(GpuResources& owner) {
 
 DepthPyramid createDepthPyramid(GpuResources& owner, const Image& depth) {
     DepthPyramid p;
-    p.extents = depthPyramidExtents(depth.extent);
+    for (const PixelExtent& level : depthPyramidExtents({depth.extent.width, depth.extent.height}))
+        p.extents.push_back({level.width, level.height});
     p.levels = uint32_t(p.extents.size());
     p.depth = depth.image;
     p.depthExtent = depth.extent;
@@ -127,26 +119,6 @@ void recordDepthPyramid(VkCommandBuffer cmd, const DepthPyramid& p) {
                  {VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0, depthStages,
                   VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
-}
-
-std::vector<std::vector<float>> depthPyramidOnCpu(const std::vector<float>& depth, VkExtent2D extent) {
-    std::vector<std::vector<float>> levels;
-    VkExtent2D sourceExtent = extent;
-    for (const VkExtent2D& e : depthPyramidExtents(extent)) {
-        const std::vector<float>& source = levels.empty() ? depth : levels.back();
-        std::vector<float> level(size_t(e.width) * e.height);
-        auto at = [&](uint32_t x, uint32_t y) {
-            return source[size_t(std::min(y, sourceExtent.height - 1)) * sourceExtent.width +
-                          std::min(x, sourceExtent.width - 1)];
-        };
-        for (uint32_t y = 0; y < e.height; ++y)
-            for (uint32_t x = 0; x < e.width; ++x)
-                level[size_t(y) * e.width + x] = std::max(std::max(at(2 * x, 2 * y), at(2 * x + 1, 2 * y)),
-                                                          std::max(at(2 * x, 2 * y + 1), at(2 * x + 1, 2 * y + 1)));
-        levels.push_back(std::move(level));
-        sourceExtent = e;
-    }
-    return levels;
 }
 
 } // namespace pf

@@ -10,9 +10,11 @@
 // shader rather than by a sampler reduction mode (VK_EXT_sampler_filter_minmax,
 // which zeux/niagara uses where it can) so a multisampled depth buffer is
 // reduced over all its samples, not one of them, and no device feature is
-// needed.
+// needed. Its sizes and the CPU reference of the reduction are
+// engine/image/depth_pyramid_levels.h.
 #pragma once
 
+#include "engine/image/depth_pyramid_levels.h"
 #include "engine/vk/descriptors.h"
 
 #include <vector>
@@ -33,9 +35,6 @@ struct DepthPyramid {
     VkDescriptorSet readSet = VK_NULL_HANDLE; // DEPTH_PYRAMID_BINDING: every level, for the late cull
 };
 
-// Levels of the pyramid over a depth buffer of `extent`.
-std::vector<VkExtent2D> depthPyramidExtents(VkExtent2D extent);
-
 // The pyramid of `depth` (a D32_SFLOAT image made with SAMPLED usage, one
 // sample or several), its pipelines and sets, owned by `owner`.
 DepthPyramid createDepthPyramid(GpuResources& owner, const Image& depth);
@@ -51,9 +50,5 @@ VkDescriptorSetLayout createDepthPyramidReadLayout(GpuResources& owner);
 // (for a rendering that loads it), the pyramid is left in GENERAL, readable
 // by compute shaders.
 void recordDepthPyramid(VkCommandBuffer cmd, const DepthPyramid& pyramid);
-
-// The CPU reference: the levels of a one-sample depth buffer of `extent`
-// (row-major), each row-major.
-std::vector<std::vector<float>> depthPyramidOnCpu(const std::vector<float>& depth, VkExtent2D extent);
 
 } // namespace pf

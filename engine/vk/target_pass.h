@@ -12,7 +12,8 @@ namespace pf {
 struct GpuTimer;
 
 // The timer scope of the anti-aliasing after the colour pass's draws: the
-// FXAA pass; empty with MSAA (resolved as the rendering ends) and none.
+// FXAA pass; empty with MSAA (resolved as the rendering ends) and none. The
+// field's frame lists it among its scopes (engine/field/field_scopes.h).
 inline constexpr const char* kAntialiasScope = "antialias";
 
 // Which part of the colour pass a rendering is: all of it, or the first or

@@ -5,6 +5,8 @@
 
 #include "engine/field/cluster_pass.h"
 #include "engine/field/cull_pass.h"
+#include "engine/field/cull_reference.h"
+#include "engine/field/visible_lists.h"
 #include "engine/vk/render_target.h"
 #include "gpu_test.h"
 

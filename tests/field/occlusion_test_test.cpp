@@ -3,9 +3,10 @@
 // spheres, a wall with a gap, spheres at the near plane, and the properties
 // it rests on (the screen rectangle holds every point of the sphere, the
 // level chosen holds the rectangle in 2×2 texels).
-#include "engine/field/cull_pass.h"
+#include "engine/field/cull_reference.h"
+#include "engine/field/cull_uniforms.h"
+#include "engine/image/depth_pyramid_levels.h"
 #include "engine/scene/camera.h"
-#include "engine/vk/depth_pyramid.h"
 #include "shaders/occlusion_test.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -17,7 +18,7 @@
 namespace pf {
 namespace {
 
-constexpr VkExtent2D kViewport{160, 90};
+constexpr PixelExtent kViewport{160, 90};
 
 // A camera at the origin looking down −z; depth of a wall `distance` ahead
 // over the pixel columns [fromX, toX) (the rest: nothing drawn, far plane).

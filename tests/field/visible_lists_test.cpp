@@ -1,7 +1,7 @@
 // The visible-list layout the renderer uploads and the cull pass appends into
 // (assignVisibleLists): every (model, LOD) list has room for all plants of
 // its model, and no two lists share an entry.
-#include "engine/field/cull_pass.h"
+#include "engine/field/visible_lists.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 #include "bad_invocation.h"
 #include "run_command.h"
 
-#include "engine/field/field_renderer.h"
+#include "engine/field/field_scopes.h"
 #include "engine/image/image.h"
 #include "engine/scene/plant_models.h"
 #include "engine/scene/scene.h"
@@ -68,9 +68,10 @@ JointRange expectedJoints(const std::string& scenePath) {
     return ranges[scenePath];
 }
 
-// kFieldPasses and plantbench's own "capture" after them.
+// The field's scopes (kFieldScopes) and plantbench's own "capture" after them.
 std::vector<std::string> timedPasses() {
-    std::vector<std::string> passes(std::begin(kFieldPasses), std::end(kFieldPasses));
+    std::vector<std::string> passes;
+    for (const FieldScopeDefinition& scope : kFieldScopes) passes.push_back(scope.name);
     passes.push_back("capture");
     return passes;
 }
@@ -83,7 +84,7 @@ void expectSpread(const nlohmann::json& spread, const std::string& what) {
     EXPECT_GE(spread["p95"].get<double>(), spread["median"].get<double>()) << what;
 }
 
-// Every pass of kFieldPasses and the capture timed, plant counts those asked
+// Every scope of kFieldScopes and the capture timed, plant counts those asked
 // for plus the scene's hand-placed plants, simulated joints in their range,
 // naive present with its ratio when asked for.
 void expectWellFormedSweep(const nlohmann::json& j, const std::string& scene, const std::vector<uint64_t>& counts,

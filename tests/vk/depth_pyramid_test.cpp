@@ -73,7 +73,7 @@ TEST_F(DepthPyramidTest, LevelsMatchTheCpuReference) {
     for (const VkExtent2D extent : {VkExtent2D{37, 23}, VkExtent2D{64, 64}, VkExtent2D{1, 5}, VkExtent2D{160, 90}}) {
         SCOPED_TRACE(std::to_string(extent.width) + "x" + std::to_string(extent.height));
         const std::vector<float> depth = randomDepth(extent, extent.width * 131 + extent.height);
-        const std::vector<std::vector<float>> expected = depthPyramidOnCpu(depth, extent);
+        const std::vector<std::vector<float>> expected = depthPyramidOnCpu(depth, {extent.width, extent.height});
         const std::vector<std::vector<float>> actual = reduceOnGpu(depth, extent);
         ASSERT_EQ(actual.size(), expected.size());
         for (size_t l = 0; l < expected.size(); ++l) EXPECT_EQ(actual[l], expected[l]) << "level " << l;
@@ -85,8 +85,8 @@ TEST_F(DepthPyramidTest, LevelsMatchTheCpuReference) {
 TEST_F(DepthPyramidTest, TexelsHoldTheFarthestDepthOfTheirPixels) {
     const VkExtent2D extent{37, 23};
     const std::vector<float> depth = randomDepth(extent, 5);
-    const std::vector<std::vector<float>> levels = depthPyramidOnCpu(depth, extent);
-    const std::vector<VkExtent2D> extents = depthPyramidExtents(extent);
+    const std::vector<std::vector<float>> levels = depthPyramidOnCpu(depth, {extent.width, extent.height});
+    const std::vector<PixelExtent> extents = depthPyramidExtents({extent.width, extent.height});
     for (size_t l = 0; l < levels.size(); ++l) {
         const uint32_t side = 2u << l;
         for (uint32_t y = 0; y < extents[l].height; ++y)

@@ -9,6 +9,7 @@
 #include "plantbench_options.h"
 
 #include "engine/field/field_renderer.h"
+#include "engine/field/field_scopes.h"
 #include "engine/scene/scene.h"
 #include "engine/vk/device.h"
 
@@ -20,19 +21,19 @@
 
 namespace pf {
 
-// The scopes plantbench times, in recording order: every kFieldPasses scope
-// of the renderer's frame, then "capture", plantbench's own copy of the
-// resolved image to a host buffer after it (what a capture adds).
+// The scopes plantbench times, in recording order: every scope of the
+// renderer's frame (kFieldScopes), then "capture", plantbench's own copy of
+// the resolved image to a host buffer after it (what a capture adds).
 inline constexpr const char* kCapturePass = "capture";
 inline constexpr auto kBenchPasses = [] {
-    std::array<const char*, std::size(kFieldPasses) + 1> passes{};
-    std::copy(std::begin(kFieldPasses), std::end(kFieldPasses), passes.begin());
+    std::array<const char*, kFieldScopes.size() + 1> passes{};
+    for (size_t p = 0; p < kFieldScopes.size(); ++p) passes[p] = kFieldScopes[p].name;
     passes.back() = kCapturePass;
     return passes;
 }();
 inline constexpr size_t kPassCount = kBenchPasses.size();
 
-// True for the draw scopes inside "colour": those after it in kFieldPasses.
+// True for the draw scopes inside "colour" (kFieldScopes' insideColour).
 bool nestedInColour(size_t pass);
 
 // Median and 95th percentile of one quantity over the measured frames;

@@ -63,7 +63,7 @@ int runPhysicsCheck(const PlantfieldOptions& o) {
         const auto gpuStart = std::chrono::steady_clock::now();
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
             resetGpuTimer(cmd, timer);
-            beginScopeOutsideRendering(cmd, timer, "physics");
+            beginScopeOutsideRendering(cmd, timer, kPhysicsScope);
             recordPhysicsPass(cmd, pass);
             endScope(cmd, timer);
         });
