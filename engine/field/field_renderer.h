@@ -94,9 +94,8 @@ public:
     // The settings' anti-aliasing as the device supports it
     // (supportedAntialiasing): make render targets with it.
     const Antialiasing& antialiasing() const { return settings_.antialiasing; }
-    uint64_t naiveTriangles() const {
-        return pf::naiveTriangles(content_);
-    }                                                                    // what recordNaive draws in its colour pass
+    // What recordNaive draws in its colour pass.
+    uint64_t naiveTriangles() const { return pf::naiveTriangles(content_); }
     uint32_t simulatedJoints() const { return motion_.pass.jointCount; } // shared copies and near plants' own
     VkDeviceSize gpuBytes() const; // device memory this renderer and its passes hold
 
