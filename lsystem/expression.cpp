@@ -74,7 +74,7 @@ double callFunction(const FunctionTable& table, double id, double x) {
     if (!table || !std::isfinite(id)) return 0.0;
     const double index = std::trunc(id) - 1.0;
     if (index < 0.0 || index >= static_cast<double>(table->size())) return 0.0;
-    return vlab::evaluateFunction((*table)[static_cast<size_t>(index)], x);
+    return (*table)[static_cast<size_t>(index)](x);
 }
 
 const Function* findFunction(std::string_view name, Arithmetic arithmetic) {

@@ -4,6 +4,7 @@
 // evaluation time, which happens once per parameter per rewritten module.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -13,7 +14,6 @@
 
 #include "lsystem/lexer.h"
 #include "lsystem/random.h"
-#include "lsystem/vlab/function_file.h"
 
 namespace lsys {
 
@@ -75,9 +75,11 @@ enum class Op : uint8_t {
     Func,  // cpfg's func(id, x): function (int)id of the expression's table at x; 0 for an id not in it
 };
 
-// The functions cpfg's func(id, x) reads, in the order the view file names
-// them (func(1, x) is the first); shared by every expression that calls func.
-using FunctionTable = std::shared_ptr<const std::vector<vlab::VlabFunction>>;
+// The functions cpfg's func(id, x) reads, each y(x), in the order the view
+// file names them (func(1, x) is the first); shared by every expression that
+// calls func. A vlab object's function files make them
+// (vlab::functionTable, lsystem/vlab/function_file.h).
+using FunctionTable = std::shared_ptr<const std::vector<std::function<double(double)>>>;
 
 struct Instruction {
     Op op;

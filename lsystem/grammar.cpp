@@ -1,6 +1,6 @@
 #include "lsystem/grammar.h"
 
-#include "lsystem/queries.h"
+#include "lsystem/query_modules.h"
 
 namespace lsys {
 

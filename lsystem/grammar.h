@@ -11,7 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "lsystem/expression.h"
-#include "lsystem/plant_asset.h"
+#include "lsystem/plant_look.h"
 #include "lsystem/statements.h"
 #include "lsystem/symbols.h"
 

@@ -6,7 +6,7 @@
 #include <optional>
 #include <sstream>
 
-#include "lsystem/dialects/dialect.h"
+#include "lsystem/dialect_names.h"
 #include "lsystem/file_reader.h"
 #include "lsystem/lexer.h"
 #include "lsystem/production_checks.h"

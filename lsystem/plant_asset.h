@@ -6,17 +6,17 @@
 // Plant space is the turtle's space, y up: the turtle starts at the origin
 // heading +Y with left -X and up +Z. A Frame's rotation maps local axes to
 // plant space as local +Y → heading H, local -X → left L, local +Z → up U, so
-// the start frame is the identity.
+// the start frame is the identity. Its materials and surfaces are
+// lsystem/plant_look.h's, which the grammar's look names too.
 
 #include <cstdint>
 #include <limits>
-#include <memory>
-#include <string>
 #include <vector>
 
 #include <glm/gtc/quaternion.hpp>
-#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+
+#include "lsystem/plant_look.h"
 
 namespace lsys {
 
@@ -75,37 +75,9 @@ struct Bounds {
     }
 };
 
-// A predefined surface in its own space (local axes as for a Frame).
-struct SurfaceMesh {
-    std::string name;
-    std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;
-    std::vector<glm::vec2> uvs;
-    std::vector<uint32_t> indices;
-    // Where the turtle stands after drawing it at scale 1 (cpfg's END POINT
-    // of a .s file); the origin for the built-in and glTF surfaces.
-    glm::vec3 endPoint{0.0f};
-};
-
 // A `{ . . . }` polygon: its outline, in plant space, as the turtle traced it.
 struct PolygonShape {
     std::vector<glm::vec3> outline;
-};
-
-// What a material index (`;(i)`, `'`) means when drawn or exported.
-struct Material {
-    std::string name;
-    glm::vec3 albedo{0.5f};
-    bool twoSided = false; // leaves and petals are seen from both sides
-};
-
-// What a plant brings besides its grammar (a vlab object's colour map and
-// surface files): the meaning of its material indices, and surfaces that ~
-// finds before the SurfaceLibrary's. Null: the default palette
-// (lsystem/turtle_builder.h) and the library's surfaces only.
-struct PlantLook {
-    std::shared_ptr<const std::vector<Material>> palette;
-    std::shared_ptr<const std::vector<SurfaceMesh>> surfaces;
 };
 
 struct PlantAsset {

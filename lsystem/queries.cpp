@@ -1,7 +1,6 @@
 #include "lsystem/queries.h"
 
-#include <array>
-
+#include "lsystem/query_modules.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"
@@ -10,23 +9,6 @@
 namespace lsys {
 
 namespace {
-
-// The query each symbol answers after a '?': 0 none, else 1 + the index of
-// the vector in kQueryNames (position, heading, left, up).
-constexpr std::array<const char*, 4> kQueryNames = {"P", "H", "L", "U"};
-
-std::vector<uint8_t> queryKinds(const SymbolTable& symbols) {
-    std::vector<uint8_t> kinds(symbols.size(), 0);
-    for (size_t k = 0; k < kQueryNames.size(); ++k)
-        if (std::optional<SymbolId> id = symbols.find(kQueryNames[k])) kinds[*id] = static_cast<uint8_t>(k + 1);
-    return kinds;
-}
-
-bool holdsQuery(const std::vector<SuccessorModule>& modules, SymbolId question, const std::vector<uint8_t>& kinds) {
-    for (size_t i = 0; i + 1 < modules.size(); ++i)
-        if (modules[i].symbol == question && kinds[modules[i + 1].symbol]) return true;
-    return false;
-}
 
 // Whether module i is a '?' followed by a queried module.
 bool isQuery(const ModuleString& string, size_t i, SymbolId question, const std::vector<uint8_t>& kinds) {
@@ -81,17 +63,6 @@ ModuleString throughInterpretation(const Grammar& grammar, const ModuleString& s
 }
 
 } // namespace
-
-bool hasQueries(const Grammar& grammar) {
-    const std::optional<SymbolId> question = grammar.symbols.find("?");
-    if (!question) return false;
-    const std::vector<uint8_t> kinds = queryKinds(grammar.symbols);
-    if (holdsQuery(grammar.axiom, *question, kinds)) return true;
-    for (const ProductionSet* set : {&grammar.rules, &grammar.decomposition})
-        for (const Production& production : set->productions)
-            if (holdsQuery(production.successor, *question, kinds)) return true;
-    return false;
-}
 
 void answerQueries(const Grammar& grammar, ModuleString& string) {
     const std::optional<SymbolId> question = grammar.symbols.find("?");

@@ -5,15 +5,13 @@
 // stands. Before each derivation step, and once more after the last (where
 // cpfg draws the string), the turtle reads the string and writes the
 // answers into the parameters of the module after each '?', so that
-// productions can use them in conditions and contexts.
+// productions can use them in conditions and contexts. Which modules are
+// queries is lsystem/query_modules.h's.
 
 #include "lsystem/grammar.h"
 #include "lsystem/module_string.h"
 
 namespace lsys {
-
-// Whether the axiom or any successor holds a query (a '?' followed by P, H, L or U).
-bool hasQueries(const Grammar& grammar);
 
 // Interprets `string` with the turtle of the grammar's header settings,
 // through its interpretation rules as cpfg's turtle reads it through the

@@ -79,14 +79,14 @@ struct Range {
 };
 
 // Upper bounds of what a range of the input can become.
-struct Bounds {
+struct OutputBounds {
     size_t modules = 0;
     size_t parameters = 0;
     uint32_t mostParameters = 0; // of one input module
 };
 
-Bounds boundsOf(const PreparedSet& prepared, const ModuleString& in, Range range, bool withParameters) {
-    Bounds bounds;
+OutputBounds boundsOf(const PreparedSet& prepared, const ModuleString& in, Range range, bool withParameters) {
+    OutputBounds bounds;
     for (size_t i = range.begin; i < range.end; ++i) {
         bounds.modules += prepared.maxModules[in.symbols[i]];
         if (!withParameters) continue;
@@ -279,7 +279,7 @@ struct Rewriter {
         const size_t count = ranges.size();
         const size_t moduleCap = options.maxModules + prepared.longestSuccessor;
 
-        std::vector<Bounds> bounds(count);
+        std::vector<OutputBounds> bounds(count);
         runParallel(count, [&](size_t t) { bounds[t] = boundsOf(prepared, in, ranges[t], withParameters); });
         std::vector<size_t> moduleOffset(count + 1, 0), parameterOffset(count + 1, 0);
         for (size_t t = 0; t < count; ++t) {

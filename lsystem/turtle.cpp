@@ -6,8 +6,6 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 
-#include "lsystem/rewriter.h"
-
 namespace lsys {
 
 TurtleSettings turtleSettings(const Grammar& grammar) {
@@ -134,16 +132,6 @@ void widenPixelLines(PlantAsset& plant) {
     const float widest = scaleLineRadii(plant, worldPerPixel(plant.bounds));
     plant.bounds.min -= glm::vec3(widest);
     plant.bounds.max += glm::vec3(widest);
-}
-
-PlantAsset plantFromGrammar(const Grammar& grammar, const ModuleString& derived, const SurfaceLibrary& surfaces,
-                            const MemoryBudget& memory) {
-    const TurtleSettings settings = turtleSettings(grammar);
-    if (grammar.interpretation.empty()) return interpretPlant(derived, grammar.symbols, settings, surfaces, memory);
-    DeriveOptions interpretation;
-    interpretation.memory = memory;
-    return interpretPlant(applyInterpretation(grammar, derived, interpretation), grammar.symbols, settings, surfaces,
-                          memory);
 }
 
 } // namespace lsys

@@ -140,11 +140,4 @@ float scaleLineRadii(PlantAsset& plant, float factor);
 // and bounds grown by the widest new radius.
 void widenPixelLines(PlantAsset& plant);
 
-// Applies the grammar's interpretation (homomorphism) rules, then the turtle
-// with the header's settings: what a renderer calls after derive(). Both
-// within `memory`.
-PlantAsset plantFromGrammar(const Grammar& grammar, const ModuleString& derived,
-                            const SurfaceLibrary& surfaces = SurfaceLibrary{},
-                            const MemoryBudget& memory = machineMemoryBudget());
-
 } // namespace lsys

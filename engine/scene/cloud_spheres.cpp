@@ -1,6 +1,7 @@
 #include "engine/scene/cloud_spheres.h"
 
 #include "lsystem/error.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/turtle.h"
 #include "lsystem/vlab/object.h"

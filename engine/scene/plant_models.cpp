@@ -8,6 +8,7 @@
 #include "lsystem/drawn_mesh.h"
 #include "lsystem/error.h"
 #include "lsystem/parser.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/ramification_file.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/surfaces.h"

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "lsystem/error.h"
+#include "lsystem/expression.h"
 
 namespace lsys::vlab {
 
@@ -28,6 +29,10 @@ struct VlabFunction {
 
 // y(x) as cpfg's func computes it; x is clamped to [0, 1].
 double evaluateFunction(const VlabFunction& function, double x);
+
+// The table func(id, x) reads (lsystem/expression.h): functions[i - 1]
+// evaluated as evaluateFunction does for func(i, x).
+FunctionTable functionTable(std::vector<VlabFunction> functions);
 
 struct FunctionReadResult {
     VlabFunction function;

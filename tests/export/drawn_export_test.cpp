@@ -3,6 +3,7 @@
 // shader cuts (shaders/leaf_outline.h), and the outline mesh covers what the
 // shader keeps.
 #include "lsystem/drawn_mesh.h"
+#include "lsystem/plant_from_grammar.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,6 +2,7 @@
 
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/error.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/turtle.h"
 

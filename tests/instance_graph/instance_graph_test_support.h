@@ -13,6 +13,7 @@
 
 #include "../instancing/instancing_test_support.h"
 #include "lsystem/instance_graph.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/turtle.h"
 
 namespace lsys::test {

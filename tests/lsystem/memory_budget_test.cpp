@@ -12,6 +12,7 @@
 #include "lsystem/instance_graph.h"
 #include "lsystem/memory_budget.h"
 #include "lsystem/plant_export.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/turtle.h"
 #include "test_support.h"
 

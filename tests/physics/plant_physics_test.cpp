@@ -9,6 +9,7 @@
 
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/parser.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"

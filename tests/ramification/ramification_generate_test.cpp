@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/ramification.h"
 #include "lsystem/ramification_generate.h"
 #include "ramification_test_support.h"

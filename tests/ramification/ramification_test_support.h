@@ -12,6 +12,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "lsystem/parser.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/ramification.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/surfaces.h"

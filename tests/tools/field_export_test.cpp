@@ -10,6 +10,7 @@
 #include "engine/scene/scene.h"
 #include "lsystem/drawn_mesh.h"
 #include "lsystem/plant_export.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/surfaces.h"
 #include "lsystem/turtle.h"

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "lsystem/parser.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/turtle.h"
 

@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "lsystem/module_string.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/turtle.h"
 #include "lsystem/vlab/object.h"

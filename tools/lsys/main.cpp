@@ -35,6 +35,7 @@
 #include "lsystem/instance_graph.h"
 #include "lsystem/parser.h"
 #include "lsystem/plant_export.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/ramification_file.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/surfaces.h"

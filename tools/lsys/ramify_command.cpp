@@ -13,6 +13,7 @@
 #include "lsystem/error.h"
 #include "lsystem/output_file.h"
 #include "lsystem/plant_export.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/ramification.h"
 #include "lsystem/ramification_file.h"
 #include "lsystem/rewriter.h"

@@ -27,6 +27,7 @@
 #include "lsystem/memory_budget.h"
 #include "lsystem/parser.h"
 #include "lsystem/plant_export.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/ramification.h"
 #include "lsystem/ramification_file.h"
 #include "lsystem/ramification_generate.h"

@@ -4,6 +4,7 @@
 // Usage: consumer OUT.glb. Prints "modules N" and exits 0 when all went well.
 #include "lsystem/parser.h"
 #include "lsystem/plant_export.h"
+#include "lsystem/plant_from_grammar.h"
 #include "lsystem/rewriter.h"
 #include "lsystem/turtle.h"
 
