@@ -7,7 +7,7 @@
 //   plantlang  the clouds-and-mountains chapter:
 //              Axiom = f20t15dX   X => t<dY   d m f u r t T o O c a A l L
 //   cpfg       vlab's cpfg (.l files): native text in cpfg's spellings
-// (Dialect and the names, lsystem/dialect_names.h.)
+// (Dialect and the names, lsystem/language/dialect_names.h.)
 
 #include <cstdint>
 #include <optional>
@@ -15,9 +15,9 @@
 #include <string_view>
 #include <vector>
 
-#include "lsystem/dialect_names.h"
-#include "lsystem/error.h"
-#include "lsystem/parser.h"
+#include "lsystem/common/error.h"
+#include "lsystem/language/dialect_names.h"
+#include "lsystem/language/parser.h"
 
 namespace lsys {
 

@@ -8,8 +8,8 @@
 #include <memory>
 #include <optional>
 
-#include "lsystem/file_reader.h"
-#include "lsystem/lexer.h"
+#include "lsystem/common/file_reader.h"
+#include "lsystem/language/lexer.h"
 
 namespace lsys::vlab {
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <sstream>
 
-#include "lsystem/file_reader.h"
+#include "lsystem/common/file_reader.h"
 #include "lsystem/vlab/colour_files.h"
 #include "lsystem/vlab/function_file.h"
 #include "lsystem/vlab/surface_file.h"

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "dialect_test_support.h"
-#include "lsystem/turtle_commands.h"
+#include "lsystem/turtle/turtle_commands.h"
 #include "lsystem/vlab/function_file.h"
 
 namespace lsys::test {

@@ -4,8 +4,8 @@
 #include <iostream>
 #include <unordered_map>
 
-#include "lsystem/error.h"
-#include "lsystem/parser.h"
+#include "lsystem/common/error.h"
+#include "lsystem/language/parser.h"
 #include "lsystem/vlab/object.h"
 #include "tools/memory_budget_option.h"
 

@@ -12,10 +12,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "lsystem/bgrammar.h"
+#include "lsystem/common/memory_budget.h"
 #include "lsystem/dialects/dialect.h"
-#include "lsystem/grammar.h"
-#include "lsystem/memory_budget.h"
+#include "lsystem/instancing/bgrammar.h"
+#include "lsystem/language/grammar.h"
 
 namespace tools {
 

@@ -1,5 +1,5 @@
 // lsys ramify: ramification matrices of plants, and trees generated from
-// them (lsystem/ramification*.h, docs/RAMIFICATION.md).
+// them (lsystem/ramification/, docs/RAMIFICATION.md).
 #pragma once
 
 #include <functional>

@@ -3,7 +3,7 @@
 #include "tools/plantfield/options.h"
 
 #include "engine/vk/device.h"
-#include "lsystem/output_file.h"
+#include "lsystem/common/output_file.h"
 #include "shaders/field_layouts.h"
 #include "tools/memory_budget_option.h"
 

@@ -2,7 +2,7 @@
 
 #include "engine/image/video_encoder.h"
 #include "engine/vk/device.h"
-#include "lsystem/output_file.h"
+#include "lsystem/common/output_file.h"
 #include "shaders/field_layouts.h"
 #include "tools/data_dir.h"
 #include "tools/memory_budget_option.h"

@@ -4,7 +4,7 @@
 #include "engine/field/sun_shadows.h"
 #include "engine/scene/scene.h"
 #include "engine/vk/antialiasing.h"
-#include "lsystem/memory_budget.h"
+#include "lsystem/common/memory_budget.h"
 
 #include <cstdint>
 #include <map>
