@@ -67,6 +67,23 @@ std::optional<lsys::Grammar> loadGrammar(const DerivationArguments& arguments) {
     return std::move(result.grammar);
 }
 
+int failed(const DerivationArguments& arguments, const std::exception& error) {
+    std::cerr << arguments.file << ": error: " << error.what();
+    if (dynamic_cast<const lsys::ModuleBudgetError*>(&error))
+        std::cerr << " (--max-modules sets the budget; -n derives fewer steps)";
+    std::cerr << '\n';
+    return kBadInput;
+}
+
+lsys::DeriveOptions deriveOptions(const DerivationArguments& arguments) {
+    lsys::DeriveOptions options;
+    options.steps = arguments.steps;
+    options.seed = arguments.seed;
+    options.maxModules = arguments.maxModules;
+    options.memory = arguments.memory;
+    return options;
+}
+
 lsys::BGrammarOptions bgrammarOptions(const DerivationArguments& arguments) {
     lsys::BGrammarOptions options;
     options.steps = arguments.steps;

@@ -159,7 +159,7 @@ int runRamify(const RamifyArguments& arguments) {
 
 } // namespace
 
-RamifyCommand addRamifyCommand(CLI::App& app) {
+Command addRamifyCommand(CLI::App& app) {
     auto arguments = std::make_shared<RamifyArguments>();
     CLI::App* command = app.add_subcommand(
         "ramify",

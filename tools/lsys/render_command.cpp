@@ -353,7 +353,7 @@ void addOptions(CLI::App& command, RenderArguments& arguments) {
 
 } // namespace
 
-RenderCommand addRenderCommand(CLI::App& app) {
+Command addRenderCommand(CLI::App& app) {
     auto arguments = std::make_shared<RenderArguments>();
     CLI::App* command = app.add_subcommand(
         "render", "Ray trace one plant on the CPU into a PNG (docs/RAYTRACING.md): its InstanceGraph traced without "

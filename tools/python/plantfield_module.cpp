@@ -2,7 +2,7 @@
 // any dialect, derive it, read its instance-graph statistics, its
 // ramification matrix (Tankard 2001, §2.2) and export it, generate trees
 // from ramification files,
-// as the lsys tool does (tools/lsys/main.cpp), with diagnostics raised as
+// as the lsys tool does (tools/lsys/*_command.cpp), with diagnostics raised as
 // plantfield.LsystemError; and render scenes headless (render_bindings.h).
 
 #include <filesystem>
