@@ -1,8 +1,8 @@
 #pragma once
-// The notations a plant file may be written in, by name: what its
-// "dialect: NAME" line, lsys --dialect and the Python module's dialect=
-// name. The native parser names them in its message for a dialect line it
-// cannot read; lsystem/dialects/dialect.h reads each of them.
+// The notations a plant file may be written in, and their names as a file's
+// "dialect: NAME" line, lsys --dialect and the Python module's dialect= give
+// them. The native parser lists them in its message for a dialect line it
+// cannot read; lsystem/dialects/dialect.h reads each notation.
 
 #include <optional>
 #include <string>

@@ -3,8 +3,8 @@
 // meaning of its material indices and surfaces of its own (a vlab object's
 // colour map and surface files, lsystem/vlab/object.h). The Grammar carries
 // a PlantLook in its TurtleStyle; the turtle draws with it
-// (lsystem/turtle/turtle_builder.h), and a PlantAsset (lsystem/turtle/plant_asset.h) holds
-// the materials and surfaces it drew.
+// (lsystem/turtle/turtle_builder.h), and a PlantAsset
+// (lsystem/turtle/plant_asset.h) holds the materials and surfaces it drew.
 
 #include <cstdint>
 #include <memory>

@@ -6,7 +6,6 @@
 #include "lsystem/language/parser.h"
 #include "lsystem/rewriting/plant_from_grammar.h"
 #include "lsystem/rewriting/rewriter.h"
-#include "lsystem/turtle/turtle.h"
 
 #include <filesystem>
 #include <iostream>
