@@ -1,9 +1,9 @@
 # `cmake --install BUILD [--prefix PREFIX]` (docs/INSTALL.md):
 #   bin/                          plantfield, plantbench, physics_bench, lsys
 #   share/plantfield/data/        plants, meshes, scenes (found from bin/: tools/data_dir.h)
-#   lib/libplantfield_lsystem.a   the L-system library (no Vulkan)
-#   include/plantfield/lsystem/   its headers, included as "lsystem/rewriter.h"
-#   lib/cmake/plantfield/         find_package(plantfield COMPONENTS lsystem): plantfield::lsystem
+#   lib/libplantfield_lsystem_*.a the L-system libraries, one per concern (no Vulkan)
+#   include/plantfield/lsystem/   their headers, included as "lsystem/rewriting/rewriter.h"
+#   lib/cmake/plantfield/         find_package(plantfield COMPONENTS lsystem): plantfield::lsystem, all of them
 #   lib/pkgconfig/plantfield-lsystem.pc
 # The tree is relocatable: nothing installed names the prefix it was configured for.
 include(GNUInstallDirs)
@@ -12,7 +12,8 @@ include(CMakePackageConfigHelpers)
 set(PLANTFIELD_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/plantfield)
 
 install(TARGETS plantfield plantbench physics_bench lsys RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS lsystem EXPORT plantfieldTargets
+get_property(_plantfield_lsystem_libraries GLOBAL PROPERTY PLANTFIELD_LSYSTEM_LIBRARIES) # lsystem/CMakeLists.txt
+install(TARGETS lsystem ${_plantfield_lsystem_libraries} EXPORT plantfieldTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/lsystem/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/plantfield/lsystem
         FILES_MATCHING PATTERN "*.h")
@@ -49,5 +50,13 @@ foreach(dir LIBDIR INCLUDEDIR)
     set(PLANTFIELD_PC_${dir} "\${prefix}/${CMAKE_INSTALL_${dir}}")
   endif()
 endforeach()
+# Libs: every L-system library, each before those it uses (lsystem/CMakeLists.txt
+# defines them in the opposite order), as a static link needs them.
+set(PLANTFIELD_PC_LIBS)
+foreach(library ${_plantfield_lsystem_libraries})
+  get_target_property(_plantfield_output_name ${library} OUTPUT_NAME)
+  list(PREPEND PLANTFIELD_PC_LIBS -l${_plantfield_output_name})
+endforeach()
+list(JOIN PLANTFIELD_PC_LIBS " " PLANTFIELD_PC_LIBS)
 configure_file(${CMAKE_CURRENT_LIST_DIR}/plantfield-lsystem.pc.in ${PROJECT_BINARY_DIR}/install/plantfield-lsystem.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/install/plantfield-lsystem.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

@@ -1,5 +1,5 @@
 // The outline of a leaf card, shared by GLSL (plant_surface.glsl leafShape,
-// which cuts the card) and C++ (lsystem/drawn_mesh.cpp, which meshes the same
+// which cuts the card) and C++ (lsystem/mesh/drawn_mesh.cpp, which meshes the same
 // outline for exports), so what is exported is what is drawn. A card's uv is
 // [0,1]²: v runs from the petiole (v = 0) to the tip (v = 1), u across, the
 // midrib at u = 0.5. The macros take a float; in C++ the functions below

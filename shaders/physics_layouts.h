@@ -52,7 +52,7 @@ using uint = uint32_t;
 
 // One joint of a model's skeleton, in plant space before instance scale.
 // Quaternions are xyzw. The segment's rest frame R has local +Y along the
-// segment (lsystem/plant_asset.h Frame).
+// segment (lsystem/turtle/plant_asset.h Frame).
 struct JointParams {
     vec4 restBase;     // xyz base of the segment, w length (m)
     vec4 restRotation; // quaternion R: the segment's rest frame in plant space

@@ -7,7 +7,7 @@
 
 #include "engine/field/sun_shadows.h"
 #include "engine/vk/antialiasing.h"
-#include "lsystem/memory_budget.h"
+#include "lsystem/common/memory_budget.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,5 +1,5 @@
 // --memory-budget SIZE, the same on lsys, plantfield and plantbench
-// (lsystem/memory_budget.h): what every stage may allocate, by default 3/4
+// (lsystem/common/memory_budget.h): what every stage may allocate, by default 3/4
 // of the machine's available memory.
 #pragma once
 
@@ -7,7 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "lsystem/memory_budget.h"
+#include "lsystem/common/memory_budget.h"
 
 namespace tools {
 

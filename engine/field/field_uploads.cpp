@@ -1,6 +1,6 @@
 #include "engine/field/field_uploads.h"
 
-#include "lsystem/memory_budget.h"
+#include "lsystem/common/memory_budget.h"
 #include "shaders/field_layouts.h"
 
 #include <algorithm>

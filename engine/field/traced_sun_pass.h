@@ -17,7 +17,7 @@
 #include "engine/scene/field_content.h"
 #include "engine/vk/compute_set.h"
 #include "engine/vk/resources.h"
-#include "lsystem/memory_budget.h"
+#include "lsystem/common/memory_budget.h"
 
 #include <glm/glm.hpp>
 

@@ -1,7 +1,7 @@
 #include "engine/image/image.h"
 
-#include "lsystem/file_reader.h"
-#include "lsystem/output_file.h"
+#include "lsystem/common/file_reader.h"
+#include "lsystem/common/output_file.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>

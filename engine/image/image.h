@@ -1,7 +1,7 @@
 // 8-bit RGBA images in memory and as PNG files.
 #pragma once
 
-#include "lsystem/memory_budget.h"
+#include "lsystem/common/memory_budget.h"
 
 #include <cstdint>
 #include <string>

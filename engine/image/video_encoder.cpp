@@ -1,7 +1,7 @@
 #include "engine/image/video_encoder.h"
 
-#include "lsystem/output_file.h"
-#include "lsystem/subprocess.h"
+#include "lsystem/common/output_file.h"
+#include "lsystem/common/subprocess.h"
 
 #include <algorithm>
 #include <cctype>

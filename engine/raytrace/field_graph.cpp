@@ -1,6 +1,6 @@
 #include "engine/raytrace/field_graph.h"
 
-#include "lsystem/instance_graph.h"
+#include "lsystem/instancing/instance_graph.h"
 
 #include <glm/gtc/packing.hpp>
 #include <glm/gtc/quaternion.hpp>

@@ -1,8 +1,9 @@
 #include "engine/scene/cloud_spheres.h"
 
-#include "lsystem/error.h"
-#include "lsystem/rewriter.h"
-#include "lsystem/turtle.h"
+#include "lsystem/common/error.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
+#include "lsystem/rewriting/rewriter.h"
+#include "lsystem/turtle/turtle.h"
 #include "lsystem/vlab/object.h"
 
 #include <algorithm>

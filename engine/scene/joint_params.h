@@ -3,7 +3,7 @@
 #pragma once
 
 #include "engine/scene/scene.h"
-#include "lsystem/plant_asset.h"
+#include "lsystem/turtle/plant_asset.h"
 #include "shaders/physics_layouts.h"
 
 #include <vector>

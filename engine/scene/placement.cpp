@@ -1,6 +1,6 @@
 #include "engine/scene/placement.h"
 
-#include "lsystem/random.h"
+#include "lsystem/common/random.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

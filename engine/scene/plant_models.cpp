@@ -4,14 +4,15 @@
 
 #include "engine/scene/joint_params.h"
 
+#include "lsystem/common/error.h"
 #include "lsystem/components/component_graph.h"
-#include "lsystem/drawn_mesh.h"
-#include "lsystem/error.h"
-#include "lsystem/parser.h"
-#include "lsystem/ramification_file.h"
-#include "lsystem/rewriter.h"
-#include "lsystem/surfaces.h"
-#include "lsystem/turtle.h"
+#include "lsystem/language/parser.h"
+#include "lsystem/mesh/drawn_mesh.h"
+#include "lsystem/ramification/ramification_file.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
+#include "lsystem/rewriting/rewriter.h"
+#include "lsystem/turtle/surfaces.h"
+#include "lsystem/turtle/turtle.h"
 #include "lsystem/vlab/object.h"
 
 #include <glm/geometric.hpp>
@@ -29,7 +30,7 @@ namespace {
 // times; it fails with a message rather than exhausting memory.
 constexpr size_t kModuleBudget = 5'000'000;
 
-// The bake (lsystem/drawn_mesh.h) numbers its kinds, classes and LODs as the
+// The bake (lsystem/mesh/drawn_mesh.h) numbers its kinds, classes and LODs as the
 // shaders do.
 static_assert(float(lsys::SurfaceKind::Bark) == SURFACE_BARK && float(lsys::SurfaceKind::LeafCard) == SURFACE_LEAF &&
               float(lsys::SurfaceKind::Blade) == SURFACE_BLADE);

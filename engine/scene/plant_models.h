@@ -6,8 +6,8 @@
 #pragma once
 
 #include "engine/scene/scene.h"
-#include "lsystem/memory_budget.h"
-#include "lsystem/plant_asset.h"
+#include "lsystem/common/memory_budget.h"
+#include "lsystem/turtle/plant_asset.h"
 #include "shaders/field_layouts.h"
 #include "shaders/physics_layouts.h"
 

@@ -3,7 +3,7 @@
 #include "engine/scene/scene.h"
 
 #include "lsystem/components/component_graph.h"
-#include "lsystem/ramification_file.h"
+#include "lsystem/ramification/ramification_file.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,16 +2,16 @@
 // onto its struct's defaults, so a key left out keeps the default.
 #include "engine/scene/scene.h"
 
-#include "lsystem/json_reader.h"
+#include "lsystem/common/json_reader.h"
 #include "lsystem/landscape/mountain_turtle.h"
-#include "lsystem/turtle_builder.h"
+#include "lsystem/turtle/turtle_builder.h"
 #include "lsystem/vlab/object.h"
 
 #include <algorithm>
 #include <cctype>
 
 namespace pf {
-// The located JSON reader (lsystem/json_reader.h).
+// The located JSON reader (lsystem/common/json_reader.h).
 using lsys::above, lsys::anyNumber, lsys::arrayElements, lsys::atLeast, lsys::between, lsys::didYouMean, lsys::failAt,
     lsys::JsonError, lsys::JsonNode, lsys::JsonSource, lsys::member, lsys::Range, lsys::readField, lsys::readJsonFile,
     lsys::readNumber, lsys::readString, lsys::readVector, lsys::requireMap, lsys::requireMember, lsys::requireObject,

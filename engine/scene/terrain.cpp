@@ -1,7 +1,7 @@
 #include "engine/scene/terrain.h"
 
 #include "engine/image/image.h"
-#include "lsystem/random.h"
+#include "lsystem/common/random.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

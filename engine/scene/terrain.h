@@ -2,7 +2,7 @@
 // Built from seeded fBm noise or a greyscale PNG; sampled bilinearly.
 #pragma once
 
-#include "lsystem/memory_budget.h"
+#include "lsystem/common/memory_budget.h"
 
 #include <glm/vec3.hpp>
 

@@ -13,9 +13,9 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "lsystem/random.h"
-#include "lsystem/surfaces.h"
-#include "lsystem/turtle_builder.h"
+#include "lsystem/common/random.h"
+#include "lsystem/turtle/surfaces.h"
+#include "lsystem/turtle/turtle_builder.h"
 
 namespace lsys::components {
 namespace {

@@ -12,9 +12,9 @@
 #include <variant>
 #include <vector>
 
+#include "lsystem/common/memory_budget.h"
 #include "lsystem/components/spline.h"
-#include "lsystem/memory_budget.h"
-#include "lsystem/plant_asset.h"
+#include "lsystem/turtle/plant_asset.h"
 
 namespace lsys::components {
 

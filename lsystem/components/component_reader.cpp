@@ -1,13 +1,13 @@
 // readComponentGraph: a .comp.json file (docs/COMPONENTS.md) checked value by
-// value, each error located by lsystem/json_reader.h.
+// value, each error located by lsystem/common/json_reader.h.
 #include "lsystem/components/component_graph.h"
 
 #include <algorithm>
 #include <map>
 #include <optional>
 
-#include "lsystem/json_reader.h"
-#include "lsystem/turtle_builder.h"
+#include "lsystem/common/json_reader.h"
+#include "lsystem/turtle/turtle_builder.h"
 
 namespace lsys::components {
 namespace {

@@ -4,9 +4,9 @@
 #include <cctype>
 #include <charconv>
 
-#include "lsystem/lexer.h"
-#include "lsystem/parser.h"
-#include "lsystem/subprocess.h"
+#include "lsystem/common/subprocess.h"
+#include "lsystem/language/lexer.h"
+#include "lsystem/language/parser.h"
 
 namespace lsys {
 

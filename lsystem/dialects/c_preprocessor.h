@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "lsystem/error.h"
+#include "lsystem/common/error.h"
 
 namespace lsys {
 

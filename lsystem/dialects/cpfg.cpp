@@ -25,7 +25,7 @@
 #include <cctype>
 
 #include "lsystem/dialects/native_text.h"
-#include "lsystem/lexer.h"
+#include "lsystem/language/lexer.h"
 
 namespace lsys {
 

@@ -1,7 +1,6 @@
 #include "lsystem/dialects/dialect.h"
 
 #include <algorithm>
-#include <cctype>
 #include <numeric>
 #include <tuple>
 
@@ -11,8 +10,6 @@
 namespace lsys {
 
 namespace {
-
-constexpr const char* kNames[] = {"native", "crankshaw", "robbins", "plantlang", "cpfg"};
 
 // Native text needs no translation; only a header line the native parser would reject is blanked.
 Translation blankHeader(std::string_view source) {
@@ -33,26 +30,6 @@ std::vector<size_t> lineStarts(std::string_view text) {
 }
 
 } // namespace
-
-std::optional<Dialect> dialectFromName(std::string_view name) {
-    for (size_t i = 0; i < std::size(kNames); ++i) {
-        std::string_view candidate = kNames[i];
-        if (candidate.size() == name.size() &&
-            std::equal(name.begin(), name.end(), candidate.begin(),
-                       [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; }))
-            return static_cast<Dialect>(i);
-    }
-    return std::nullopt;
-}
-
-const char* dialectName(Dialect dialect) { return kNames[static_cast<size_t>(dialect)]; }
-
-std::string knownDialects() {
-    std::string list = kNames[0];
-    for (size_t i = 1; i < std::size(kNames); ++i)
-        list += (i + 1 < std::size(kNames) ? ", " : " or ") + std::string(kNames[i]);
-    return list;
-}
 
 Dialect detectDialect(std::string_view source) {
     std::optional<HeaderLine> header = findHeaderLine(source);

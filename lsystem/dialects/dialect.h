@@ -7,6 +7,7 @@
 //   plantlang  the clouds-and-mountains chapter:
 //              Axiom = f20t15dX   X => t<dY   d m f u r t T o O c a A l L
 //   cpfg       vlab's cpfg (.l files): native text in cpfg's spellings
+// (Dialect and the names, lsystem/language/dialect_names.h.)
 
 #include <cstdint>
 #include <optional>
@@ -14,17 +15,11 @@
 #include <string_view>
 #include <vector>
 
-#include "lsystem/error.h"
-#include "lsystem/parser.h"
+#include "lsystem/common/error.h"
+#include "lsystem/language/dialect_names.h"
+#include "lsystem/language/parser.h"
 
 namespace lsys {
-
-enum class Dialect { Native, Crankshaw, Robbins, Plantlang, Cpfg };
-
-// "native", "crankshaw", "robbins", "plantlang", "cpfg" (case-insensitive).
-std::optional<Dialect> dialectFromName(std::string_view name);
-const char* dialectName(Dialect dialect);
-std::string knownDialects(); // "native, crankshaw, robbins, plantlang or cpfg", for messages
 
 // The first non-blank line "dialect: NAME" (also "// dialect: NAME",
 // "/* dialect: NAME */", "# dialect: NAME") selects the dialect; Native otherwise.

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <charconv>
 
-#include "lsystem/lexer.h"
+#include "lsystem/language/lexer.h"
 
 namespace lsys {
 

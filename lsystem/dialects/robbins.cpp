@@ -10,7 +10,7 @@
 #include <array>
 
 #include "lsystem/dialects/native_text.h"
-#include "lsystem/lexer.h"
+#include "lsystem/language/lexer.h"
 
 namespace lsys {
 

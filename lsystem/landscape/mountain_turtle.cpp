@@ -6,10 +6,10 @@
 #include <numbers>
 #include <sstream>
 
-#include "lsystem/rewriter.h"
-#include "lsystem/surfaces.h"
-#include "lsystem/turtle_builder.h"
-#include "lsystem/turtle_commands.h"
+#include "lsystem/rewriting/rewriter.h"
+#include "lsystem/turtle/surfaces.h"
+#include "lsystem/turtle/turtle_builder.h"
+#include "lsystem/turtle/turtle_commands.h"
 
 namespace lsys::landscape {
 

@@ -9,18 +9,18 @@
 // counter-clockwise (seen from above) by the placement's heading, up +y, so
 // `F` walks the horizontal core, `+`/`-` turn it on the ground and `^`/`&`
 // send a branch up or down. Every other module is the plant turtle's command
-// (lsystem/turtle.h), the width `!` included.
+// (lsystem/turtle/turtle.h), the width `!` included.
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
-#include "lsystem/error.h"
-#include "lsystem/grammar.h"
+#include "lsystem/common/error.h"
+#include "lsystem/common/memory_budget.h"
 #include "lsystem/landscape/terrain_bumps.h"
-#include "lsystem/memory_budget.h"
-#include "lsystem/module_string.h"
-#include "lsystem/turtle.h"
+#include "lsystem/language/grammar.h"
+#include "lsystem/language/module_string.h"
+#include "lsystem/turtle/turtle.h"
 
 namespace lsys::landscape {
 

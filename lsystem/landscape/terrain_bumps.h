@@ -8,7 +8,7 @@
 #include <span>
 #include <string_view>
 
-#include "lsystem/error.h"
+#include "lsystem/common/error.h"
 
 namespace lsys::landscape {
 

@@ -10,9 +10,9 @@
 #include <utility>
 #include <vector>
 
-#include "lsystem/plant_asset.h"
 #include "lsystem/raytrace/intersect.h"
 #include "lsystem/raytrace/ray.h"
+#include "lsystem/turtle/plant_asset.h"
 
 namespace lsys {
 

@@ -7,10 +7,10 @@
 #include <optional>
 #include <vector>
 
-#include "lsystem/plant_asset.h"
 #include "lsystem/raytrace/bvh.h"
 #include "lsystem/raytrace/ray.h"
 #include "lsystem/raytrace/traced_primitive.h"
+#include "lsystem/turtle/plant_asset.h"
 
 namespace lsys {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 
-#include "lsystem/turtle.h"
+#include "lsystem/turtle/turtle.h"
 
 namespace lsys {
 namespace {

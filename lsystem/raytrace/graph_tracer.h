@@ -16,12 +16,12 @@
 
 #include <glm/geometric.hpp>
 
-#include "lsystem/instance_graph.h"
+#include "lsystem/instancing/instance_graph.h"
 #include "lsystem/raytrace/bvh.h"
 #include "lsystem/raytrace/ray.h"
 #include "lsystem/raytrace/traced_primitive.h"
 #include "lsystem/raytrace/wide_bvh.h"
-#include "lsystem/surfaces.h"
+#include "lsystem/turtle/surfaces.h"
 
 namespace lsys {
 

@@ -10,8 +10,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "lsystem/plant_asset.h"
 #include "lsystem/raytrace/ray.h"
+#include "lsystem/turtle/plant_asset.h"
 
 namespace lsys {
 

@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "lsystem/raytrace/graph_tracer.h"
-#include "lsystem/turtle.h"
+#include "lsystem/turtle/turtle.h"
 
 namespace lsys {
 namespace {

@@ -12,12 +12,12 @@
 #include <optional>
 #include <vector>
 
-#include "lsystem/instance_graph_lazy.h"
+#include "lsystem/instancing/instance_graph_lazy.h"
 #include "lsystem/raytrace/bvh.h"
 #include "lsystem/raytrace/expansion_cache.h"
 #include "lsystem/raytrace/ray.h"
 #include "lsystem/raytrace/traced_primitive.h"
-#include "lsystem/surfaces.h"
+#include "lsystem/turtle/surfaces.h"
 
 namespace lsys {
 

@@ -8,7 +8,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "lsystem/plant_asset.h"
+#include "lsystem/turtle/plant_asset.h"
 
 namespace lsys {
 

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "lsystem/raytrace/intersect.h"
-#include "lsystem/turtle_builder.h"
+#include "lsystem/turtle/turtle_builder.h"
 
 namespace lsys {
 namespace {

@@ -7,11 +7,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "lsystem/instance_graph.h"
-#include "lsystem/plant_asset.h"
-#include "lsystem/primitive_mesh.h"
+#include "lsystem/instancing/instance_graph.h"
+#include "lsystem/mesh/primitive_mesh.h"
 #include "lsystem/raytrace/ray.h"
-#include "lsystem/surfaces.h"
+#include "lsystem/turtle/plant_asset.h"
+#include "lsystem/turtle/surfaces.h"
 
 namespace lsys {
 

@@ -1,6 +1,6 @@
 #include "lsystem/vlab/colour_files.h"
 
-#include "lsystem/file_reader.h"
+#include "lsystem/common/file_reader.h"
 
 namespace lsys::vlab {
 

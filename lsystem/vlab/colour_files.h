@@ -12,7 +12,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "lsystem/error.h"
+#include "lsystem/common/error.h"
 
 namespace lsys::vlab {
 

@@ -4,10 +4,12 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <memory>
 #include <optional>
 
-#include "lsystem/file_reader.h"
-#include "lsystem/lexer.h"
+#include "lsystem/common/file_reader.h"
+#include "lsystem/language/lexer.h"
 
 namespace lsys::vlab {
 
@@ -281,6 +283,14 @@ double evaluateFunction(const VlabFunction& function, double x) {
     const size_t i = static_cast<size_t>(std::floor(index));
     if (i >= last) return function.samples[last];
     return (1.0 - index + double(i)) * function.samples[i] + (index - double(i)) * function.samples[i + 1];
+}
+
+FunctionTable functionTable(std::vector<VlabFunction> functions) {
+    auto table = std::make_shared<std::vector<std::function<double(double)>>>();
+    table->reserve(functions.size());
+    for (VlabFunction& function : functions)
+        table->push_back([function = std::move(function)](double x) { return evaluateFunction(function, x); });
+    return table;
 }
 
 FunctionReadResult readFunctionFile(const std::filesystem::path& path, int samples) {

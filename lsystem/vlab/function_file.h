@@ -12,7 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "lsystem/error.h"
+#include "lsystem/common/error.h"
+#include "lsystem/language/expression.h"
 
 namespace lsys::vlab {
 
@@ -28,6 +29,10 @@ struct VlabFunction {
 
 // y(x) as cpfg's func computes it; x is clamped to [0, 1].
 double evaluateFunction(const VlabFunction& function, double x);
+
+// The table func(id, x) reads (lsystem/language/expression.h): functions[i - 1]
+// evaluated as evaluateFunction does for func(i, x).
+FunctionTable functionTable(std::vector<VlabFunction> functions);
 
 struct FunctionReadResult {
     VlabFunction function;

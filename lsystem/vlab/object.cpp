@@ -7,7 +7,7 @@
 #include <memory>
 #include <sstream>
 
-#include "lsystem/file_reader.h"
+#include "lsystem/common/file_reader.h"
 #include "lsystem/vlab/colour_files.h"
 #include "lsystem/vlab/function_file.h"
 #include "lsystem/vlab/surface_file.h"
@@ -154,7 +154,7 @@ void quoteOtherFiles(std::vector<Diagnostic>& diagnostics, const std::string& ls
 struct ObjectLook {
     ViewFile view;
     PlantLook look;
-    std::shared_ptr<const std::vector<VlabFunction>> functions;
+    FunctionTable functions;
     std::map<std::string, int> functionNames; // the set's names and their ids, for the preprocessor
 };
 
@@ -216,19 +216,19 @@ ObjectLook readObjectLook(const ObjectFiles& files, PlantFile& plant) {
         object.view = std::move(view.view);
     }
     const fs::path folder = files.lsystem.parent_path();
-    auto functions = std::make_shared<std::vector<VlabFunction>>();
-    if (object.view.functionSet) readSet(*object.view.functionSet, files, object, *functions, plant);
+    std::vector<VlabFunction> functions;
+    if (object.view.functionSet) readSet(*object.view.functionSet, files, object, functions, plant);
     for (const ViewFunction& function : object.view.functions) {
         const fs::path path = folder / function.file;
         if (missing(function.file, files, function.line, "function", "its function is 0 everywhere", plant)) {
-            functions->push_back(VlabFunction{.name = path.stem().string()});
+            functions.push_back(VlabFunction{.name = path.stem().string()});
             continue;
         }
         FunctionReadResult read = readFunctionFile(path, function.samples);
         append(errors, std::move(read.diagnostics));
-        functions->push_back(std::move(read.function));
+        functions.push_back(std::move(read.function));
     }
-    object.functions = std::move(functions);
+    object.functions = functionTable(std::move(functions));
     auto surfaces = std::make_shared<std::vector<SurfaceMesh>>();
     for (const ViewSurface& surface : object.view.surfaces) {
         const fs::path path = folder / surface.file;

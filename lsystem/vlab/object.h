@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "lsystem/dialects/dialect.h"
-#include "lsystem/parser.h"
+#include "lsystem/language/parser.h"
 
 namespace lsys::vlab {
 

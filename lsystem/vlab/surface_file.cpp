@@ -10,8 +10,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "lsystem/file_reader.h"
-#include "lsystem/lexer.h"
+#include "lsystem/common/file_reader.h"
+#include "lsystem/language/lexer.h"
 
 namespace lsys::vlab {
 
@@ -100,7 +100,7 @@ struct Placement {
 
 // cpfg draws local x, y, z along its turtle's L, H and U (irisGL.c,
 // iGlPredefinedSurface); its U is L x H (interpret.c starts it at -Z), the
-// opposite of lsystem/turtle.h's: here x and z change sign, a half turn about Y.
+// opposite of lsystem/turtle/turtle.h's: here x and z change sign, a half turn about Y.
 glm::vec3 turtleSpace(glm::vec3 v) { return {-v.x, v.y, -v.z}; }
 
 // cpfg's Normalize: a zero vector stays zero.

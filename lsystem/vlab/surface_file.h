@@ -2,14 +2,14 @@
 // cpfg's surface files (.s): bicubic Bézier patches with a contact point, an
 // end point, a heading and an up vector and a size (ABOP §5.1's predefined
 // surfaces), tessellated as cpfg tessellates them and placed in the space
-// lsystem/surfaces.h defines (grows along +Y, faces +Z), so `~l` draws them.
+// lsystem/turtle/surfaces.h defines (grows along +Y, faces +Z), so `~l` draws them.
 //
 // As cpfg's patches.c reads them (read_surface): every control point is
 // moved by minus the contact point, scaled by the view file's size over the
 // file's SIZE, and rotated by the matrix whose columns are the file's left
 // (heading x up), heading and up; cpfg then draws local x along the turtle's
 // left L, y along H and z along its U. cpfg's U is L x H, the opposite of
-// lsystem/turtle.h's, so x and z change sign here (a half turn about Y).
+// lsystem/turtle/turtle.h's, so x and z change sign here (a half turn about Y).
 // Each patch becomes an (s + 1) x (t + 1) grid of points (s runs down the
 // rows of control points, t along them), with cpfg's normals: the cross
 // product of the tangents, its four corners blended with their neighbours,
@@ -21,8 +21,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "lsystem/error.h"
-#include "lsystem/plant_asset.h"
+#include "lsystem/common/error.h"
+#include "lsystem/turtle/plant_asset.h"
 
 namespace lsys::vlab {
 

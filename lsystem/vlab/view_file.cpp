@@ -9,8 +9,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "lsystem/common/file_reader.h"
 #include "lsystem/dialects/c_preprocessor.h"
-#include "lsystem/file_reader.h"
 
 namespace lsys::vlab {
 

@@ -17,8 +17,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "lsystem/error.h"
-#include "lsystem/grammar.h"
+#include "lsystem/common/error.h"
+#include "lsystem/language/grammar.h"
 
 namespace lsys::vlab {
 

@@ -3,7 +3,7 @@
 // example species in data/components.
 #include "component_test_support.h"
 #include "lsystem/components/component_graph.h"
-#include "lsystem/primitive_mesh.h"
+#include "lsystem/mesh/primitive_mesh.h"
 
 #include <gtest/gtest.h>
 

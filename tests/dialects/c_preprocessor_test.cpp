@@ -7,7 +7,7 @@
 
 #include "dialect_test_support.h"
 #include "lsystem/dialects/c_preprocessor.h"
-#include "lsystem/lexer.h"
+#include "lsystem/language/lexer.h"
 
 namespace lsys::test {
 namespace {

@@ -15,9 +15,9 @@
 #include <set>
 #include <string>
 
-#include "lsystem/module_string.h"
-#include "lsystem/parser.h"
-#include "lsystem/rewriter.h"
+#include "lsystem/language/module_string.h"
+#include "lsystem/language/parser.h"
+#include "lsystem/rewriting/rewriter.h"
 #include "lsystem/vlab/object.h"
 
 namespace lsys {

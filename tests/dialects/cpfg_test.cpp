@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "dialect_test_support.h"
-#include "lsystem/turtle_commands.h"
+#include "lsystem/turtle/turtle_commands.h"
 #include "lsystem/vlab/function_file.h"
 
 namespace lsys::test {
@@ -192,9 +192,9 @@ TEST(Cpfg, FuncReadsTheObjectsFunctionFiles) {
     std::ofstream(folder / "pos.func") << "fver 1 1\nname: int-pos\nsamples: 10\nflip: off\npoints: 4\n"
                                           "0.000000 1.013734 1\n0.230453 0.561893 1\n0.778895 0.452828 1\n"
                                           "1.000000 0.209768 1\n";
-    auto table = std::make_shared<std::vector<vlab::VlabFunction>>();
+    std::vector<vlab::VlabFunction> functions;
     for (const auto& [file, samples] : {std::pair{"length.func", 100}, std::pair{"pos.func", -1}})
-        table->push_back(vlab::readFunctionFile(folder / file, samples).function);
+        functions.push_back(vlab::readFunctionFile(folder / file, samples).function);
     std::filesystem::remove_all(folder);
     const std::string source = "#define POSITION 2\n"
                                "Lsystem: 1\n"
@@ -205,7 +205,7 @@ TEST(Cpfg, FuncReadsTheObjectsFunctionFiles) {
                                "endlsystem\n";
     ParseOptions options;
     options.file = "plant.l";
-    options.functions = table;
+    options.functions = vlab::functionTable(std::move(functions));
     const ParseResult result = parseDialect(Dialect::Cpfg, source, options);
     ASSERT_TRUE(result.ok()) << formatDiagnostics(result.diagnostics, source);
     const char* const cpfg = "F(0.000161505)B(1.01241,1.00317)F(3.95827)B(0.669997,0.924674)F(8.52323)"
@@ -219,7 +219,7 @@ TEST(Cpfg, FuncReadsTheObjectsFunctionFiles) {
     ASSERT_FALSE(none.ok());
     EXPECT_EQ(none.diagnostics[0].line, 5);
     EXPECT_EQ(none.diagnostics[0].column, 14);
-    options.functions = std::make_shared<std::vector<vlab::VlabFunction>>(1);
+    options.functions = vlab::functionTable(std::vector<vlab::VlabFunction>(1));
     const ParseResult tooFew = parseDialect(Dialect::Cpfg, source, options);
     ASSERT_FALSE(tooFew.ok());
     EXPECT_EQ(tooFew.diagnostics[0].line, 5);

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "lsystem/dialects/dialect.h"
-#include "lsystem/module_string.h"
-#include "lsystem/rewriter.h"
+#include "lsystem/language/module_string.h"
+#include "lsystem/rewriting/rewriter.h"
 #include "lsystem/vlab/object.h"
 
 namespace lsys::test {

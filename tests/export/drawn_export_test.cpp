@@ -1,8 +1,9 @@
-// The drawn form of the flat export (lsystem/drawn_mesh.h): foliage segments
+// The drawn form of the flat export (lsystem/mesh/drawn_mesh.h): foliage segments
 // come out as the renderer's flat ribbons, leaf cards as the leaf outline its
 // shader cuts (shaders/leaf_outline.h), and the outline mesh covers what the
 // shader keeps.
-#include "lsystem/drawn_mesh.h"
+#include "lsystem/mesh/drawn_mesh.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,10 +14,10 @@
 
 #include "../lsystem/test_support.h"
 #include "gltf_reading.h"
-#include "lsystem/plant_export.h"
-#include "lsystem/rewriter.h"
-#include "lsystem/surfaces.h"
-#include "lsystem/turtle.h"
+#include "lsystem/export/plant_export.h"
+#include "lsystem/rewriting/rewriter.h"
+#include "lsystem/turtle/surfaces.h"
+#include "lsystem/turtle/turtle.h"
 #include "sample_plants.h"
 #include "shaders/leaf_outline.h"
 

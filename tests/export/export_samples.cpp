@@ -9,8 +9,8 @@
 
 #include <tiny_gltf.h>
 
-#include "lsystem/graph_export.h"
-#include "lsystem/plant_export.h"
+#include "lsystem/export/graph_export.h"
+#include "lsystem/export/plant_export.h"
 #include "sample_plants.h"
 
 namespace fs = std::filesystem;

@@ -1,7 +1,7 @@
-// The instanced form (lsystem/graph_export.h) against the flat export of the
+// The instanced form (lsystem/export/graph_export.h) against the flat export of the
 // same plant: one mesh per object that draws, the node tree mirroring the
 // graph, and the same triangles in the same places once the tree is expanded.
-#include "lsystem/graph_export.h"
+#include "lsystem/export/graph_export.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -14,7 +14,7 @@
 
 #include "../lsystem/test_support.h"
 #include "gltf_reading.h"
-#include "lsystem/plant_export.h"
+#include "lsystem/export/plant_export.h"
 #include "sample_plants.h"
 
 namespace {

@@ -3,7 +3,7 @@
 // file replaced.
 #include "gltf_reading.h"
 
-#include "lsystem/output_file.h"
+#include "lsystem/common/output_file.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "lsystem/plant_export.h"
+#include "lsystem/export/plant_export.h"
 
 #include <algorithm>
 #include <fstream>

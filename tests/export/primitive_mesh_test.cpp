@@ -1,4 +1,4 @@
-#include "lsystem/primitive_mesh.h"
+#include "lsystem/mesh/primitive_mesh.h"
 
 #include <cmath>
 

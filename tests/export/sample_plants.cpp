@@ -4,7 +4,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "lsystem/parser.h"
+#include "lsystem/language/parser.h"
 
 namespace plantfield::test {
 namespace {

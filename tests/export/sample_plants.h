@@ -2,8 +2,8 @@
 // Plants built by hand for the exporter's tests (the turtle is tested on its
 // own): every primitive kind, a bent stem, a branch, a shared surface.
 
-#include "lsystem/instance_graph.h"
-#include "lsystem/plant_asset.h"
+#include "lsystem/instancing/instance_graph.h"
+#include "lsystem/turtle/plant_asset.h"
 
 namespace plantfield::test {
 

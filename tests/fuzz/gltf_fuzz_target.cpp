@@ -1,7 +1,7 @@
 #include "fuzz_targets.h"
 #include "input_file.h"
 
-#include "lsystem/surfaces.h"
+#include "lsystem/turtle/surfaces.h"
 
 #include <cstring>
 

@@ -1,9 +1,10 @@
 #include "fuzz_targets.h"
 
+#include "lsystem/common/error.h"
 #include "lsystem/dialects/dialect.h"
-#include "lsystem/error.h"
-#include "lsystem/rewriter.h"
-#include "lsystem/turtle.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
+#include "lsystem/rewriting/rewriter.h"
+#include "lsystem/turtle/turtle.h"
 
 #include <algorithm>
 #include <exception>

@@ -21,8 +21,8 @@ if ! "$CMAKE" --install "$BUILD" --config "$CONFIG" --prefix "$PREFIX" > "$WORK/
 fi
 
 for path in bin/plantfield bin/plantbench bin/physics_bench bin/lsys \
-    "$LIBDIR/libplantfield_lsystem.a" \
-    include/plantfield/lsystem/rewriter.h include/plantfield/lsystem/dialects/dialect.h \
+    "$LIBDIR/libplantfield_lsystem_common.a" \
+    include/plantfield/lsystem/rewriting/rewriter.h include/plantfield/lsystem/dialects/dialect.h \
     include/plantfield/lsystem/vlab/object.h \
     "$LIBDIR/cmake/plantfield/plantfieldConfig.cmake" "$LIBDIR/cmake/plantfield/plantfieldConfigVersion.cmake" \
     "$LIBDIR/cmake/plantfield/plantfieldTargets.cmake" "$LIBDIR/pkgconfig/plantfield-lsystem.pc" \
@@ -30,6 +30,12 @@ for path in bin/plantfield bin/plantbench bin/physics_bench bin/lsys \
     [ -e "$PREFIX/$path" ] || fail "not installed: $path"
 done
 [ -e "$PREFIX/include/plantfield/lsystem/CMakeLists.txt" ] && fail "install copies more than the headers"
+# Every L-system library the .pc file links is installed (one per concern, lsystem/CMakeLists.txt).
+for flag in $(sed -n 's/^Libs: //p' "$PREFIX/$LIBDIR/pkgconfig/plantfield-lsystem.pc"); do
+    case $flag in
+    -lplantfield_*) [ -e "$PREFIX/$LIBDIR/lib${flag#-l}.a" ] || fail "not installed: $LIBDIR/lib${flag#-l}.a" ;;
+    esac
+done
 
 # find_package(plantfield COMPONENTS lsystem), target plantfield::lsystem.
 if "$CMAKE" -S "$CONSUMER" -B "$WORK/consumer-cmake" -G "$GENERATOR" -DCMAKE_CXX_COMPILER="$CXX" \

@@ -12,8 +12,9 @@
 #include <glm/geometric.hpp>
 
 #include "../instancing/instancing_test_support.h"
-#include "lsystem/instance_graph.h"
-#include "lsystem/turtle.h"
+#include "lsystem/instancing/instance_graph.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
+#include "lsystem/turtle/turtle.h"
 
 namespace lsys::test {
 

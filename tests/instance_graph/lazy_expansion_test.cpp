@@ -9,7 +9,7 @@
 #include <string>
 
 #include "instance_graph_test_support.h"
-#include "lsystem/instance_graph_lazy.h"
+#include "lsystem/instancing/instance_graph_lazy.h"
 
 namespace lsys::test {
 namespace {

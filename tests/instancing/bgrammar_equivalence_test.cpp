@@ -3,7 +3,7 @@
 // counts equal the counts of that word; its nodes are legal and shared.
 
 #include "instancing_test_support.h"
-#include "lsystem/error.h"
+#include "lsystem/common/error.h"
 
 namespace lsys::test {
 namespace {

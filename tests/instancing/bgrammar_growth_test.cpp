@@ -5,8 +5,8 @@
 #include <map>
 
 #include "instancing_test_support.h"
-#include "lsystem/instance_graph.h"
-#include "lsystem/plant_asset.h"
+#include "lsystem/instancing/instance_graph.h"
+#include "lsystem/turtle/plant_asset.h"
 
 namespace lsys::test {
 namespace {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "../lsystem/test_support.h"
-#include "lsystem/bgrammar.h"
+#include "lsystem/instancing/bgrammar.h"
 #include "lsystem/vlab/object.h"
 
 namespace lsys::test {

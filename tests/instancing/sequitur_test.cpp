@@ -7,8 +7,8 @@
 #include <set>
 
 #include "instancing_test_support.h"
-#include "lsystem/error.h"
-#include "lsystem/sequitur.h"
+#include "lsystem/common/error.h"
+#include "lsystem/instancing/sequitur.h"
 
 namespace lsys::test {
 namespace {

@@ -3,7 +3,7 @@
 // extreme-peak rule and the bump budget; the data/terrain L-systems.
 #include "lsystem/landscape/mountain_turtle.h"
 
-#include "lsystem/parser.h"
+#include "lsystem/language/parser.h"
 #include "lsystem/vlab/object.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <numeric>
 
-#include "lsystem/buffer.h"
+#include "lsystem/language/buffer.h"
 
 namespace {
 

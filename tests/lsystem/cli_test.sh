@@ -114,7 +114,7 @@ expect_run version 0 "^lsys $VERSION\$" -- "$LSYS" --version
 expect_run derive-help 0 '--max-modules' -- "$LSYS" derive --help
 expect_run help-lists-turtle 0 '--help-turtle' -- "$LSYS" --help
 expect_run help-turtle 0 '^F  *l = length, w = width  *draw a segment' -- "$LSYS" --help-turtle
-# A row for every symbol of the turtle's commands (lsystem/turtle_commands.cpp), first on its line.
+# A row for every symbol of the turtle's commands (lsystem/turtle/turtle_commands.cpp), first on its line.
 for symbol in F f G g + - '&' '^' '\' / '|' '$' '[' ']' '!' ';' "'" % @Lm @La @Ls @Am @Aa @As @Wm @Wa @Ca @K @Ts @Tv \
     @M @R @O '~name' '{' . '}' @Oc; do
     SYMBOL=$symbol awk '$1 == ENVIRON["SYMBOL"] { found = 1 } END { exit !found }' "$WORK/out" ||

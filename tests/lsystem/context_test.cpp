@@ -4,7 +4,7 @@
 
 #include "test_support.h"
 
-#include "lsystem/bgrammar.h"
+#include "lsystem/instancing/bgrammar.h"
 
 namespace lsys::test {
 namespace {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "lsystem/vlab/function_file.h"
 #include "test_support.h"
 
 namespace lsys::test {
@@ -181,14 +182,14 @@ TEST(LsysExpression, LongFlatExpressionStaysWithinTheStack) {
     EXPECT_NE(result.diagnostics[0].message.find("too complex"), std::string::npos);
 }
 
-// cpfg's func(id, x) reads a table of the object's function files. These
-// functions are given by their samples: func(1, x) interpolates 0, 0.5, 2
-// and func(2, x) is 3 throughout.
+// cpfg's func(id, x) reads a table of the object's function files
+// (vlab::functionTable). These functions are given by their samples:
+// func(1, x) interpolates 0, 0.5, 2 and func(2, x) is 3 throughout.
 FunctionTable twoFunctions() {
     vlab::VlabFunction rising, flat;
     rising.samples = {0.0, 0.5, 2.0};
     flat.samples = {3.0, 3.0};
-    return std::make_shared<const std::vector<vlab::VlabFunction>>(std::vector{rising, flat});
+    return vlab::functionTable({rising, flat});
 }
 
 std::optional<double> withFunctions(std::string_view text, std::vector<Diagnostic>& diagnostics, double x = 0) {

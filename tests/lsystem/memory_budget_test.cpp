@@ -1,4 +1,4 @@
-// The memory budget (lsystem/memory_budget.h): sizes as --memory-budget reads
+// The memory budget (lsystem/common/memory_budget.h): sizes as --memory-budget reads
 // them, the error need() raises, and every stage of lsystem/ refusing work
 // past the budget before it allocates.
 
@@ -7,12 +7,13 @@
 #include <filesystem>
 #include <string>
 
-#include "lsystem/bgrammar.h"
-#include "lsystem/graph_export.h"
-#include "lsystem/instance_graph.h"
-#include "lsystem/memory_budget.h"
-#include "lsystem/plant_export.h"
-#include "lsystem/turtle.h"
+#include "lsystem/common/memory_budget.h"
+#include "lsystem/export/graph_export.h"
+#include "lsystem/export/plant_export.h"
+#include "lsystem/instancing/bgrammar.h"
+#include "lsystem/instancing/instance_graph.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
+#include "lsystem/turtle/turtle.h"
 #include "test_support.h"
 
 namespace lsys::test {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "lsystem/error.h"
+#include "lsystem/common/error.h"
 #include "test_support.h"
 
 namespace lsys::test {

@@ -1,4 +1,4 @@
-// cpfg's statement blocks and global variables (lsystem/statements.h):
+// cpfg's statement blocks and global variables (lsystem/language/statements.h):
 // blocks around a production's condition, Start:/StartEach:/EndEach:/End:,
 // define: arrays, sequential rewriting in string order, cpfg's arithmetic,
 // and the errors of malformed blocks.

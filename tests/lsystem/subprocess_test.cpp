@@ -1,11 +1,11 @@
-// runProcess and Process (lsystem/subprocess.h), which run the C
+// runProcess and Process (lsystem/common/subprocess.h), which run the C
 // preprocessor and the video encoder: input and output larger than a pipe
 // holds, input written piece by piece, programs that stop reading, write
 // without end or never finish, and programs that do not exist.
 
 #include <gtest/gtest.h>
 
-#include "lsystem/subprocess.h"
+#include "lsystem/common/subprocess.h"
 
 namespace lsys {
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "lsystem/dialects/dialect.h"
-#include "lsystem/parser.h"
-#include "lsystem/rewriter.h"
+#include "lsystem/language/parser.h"
+#include "lsystem/rewriting/rewriter.h"
 #include "lsystem/vlab/object.h"
 
 namespace lsys::test {

@@ -8,10 +8,11 @@
 #include "shaders/joint_physics.h"
 
 #include "lsystem/dialects/dialect.h"
-#include "lsystem/parser.h"
-#include "lsystem/rewriter.h"
-#include "lsystem/surfaces.h"
-#include "lsystem/turtle.h"
+#include "lsystem/language/parser.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
+#include "lsystem/rewriting/rewriter.h"
+#include "lsystem/turtle/surfaces.h"
+#include "lsystem/turtle/turtle.h"
 
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>

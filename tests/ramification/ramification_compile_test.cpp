@@ -1,7 +1,7 @@
 // Compiling plants into ramification matrices (Tankard 2001, §2.2).
 #include <gtest/gtest.h>
 
-#include "lsystem/ramification.h"
+#include "lsystem/ramification/ramification.h"
 #include "ramification_test_support.h"
 
 namespace lsys {

@@ -6,7 +6,7 @@
 #include <limits>
 #include <numbers>
 
-#include "lsystem/ramification_file.h"
+#include "lsystem/ramification/ramification_file.h"
 #include "ramification_test_support.h"
 
 namespace lsys {

@@ -4,8 +4,9 @@
 
 #include <cmath>
 
-#include "lsystem/ramification.h"
-#include "lsystem/ramification_generate.h"
+#include "lsystem/ramification/ramification.h"
+#include "lsystem/ramification/ramification_generate.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
 #include "ramification_test_support.h"
 
 namespace lsys {

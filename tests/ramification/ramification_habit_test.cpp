@@ -9,8 +9,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "lsystem/ramification.h"
-#include "lsystem/ramification_generate.h"
+#include "lsystem/ramification/ramification.h"
+#include "lsystem/ramification/ramification_generate.h"
 #include "ramification_test_support.h"
 
 namespace lsys {

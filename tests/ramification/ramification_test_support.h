@@ -11,11 +11,12 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "lsystem/parser.h"
-#include "lsystem/ramification.h"
-#include "lsystem/rewriter.h"
-#include "lsystem/surfaces.h"
-#include "lsystem/turtle.h"
+#include "lsystem/language/parser.h"
+#include "lsystem/ramification/ramification.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
+#include "lsystem/rewriting/rewriter.h"
+#include "lsystem/turtle/surfaces.h"
+#include "lsystem/turtle/turtle.h"
 #include "lsystem/vlab/object.h"
 
 namespace lsys::test {

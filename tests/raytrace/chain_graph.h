@@ -6,7 +6,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "lsystem/instance_graph.h"
+#include "lsystem/instancing/instance_graph.h"
 
 namespace pf::test {
 

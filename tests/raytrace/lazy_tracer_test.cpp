@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "../instance_graph/instance_graph_test_support.h"
-#include "lsystem/instance_graph_lazy.h"
+#include "lsystem/instancing/instance_graph_lazy.h"
 #include "lsystem/raytrace/graph_tracer.h"
 #include "lsystem/raytrace/lazy_graph_tracer.h"
 #include "seeded_rays.h"

@@ -13,11 +13,11 @@
 #include <glm/ext/matrix_transform.hpp>
 
 #include "../instance_graph/instance_graph_test_support.h"
-#include "lsystem/instance_graph_lazy.h"
+#include "lsystem/instancing/instance_graph_lazy.h"
 #include "lsystem/raytrace/flat_tracer.h"
 #include "lsystem/raytrace/graph_tracer.h"
 #include "lsystem/raytrace/render.h"
-#include "lsystem/turtle_builder.h"
+#include "lsystem/turtle/turtle_builder.h"
 
 namespace lsys::test {
 namespace {

@@ -11,8 +11,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "lsystem/plant_asset.h"
 #include "lsystem/raytrace/ray.h"
+#include "lsystem/turtle/plant_asset.h"
 
 namespace lsys::test {
 

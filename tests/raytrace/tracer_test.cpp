@@ -17,7 +17,7 @@
 #include "../instance_graph/instance_graph_test_support.h"
 #include "lsystem/raytrace/flat_tracer.h"
 #include "lsystem/raytrace/graph_tracer.h"
-#include "lsystem/turtle.h"
+#include "lsystem/turtle/turtle.h"
 #include "seeded_rays.h"
 
 namespace lsys::test {

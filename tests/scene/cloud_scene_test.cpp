@@ -4,7 +4,7 @@
 // at the scene's line and column. Keys and values at fault are BadSceneTest
 // cases (scene_error_test.cpp).
 #include "engine/scene/scene.h"
-#include "lsystem/file_reader.h"
+#include "lsystem/common/file_reader.h"
 #include "scene_test_support.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // deterministic, and broken L-systems fail with their position.
 #include "engine/scene/plant_models.h"
 
-#include "lsystem/drawn_mesh.h"
+#include "lsystem/mesh/drawn_mesh.h"
 
 #include <gtest/gtest.h>
 

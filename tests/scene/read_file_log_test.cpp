@@ -1,11 +1,11 @@
-// lsys::ReadFileLog (lsystem/file_reader.h) over a field's build, as
+// lsys::ReadFileLog (lsystem/common/file_reader.h) over a field's build, as
 // plantfield --watch uses it: the files logged are the files the loaders
 // read — the scene file, its terrain image, a vlab object's L-system, view
 // file, colour map and surface — and a build that fails still logs the file
 // at fault.
 #include "engine/image/image.h"
 #include "engine/scene/field_content.h"
-#include "lsystem/file_reader.h"
+#include "lsystem/common/file_reader.h"
 #include "scene_test_support.h"
 
 #include <gtest/gtest.h>

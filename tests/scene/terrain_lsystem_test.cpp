@@ -2,7 +2,7 @@
 // the L-system's bumps on flat ground or added to noise, its placement keys,
 // the file in the build's ReadFileLog, and a malformed file's located error.
 #include "engine/scene/field_content.h"
-#include "lsystem/file_reader.h"
+#include "lsystem/common/file_reader.h"
 #include "lsystem/landscape/mountain_turtle.h"
 #include "lsystem/vlab/object.h"
 #include "scene_test_support.h"

@@ -8,11 +8,12 @@
 #include "field_export.h"
 
 #include "engine/scene/scene.h"
-#include "lsystem/drawn_mesh.h"
-#include "lsystem/plant_export.h"
-#include "lsystem/rewriter.h"
-#include "lsystem/surfaces.h"
-#include "lsystem/turtle.h"
+#include "lsystem/export/plant_export.h"
+#include "lsystem/mesh/drawn_mesh.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
+#include "lsystem/rewriting/rewriter.h"
+#include "lsystem/turtle/surfaces.h"
+#include "lsystem/turtle/turtle.h"
 #include "lsystem/vlab/object.h"
 
 #include <gtest/gtest.h>
@@ -250,7 +251,7 @@ std::vector<glm::vec3> allPositions(const tinygltf::Model& gltf) {
 bool lexicographic(const glm::vec3& a, const glm::vec3& b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); }
 
 // `lsys export`'s drawn form and the field's LOD0 come from one bake
-// (lsystem/drawn_mesh.h): the spruce (bark tubes, needle ribbons, no leaf
+// (lsystem/mesh/drawn_mesh.h): the spruce (bark tubes, needle ribbons, no leaf
 // cards) exported on its own has exactly the vertices of its model's LOD0
 // meshes in the field's pool, bit for bit.
 TEST(FieldExport, DrawnPlantExportIsTheFieldsLod0) {

@@ -1,12 +1,12 @@
-// cpfg's query modules (lsystem/queries.h): before each step the turtle
+// cpfg's query modules (lsystem/rewriting/queries.h): before each step the turtle
 // writes its position, heading, left or up vector into the module after '?'.
 
 #include <gtest/gtest.h>
 
 #include <glm/vec3.hpp>
 
-#include "lsystem/parser.h"
-#include "lsystem/rewriter.h"
+#include "lsystem/language/parser.h"
+#include "lsystem/rewriting/rewriter.h"
 
 namespace lsys {
 namespace {

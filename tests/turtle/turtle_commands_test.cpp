@@ -1,4 +1,4 @@
-// The table of turtle commands (lsystem/turtle_commands.h): the names the
+// The table of turtle commands (lsystem/turtle/turtle_commands.h): the names the
 // turtle resolves and the help it prints both come from it.
 
 #include <algorithm>

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "lsystem/dialects/dialect.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
 #include "lsystem/vlab/object.h"
 #include "turtle_test_support.h"
 

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "lsystem/dialects/dialect.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
 #include "turtle_test_support.h"
 
 namespace lsys::test {

@@ -9,9 +9,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "lsystem/parser.h"
-#include "lsystem/rewriter.h"
-#include "lsystem/turtle.h"
+#include "lsystem/language/parser.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
+#include "lsystem/rewriting/rewriter.h"
+#include "lsystem/turtle/turtle.h"
 
 namespace lsys::test {
 

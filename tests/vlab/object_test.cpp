@@ -9,9 +9,10 @@
 #include <string>
 #include <tuple>
 
-#include "lsystem/module_string.h"
-#include "lsystem/rewriter.h"
-#include "lsystem/turtle.h"
+#include "lsystem/language/module_string.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
+#include "lsystem/rewriting/rewriter.h"
+#include "lsystem/turtle/turtle.h"
 #include "lsystem/vlab/object.h"
 
 namespace lsys::vlab {

@@ -4,8 +4,8 @@
 #include <iostream>
 #include <unordered_map>
 
-#include "lsystem/error.h"
-#include "lsystem/parser.h"
+#include "lsystem/common/error.h"
+#include "lsystem/language/parser.h"
 #include "lsystem/vlab/object.h"
 #include "tools/memory_budget_option.h"
 
@@ -65,6 +65,23 @@ std::optional<lsys::Grammar> loadGrammar(const DerivationArguments& arguments) {
         return std::nullopt;
     }
     return std::move(result.grammar);
+}
+
+int failed(const DerivationArguments& arguments, const std::exception& error) {
+    std::cerr << arguments.file << ": error: " << error.what();
+    if (dynamic_cast<const lsys::ModuleBudgetError*>(&error))
+        std::cerr << " (--max-modules sets the budget; -n derives fewer steps)";
+    std::cerr << '\n';
+    return kBadInput;
+}
+
+lsys::DeriveOptions deriveOptions(const DerivationArguments& arguments) {
+    lsys::DeriveOptions options;
+    options.steps = arguments.steps;
+    options.seed = arguments.seed;
+    options.maxModules = arguments.maxModules;
+    options.memory = arguments.memory;
+    return options;
 }
 
 lsys::BGrammarOptions bgrammarOptions(const DerivationArguments& arguments) {

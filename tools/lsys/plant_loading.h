@@ -1,21 +1,24 @@
 // The plant file a deriving command starts from: FILE, -n, --seed, -D,
 // --dialect and --memory-budget on the command line, the file or vlab object
-// read in its dialect with -D's constants (its problems printed), and the
-// b-grammar of the word the turtle reads.
+// read in its dialect with -D's constants (its problems printed), how it is
+// derived, the b-grammar of the word the turtle reads, and what a failure to
+// derive prints.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
-#include "lsystem/bgrammar.h"
+#include "lsystem/common/memory_budget.h"
 #include "lsystem/dialects/dialect.h"
-#include "lsystem/grammar.h"
-#include "lsystem/memory_budget.h"
+#include "lsystem/instancing/bgrammar.h"
+#include "lsystem/language/grammar.h"
+#include "lsystem/rewriting/rewriter.h"
 
 namespace tools {
 
@@ -43,6 +46,12 @@ void addDerivationOptions(CLI::App& command, DerivationArguments& arguments);
 // with -D's constants overriding its #define constants. Prints warnings to
 // stderr; on problems prints them all and returns nullopt.
 std::optional<lsys::Grammar> loadGrammar(const DerivationArguments& arguments);
+
+// Prints what went wrong with the file, and the way out of a budget; kBadInput.
+int failed(const DerivationArguments& arguments, const std::exception& error);
+
+// -n, --seed, --max-modules and --memory-budget, as derive() takes them.
+lsys::DeriveOptions deriveOptions(const DerivationArguments& arguments);
 
 // The options of the b-grammar of the word the turtle reads, as lsys
 // instance, export --instanced and render build it.

@@ -8,16 +8,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lsystem/common/error.h"
+#include "lsystem/common/output_file.h"
 #include "lsystem/components/component_graph.h"
 #include "lsystem/dialects/dialect.h"
-#include "lsystem/error.h"
-#include "lsystem/output_file.h"
-#include "lsystem/plant_export.h"
-#include "lsystem/ramification.h"
-#include "lsystem/ramification_file.h"
-#include "lsystem/rewriter.h"
-#include "lsystem/surfaces.h"
-#include "lsystem/turtle.h"
+#include "lsystem/export/plant_export.h"
+#include "lsystem/ramification/ramification.h"
+#include "lsystem/ramification/ramification_file.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
+#include "lsystem/rewriting/rewriter.h"
+#include "lsystem/turtle/surfaces.h"
+#include "lsystem/turtle/turtle.h"
 #include "lsystem/vlab/object.h"
 #include "tools/lsys/plant_loading.h"
 #include "tools/memory_budget_option.h"
@@ -158,7 +159,7 @@ int runRamify(const RamifyArguments& arguments) {
 
 } // namespace
 
-RamifyCommand addRamifyCommand(CLI::App& app) {
+Command addRamifyCommand(CLI::App& app) {
     auto arguments = std::make_shared<RamifyArguments>();
     CLI::App* command = app.add_subcommand(
         "ramify",

@@ -1,19 +1,14 @@
 // lsys ramify: ramification matrices of plants, and trees generated from
-// them (lsystem/ramification*.h, docs/RAMIFICATION.md).
+// them (lsystem/ramification/, docs/RAMIFICATION.md).
 #pragma once
-
-#include <functional>
 
 #include <CLI/CLI.hpp>
 
+#include "tools/lsys/command.h"
+
 namespace tools {
 
-struct RamifyCommand {
-    CLI::App* command = nullptr;
-    std::function<int()> run; // once the app has parsed `command`; the exit code
-};
-
 // Adds the `ramify` subcommand and its options to `app`.
-RamifyCommand addRamifyCommand(CLI::App& app);
+Command addRamifyCommand(CLI::App& app);
 
 } // namespace tools

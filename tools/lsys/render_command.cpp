@@ -15,19 +15,19 @@
 
 #include "engine/image/image.h"
 #include "engine/scene/camera.h"
-#include "lsystem/bgrammar.h"
+#include "lsystem/common/error.h"
+#include "lsystem/common/output_file.h"
 #include "lsystem/components/component_graph.h"
-#include "lsystem/error.h"
-#include "lsystem/instance_graph.h"
-#include "lsystem/instance_graph_lazy.h"
-#include "lsystem/output_file.h"
-#include "lsystem/ramification_file.h"
+#include "lsystem/instancing/bgrammar.h"
+#include "lsystem/instancing/instance_graph.h"
+#include "lsystem/instancing/instance_graph_lazy.h"
+#include "lsystem/ramification/ramification_file.h"
 #include "lsystem/raytrace/flat_tracer.h"
 #include "lsystem/raytrace/graph_tracer.h"
 #include "lsystem/raytrace/lazy_graph_tracer.h"
 #include "lsystem/raytrace/render.h"
-#include "lsystem/surfaces.h"
-#include "lsystem/turtle.h"
+#include "lsystem/turtle/surfaces.h"
+#include "lsystem/turtle/turtle.h"
 #include "tools/lsys/plant_loading.h"
 
 namespace tools {
@@ -353,7 +353,7 @@ void addOptions(CLI::App& command, RenderArguments& arguments) {
 
 } // namespace
 
-RenderCommand addRenderCommand(CLI::App& app) {
+Command addRenderCommand(CLI::App& app) {
     auto arguments = std::make_shared<RenderArguments>();
     CLI::App* command = app.add_subcommand(
         "render", "Ray trace one plant on the CPU into a PNG (docs/RAYTRACING.md): its InstanceGraph traced without "

@@ -3,18 +3,13 @@
 // (lsystem/raytrace/render.h, docs/RAYTRACING.md).
 #pragma once
 
-#include <functional>
-
 #include <CLI/CLI.hpp>
+
+#include "tools/lsys/command.h"
 
 namespace tools {
 
-struct RenderCommand {
-    CLI::App* command = nullptr;
-    std::function<int()> run; // once the app has parsed `command`; the exit code
-};
-
 // Adds the `render` subcommand and its options to `app`.
-RenderCommand addRenderCommand(CLI::App& app);
+Command addRenderCommand(CLI::App& app);
 
 } // namespace tools

@@ -8,7 +8,7 @@
 #include "engine/scene/natural_density.h"
 #include "engine/scene/plant_models.h"
 #include "engine/vk/antialiasing.h"
-#include "lsystem/memory_budget.h"
+#include "lsystem/common/memory_budget.h"
 
 #include <cstdint>
 #include <optional>
@@ -47,7 +47,7 @@ uint64_t estimatedHostBytes(uint64_t count, CountMode mode);
 // estimated need and the heap.
 std::string gpuMemoryProblem(uint64_t count, uint64_t bytes, const std::string& device, const HeapCapacity& heap);
 // Empty when `bytes` of host memory fit the memory budget (--memory-budget,
-// lsystem/memory_budget.h); otherwise a message naming the count, the
+// lsystem/common/memory_budget.h); otherwise a message naming the count, the
 // estimated need and the budget.
 std::string hostMemoryProblem(uint64_t count, uint64_t bytes, const lsys::MemoryBudget& budget);
 

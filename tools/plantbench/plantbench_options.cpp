@@ -1,6 +1,6 @@
 #include "plantbench_options.h"
 
-#include "lsystem/output_file.h"
+#include "lsystem/common/output_file.h"
 #include "shaders/field_layouts.h"
 #include "tools/field_options.h"
 

@@ -1,6 +1,6 @@
 #include "plot.h"
 
-#include "lsystem/output_file.h"
+#include "lsystem/common/output_file.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -1,7 +1,7 @@
 #include "report.h"
 
-#include "lsystem/memory_budget.h"
-#include "lsystem/output_file.h"
+#include "lsystem/common/memory_budget.h"
+#include "lsystem/common/output_file.h"
 
 #include "gpu_memory.h"
 

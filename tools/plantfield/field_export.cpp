@@ -3,10 +3,10 @@
 #include "field_export.h"
 
 #include "engine/scene/terrain.h"
-#include "lsystem/drawn_mesh.h"
-#include "lsystem/export_detail.h"
-#include "lsystem/gltf_builder.h"
-#include "lsystem/output_file.h"
+#include "lsystem/common/output_file.h"
+#include "lsystem/export/export_detail.h"
+#include "lsystem/export/gltf_builder.h"
+#include "lsystem/mesh/drawn_mesh.h"
 
 #include <glm/geometric.hpp>
 

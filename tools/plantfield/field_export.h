@@ -5,7 +5,7 @@
 #pragma once
 
 #include "engine/scene/field_content.h"
-#include "lsystem/memory_budget.h"
+#include "lsystem/common/memory_budget.h"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -37,8 +37,8 @@ struct FieldExportSummary {
 // renderer's up-close bark and blades, bit for bit, with leaf cards as the
 // leaf outlines `lsys export` writes; one primitive per material), materials (one per distinct albedo and surface kind,
 // metallic 0, roughness 1, leaves and blades double-sided) and the plants, as `options` says. The extension (.glb or
-// .gltf, any case) chooses the format. Written to a temporary file and renamed into place (lsystem/output_file.h), so a
-// failure leaves no file and never replaces one. Throws std::runtime_error
+// .gltf, any case) chooses the format. Written to a temporary file and renamed into place
+// (lsystem/common/output_file.h), so a failure leaves no file and never replaces one. Throws std::runtime_error
 // starting "export PATH:", also when `content` was built without its models'
 // plants (buildFieldContent with ModelAssets::Keep).
 FieldExportSummary exportField(const FieldContent& content, const std::filesystem::path& path,

@@ -1,6 +1,6 @@
 #include "live_reload.h"
 
-#include "lsystem/file_reader.h"
+#include "lsystem/common/file_reader.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -10,7 +10,7 @@
 #include <iostream>
 #include <new>
 
-#include "lsystem/memory_budget.h"
+#include "lsystem/common/memory_budget.h"
 
 namespace pf {
 namespace {

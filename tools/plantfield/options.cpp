@@ -1,7 +1,7 @@
 #include "options.h"
 
 #include "engine/image/video_encoder.h"
-#include "lsystem/output_file.h"
+#include "lsystem/common/output_file.h"
 #include "shaders/field_layouts.h"
 
 #include <CLI/CLI.hpp>

@@ -2,7 +2,7 @@
 // any dialect, derive it, read its instance-graph statistics, its
 // ramification matrix (Tankard 2001, §2.2) and export it, generate trees
 // from ramification files,
-// as the lsys tool does (tools/lsys/main.cpp), with diagnostics raised as
+// as the lsys tool does (tools/lsys/*_command.cpp), with diagnostics raised as
 // plantfield.LsystemError; and render scenes headless (render_bindings.h).
 
 #include <filesystem>
@@ -19,20 +19,21 @@
 
 #include "render_bindings.h"
 
-#include "lsystem/bgrammar.h"
+#include "lsystem/common/error.h"
+#include "lsystem/common/memory_budget.h"
 #include "lsystem/dialects/dialect.h"
-#include "lsystem/error.h"
-#include "lsystem/graph_export.h"
-#include "lsystem/instance_graph.h"
-#include "lsystem/memory_budget.h"
-#include "lsystem/parser.h"
-#include "lsystem/plant_export.h"
-#include "lsystem/ramification.h"
-#include "lsystem/ramification_file.h"
-#include "lsystem/ramification_generate.h"
-#include "lsystem/rewriter.h"
-#include "lsystem/surfaces.h"
-#include "lsystem/turtle.h"
+#include "lsystem/export/graph_export.h"
+#include "lsystem/export/plant_export.h"
+#include "lsystem/instancing/bgrammar.h"
+#include "lsystem/instancing/instance_graph.h"
+#include "lsystem/language/parser.h"
+#include "lsystem/ramification/ramification.h"
+#include "lsystem/ramification/ramification_file.h"
+#include "lsystem/ramification/ramification_generate.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
+#include "lsystem/rewriting/rewriter.h"
+#include "lsystem/turtle/surfaces.h"
+#include "lsystem/turtle/turtle.h"
 #include "lsystem/vlab/object.h"
 
 namespace py = pybind11;

@@ -1,11 +1,11 @@
 // A program outside the project, built against an installed plantfield
 // (tests/install/install_test.sh): parses and derives an L-system, then
-// writes the plant as glTF, which links the library's private dependencies.
+// writes the plant as glTF, which links the libraries' private dependencies.
 // Usage: consumer OUT.glb. Prints "modules N" and exits 0 when all went well.
-#include "lsystem/parser.h"
-#include "lsystem/plant_export.h"
-#include "lsystem/rewriter.h"
-#include "lsystem/turtle.h"
+#include "lsystem/export/plant_export.h"
+#include "lsystem/language/parser.h"
+#include "lsystem/rewriting/plant_from_grammar.h"
+#include "lsystem/rewriting/rewriter.h"
 
 #include <filesystem>
 #include <iostream>

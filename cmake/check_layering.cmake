@@ -1,0 +1,26 @@
+# Run by the build before a layered library compiles (cmake/layering.cmake):
+#   cmake -DLIBRARY=engine_x -DPREFIX=engine -DALLOWED="x;y" -DSOURCES="a.cpp;a.h" -DSTAMP=file -P check_layering.cmake
+# Fails, naming file:line, on an `#include "PREFIX/<folder>/…"` whose folder
+# is not in ALLOWED (the library's own folder and those of what it uses).
+cmake_minimum_required(VERSION 3.25)
+set(errors "")
+foreach(source ${SOURCES})
+  file(READ ${source} text)
+  string(REGEX MATCHALL "#include \"${PREFIX}/[a-z_]+/[^\"]*\"" includes "${text}")
+  foreach(include ${includes})
+    string(REGEX REPLACE "#include \"${PREFIX}/([a-z_]+)/.*" "\\1" folder "${include}")
+    if(NOT folder IN_LIST ALLOWED)
+      string(FIND "${text}" "${include}" offset)
+      string(SUBSTRING "${text}" 0 ${offset} before)
+      string(REGEX MATCHALL "\n" newlines "${before}")
+      list(LENGTH newlines line)
+      math(EXPR line "${line} + 1")
+      list(JOIN ALLOWED ", " allowed)
+      string(APPEND errors "${source}:${line}: ${include}: ${LIBRARY} may include ${PREFIX}/{${allowed}} only\n")
+    endif()
+  endforeach()
+endforeach()
+if(errors)
+  message(FATAL_ERROR "layering:\n${errors}")
+endif()
+file(TOUCH ${STAMP})
