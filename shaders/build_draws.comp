@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "field_layouts.h"
+#include "shared/field_layouts.h"
 
 // One invocation per DrawTemplate: its (model, LOD) list becomes an indexed
 // indirect command. Every template gets one in allCommands (the fallback

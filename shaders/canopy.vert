@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "canopy_mesh.h"
+#include "shared/canopy_mesh.h"
 #include "field_common.glsl"
 
 // A far node's canopy (canopy_mesh.h): instance i is the camera's i-th far

@@ -1,6 +1,6 @@
 // Bindings and helpers of the canopy bake passes (cluster_layouts.h): cells
 // of every node, CANOPY_BAKE_WORDS each, node after node, row by row.
-#include "cluster_layouts.h"
+#include "shared/cluster_layouts.h"
 
 layout(local_size_x = CULL_GROUP_SIZE) in;
 

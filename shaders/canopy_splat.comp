@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "canopy_bake.glsl"
-#include "lod_select.h"
+#include "shared/lod_select.h"
 
 // The canopy bake's first pass: one workgroup per leaf, its invocations
 // looping over the leaf's plants. Each plant raises the cells under its

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "common.glsl"
-#include "cloud_layouts.h"
+#include "shared/cloud_layouts.h"
 
 // One camera-facing quad per sphere of a cloud (instance i: the i-th
 // billboard, farthest first), at the sphere's centre.

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "common.glsl"
-#include "cloud_layouts.h"
+#include "shared/cloud_layouts.h"
 
 // The shade a cloud's shadow gives the ground: the sunlight the clouds let
 // through where the sun's ray from this point meets the plane y = 0

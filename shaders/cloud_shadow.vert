@@ -1,8 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "common.glsl"
-#include "cloud_layouts.h"
-#include "field_layouts.h"
+#include "shared/cloud_layouts.h"
+#include "shared/field_layouts.h"
 
 // The terrain mesh again (as terrain.vert pulls it), for its clouds' shadows.
 layout(set = 0, binding = CLOUD_SHADOW_BINDING_TERRAIN) uniform usamplerBuffer terrainTexels; // TerrainVertex[]

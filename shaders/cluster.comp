@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "cluster_select.h"
+#include "shared/cluster_select.h"
 
 // The cut through the field's quadtree (cluster_select.h): one invocation
 // per node. Far nodes are appended to the canopy's instanced draw; near

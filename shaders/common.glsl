@@ -1,8 +1,8 @@
 // Shading shared by every pass: one sun, a sky dome, distance fog, tone map.
-#include "layouts.h"
+#include "shared/layouts.h"
 
 #ifdef FIELD_FRAME
-#include "field_layouts.h"
+#include "shared/field_layouts.h"
 #endif
 
 layout(set = 0, binding = BINDING_FRAME_UNIFORMS, std140) uniform FrameBlock {

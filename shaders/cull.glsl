@@ -5,11 +5,11 @@
 // CULL_PHASE_ALL and CULL_PHASE_EARLY) and, with CULL_LATE, by
 // cull_late.comp (CULL_PHASE_LATE: the occlusion test against the depth
 // pyramid, and every plant's visible bit).
-#include "cluster_layouts.h"
-#include "lod_select.h"
+#include "shared/cluster_layouts.h"
+#include "shared/lod_select.h"
 #ifdef CULL_LATE
-#include "depth_pyramid_layouts.h"
-#include "occlusion_test.h"
+#include "shared/depth_pyramid_layouts.h"
+#include "shared/occlusion_test.h"
 #endif
 
 layout(local_size_x = CULL_GROUP_SIZE) in;

@@ -4,7 +4,7 @@
 // and the level covers exactly the pixels below it. Included by
 // depth_reduce.comp and, with DEPTH_REDUCE_MULTISAMPLED, depth_reduce_ms.comp,
 // which reads every sample of a multisampled depth buffer.
-#include "depth_pyramid_layouts.h"
+#include "shared/depth_pyramid_layouts.h"
 
 layout(local_size_x = DEPTH_REDUCE_GROUP_SIZE, local_size_y = DEPTH_REDUCE_GROUP_SIZE) in;
 

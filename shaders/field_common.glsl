@@ -5,7 +5,7 @@
 #define FIELD_FRAME
 #include "common.glsl"
 #include "plant_surface.glsl"
-#include "joint_physics.h"
+#include "shared/joint_physics.h"
 #include "texels.glsl"
 
 // Everything the draw shaders read per vertex or per plant is a uniform

@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "fxaa_layouts.h"
+#include "shared/fxaa_layouts.h"
 
 // FXAA, the quality variant (Lottes 2009, "FXAA" whitepaper, and its 3.x
 // quality algorithm): a pixel on an edge is blended with its neighbour across

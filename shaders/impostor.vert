@@ -1,14 +1,14 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "field_common.glsl"
-#include "impostor_frame.h"
-#include "lod_select.h"
-#include "sunlit_select.h"
+#include "shared/impostor_frame.h"
+#include "shared/lod_select.h"
+#include "shared/sunlit_select.h"
 
 // LOD2 billboards (docs/IMPOSTORS.md): the quads of appendBillboardMesh
 // expanded around each visible plant, each drawn as the outline of the frame
 // it shows (the polygon around what the frame covers, not the whole
-// frame), and textured with its atlas frames (shaders/impostor_frame.h: the
+// frame), and textured with its atlas frames (shaders/shared/impostor_frame.h: the
 // frames' axes and extents on their rings of elevation). Seen from near the
 // horizon (ring 0), one quad turns to the view about the vertical axis and
 // shows the frame nearest the view azimuth; two or three crossed quads stay

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "field_common.glsl"
-#include "impostor_frame.h"
+#include "shared/impostor_frame.h"
 
 // LOD2 in the sun's shadow passes (docs/IMPOSTORS.md, "Shadow frames"): one
 // quad per plant perpendicular to the sun direction, a true billboard in the

@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "cluster_layouts.h"
+#include "shared/cluster_layouts.h"
 
 // One invocation after cluster.comp: the per-plant cull's indirect dispatch,
 // one workgroup per near chunk, in rows of at most

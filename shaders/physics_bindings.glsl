@@ -3,7 +3,7 @@
 // a pass only reads is bound as a uint texel buffer (texels.glsl says why).
 #ifndef PHYSICS_BINDINGS_GLSL
 #define PHYSICS_BINDINGS_GLSL
-#include "joint_physics.h"
+#include "shared/joint_physics.h"
 #include "texels.glsl"
 
 layout(set = 0, binding = PHYSICS_BINDING_UNIFORMS, std430) readonly buffer PhysicsBlock {

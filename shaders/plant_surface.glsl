@@ -3,8 +3,8 @@
 // Needs no bindings.
 #ifndef PLANT_SURFACE_GLSL
 #define PLANT_SURFACE_GLSL
-#include "field_layouts.h"
-#include "leaf_outline.h"
+#include "shared/field_layouts.h"
+#include "shared/leaf_outline.h"
 
 float surfaceHash(vec2 p) {
     vec3 p3 = fract(vec3(p.xyx) * 0.1031);

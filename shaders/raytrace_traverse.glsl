@@ -20,7 +20,7 @@
 #ifndef PLANTFIELD_SHADERS_RAYTRACE_TRAVERSE_GLSL
 #define PLANTFIELD_SHADERS_RAYTRACE_TRAVERSE_GLSL
 
-#include "raytrace_layouts.h"
+#include "shared/raytrace_layouts.h"
 
 #ifndef RAYTRACE_GRAPH_SET
 #define RAYTRACE_GRAPH_SET 0

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "cluster_layouts.h"
-#include "shadow_select.h"
+#include "shared/cluster_layouts.h"
+#include "shared/shadow_select.h"
 
 // The sun's shadow casters (shadow_select.h): one invocation per plant of
 // the leaves meeting the sun's box (near_chunks.glsl) appends it, at full

@@ -6,7 +6,7 @@
 // one lane at a time.
 #ifndef TEXELS_GLSL
 #define TEXELS_GLSL
-#include "physics_layouts.h"
+#include "shared/physics_layouts.h"
 
 vec4 floatTexel(usamplerBuffer b, int t) {
     return uintBitsToFloat(texelFetch(b, t));

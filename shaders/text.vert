@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "text_layouts.h"
+#include "shared/text_layouts.h"
 
 // The text overlay's rectangles (stb_easy_font quads), pulled from a storage
 // buffer: six vertices, two triangles, a rectangle. Positions are pixels with

@@ -7,7 +7,7 @@
 #define RAYTRACE_CUT_OUT
 #include "raytrace_traverse.glsl"
 #include "plant_surface.glsl"
-#include "traced_sun_layouts.h"
+#include "shared/traced_sun_layouts.h"
 
 layout(local_size_x = TRACED_SUN_GROUP_SIZE, local_size_y = TRACED_SUN_GROUP_SIZE) in;
 

@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "window_blit_layouts.h"
+#include "shared/window_blit_layouts.h"
 
 // The frame at the swapchain's size: one bilinear tap of the source
 // (engine/window/window_blit.h says in which encoding it is filtered).

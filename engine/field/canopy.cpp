@@ -2,7 +2,7 @@
 
 #include "engine/vk/compute_set.h"
 #include "engine/vk/pipeline.h"
-#include "shaders/canopy_mesh.h"
+#include "shaders/shared/canopy_mesh.h"
 
 #include "shaders/canopy_reduce_comp.spv.h"
 #include "shaders/canopy_resolve_comp.spv.h"

@@ -2,7 +2,7 @@
 // per node of the quadtree CLUSTER_GRID² cells of canopy top and albedo,
 // baked on the GPU at load from the plants' impostor boxes and atlas
 // colours (leaves splatted, inner nodes reduced from their children), and
-// the mesh every far node is drawn with (shaders/canopy_mesh.h).
+// the mesh every far node is drawn with (shaders/shared/canopy_mesh.h).
 #pragma once
 
 #include "engine/field/impostor_atlas.h"

@@ -22,7 +22,7 @@ struct CloudPass {
 };
 
 // Owned by `owner`. `frameUniforms` begins with the FrameUniforms block
-// (shaders/layouts.h); the pipeline draws into the colour pass's attachments
+// (shaders/shared/layouts.h); the pipeline draws into the colour pass's attachments
 // with `samples` samples. Without clouds only `spheres` (0) is set.
 CloudPass createCloudPass(GpuResources& owner, const std::vector<Cloud>& clouds, const Buffer& frameUniforms,
                           VkSampleCountFlagBits samples);

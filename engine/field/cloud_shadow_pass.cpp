@@ -3,7 +3,7 @@
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/render_target.h"
-#include "shaders/cloud_layouts.h"
+#include "shaders/shared/cloud_layouts.h"
 
 #include "shaders/cloud_shadow_frag.spv.h"
 #include "shaders/cloud_shadow_vert.spv.h"

@@ -1,6 +1,6 @@
 #include "engine/field/cluster_cut.h"
 
-#include "shaders/cluster_select.h"
+#include "shaders/shared/cluster_select.h"
 
 #include <algorithm>
 

@@ -1,11 +1,11 @@
 // The cut through the field's clusters (docs/CLUSTERS.md) on the CPU: the
 // uniforms the cluster pass (cluster_pass.h) picks it with, for the camera's
 // frustum or a box of the sun's, and clusterCutOnCpu, the same decision per
-// node (shaders/cluster_select.h), the reference the tests check the pass
+// node (shaders/shared/cluster_select.h), the reference the tests check the pass
 // against. CPU only.
 #pragma once
 
-#include "shaders/cluster_layouts.h"
+#include "shaders/shared/cluster_layouts.h"
 
 #include <glm/glm.hpp>
 

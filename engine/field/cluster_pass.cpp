@@ -1,7 +1,7 @@
 #include "engine/field/cluster_pass.h"
 
 #include "engine/vk/pipeline.h"
-#include "shaders/cluster_layouts.h"
+#include "shaders/shared/cluster_layouts.h"
 
 #include "shaders/cluster_comp.spv.h"
 #include "shaders/near_dispatch_comp.spv.h"

@@ -1,6 +1,6 @@
 // The cluster pass (docs/CLUSTERS.md): per frame, one compute invocation per
 // node of the field's quadtree (engine/scene/clusters.h) picks the cut
-// through it (shaders/cluster_select.h): far nodes go to the canopy's
+// through it (shaders/shared/cluster_select.h): far nodes go to the canopy's
 // instanced draw, near leaves into chunks of plants that the per-plant cull
 // (engine/field/cull_pass.h) dispatches over indirectly. The sun's casters
 // use the same pass with CLUSTER_CUT_BOX_ONLY: the leaves meeting its box.
@@ -10,7 +10,7 @@
 #include "engine/scene/clusters.h"
 #include "engine/vk/compute_set.h"
 #include "engine/vk/resources.h"
-#include "shaders/cluster_layouts.h"
+#include "shaders/shared/cluster_layouts.h"
 
 #include <glm/glm.hpp>
 

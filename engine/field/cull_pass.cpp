@@ -3,7 +3,7 @@
 #include "engine/field/visible_lists.h"
 #include "engine/vk/depth_pyramid.h"
 #include "engine/vk/pipeline.h"
-#include "shaders/cluster_layouts.h"
+#include "shaders/shared/cluster_layouts.h"
 
 #include "shaders/build_draws_comp.spv.h"
 #include "shaders/cull_comp.spv.h"

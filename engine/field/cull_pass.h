@@ -14,7 +14,7 @@
 #include "engine/field/cull_uniforms.h"
 #include "engine/vk/compute_set.h"
 #include "engine/vk/resources.h"
-#include "shaders/field_layouts.h"
+#include "shaders/shared/field_layouts.h"
 
 #include <array>
 #include <span>

@@ -1,8 +1,8 @@
 #include "engine/field/cull_reference.h"
 
 #include "engine/image/depth_pyramid_levels.h"
-#include "shaders/lod_select.h"
-#include "shaders/occlusion_test.h"
+#include "shaders/shared/lod_select.h"
+#include "shaders/shared/occlusion_test.h"
 
 #include <algorithm>
 

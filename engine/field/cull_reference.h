@@ -1,10 +1,10 @@
 // The cull pass's decisions on the CPU (docs/CULLING.md): the visible lists
-// of the per-plant cull and LOD (shaders/lod_select.h) and the late phase's
-// occlusion test (shaders/occlusion_test.h), running the shaders' own
+// of the per-plant cull and LOD (shaders/shared/lod_select.h) and the late phase's
+// occlusion test (shaders/shared/occlusion_test.h), running the shaders' own
 // functions, the references the tests check the GPU pass against. CPU only.
 #pragma once
 
-#include "shaders/field_layouts.h"
+#include "shaders/shared/field_layouts.h"
 
 #include <glm/glm.hpp>
 
@@ -31,7 +31,7 @@ CpuCullResult cullOnCpu(std::span<const gpu::FieldInstance> instances, std::span
                         const gpu::CullUniforms& uniforms, std::vector<uint32_t>& state,
                         std::span<const CpuNearRange> near);
 
-// The late phase's occlusion test on the CPU (shaders/occlusion_test.h):
+// The late phase's occlusion test on the CPU (shaders/shared/occlusion_test.h):
 // true when the world-space sphere (xyz centre, w radius) lies behind every
 // pixel of its screen rectangle in `pyramid` (depthPyramidOnCpu's levels),
 // with the uniforms' view, projection and viewport.

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "engine/scene/camera.h"
-#include "shaders/field_layouts.h"
+#include "shaders/shared/field_layouts.h"
 
 #include <glm/glm.hpp>
 

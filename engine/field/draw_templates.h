@@ -6,7 +6,7 @@
 #pragma once
 
 #include "engine/scene/plant_models.h"
-#include "shaders/field_layouts.h"
+#include "shaders/shared/field_layouts.h"
 
 #include <array>
 #include <vector>

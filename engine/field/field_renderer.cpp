@@ -5,7 +5,7 @@
 #include "engine/field/draw_templates.h"
 #include "engine/field/visible_lists.h"
 #include "engine/vk/gpu_timer.h"
-#include "shaders/lod_select.h"
+#include "shaders/shared/lod_select.h"
 
 #include <cstring>
 #include <stdexcept>

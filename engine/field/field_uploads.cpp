@@ -1,7 +1,7 @@
 #include "engine/field/field_uploads.h"
 
 #include "lsystem/common/memory_budget.h"
-#include "shaders/field_layouts.h"
+#include "shaders/shared/field_layouts.h"
 
 #include <algorithm>
 #include <stdexcept>

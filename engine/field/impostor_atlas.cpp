@@ -1,5 +1,5 @@
 // The impostor box and the billboard meshes; the frames' views are
-// shaders/impostor_frame.h, the bake impostor_bake.cpp.
+// shaders/shared/impostor_frame.h, the bake impostor_bake.cpp.
 #include "engine/field/impostor_atlas.h"
 
 #include <algorithm>

@@ -25,7 +25,7 @@ struct ImpostorSettings {
     uint32_t shadowFrameSize = 128;
 };
 
-// Frame convention (shaders/impostor_frame.h has the axes and extents, for
+// Frame convention (shaders/shared/impostor_frame.h has the axes and extents, for
 // the bake and the billboards). Frame f of n on ring r views the plant from
 // azimuth a = 2π·f/n about +y and elevation e = r·IMPOSTOR_RING_STEP: the
 // orthographic camera sits along d = (sin a·cos e, sin e, cos a·cos e),

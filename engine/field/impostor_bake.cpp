@@ -11,7 +11,7 @@
 #include "engine/vk/target_pass.h"
 #include "shaders/impostor_bake_frag.spv.h"
 #include "shaders/impostor_bake_vert.spv.h"
-#include "shaders/impostor_frame.h"
+#include "shaders/shared/impostor_frame.h"
 #include "shaders/impostor_shadow_bake_frag.spv.h"
 
 #include <algorithm>
@@ -308,7 +308,7 @@ gpu::ImpostorBakePush bakeView(glm::vec3 centre, glm::vec3 right, glm::vec3 up, 
     return {axis(right, half.x), axis(up, half.y), axis(toView, half.z)};
 }
 
-// Frame f of n from `elevation` (shaders/impostor_frame.h): a colour ring's
+// Frame f of n from `elevation` (shaders/shared/impostor_frame.h): a colour ring's
 // or the sun's. At elevation 0 it is as wide and deep as the box's
 // horizontal radius and as tall as the box.
 gpu::ImpostorBakePush frameView(const glm::vec4& quad, uint32_t f, uint32_t frames, float elevation) {

@@ -8,7 +8,7 @@
 // than the fragments it saves (docs/IMPOSTORS.md).
 #pragma once
 
-#include "shaders/field_layouts.h"
+#include "shaders/shared/field_layouts.h"
 
 #include <glm/glm.hpp>
 

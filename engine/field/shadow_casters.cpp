@@ -1,7 +1,7 @@
 #include "engine/field/shadow_casters.h"
 
 #include "engine/field/cull_uniforms.h"
-#include "shaders/shadow_select.h"
+#include "shaders/shared/shadow_select.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-// The sun's shadow casters (shaders/shadow_select.h), picked on the GPU by a
+// The sun's shadow casters (shaders/shared/shadow_select.h), picked on the GPU by a
 // CullKind::ShadowCasters cull pass over the instances: the plants whose
 // bounding sphere meets the sun's box, in view of the camera or not, split
 // between the cache of static casters (impostors for every camera the cache

@@ -56,7 +56,7 @@ void recordSurfaceDraws(VkCommandBuffer cmd, const SurfaceGeometry& geometry, co
     }
     {
         // The colour pass draws the list twice: those the shadow map may
-        // reach, then the rest with no shadow lookup (shaders/sunlit_select.h);
+        // reach, then the rest with no shadow lookup (shaders/shared/sunlit_select.h);
         // each draw drops the other's impostors in its vertex shader.
         TimedFieldScope scope(cmd, timer, FieldScope::impostors, ScopeStart::insideRendering);
         for (const ImpostorDraw& draw : pipelines.impostors) {

@@ -32,7 +32,7 @@ struct SurfaceGeometry {
     const FieldContent* content = nullptr;    // the naive draws
 };
 
-// The impostor list drawn as one part (shaders/sunlit_select.h) with its
+// The impostor list drawn as one part (shaders/shared/sunlit_select.h) with its
 // pipeline: IMPOSTOR_PART_NONE draws the whole list under the pass's push.
 struct ImpostorDraw {
     VkPipeline pipeline = VK_NULL_HANDLE;

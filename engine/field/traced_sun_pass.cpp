@@ -3,8 +3,8 @@
 #include "engine/raytrace/field_graph.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/target_pass.h"
-#include "shaders/field_layouts.h"
-#include "shaders/traced_sun_layouts.h"
+#include "shaders/shared/field_layouts.h"
+#include "shaders/shared/traced_sun_layouts.h"
 
 #include "shaders/traced_sun_comp.spv.h"
 

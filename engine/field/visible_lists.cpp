@@ -1,6 +1,6 @@
 #include "engine/field/visible_lists.h"
 
-#include "shaders/cluster_layouts.h"
+#include "shaders/shared/cluster_layouts.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "engine/scene/field_content.h"
-#include "shaders/field_layouts.h"
+#include "shaders/shared/field_layouts.h"
 
 #include <cstdint>
 #include <span>

@@ -1,9 +1,9 @@
 // The CPU reference of the physics and pose passes (docs/PHYSICS.md). The
-// per-joint math is shaders/joint_physics.h, shared with the GPU; this file
+// per-joint math is shaders/shared/joint_physics.h, shared with the GPU; this file
 // only builds its inputs and loops over joints.
 #include "engine/physics/plant_physics.h"
 
-#include "shaders/joint_physics.h"
+#include "shaders/shared/joint_physics.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>

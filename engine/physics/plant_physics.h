@@ -1,11 +1,11 @@
 // Simulated skeletons and the CPU reference of the GPU physics and pose
 // passes (docs/PHYSICS.md, after Crankshaw 2020, ch. 6): the same per-joint
-// math (shaders/joint_physics.h), one joint after another, over the
+// math (shaders/shared/joint_physics.h), one joint after another, over the
 // parameters of engine/scene/joint_params.h.
 #pragma once
 
 #include "engine/scene/joint_params.h"
-#include "shaders/physics_layouts.h"
+#include "shaders/shared/physics_layouts.h"
 
 #include <cstdint>
 #include <vector>

@@ -12,7 +12,7 @@
 
 #include "engine/raytrace/gpu_graph.h"
 #include "engine/scene/plant_models.h"
-#include "shaders/field_layouts.h"
+#include "shaders/shared/field_layouts.h"
 
 #include <span>
 

@@ -63,11 +63,11 @@ void setRoot(GpuGraph& packed, uint32_t rootNode, uint32_t levels, uint32_t stac
     if (levels > RAYTRACE_MAX_LEVELS)
         throw GpuGraphError("a ray can be carried through " + std::to_string(levels) +
                             " levels of instances; the GPU traversal holds " + std::to_string(RAYTRACE_MAX_LEVELS) +
-                            " (RAYTRACE_MAX_LEVELS, shaders/raytrace_layouts.h)");
+                            " (RAYTRACE_MAX_LEVELS, shaders/shared/raytrace_layouts.h)");
     if (stackDepth > RAYTRACE_STACK_SIZE)
         throw GpuGraphError("tracing the graph can need " + std::to_string(stackDepth) +
                             " stack entries; the GPU traversal holds " + std::to_string(RAYTRACE_STACK_SIZE) +
-                            " (RAYTRACE_STACK_SIZE, shaders/raytrace_layouts.h)");
+                            " (RAYTRACE_STACK_SIZE, shaders/shared/raytrace_layouts.h)");
 }
 
 GpuGraph packGraph(const lsys::GraphTracer& tracer) {

@@ -1,11 +1,11 @@
 // A GraphTracer (lsystem/raytrace/graph_tracer.h) packed into the arrays the
-// GPU traversal reads (shaders/raytrace_layouts.h, docs/RAYTRACING.md "The GPU
+// GPU traversal reads (shaders/shared/raytrace_layouts.h, docs/RAYTRACING.md "The GPU
 // traversal"): every object's BVH in one node array, leaf items that say
 // whether they are a primitive or an instance, primitives and instances with
 // their frames, and the triangles of surfaces and polygons. Pure CPU.
 #pragma once
 
-#include "shaders/raytrace_layouts.h"
+#include "shaders/shared/raytrace_layouts.h"
 
 #include "lsystem/raytrace/graph_tracer.h"
 

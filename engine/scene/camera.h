@@ -1,7 +1,7 @@
 // Camera and sky/sun settings, and the per-frame uniforms built from them.
 #pragma once
 
-#include "shaders/layouts.h"
+#include "shaders/shared/layouts.h"
 
 #include <glm/glm.hpp>
 

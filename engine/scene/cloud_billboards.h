@@ -5,7 +5,7 @@
 #pragma once
 
 #include "engine/scene/scene.h"
-#include "shaders/cloud_layouts.h"
+#include "shaders/shared/cloud_layouts.h"
 
 #include <glm/glm.hpp>
 

@@ -1,6 +1,6 @@
 #include "engine/scene/clusters.h"
 
-#include "shaders/lod_select.h"
+#include "shaders/shared/lod_select.h"
 
 #include <algorithm>
 #include <cmath>

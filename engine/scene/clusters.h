@@ -7,7 +7,7 @@
 
 #include "engine/scene/placement.h"
 #include "engine/scene/terrain.h"
-#include "shaders/cluster_layouts.h"
+#include "shaders/shared/cluster_layouts.h"
 
 #include <glm/glm.hpp>
 

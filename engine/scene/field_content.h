@@ -71,7 +71,7 @@ FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> cou
                                const lsys::MemoryBudget& memory = lsys::machineMemoryBudget(),
                                ModelAssets assets = ModelAssets::Drop);
 
-// The plants as the GPU holds them (FieldInstance, shaders/field_layouts.h),
+// The plants as the GPU holds them (FieldInstance, shaders/shared/field_layouts.h),
 // in content order: position and scale, yaw and wind phase, model and ids.
 std::vector<gpu::FieldInstance> fieldInstancesOf(const FieldContent& content);
 

@@ -4,7 +4,7 @@
 
 #include "engine/scene/scene.h"
 #include "lsystem/turtle/plant_asset.h"
-#include "shaders/physics_layouts.h"
+#include "shaders/shared/physics_layouts.h"
 
 #include <vector>
 

@@ -2,14 +2,14 @@
 // its L-system and interpreted by the turtle, or generated from its model
 // file (a ramification tree or a component plant), scaled to the species height and
 // baked into triangle meshes at two levels of detail, all in one vertex and
-// one index pool (shaders/field_layouts.h FieldVertex). CPU only.
+// one index pool (shaders/shared/field_layouts.h FieldVertex). CPU only.
 #pragma once
 
 #include "engine/scene/scene.h"
 #include "lsystem/common/memory_budget.h"
 #include "lsystem/turtle/plant_asset.h"
-#include "shaders/field_layouts.h"
-#include "shaders/physics_layouts.h"
+#include "shaders/shared/field_layouts.h"
+#include "shaders/shared/physics_layouts.h"
 
 #include <array>
 #include <cstdint>

@@ -1,7 +1,7 @@
 #include "engine/vk/depth_pyramid.h"
 
 #include "engine/vk/pipeline.h"
-#include "shaders/depth_pyramid_layouts.h"
+#include "shaders/shared/depth_pyramid_layouts.h"
 
 #include "shaders/depth_reduce_comp.spv.h"
 #include "shaders/depth_reduce_ms_comp.spv.h"

@@ -3,7 +3,7 @@
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/target_pass.h"
-#include "shaders/fxaa_layouts.h"
+#include "shaders/shared/fxaa_layouts.h"
 
 #include "shaders/fullscreen_vert.spv.h"
 #include "shaders/fxaa_frag.spv.h"

@@ -3,7 +3,7 @@
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/target_pass.h"
-#include "shaders/text_layouts.h"
+#include "shaders/shared/text_layouts.h"
 
 #include <glm/glm.hpp>
 

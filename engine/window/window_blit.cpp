@@ -4,7 +4,7 @@
 #include "engine/vk/pipeline.h"
 #include "engine/vk/render_target.h"
 #include "engine/vk/target_pass.h"
-#include "shaders/window_blit_layouts.h"
+#include "shaders/shared/window_blit_layouts.h"
 
 #include "shaders/fullscreen_vert.spv.h"
 #include "shaders/window_blit_frag.spv.h"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "shaders/leaf_outline.h"
+#include "shaders/shared/leaf_outline.h"
 
 namespace lsys {
 namespace {

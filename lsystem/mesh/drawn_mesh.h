@@ -8,7 +8,7 @@
 // their radius relative to the trunk; foliage segments (a two-sided
 // material: needles, grass) become flat ribbons at least a minimum width
 // wide; surfaces become leaf cards, quads whose leaf outline the renderer's
-// fragment shader cuts (shaders/leaf_outline.h); spheres and polygons are
+// fragment shader cuts (shaders/shared/leaf_outline.h); spheres and polygons are
 // meshed as the turtle's. The reduced LOD drops twigs, merges ribbon runs and
 // thins leaves and foliage chains.
 
@@ -25,7 +25,7 @@
 namespace lsys {
 
 // How the renderer's fragment shader treats a vertex's surface; the values
-// are shaders/field_layouts.h's SURFACE_* (engine/scene/plant_models.cpp
+// are shaders/shared/field_layouts.h's SURFACE_* (engine/scene/plant_models.cpp
 // asserts that they agree).
 enum class SurfaceKind : uint8_t {
     Bark = 0,     // opaque, bark streaks
@@ -95,7 +95,7 @@ std::array<DrawnClasses, kDrawnLodCount> drawnLods(const PlantAsset& asset, cons
 std::vector<TriangleMesh> drawnMeshesByMaterial(const PlantAsset& asset, const DrawnScale& scale,
                                                 const DrawnOptions& options);
 
-// The leaf outline (shaders/leaf_outline.h LEAF_HALF_WIDTH, mirrored about
+// The leaf outline (shaders/shared/leaf_outline.h LEAF_HALF_WIDTH, mirrored about
 // the midrib, without the serration and the petiole: they are a few
 // hundredths of the card wide) as a triangle strip in uv space: the base
 // point, kLeafOutlineRows − 1 rows of a left and a right point, the tip;

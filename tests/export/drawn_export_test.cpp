@@ -1,6 +1,6 @@
 // The drawn form of the flat export (lsystem/mesh/drawn_mesh.h): foliage segments
 // come out as the renderer's flat ribbons, leaf cards as the leaf outline its
-// shader cuts (shaders/leaf_outline.h), and the outline mesh covers what the
+// shader cuts (shaders/shared/leaf_outline.h), and the outline mesh covers what the
 // shader keeps.
 #include "lsystem/mesh/drawn_mesh.h"
 #include "lsystem/rewriting/plant_from_grammar.h"
@@ -19,7 +19,7 @@
 #include "lsystem/turtle/surfaces.h"
 #include "lsystem/turtle/turtle.h"
 #include "sample_plants.h"
-#include "shaders/leaf_outline.h"
+#include "shaders/shared/leaf_outline.h"
 
 namespace {
 

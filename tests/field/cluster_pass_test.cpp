@@ -6,7 +6,7 @@
 #include "cull_fixture.h"
 
 #include "engine/scene/clusters.h"
-#include "shaders/cluster_select.h"
+#include "shaders/shared/cluster_select.h"
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 #include "engine/vk/target_pass.h"
 #include "engine/vk/vk_check.h"
 #include "gpu_test.h"
-#include "shaders/layouts.h"
-#include "shaders/lod_select.h"
+#include "shaders/shared/layouts.h"
+#include "shaders/shared/lod_select.h"
 #include "shaders/sky_frag.spv.h"
 #include "shaders/sky_vert.spv.h"
 

@@ -5,7 +5,7 @@
 #include "engine/image/image.h"
 #include "engine/vk/vk_check.h"
 #include "gpu_test.h"
-#include "shaders/impostor_frame.h"
+#include "shaders/shared/impostor_frame.h"
 
 #include <glm/gtc/constants.hpp>
 

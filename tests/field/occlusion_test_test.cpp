@@ -1,4 +1,4 @@
-// The late cull's occlusion test (shaders/occlusion_test.h) on the CPU, on
+// The late cull's occlusion test (shaders/shared/occlusion_test.h) on the CPU, on
 // synthetic depth buffers: a wall at a known distance, hidden and visible
 // spheres, a wall with a gap, spheres at the near plane, and the properties
 // it rests on (the screen rectangle holds every point of the sphere, the
@@ -7,7 +7,7 @@
 #include "engine/field/cull_uniforms.h"
 #include "engine/image/depth_pyramid_levels.h"
 #include "engine/scene/camera.h"
-#include "shaders/occlusion_test.h"
+#include "shaders/shared/occlusion_test.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The sun's texel grid (engine/field/shadow_map.h) and when the cache of
 // static casters serves a frame (engine/field/shadow_cache.h): CPU only.
 #include "engine/field/shadow_cache.h"
-#include "shaders/field_layouts.h"
+#include "shaders/shared/field_layouts.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
-// The sun's shadow casters (engine/field/shadow_casters.h, shaders/shadow_select.h):
+// The sun's shadow casters (engine/field/shadow_casters.h, shaders/shared/shadow_select.h):
 // the GPU pass against its CPU reference, and on the CPU what the split
 // between the cache and the frame guarantees.
 #include "cull_fixture.h"
 #include "engine/field/shadow_casters.h"
-#include "shaders/shadow_select.h"
+#include "shaders/shared/shadow_select.h"
 
 #include <algorithm>
 #include <map>

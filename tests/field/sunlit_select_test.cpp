@@ -1,7 +1,7 @@
-// Which impostors the frame's shadow map cannot reach (shaders/sunlit_select.h):
+// Which impostors the frame's shadow map cannot reach (shaders/shared/sunlit_select.h):
 // CPU only, against the map's own view-projection (engine/field/shadow_map.h).
 #include "engine/field/sun_square.h"
-#include "shaders/sunlit_select.h"
+#include "shaders/shared/sunlit_select.h"
 
 #include <gtest/gtest.h>
 

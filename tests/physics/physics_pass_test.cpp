@@ -4,7 +4,7 @@
 // validation layer on.
 #include "engine/physics/physics_pass.h"
 #include "gpu_test.h"
-#include "shaders/joint_physics.h"
+#include "shaders/shared/joint_physics.h"
 
 #include <glm/gtc/quaternion.hpp>
 

@@ -5,7 +5,7 @@
 // range, and the model's parameters follow beam theory and the leaves.
 #include "engine/physics/plant_physics.h"
 #include "engine/scene/plant_models.h"
-#include "shaders/joint_physics.h"
+#include "shaders/shared/joint_physics.h"
 
 #include "lsystem/dialects/dialect.h"
 #include "lsystem/language/parser.h"

@@ -6,7 +6,7 @@
 #include "field_render.h"
 #include "gpu_test.h"
 
-#include "shaders/cluster_select.h"
+#include "shaders/shared/cluster_select.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // contiguous ranges, bounds holding every plant's sphere, deterministic.
 #include "engine/scene/clusters.h"
 #include "engine/scene/field_content.h"
-#include "shaders/lod_select.h"
+#include "shaders/shared/lod_select.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #include "memory_check.h"
 
 #include "engine/raytrace/field_graph.h"
-#include "shaders/field_layouts.h"
+#include "shaders/shared/field_layouts.h"
 
 namespace pf {
 

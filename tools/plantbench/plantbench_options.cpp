@@ -1,7 +1,7 @@
 #include "plantbench_options.h"
 
 #include "lsystem/common/output_file.h"
-#include "shaders/field_layouts.h"
+#include "shaders/shared/field_layouts.h"
 #include "tools/field_options.h"
 
 #include <CLI/CLI.hpp>

@@ -2,7 +2,7 @@
 
 #include "engine/image/video_encoder.h"
 #include "lsystem/common/output_file.h"
-#include "shaders/field_layouts.h"
+#include "shaders/shared/field_layouts.h"
 
 #include <CLI/CLI.hpp>
 #include <plantfield_version.h>

@@ -9,7 +9,7 @@
 #include "engine/physics/physics_pass.h"
 #include "engine/scene/plant_models.h"
 #include "engine/vk/gpu_timer.h"
-#include "shaders/joint_physics.h"
+#include "shaders/shared/joint_physics.h"
 
 #include <nlohmann/json.hpp>
 
