@@ -24,7 +24,7 @@ layout(set = 0, binding = FIELD_BINDING_SKELETONS) uniform usamplerBuffer skelet
 layout(set = 0, binding = FIELD_BINDING_POSES) uniform usamplerBuffer poseTexels;        // JointPose[]
 layout(set = 0, binding = FIELD_BINDING_INSTANCE_SKELETON) uniform usamplerBuffer instanceSkeletonTexels; // uint
 layout(set = 0, binding = FIELD_BINDING_IMPOSTOR_OUTLINES) uniform usamplerBuffer outlineTexels; // per atlas layer
-layout(set = 0, binding = FIELD_BINDING_TRACED_SUN) uniform sampler2D tracedSun; // per pixel (r)
+layout(set = 0, binding = FIELD_BINDING_RAYTRACED_SUN) uniform sampler2D raytracedSun; // per pixel (r)
 
 FieldInstance fieldInstanceAt(uint i) {
     int t = int(i) * FIELD_INSTANCE_TEXELS;
@@ -91,7 +91,7 @@ layout(push_constant) uniform FieldPushBlock {
 };
 
 mat4 passViewProj() {
-    if (fieldPush.shadowPass == FIELD_PASS_COLOUR) return frame.viewProj;
+    if (fieldPush.shadowPass == FIELD_PASS_COLOR) return frame.viewProj;
     return fieldPush.shadowPass == FIELD_PASS_SHADOW ? field.sunViewProj : field.sunCacheViewProj;
 }
 
@@ -213,7 +213,7 @@ vec3 shadeField(vec3 albedo, vec3 normal, vec3 worldPos, float occlusion, float 
 // result at the pixel (`fragCoord`: gl_FragCoord.xy) with ray-traced
 // shadows, else the shadow map's at sunMapPosition `ndc`.
 float sunVisibilityOf(vec2 fragCoord, vec3 ndc) {
-    if (field.viewport.w == FIELD_SUN_TRACED) return texelFetch(tracedSun, ivec2(fragCoord), 0).r;
+    if (field.viewport.w == FIELD_SUN_RAYTRACED) return texelFetch(raytracedSun, ivec2(fragCoord), 0).r;
     return sunVisibilityAt(ndc);
 }
 
@@ -221,7 +221,7 @@ float sunVisibilityOf(vec2 fragCoord, vec3 ndc) {
 // plant's rest pose (the pose the traced graph holds, so a swaying leaf is
 // shadowed as at rest, never by its own resting copy), a centimetre off the
 // surface on its sunward side, so the ray leaves the triangle it starts on.
-vec4 tracedSunOrigin(vec3 restPos, vec3 normal) {
+vec4 raytracedSunOrigin(vec3 restPos, vec3 normal) {
     return vec4(restPos + sunwardNormal(normal) * 0.01, 1.0);
 }
 

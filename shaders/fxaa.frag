@@ -151,6 +151,6 @@ void main() {
 
     // The pixel moved towards the edge's other side by the larger of the two
     // coverages: a mix with the neighbour across it.
-    const vec4 acrossColour = horizontal ? (after ? south : north) : (after ? east : west);
-    outColor = mix(centre, acrossColour, max(edgeOffset, subpixelOffset));
+    const vec4 acrossColor = horizontal ? (after ? south : north) : (after ? east : west);
+    outColor = mix(centre, acrossColor, max(edgeOffset, subpixelOffset));
 }

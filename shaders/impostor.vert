@@ -22,7 +22,7 @@
 layout(location = 0) out vec3 outWorldPos;
 layout(location = 1) out vec2 outUv;
 layout(location = 2) flat out uint outLayer; // the atlas frame shown
-layout(location = 3) out vec3 outRestPos;      // outWorldPos before the wind's lean (traced_origin_impostor.frag)
+layout(location = 3) out vec3 outRestPos;      // outWorldPos before the wind's lean (raytraced_origin_impostor.frag)
 layout(location = 4) flat out uint outFade;
 layout(location = 5) flat out float outYaw;
 layout(location = 6) out vec4 outFog;

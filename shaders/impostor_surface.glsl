@@ -1,7 +1,7 @@
 // The surface an LOD2 billboard's fragment shows: atlas albedo and plant-
 // space normal (both premultiplied by coverage), alpha-tested, cross-faded,
 // and the point of the crown it stands for. Read by the colour shaders
-// (impostor_colour.glsl) and the traced-sun origins (traced_origin_impostor.frag).
+// (impostor_color.glsl) and the traced-sun origins (raytraced_origin_impostor.frag).
 #ifndef IMPOSTOR_SURFACE_GLSL
 #define IMPOSTOR_SURFACE_GLSL
 #include "field_common.glsl"

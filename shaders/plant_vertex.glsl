@@ -11,7 +11,7 @@ layout(location = 3) out vec2 outUv;
 layout(location = 4) flat out uint outFade;
 layout(location = 5) flat out float outKind;
 layout(location = 6) out vec4 outFog;
-layout(location = 7) out vec3 outRestPos; // before the pose: where traced_origin_plant.frag starts the sun's ray
+layout(location = 7) out vec3 outRestPos; // before the pose: where raytraced_origin_plant.frag starts the sun's ray
 
 void main() {
     VisiblePlant p = visiblePlant(gl_InstanceIndex);
@@ -27,6 +27,6 @@ void main() {
     outUv = vec2(v.position.w, v.normal.w);
     outFade = packFade(p);
     outKind = v.albedo.a;
-    outFog = fieldPush.shadowPass != FIELD_PASS_COLOUR ? vec4(0.0) : vertexFog(outWorldPos);
+    outFog = fieldPush.shadowPass != FIELD_PASS_COLOR ? vec4(0.0) : vertexFog(outWorldPos);
     gl_Position = passViewProj() * vec4(outWorldPos, 1.0);
 }

@@ -1,6 +1,6 @@
 #version 460
 // Traces a buffer of rays through a packed InstanceGraph, one invocation a
-// ray, and writes each one's hit (engine/raytrace/ray_trace_pass.h).
+// ray, and writes each one's hit (engine/raytrace/raytrace_pass.h).
 #extension GL_GOOGLE_include_directive : require
 
 #include "raytrace_traverse.glsl"

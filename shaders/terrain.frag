@@ -4,5 +4,5 @@
 
 // The ground within reach of the sun's shadow map: the plants' shadows on it.
 void main() {
-    outColor = groundColour(true);
+    outColor = groundColor(true);
 }

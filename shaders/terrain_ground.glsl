@@ -13,7 +13,7 @@ layout(location = 0) out vec4 outColor;
 // `shadowed`: a constant of each shader, false for chunks the sun's map does
 // not reach (terrain_chunks.h), whose shader then has no shadow lookup at all
 // (on lavapipe a branch would not skip it).
-vec4 groundColour(const bool shadowed) {
+vec4 groundColor(const bool shadowed) {
     vec3 n = normalize(inNormal);
     vec2 p = inWorldPos.xz;
     float patches = inBroadPatches + 0.3 * valueNoise(p * 0.6) + 0.15 * valueNoise(p * 4.0);

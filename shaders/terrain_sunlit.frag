@@ -5,5 +5,5 @@
 // The ground the sun's shadow map does not reach (or with shadows off): in
 // full sun.
 void main() {
-    outColor = groundColour(false);
+    outColor = groundColor(false);
 }

@@ -66,7 +66,7 @@ struct FieldToolOptions {
     ImageSize size{1280, 720};
     double time = 0.0; // scene seconds: of the (first) frame, or of the camera on its path
     Antialiasing antialiasing;
-    SunShadows shadows = SunShadows::shadowMap;
+    SunShadows shadows = SunShadows::map;
     bool occlusionCulling = false; // --occlusion: plants behind the depth pyramid are not drawn
     bool clusters = true;          // false: every plant through the per-plant cull, no far canopy (--no-clusters)
     std::optional<uint32_t> seed;  // replaces the scene's seed

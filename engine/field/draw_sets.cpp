@@ -37,7 +37,7 @@ DrawTable createDrawTable(GpuResources& owner, const DrawTableInputs& in) {
         texels(owner, FIELD_BINDING_CLUSTER_NODES, in.clusters ? in.clusters->nodes : placeholder, kUint4),
         texels(owner, FIELD_BINDING_CANOPY, in.clusters ? in.clusters->canopy : placeholder, kUint4),
         texels(owner, FIELD_BINDING_CANOPY_FAR, in.clusters ? in.cameraClusters->far : placeholder, kUint1),
-        tracedSunBinding(*in.tracedSun, kDrawStages)};
+        raytracedSunBinding(*in.raytracedSun, kDrawStages)};
     table.setLayout = createSetLayout(owner, table.bindings);
     table.layout = createPipelineLayout(owner, table.setLayout, {kDrawStages, 0, sizeof(gpu::FieldPush)});
     return table;
@@ -55,10 +55,10 @@ std::vector<VkDescriptorSet> createDrawSets(GpuResources& owner, const DrawTable
     return createSets(owner, table.setLayout, tables);
 }
 
-void writeTracedSunVisibility(const GpuContext& ctx, std::span<const VkDescriptorSet> sets,
-                              const TracedSunPass& tracedSun) {
+void writeRaytracedSunVisibility(const GpuContext& ctx, std::span<const VkDescriptorSet> sets,
+                                 const RaytracedSunPass& raytracedSun) {
     // A write names no stages: the sets' layout keeps the colour pass's.
-    const DescriptorBinding visibility = tracedSunBinding(tracedSun, VK_SHADER_STAGE_FRAGMENT_BIT);
+    const DescriptorBinding visibility = raytracedSunBinding(raytracedSun, VK_SHADER_STAGE_FRAGMENT_BIT);
     for (VkDescriptorSet set : sets) writeSet(ctx.device, set, {&visibility, 1});
 }
 

@@ -11,8 +11,8 @@
 #include "engine/field/cluster_pass.h"
 #include "engine/field/field_clusters.h"
 #include "engine/field/field_geometry.h"
+#include "engine/field/raytraced_sun_pass.h"
 #include "engine/field/shadow_map.h"
-#include "engine/field/traced_sun_pass.h"
 #include "engine/physics/field_motion.h"
 #include "engine/vk/descriptors.h"
 
@@ -34,7 +34,7 @@ struct DrawTableInputs {
     // list). Null without: the canopy's bindings get one texel.
     const FieldClusters* clusters = nullptr;
     const ClusterPass* cameraClusters = nullptr;
-    const TracedSunPass* tracedSun = nullptr;
+    const RaytracedSunPass* raytracedSun = nullptr;
 };
 
 struct DrawTable {
@@ -53,8 +53,8 @@ std::vector<VkDescriptorSet> createDrawSets(GpuResources& owner, const DrawTable
 
 // The traced sun's visibility written again into `sets` after its images
 // were made for a new size (resizeTracedSunImages).
-void writeTracedSunVisibility(const GpuContext& ctx, std::span<const VkDescriptorSet> sets,
-                              const TracedSunPass& tracedSun);
+void writeRaytracedSunVisibility(const GpuContext& ctx, std::span<const VkDescriptorSet> sets,
+                                 const RaytracedSunPass& raytracedSun);
 
 void bindDrawSet(VkCommandBuffer cmd, VkPipelineLayout layout, VkDescriptorSet set);
 // FieldPush: which pass draws (FIELD_PASS_*) and which part of the impostor list (IMPOSTOR_PART_*).

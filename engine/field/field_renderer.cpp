@@ -30,7 +30,7 @@ FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const 
         throw std::runtime_error("at most " + std::to_string(FIELD_MAX_INSTANCES) + " plants can be drawn");
     // The traced pass runs before the colour pass, over the plants the cull
     // lists then; occlusion culling adds plants between the colour pass's parts.
-    const bool traced = settings_.shadows == SunShadows::traced;
+    const bool traced = settings_.shadows == SunShadows::raytraced;
     if (traced && settings_.occlusionCulling)
         throw std::runtime_error("ray-traced shadows and occlusion culling do not go together: the rays start from "
                                  "what a frame draws before its colour pass, and occlusion culling draws more in it");
@@ -53,19 +53,19 @@ FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const 
     lists.templates = templates;
     lists.near = clustered() ? &cameraClusters_.near : nullptr;
     cull_ = createCullPass(resources_, lists);
-    tracedSun_ = traced ? createTracedSunPass(resources_, content_, plants.instances, settings_.memory)
-                        : createUntracedSunPass(resources_);
+    raytracedSun_ = traced ? createRaytracedSunPass(resources_, content_, plants.instances, settings_.memory)
+                           : createRaytracedSunPlaceholder(resources_);
     motion_ = createFieldMotion(resources_, content_);
     const float texel = 2.0f * settings_.shadowRadius / float(settings_.shadowMapSize);
     shadowMap_ = createShadowMap(resources_, settings_.shadowMapSize, shadowCacheMargin(settings_.shadowCache, texel));
 
     drawTable_ = createDrawTable(resources_, {&uniforms_, &geometry_, &plants_, &shadowMap_, &motion_,
-                                              clustered() ? &clusters_ : nullptr, &cameraClusters_, &tracedSun_});
-    colour_ = createColourPass(resources_, {&drawTable_, &cull_.visible, &plants_.naiveVisible, &uniforms_,
-                                            &geometry_.terrainVertices, &content_.scene, settings_.antialiasing});
+                                              clustered() ? &clusters_ : nullptr, &cameraClusters_, &raytracedSun_});
+    color_ = createColorPass(resources_, {&drawTable_, &cull_.visible, &plants_.naiveVisible, &uniforms_,
+                                          &geometry_.terrainVertices, &content_.scene, settings_.antialiasing});
     shadows_ =
         createShadowPass(resources_, {&drawTable_, lists, clustered() ? &clusters_ : nullptr, settings_.shadowCache});
-    if (traced) tracedOrigins_ = createTracedOriginsPass(resources_, drawTable_.layout);
+    if (traced) raytracedOrigins_ = createRaytracedOriginsPass(resources_, drawTable_.layout);
 }
 
 FieldRenderer::~FieldRenderer() {
@@ -93,20 +93,20 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
                                                  extent.height, view.forcedLod.value_or(LOD_NOT_FORCED));
         // Ray-traced shadows use the square only to choose the terrain chunks
         // whose pixels trace (visibleTerrainRanges): no map, no casters.
-        if (settings_.shadows == SunShadows::traced)
+        if (settings_.shadows == SunShadows::raytraced)
             block.field.sunViewProj = sunViewProjection(frame.square, kSunDepthRadius);
         else
             setShadowView(shadows_, shadowMap_, frame, view.firstFrame, viewProj, block.field);
     }
     const float shadowTexel = 2.0f * settings_.shadowRadius / float(shadowMap_.size);
     block.field.viewport = glm::vec4(float(extent.width), float(extent.height), shadowTexel,
-                                     settings_.shadows == SunShadows::none        ? FIELD_SUN_UNSHADOWED
-                                     : settings_.shadows == SunShadows::shadowMap ? FIELD_SUN_SHADOW_MAP
-                                                                                  : FIELD_SUN_TRACED);
+                                     settings_.shadows == SunShadows::none  ? FIELD_SUN_UNSHADOWED
+                                     : settings_.shadows == SunShadows::map ? FIELD_SUN_SHADOW_MAP
+                                                                            : FIELD_SUN_RAYTRACED);
     // The colour pass's sets sample the visibility of the frame's size.
-    if (settings_.shadows == SunShadows::traced && resizeTracedSunImages(ctx_, tracedSun_, extent)) {
-        const VkDescriptorSet sets[] = {colour_.listsSet, colour_.naiveSet, shadows_.cache.set, shadows_.frame.set};
-        writeTracedSunVisibility(ctx_, sets, tracedSun_);
+    if (settings_.shadows == SunShadows::raytraced && resizeRaytracedSunImages(ctx_, raytracedSun_, extent)) {
+        const VkDescriptorSet sets[] = {color_.listsSet, color_.naiveSet, shadows_.cache.set, shadows_.frame.set};
+        writeRaytracedSunVisibility(ctx_, sets, raytracedSun_);
     }
     advanceFieldMotion(motion_, view.time, view.firstFrame, view.camera.position, view.realTime);
     // The physics pass's wind field, for the shaders that sway without a skeleton.
@@ -125,16 +125,16 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
         setClusterUniforms(cameraClusters_,
                            makeClusterUniforms(frustumPlanes(viewProj), cull.camera, cut, threshold, view.firstFrame));
 
-    ColourView colour;
-    colour.viewProj = viewProj;
-    colour.camera = view.camera.position;
-    colour.forward = glm::normalize(view.camera.target - view.camera.position);
-    colour.pixelsPerMetre = cull.camera.w;
-    colour.time = view.time;
-    if (settings_.shadows != SunShadows::none) colour.sunViewProj = block.field.sunViewProj;
-    colour.shadowTexel = shadowTexel;
-    colour.canopy = clustered() && canopyCanBeDrawn(clusters_.tree.nodes, cull.camera, cut, threshold);
-    setColourView(colour_, content_.scene, geometry_.terrainChunks, colour);
+    ColorView color;
+    color.viewProj = viewProj;
+    color.camera = view.camera.position;
+    color.forward = glm::normalize(view.camera.target - view.camera.position);
+    color.pixelsPerMetre = cull.camera.w;
+    color.time = view.time;
+    if (settings_.shadows != SunShadows::none) color.sunViewProj = block.field.sunViewProj;
+    color.shadowTexel = shadowTexel;
+    color.canopy = clustered() && canopyCanBeDrawn(clusters_.tree.nodes, cull.camera, cut, threshold);
+    setColorView(color_, content_.scene, geometry_.terrainChunks, color);
 }
 
 SurfaceGeometry FieldRenderer::surfaceGeometry() const {
@@ -142,30 +142,30 @@ SurfaceGeometry FieldRenderer::surfaceGeometry() const {
             &content_};
 }
 
-void FieldRenderer::recordColour(VkCommandBuffer cmd, const RenderTarget& target, bool naive, GpuTimer* timer) const {
+void FieldRenderer::recordColor(VkCommandBuffer cmd, const RenderTarget& target, bool naive, GpuTimer* timer) const {
     const SurfaceGeometry geometry = surfaceGeometry();
-    const ColourPassFrame frame{&geometry, &cull_, clustered() ? &cameraClusters_ : nullptr, settings_.occlusionCulling,
-                                naive};
-    recordColourPass(cmd, colour_, frame, target, timer);
+    const ColorPassFrame frame{&geometry, &cull_, clustered() ? &cameraClusters_ : nullptr, settings_.occlusionCulling,
+                               naive};
+    recordColorPass(cmd, color_, frame, target, timer);
 }
 
 // The sun's visibility for the colour pass: the shadow map's passes, or the
 // traced sun's origins and trace; the naive baseline's from every plant.
 void FieldRenderer::recordSunShadows(VkCommandBuffer cmd, bool naive) const {
     const SurfaceGeometry geometry = surfaceGeometry();
-    if (settings_.shadows == SunShadows::shadowMap) {
+    if (settings_.shadows == SunShadows::map) {
         if (naive)
-            recordNaiveShadowPass(cmd, shadows_, shadowMap_, geometry, colour_.naiveSet);
+            recordNaiveShadowPass(cmd, shadows_, shadowMap_, geometry, color_.naiveSet);
         else
             recordShadowPass(cmd, shadows_, shadowMap_, geometry);
     }
-    if (settings_.shadows == SunShadows::traced) {
+    if (settings_.shadows == SunShadows::raytraced) {
         SurfaceLists lists;
         lists.plants = naive ? nullptr : &cull_;
-        lists.terrain = &colour_.terrain;
-        recordTracedOriginsPass(cmd, tracedOrigins_, tracedSun_.images, geometry,
-                                naive ? colour_.naiveSet : colour_.listsSet, lists);
-        recordTracedSun(cmd, tracedSun_, sunDirection(environmentOf(content_.scene)));
+        lists.terrain = &color_.terrain;
+        recordRaytracedOriginsPass(cmd, raytracedOrigins_, raytracedSun_.images, geometry,
+                                   naive ? color_.naiveSet : color_.listsSet, lists);
+        recordRaytracedSun(cmd, raytracedSun_, sunDirection(environmentOf(content_.scene)));
     }
 }
 
@@ -184,7 +184,7 @@ void FieldRenderer::record(VkCommandBuffer cmd, const RenderTarget& target, GpuT
         TimedFieldScope scope(cmd, timer, FieldScope::shadow);
         recordSunShadows(cmd, false);
     }
-    recordColour(cmd, target, false, timer);
+    recordColor(cmd, target, false, timer);
 }
 
 void FieldRenderer::recordNaive(VkCommandBuffer cmd, const RenderTarget& target, GpuTimer* timer) const {
@@ -196,7 +196,7 @@ void FieldRenderer::recordNaive(VkCommandBuffer cmd, const RenderTarget& target,
         TimedFieldScope scope(cmd, timer, FieldScope::shadow);
         recordSunShadows(cmd, true);
     }
-    recordColour(cmd, target, true, timer);
+    recordColor(cmd, target, true, timer);
 }
 
 FieldFrameStats FieldRenderer::readStats() const {
@@ -206,7 +206,7 @@ FieldFrameStats FieldRenderer::readStats() const {
     stats.plantsPerLod = counts.perLod;
     stats.draws = counts.drawsPerClass;
     stats.occluded = counts.occluded;
-    if (settings_.shadows == SunShadows::shadowMap) {
+    if (settings_.shadows == SunShadows::map) {
         stats.shadowCastersPerLod = readCullCounts(shadows_.frame.casters).perLod;
         stats.shadowCacheCasters = readCullCounts(shadows_.cache.casters).perLod[LOD_IMPOSTOR];
         stats.shadowCacheRenders = shadows_.cacheRenders;
@@ -223,6 +223,6 @@ FieldFrameStats FieldRenderer::readStats() const {
     return stats;
 }
 
-VkDeviceSize FieldRenderer::gpuBytes() const { return resources_.bytes() + tracedSun_.images.resources->bytes(); }
+VkDeviceSize FieldRenderer::gpuBytes() const { return resources_.bytes() + raytracedSun_.images.resources->bytes(); }
 
 } // namespace pf

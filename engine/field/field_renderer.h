@@ -10,7 +10,7 @@
 #pragma once
 
 #include "engine/field/cluster_pass.h"
-#include "engine/field/colour_pass.h"
+#include "engine/field/color_pass.h"
 #include "engine/field/cull_pass.h"
 #include "engine/field/draw_sets.h"
 #include "engine/field/field_clusters.h"
@@ -19,13 +19,13 @@
 #include "engine/field/field_scopes.h"
 #include "engine/field/field_uploads.h"
 #include "engine/field/impostor_atlas.h"
+#include "engine/field/raytraced_origins_pass.h"
+#include "engine/field/raytraced_sun_pass.h"
 #include "engine/field/shadow_cache.h"
 #include "engine/field/shadow_map.h"
 #include "engine/field/shadow_pass.h"
 #include "engine/field/sun_shadows.h"
 #include "engine/field/surface_draws.h"
-#include "engine/field/traced_origins_pass.h"
-#include "engine/field/traced_sun_pass.h"
 #include "engine/physics/field_motion.h"
 #include "engine/scene/camera.h"
 #include "engine/scene/field_content.h"
@@ -40,7 +40,7 @@ struct GpuTimer;
 
 struct FieldRenderSettings {
     Antialiasing antialiasing; // FXAA unless set (antialiasing.h)
-    SunShadows shadows = SunShadows::shadowMap;
+    SunShadows shadows = SunShadows::map;
     uint32_t shadowMapSize = 1024;
     float shadowRadius = 60.0f; // metres: half the side of the shadowed square ahead of the camera
     ShadowCacheSettings shadowCache;
@@ -111,18 +111,18 @@ private:
     FieldClusters clusters_; // empty without clusters
     FieldMotion motion_;
     ShadowMap shadowMap_;
-    TracedSunPass tracedSun_;    // without ray-traced shadows: no graph, a visibility of one texel, 1
-    ClusterPass cameraClusters_; // with clusters: the camera's cut, whose near leaves the cull runs over
-    CullPass cull_;              // the camera's lists
+    RaytracedSunPass raytracedSun_; // without ray-traced shadows: no graph, a visibility of one texel, 1
+    ClusterPass cameraClusters_;    // with clusters: the camera's cut, whose near leaves the cull runs over
+    CullPass cull_;                 // the camera's lists
     DrawTable drawTable_;
-    ColourPass colour_;
-    ShadowPass shadows_;              // its casters' passes are made (and cost memory) whatever the shadows
-    TracedOriginsPass tracedOrigins_; // with ray-traced shadows
+    ColorPass color_;
+    ShadowPass shadows_;                    // its casters' passes are made (and cost memory) whatever the shadows
+    RaytracedOriginsPass raytracedOrigins_; // with ray-traced shadows
 
     bool clustered() const { return settings_.clusters.enabled; }
     SurfaceGeometry surfaceGeometry() const;
     void recordSunShadows(VkCommandBuffer cmd, bool naive) const;
-    void recordColour(VkCommandBuffer cmd, const RenderTarget& target, bool naive, GpuTimer* timer) const;
+    void recordColor(VkCommandBuffer cmd, const RenderTarget& target, bool naive, GpuTimer* timer) const;
 };
 
 // Replaces a live renderer by one drawing `content` with its settings

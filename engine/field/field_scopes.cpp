@@ -15,12 +15,12 @@ static_assert(everyScopeIsDefined(), "every FieldScope needs its definition, in 
 
 // The colour pass opens "colour" and records the nested scopes inside it
 // before it closes: they are those recorded after it.
-constexpr bool nestedScopesFollowColour() {
+constexpr bool nestedScopesFollowColor() {
     for (size_t i = 0; i < kFieldScopes.size(); ++i)
-        if (kFieldScopes[i].insideColour != (i > size_t(FieldScope::colour))) return false;
+        if (kFieldScopes[i].insideColor != (i > size_t(FieldScope::color))) return false;
     return true;
 }
-static_assert(nestedScopesFollowColour(), "the scopes inside \"colour\" are those after it");
+static_assert(nestedScopesFollowColor(), "the scopes inside \"colour\" are those after it");
 
 // The tools key their columns and JSON by name.
 constexpr bool namesAreUnique() {

@@ -31,7 +31,7 @@ enum class FieldScope {
     clusters,
     cull,
     shadow,
-    colour,
+    color,
     plants,
     impostors,
     canopy,
@@ -46,7 +46,7 @@ enum class FieldScope {
 struct FieldScopeDefinition {
     FieldScope scope;
     const char* name;
-    bool insideColour; // recorded inside "colour": a frame's total adds only the others
+    bool insideColor; // recorded inside "colour": a frame's total adds only the others
 };
 
 inline constexpr std::array<FieldScopeDefinition, 15> kFieldScopes = {{
@@ -55,7 +55,7 @@ inline constexpr std::array<FieldScopeDefinition, 15> kFieldScopes = {{
     {FieldScope::clusters, "clusters", false},
     {FieldScope::cull, "cull", false},
     {FieldScope::shadow, "shadow", false},
-    {FieldScope::colour, "colour", false},
+    {FieldScope::color, "colour", false},
     {FieldScope::plants, "plants", true},
     {FieldScope::impostors, "impostors", true},
     {FieldScope::canopy, "canopy", true},

@@ -11,8 +11,8 @@
 #include "engine/vk/target_pass.h"
 #include "shaders/impostor_bake_frag.spv.h"
 #include "shaders/impostor_bake_vert.spv.h"
-#include "shaders/shared/impostor_frame.h"
 #include "shaders/impostor_shadow_bake_frag.spv.h"
+#include "shaders/shared/impostor_frame.h"
 
 #include <algorithm>
 #include <cmath>
@@ -248,7 +248,7 @@ BakePipeline createBakePipeline(GpuResources& owner, const Buffer& vertices) {
 }
 
 // Every layer of a ring's targets made ready to be cleared and drawn.
-void prepareBakeRing(VkCommandBuffer cmd, std::initializer_list<const BakeTarget*> colours, const BakeTarget& depth,
+void prepareBakeRing(VkCommandBuffer cmd, std::initializer_list<const BakeTarget*> colors, const BakeTarget& depth,
                      uint32_t frames) {
     // The previous ring's filtering reads must be done before its layers
     // are cleared again (write after read: execution only), and its depth
@@ -267,19 +267,18 @@ void prepareBakeRing(VkCommandBuffer cmd, std::initializer_list<const BakeTarget
                       VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL});
     depthToAttachment.subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
     std::vector<VkImageMemoryBarrier2> barriers{depthToAttachment};
-    for (const BakeTarget* colour : colours)
-        barriers.push_back(atlasBarrier(colour->image, 0, 1, frames, toAttachment));
+    for (const BakeTarget* color : colors) barriers.push_back(atlasBarrier(color->image, 0, 1, frames, toAttachment));
     pipelineBarrier(cmd, barriers);
 }
 
 // Clears layer `layer` of the targets (colour attachments and depth,
 // `size`²) and begins rendering into it.
-void beginBakeFrame(VkCommandBuffer cmd, std::initializer_list<const BakeTarget*> colours,
-                    const BakeTarget& depthTarget, uint32_t size, uint32_t layer) {
+void beginBakeFrame(VkCommandBuffer cmd, std::initializer_list<const BakeTarget*> colors, const BakeTarget& depthTarget,
+                    uint32_t size, uint32_t layer) {
     std::vector<VkRenderingAttachmentInfo> attachments;
-    for (const BakeTarget* colour : colours) {
+    for (const BakeTarget* color : colors) {
         VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-        a.imageView = colour->layers[layer];
+        a.imageView = color->layers[layer];
         a.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
         a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
         a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;

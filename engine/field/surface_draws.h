@@ -41,7 +41,7 @@ struct ImpostorDraw {
 
 // A pass's pipeline for each step; VK_NULL_HANDLE leaves the step out.
 struct SurfacePipelines {
-    uint32_t pass = FIELD_PASS_COLOUR; // FieldPush::shadowPass, pushed by the pass before the draws
+    uint32_t pass = FIELD_PASS_COLOR; // FieldPush::shadowPass, pushed by the pass before the draws
     VkPipeline bark = VK_NULL_HANDLE;
     VkPipeline foliage = VK_NULL_HANDLE; // the same as bark: bound once, each plant's bark and foliage together
     std::array<ImpostorDraw, 2> impostors{};

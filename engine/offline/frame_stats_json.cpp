@@ -40,7 +40,7 @@ std::string frameStatsJson(const OfflineRenderer& offline, const std::string& sc
     for (const ScopeTime& s : offline.gpuTimes()) {
         ms[s.name] = s.milliseconds;
         const std::optional<FieldScope> scope = fieldScopeNamed(s.name);
-        if (!scope || !fieldScope(*scope).insideColour) total += s.milliseconds;
+        if (!scope || !fieldScope(*scope).insideColor) total += s.milliseconds;
     }
     ms["total"] = total;
     j["gpu_ms"] = ms;

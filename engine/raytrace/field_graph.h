@@ -28,7 +28,7 @@ inline constexpr uint32_t kFieldTrianglesPerPrimitive = 4;
 uint64_t fieldGraphBytes(const PlantModelPool& models, size_t plants);
 
 // A primitive's material is its triangles' SURFACE_* kind; the cut-out test
-// of leaf cards (shaders/traced_sun.comp) reads the texture coordinates each
+// of leaf cards (shaders/raytraced_sun.comp) reads the texture coordinates each
 // triangle corner keeps in its w, two halves packed (glm::packHalf2x16).
 // Throws GpuGraphError when the traversal's arrays cannot hold the field.
 GpuGraph packFieldGraph(const PlantModelPool& models, std::span<const gpu::FieldInstance> plants);

@@ -131,7 +131,7 @@ Environment environmentOf(const Scene& scene) {
     Environment env;
     env.sunElevationDegrees = scene.sun.elevationDegrees;
     env.sunAzimuthDegrees = scene.sun.azimuthDegrees;
-    env.sunRadiance = scene.sun.colour * scene.sun.intensity;
+    env.sunRadiance = scene.sun.color * scene.sun.intensity;
     env.skyZenith = scene.sky.zenith;
     env.skyHorizon = scene.sky.horizon;
     env.groundAlbedo = scene.terrain.albedo;

@@ -140,7 +140,7 @@ struct Species {
 struct Sun {
     float elevationDegrees = 38.0f;
     float azimuthDegrees = 140.0f; // clockwise from -z (north) toward +x
-    glm::vec3 colour{1.0f, 0.95f, 0.84f};
+    glm::vec3 color{1.0f, 0.95f, 0.84f};
     float intensity = 1.9f;
     bool operator==(const Sun&) const = default;
 };

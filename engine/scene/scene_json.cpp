@@ -18,7 +18,7 @@ using lsys::above, lsys::anyNumber, lsys::arrayElements, lsys::atLeast, lsys::be
     lsys::rootNode;
 namespace {
 
-const Range kColour = atLeast(0.0); // linear RGB; above 1 is allowed for bright light
+const Range kColor = atLeast(0.0); // linear RGB; above 1 is allowed for bright light
 
 // A file (or, where `folders` allows, a folder: a vlab object) that exists,
 // relative to the scene file's folder.
@@ -287,7 +287,7 @@ Sun readSun(const JsonNode& node) {
     Sun sun;
     readField(node, "elevation", sun.elevationDegrees, between(-90.0, 90.0));
     readField(node, "azimuth", sun.azimuthDegrees, anyNumber());
-    readField(node, "colour", sun.colour, kColour);
+    readField(node, "colour", sun.color, kColor);
     readField(node, "intensity", sun.intensity, atLeast(0.0));
     return sun;
 }
@@ -295,8 +295,8 @@ Sun readSun(const JsonNode& node) {
 Sky readSky(const JsonNode& node) {
     requireObject(node, {"zenith", "horizon"});
     Sky sky;
-    readField(node, "zenith", sky.zenith, kColour);
-    readField(node, "horizon", sky.horizon, kColour);
+    readField(node, "zenith", sky.zenith, kColor);
+    readField(node, "horizon", sky.horizon, kColor);
     return sky;
 }
 

@@ -22,7 +22,7 @@ struct Antialiasing {
 };
 
 // Samples a pixel of the colour pass: msaaSamples with msaa, 1 otherwise.
-inline uint32_t colourPassSamples(const Antialiasing& aa) {
+inline uint32_t colorPassSamples(const Antialiasing& aa) {
     return aa.method == AntialiasMethod::msaa ? aa.msaaSamples : 1;
 }
 

@@ -25,7 +25,7 @@ RenderTarget createRenderTarget(const GpuContext& ctx, VkExtent2D extent, Antial
     target.resources = GpuResources(ctx);
     target.extent = extent;
     target.antialiasing = supportedAntialiasing(ctx, antialiasing);
-    target.samples = VkSampleCountFlagBits(colourPassSamples(target.antialiasing));
+    target.samples = VkSampleCountFlagBits(colorPassSamples(target.antialiasing));
     // Not transient: a colour pass drawn in two parts (occlusion culling)
     // stores it between them.
     if (target.samples != VK_SAMPLE_COUNT_1_BIT)

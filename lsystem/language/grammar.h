@@ -88,7 +88,7 @@ struct Movement {
 struct TurtleStyle {
     double widthFactor = 0.7;    // a bare ! multiplies the width by it, a bare # divides by it,
     double widthIncrement = 0.0; // then ! subtracts this and # adds it (cpfg's "line width increment")
-    int colourIncrement = 1;     // a bare ; adds it to the material index, a bare , subtracts it
+    int colorIncrement = 1;      // a bare ; adds it to the material index, a bare , subtracts it
     uint32_t material = 0;       // the material index the plant starts with
     glm::vec3 tropism{0.0f, -1.0f, 0.0f};
     double elasticity = 0.0;

@@ -156,11 +156,11 @@ void renderRow(const Scene& scene, const CameraBasis& basis, const std::vector<g
                 rayThrough(basis, image.width, image.height, float(column) + offset.x, float(row) + offset.y);
             sum += toneMap(radiance(scene, ray, counts));
         }
-        const glm::vec3 colour = sum / float(offsets.size());
+        const glm::vec3 color = sum / float(offsets.size());
         uint8_t* pixel = &image.rgba[(size_t(row) * image.width + column) * 4];
-        pixel[0] = srgbByte(colour.r);
-        pixel[1] = srgbByte(colour.g);
-        pixel[2] = srgbByte(colour.b);
+        pixel[0] = srgbByte(color.r);
+        pixel[1] = srgbByte(color.g);
+        pixel[2] = srgbByte(color.b);
         pixel[3] = 255;
     }
 }

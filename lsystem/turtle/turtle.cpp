@@ -16,7 +16,7 @@ TurtleSettings turtleSettings(const Grammar& grammar) {
     const TurtleStyle& style = grammar.style;
     settings.widthFactor = static_cast<float>(style.widthFactor);
     settings.widthIncrement = static_cast<float>(style.widthIncrement);
-    settings.colourIncrement = style.colourIncrement;
+    settings.colorIncrement = style.colorIncrement;
     settings.material = style.material;
     settings.tropism = style.tropism;
     settings.elasticity = static_cast<float>(style.elasticity);

@@ -47,7 +47,7 @@ struct TurtleSettings {
     float width = 1.0f;
     float widthFactor = 0.7f;    // a bare ! multiplies by it, a bare # divides by it,
     float widthIncrement = 0.0f; // then ! subtracts this and # adds it
-    int colourIncrement = 1;     // of a bare ; (up) and , (down)
+    int colorIncrement = 1;      // of a bare ; (up) and , (down)
     uint32_t material = 0;
     glm::vec3 tropism{0.0f, -1.0f, 0.0f}; // gravity
     float elasticity = 0.0f;

@@ -34,7 +34,7 @@ float stepWidth(const TurtleStep& t, float direction) {
 
 // A bare ; or , (direction +1 or -1) steps the index by the colour increment.
 float stepMaterial(const TurtleStep& t, int direction) {
-    return static_cast<float>(static_cast<int64_t>(t.state.material) + direction * t.settings.colourIncrement);
+    return static_cast<float>(static_cast<int64_t>(t.state.material) + direction * t.settings.colorIncrement);
 }
 
 // A segment drawn backwards (negative length) faces the other way.

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "lsystem/common/file_reader.h"
-#include "lsystem/vlab/colour_files.h"
+#include "lsystem/vlab/color_files.h"
 #include "lsystem/vlab/function_file.h"
 #include "lsystem/vlab/surface_file.h"
 #include "lsystem/vlab/view_file.h"
@@ -42,7 +42,7 @@ bool readCommandLine(const std::vector<std::string>& words, const fs::path& fold
             if (i + count >= words.size()) break; // an option without its arguments ends the line
             const std::string argument = count > 0 ? words[i + 1] : std::string();
             if (word == "-m" || word == "-m1")
-                files.colourMap = folder / argument;
+                files.colorMap = folder / argument;
             else if (word == "-M" || word == "-M1")
                 files.materials = folder / argument;
             else if (word == "-e" || word == "-m2" || word == "-M2")
@@ -104,16 +104,16 @@ std::string listed(const std::vector<fs::path>& paths) {
     return text;
 }
 
-Material colourMaterial(const ColourEntry& entry, size_t index) {
+Material colorMaterial(const ColorEntry& entry, size_t index) {
     Material material;
     material.name = "colour " + std::to_string(index);
     material.albedo = entry.diffuse; // an index a material file leaves out has cpfg's default, white
     return material;
 }
 
-std::shared_ptr<const std::vector<Material>> paletteOf(const ColourTable& colours) {
+std::shared_ptr<const std::vector<Material>> paletteOf(const ColorTable& colors) {
     auto palette = std::make_shared<std::vector<Material>>();
-    for (size_t i = 0; i < colours.size(); ++i) palette->push_back(colourMaterial(colours[i], i));
+    for (size_t i = 0; i < colors.size(); ++i) palette->push_back(colorMaterial(colors[i], i));
     return palette;
 }
 
@@ -125,7 +125,7 @@ void applyView(const ViewFile& view, Grammar& grammar) {
     TurtleStyle& style = grammar.style;
     style.widthFactor = 1.0;
     style.widthIncrement = view.lineWidthIncrement;
-    style.colourIncrement = view.colorIncrement;
+    style.colorIncrement = view.colorIncrement;
     style.material = static_cast<uint32_t>(((view.initialColor % 256) + 256) % 256);
     style.tropism = view.tropismDirection;
     style.elasticity = view.initialElasticity;
@@ -243,11 +243,11 @@ ObjectLook readObjectLook(const ObjectFiles& files, PlantFile& plant) {
         surfaces->push_back(std::move(read.mesh));
     }
     object.look.surfaces = std::move(surfaces);
-    if (!files.colourMap.empty() || !files.materials.empty()) {
-        ColourReadResult colours =
-            files.colourMap.empty() ? readMaterialFile(files.materials) : readColourMap(files.colourMap);
-        if (colours.error) errors.push_back(*colours.error);
-        object.look.palette = paletteOf(colours.colours);
+    if (!files.colorMap.empty() || !files.materials.empty()) {
+        ColorReadResult colors =
+            files.colorMap.empty() ? readMaterialFile(files.materials) : readColorMap(files.colorMap);
+        if (colors.error) errors.push_back(*colors.error);
+        object.look.palette = paletteOf(colors.colors);
     }
     for (const std::string& ignored : files.ignored)
         plant.parsed.warnings.push_back({files.lsystem.string(),
@@ -282,8 +282,8 @@ std::optional<ObjectFiles> findObjectFiles(const fs::path& path, std::string& pr
         files.lsystem = lsystems.front();
     }
     files.view = companion(files.lsystem, ".v");
-    files.colourMap = companion(files.lsystem, ".map");
-    if (files.colourMap.empty()) files.materials = companion(files.lsystem, ".mat");
+    files.colorMap = companion(files.lsystem, ".map");
+    if (files.colorMap.empty()) files.materials = companion(files.lsystem, ".mat");
     return files;
 }
 

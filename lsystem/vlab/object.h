@@ -21,7 +21,7 @@ namespace lsys::vlab {
 struct ObjectFiles {
     std::filesystem::path lsystem;    // the .l
     std::filesystem::path view;       // empty: cpfg's defaults
-    std::filesystem::path colourMap;  // cpfg -m
+    std::filesystem::path colorMap;   // cpfg -m
     std::filesystem::path materials;  // cpfg -M
     std::vector<std::string> ignored; // what the command line names that plantfield does not read, for a warning
 };

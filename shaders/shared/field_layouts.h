@@ -88,12 +88,12 @@ using uint = uint32_t;
 #define FIELD_BINDING_CANOPY 14                    // CanopyCell[] per node, CANOPY_CELLS each
 #define FIELD_BINDING_CANOPY_FAR 15                // uint: the camera's far nodes (the canopy's instances)
 #define FIELD_BINDING_IMPOSTOR_SHADOW 16           // sampler2DArray: impostor shadow frames, coverage (r)
-#define FIELD_BINDING_TRACED_SUN 17                // sampler2D: per pixel, the traced sun's visibility (r)
+#define FIELD_BINDING_RAYTRACED_SUN 17             // sampler2D: per pixel, the traced sun's visibility (r)
 
 // FieldFrame::viewport.w: where the sun's visibility comes from.
 #define FIELD_SUN_UNSHADOWED 0.0 // nowhere: every surface facing the sun is lit
 #define FIELD_SUN_SHADOW_MAP 1.0 // the shadow map (shadow_map.h)
-#define FIELD_SUN_TRACED 2.0     // per pixel, a ray to the sun (engine/field/traced_sun_pass.h)
+#define FIELD_SUN_RAYTRACED 2.0  // per pixel, a ray to the sun (engine/field/raytraced_sun_pass.h)
 
 // Descriptor binding of the impostor bake (its own set 0).
 #define IMPOSTOR_BAKE_BINDING_VERTICES 0 // FieldVertex[]
@@ -223,7 +223,7 @@ struct ImpostorBakePush {
 
 // The field's draw push constants (field_common.glsl fieldPush). shadowPass:
 // which view the vertex shaders project into.
-#define FIELD_PASS_COLOUR 0u       // the camera's
+#define FIELD_PASS_COLOR 0u        // the camera's
 #define FIELD_PASS_SHADOW 1u       // the sun's, into the frame's shadow map (FieldFrame::sunViewProj)
 #define FIELD_PASS_SHADOW_CACHE 2u // the sun's, into the cache of static casters (FieldFrame::sunCacheViewProj)
 // impostorPart: which of the listed impostors a colour draw of impostor.vert

@@ -229,7 +229,7 @@ TEST_F(ImpostorTest, FrameFrom90DegreesDiffersFrom0) {
     EXPECT_GT(differing, covered / 10) << covered << " covered at 0°";
 }
 
-TEST_F(ImpostorTest, LeafShowsLeafColourFromBothSidesWithNormalsFacingTheView) {
+TEST_F(ImpostorTest, LeafShowsLeafColorFromBothSidesWithNormalsFacingTheView) {
     bake();
     const glm::vec3 leafCentre(0.5f * (kLeafX0 + kLeafX1), 0.5f * (kLeafY0 + kLeafY1), 0.0f);
     for (uint32_t f : {0u, kFrames / 2}) {

@@ -85,12 +85,12 @@ TEST(FuzzCorpus, EverySurfaceCorpusInputRunsToCompletion) {
     replay(pf::fuzz::runSurfaceInput, kFuzz / "corpus/surface", 10);
 }
 
-TEST(FuzzCorpus, EveryColourCorpusInputRunsToCompletion) {
-    replay(pf::fuzz::runColourInput, kFuzz / "corpus/colour", 10);
+TEST(FuzzCorpus, EveryColorCorpusInputRunsToCompletion) {
+    replay(pf::fuzz::runColorInput, kFuzz / "corpus/colour", 10);
 }
 
-TEST(FuzzCorpus, EveryShippedColourMapRunsToCompletion) {
-    replay(pf::fuzz::runColourInput, kData / "plants", 10, ".map");
+TEST(FuzzCorpus, EveryShippedColorMapRunsToCompletion) {
+    replay(pf::fuzz::runColorInput, kData / "plants", 10, ".map");
 }
 
 } // namespace

@@ -27,6 +27,6 @@ void runGltfInput(const uint8_t* data, size_t size);
 void runViewInput(const uint8_t* data, size_t size);
 void runFuncInput(const uint8_t* data, size_t size);
 void runSurfaceInput(const uint8_t* data, size_t size);
-void runColourInput(const uint8_t* data, size_t size);
+void runColorInput(const uint8_t* data, size_t size);
 
 } // namespace pf::fuzz

@@ -4,7 +4,7 @@
 #include "fuzz_targets.h"
 #include "input_file.h"
 
-#include "lsystem/vlab/colour_files.h"
+#include "lsystem/vlab/color_files.h"
 #include "lsystem/vlab/function_file.h"
 #include "lsystem/vlab/surface_file.h"
 #include "lsystem/vlab/view_file.h"
@@ -39,9 +39,9 @@ void runSurfaceInput(const uint8_t* data, size_t size) {
     (void)vlab::readSurfaceFile(path, "s", -2.0f, 10, 10); // a view file's, at cpfg's most
 }
 
-void runColourInput(const uint8_t* data, size_t size) {
+void runColorInput(const uint8_t* data, size_t size) {
     const std::filesystem::path path = writeInputFile(data, size, "vlab/input.map");
-    (void)vlab::readColourMap(path);
+    (void)vlab::readColorMap(path);
     (void)vlab::readMaterialFile(path);
 }
 

@@ -44,10 +44,10 @@ std::string readFile(const fs::path& path) {
 TEST(VideoEncoder, WritesTheFramesFfmpegReadsBack) {
     ASSERT_EQ(runCommand("command -v ffmpeg").exitCode, 0) << "ffmpeg is missing: run tools/deps.sh";
     const fs::path video = scratch("frames") / "clip.mp4";
-    const uint8_t colours[5][3] = {{200, 30, 30}, {30, 200, 30}, {30, 30, 200}, {220, 220, 40}, {40, 200, 200}};
+    const uint8_t colors[5][3] = {{200, 30, 30}, {30, 200, 30}, {30, 30, 200}, {220, 220, 40}, {40, 200, 200}};
     {
         VideoEncoder encoder(video, 33, 21, 24.0);
-        for (const auto& c : colours) encoder.addFrame(solid(33, 21, c[0], c[1], c[2]));
+        for (const auto& c : colors) encoder.addFrame(solid(33, 21, c[0], c[1], c[2]));
         encoder.finish();
     }
     const test::CommandResult probe = runCommand(
@@ -66,7 +66,7 @@ TEST(VideoEncoder, WritesTheFramesFfmpegReadsBack) {
     ASSERT_EQ(pixels.size(), 34u * 22u * 4u);
     const size_t centre = (11 * 34 + 16) * 4;
     for (int channel = 0; channel < 3; ++channel)
-        EXPECT_NEAR(uint8_t(pixels[centre + channel]), colours[3][channel], 6) << "channel " << channel;
+        EXPECT_NEAR(uint8_t(pixels[centre + channel]), colors[3][channel], 6) << "channel " << channel;
 }
 
 // Same frames, same bytes: ffmpeg's version and the time are left out.

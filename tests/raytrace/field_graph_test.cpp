@@ -7,7 +7,7 @@
 #include "gpu_test.h"
 
 #include "engine/raytrace/field_graph.h"
-#include "engine/raytrace/ray_trace_pass.h"
+#include "engine/raytrace/raytrace_pass.h"
 #include "engine/scene/field_content.h"
 #include "lsystem/raytrace/intersect.h"
 #include "seeded_rays.h"
@@ -86,7 +86,7 @@ TEST_F(FieldGraphTest, HitsAreThoseOfEveryPlacedTriangle) {
     const size_t kRays = rays.size();
     std::vector<gpu::RtRay> gpuRays;
     for (const lsys::Ray& ray : rays) gpuRays.push_back({ray.origin, ray.tMin, ray.direction, ray.tMax});
-    const RayTracePass pass = createRayTracePass(resources, uploadGraph(resources, packed), kRays);
+    const RaytracePass pass = createRaytracePass(resources, uploadGraph(resources, packed), kRays);
     const std::vector<gpu::RtHit> closest = traceRays(ctx, pass, gpuRays, lsys::HitQuery::Closest);
     const std::vector<gpu::RtHit> any = traceRays(ctx, pass, gpuRays, lsys::HitQuery::Any);
 

@@ -1,5 +1,5 @@
 // The GPU traversal (shaders/raytrace_traverse.glsl through
-// engine/raytrace/ray_trace_pass.h) against lsys::trace(GraphTracer) on
+// engine/raytrace/raytrace_pass.h) against lsys::trace(GraphTracer) on
 // plant files: the same hit or miss, primitive and t for the same rays, on
 // lavapipe with the validation layer on.
 
@@ -7,7 +7,7 @@
 
 #include "../instance_graph/instance_graph_test_support.h"
 #include "chain_graph.h"
-#include "engine/raytrace/ray_trace_pass.h"
+#include "engine/raytrace/raytrace_pass.h"
 #include "seeded_rays.h"
 
 #include <array>
@@ -86,7 +86,7 @@ protected:
     Comparison compare(const InstanceGraph& graph, size_t rayCount) {
         const GraphTracer tracer = lsys::buildGraphTracer(graph);
         const GpuGraph packed = packGraph(tracer);
-        const RayTracePass pass = createRayTracePass(resources, uploadGraph(resources, packed), uint32_t(rayCount));
+        const RaytracePass pass = createRaytracePass(resources, uploadGraph(resources, packed), uint32_t(rayCount));
         // The flattened plant's box: the root object's, the box of its
         // children's boxes turned by their frames, grows with every level.
         const lsys::Bounds bounds = lsys::flatten(graph).bounds;
@@ -189,7 +189,7 @@ TEST_F(GpuTracerTest, AnEmptyGraphHitsNothing) {
     const InstanceGraph graph;
     const GpuGraph packed = packGraph(lsys::buildGraphTracer(graph));
     EXPECT_EQ(packed.rootNode, RAYTRACE_NO_NODE);
-    const RayTracePass pass = createRayTracePass(resources, uploadGraph(resources, packed), 1);
+    const RaytracePass pass = createRaytracePass(resources, uploadGraph(resources, packed), 1);
     const gpu::RtRay ray = gpuRay(Ray{});
     EXPECT_EQ(traceRays(ctx, pass, {&ray, 1}, HitQuery::Closest)[0].primitive, RAYTRACE_NO_HIT);
 }

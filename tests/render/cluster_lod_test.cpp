@@ -114,7 +114,7 @@ SwitchShots switchShots(const GpuContext& ctx, const std::string& scene) {
     return {crop(far.image, lower, upper), crop(near.image, lower, upper), hi};
 }
 
-glm::dvec3 meanColour(const RgbaImage& image) {
+glm::dvec3 meanColor(const RgbaImage& image) {
     glm::dvec3 sum(0.0);
     for (size_t i = 0; i < image.pixels.size(); i += 4)
         sum += glm::dvec3(image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]);
@@ -133,9 +133,9 @@ TEST_F(ClusterLodTest, CanopyMatchesThePlantsAtTheSwitchDistance) {
 // test_clusters.json, the same forest under the valley's thinner fog: the
 // canopy cannot draw single trees a few pixels high, but it has their
 // colour: the leaf's mean colour stays within kMaxMeanDelta per channel.
-TEST_F(ClusterLodTest, CanopyHasThePlantsMeanColourUnderThinFog) {
+TEST_F(ClusterLodTest, CanopyHasThePlantsMeanColorUnderThinFog) {
     const SwitchShots shots = switchShots(ctx, "test_clusters.json");
-    const glm::dvec3 far = meanColour(shots.far), near = meanColour(shots.near);
+    const glm::dvec3 far = meanColor(shots.far), near = meanColor(shots.near);
     std::printf("test_clusters.json: leaf at %.0f m, PSNR %.2f dB, mean far (%.1f %.1f %.1f) near (%.1f %.1f %.1f)\n",
                 shots.distance, compareImages(shots.far, shots.near, 0).psnr, far.r, far.g, far.b, near.r, near.g,
                 near.b);

@@ -22,7 +22,7 @@ struct FieldShot {
     double time = 0.0;
     std::optional<Camera> camera; // replaces the scene's camera path
     std::optional<uint32_t> forcedLod;
-    SunShadows shadows = SunShadows::shadowMap;
+    SunShadows shadows = SunShadows::map;
     Antialiasing antialiasing; // the renderer's default
 };
 

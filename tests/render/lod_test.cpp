@@ -95,7 +95,7 @@ TEST_P(LodTest, ImpostorMatchesFullDetailAtTheSwitchDistance) {
     // screen pixels here), so colours are compared as 8×8 block averages,
     // what the eye sees at this distance, over blocks the plant touches.
     constexpr uint32_t kBlock = 8;
-    double colourDelta = 0;
+    double colorDelta = 0;
     size_t blocks = 0;
     for (uint32_t by = 0; by + kBlock <= size.height; by += kBlock)
         for (uint32_t bx = 0; bx + kBlock <= size.width; bx += kBlock) {
@@ -111,10 +111,10 @@ TEST_P(LodTest, ImpostorMatchesFullDetailAtTheSwitchDistance) {
                     }
                 }
             if (!touched) continue;
-            for (int c = 0; c < 3; ++c) colourDelta += std::abs(sum[0][c] - sum[1][c]) / (kBlock * kBlock);
+            for (int c = 0; c < 3; ++c) colorDelta += std::abs(sum[0][c] - sum[1][c]) / (kBlock * kBlock);
             ++blocks;
         }
-    const double meanDelta = colourDelta / (3.0 * double(blocks));
+    const double meanDelta = colorDelta / (3.0 * double(blocks));
     std::filesystem::create_directories(PLANTFIELD_TEST_OUTPUT_DIR);
     const std::string name = "/lod_" + std::to_string(int(GetParam())) + "deg_";
     writePng(std::string(PLANTFIELD_TEST_OUTPUT_DIR) + name + "full.png", full.image);

@@ -163,7 +163,7 @@ TEST_F(ImageTerrain, AMissingFileIsAnErrorNamingIt) {
     EXPECT_NE(errorOf([&] { pf::loadImageTerrain(path, 10, 1); }).find(path), std::string::npos);
 }
 
-TEST_F(ImageTerrain, AColouredPixelIsAnErrorNamingFileAndPixel) {
+TEST_F(ImageTerrain, AColoredPixelIsAnErrorNamingFileAndPixel) {
     const std::string path = writeImage("colour_2x2.png", 2, 2, {9, 9, 9, 9, 9, 9, 9, 9, 9, 10, 200, 30});
     const std::string error = errorOf([&] { pf::loadImageTerrain(path, 10, 1); });
     EXPECT_NE(error.find(path), std::string::npos) << error;

@@ -44,7 +44,7 @@ TEST(PlantbenchMemory, FieldEstimateCountsTheTracedShadowsGraphAndImages) {
     pool.indices.resize(3000);
     pool.models[0].meshes[LOD_FULL][DRAW_BARK] = {0, 3000, 0};
     const uint64_t map = estimatedFieldBytes(1000, &pool, 1280, 720, kMsaa4);
-    const uint64_t traced = estimatedFieldBytes(1000, &pool, 1280, 720, kMsaa4, SunShadows::traced);
+    const uint64_t traced = estimatedFieldBytes(1000, &pool, 1280, 720, kMsaa4, SunShadows::raytraced);
     EXPECT_EQ(traced - map, fieldGraphBytes(pool, 1000) + pixels * 24);
     EXPECT_GT(fieldGraphBytes(pool, 1000), fieldGraphBytes(PlantModelPool{}, 1000)) << "the model's triangles";
     EXPECT_GT(fieldGraphBytes(PlantModelPool{}, 1000), 1000u * sizeof(gpu::RtInstance)) << "the plants' instances";

@@ -308,10 +308,10 @@ TEST(PlantfieldCli, WindowUnderXvfbRendersFrames) {
     const RgbaImage image = readPng(out.string());
     ASSERT_EQ(image.width, 320u);
     // Not empty: the screenshot holds many distinct colours (sky, ground, bark).
-    std::set<uint32_t> colours;
+    std::set<uint32_t> colors;
     for (size_t p = 0; p < image.pixels.size(); p += 4)
-        colours.insert(image.pixels[p] | image.pixels[p + 1] << 8 | image.pixels[p + 2] << 16);
-    EXPECT_GT(colours.size(), 100u);
+        colors.insert(image.pixels[p] | image.pixels[p + 1] << 8 | image.pixels[p + 2] << 16);
+    EXPECT_GT(colors.size(), 100u);
 }
 
 // A fixed render scale renders the window's frames at that share of its

@@ -40,12 +40,12 @@ bool waitForText(const fs::path& file, const std::string& text, std::chrono::sec
 // Pixels of the plant: bright pale yellow (pollen), or redder than green and
 // blue (bark, as PlantPreviewFramesThePlant finds it); the sky is blue and
 // the ground green and darker.
-struct PlantColours {
+struct PlantColors {
     size_t brown = 0, yellow = 0;
 };
 
-PlantColours plantColours(const RgbaImage& image) {
-    PlantColours found;
+PlantColors plantColors(const RgbaImage& image) {
+    PlantColors found;
     for (size_t p = 0; p < image.pixels.size(); p += 4) {
         const int r = image.pixels[p], g = image.pixels[p + 1], b = image.pixels[p + 2];
         if (r > 200 && g > 200 && b + 30 < g)
@@ -97,9 +97,9 @@ TEST(PlantfieldWatch, TheWindowRegrowsThePlantAtEachSaveAndShowsErrors) {
     EXPECT_NE(output.find("still drawing the last good build"), std::string::npos) << output;
     const RgbaImage image = readPng(shot.string());
     ASSERT_EQ(image.width, 160u);
-    const PlantColours colours = plantColours(image);
-    EXPECT_GT(colours.yellow, 100u) << "the fixed save's yellow plant is not drawn";
-    EXPECT_EQ(colours.brown, 0u) << "the first save's brown plant is still drawn";
+    const PlantColors colors = plantColors(image);
+    EXPECT_GT(colors.yellow, 100u) << "the fixed save's yellow plant is not drawn";
+    EXPECT_EQ(colors.brown, 0u) << "the first save's brown plant is still drawn";
 }
 
 } // namespace

@@ -172,19 +172,19 @@ TEST(LsysTurtle, FrameStaysOrthonormalOverManyTurns) {
 
 // cpfg's colour index wraps around its 256-entry map (interpret.c, ';' and ','):
 // 255 + 1 is 0, 300 is 44, -2 is 254, and a bare , below 0 is 255.
-TEST(LsysTurtle, MaterialIndicesWrapAroundTheColourMap) {
+TEST(LsysTurtle, MaterialIndicesWrapAroundTheColorMap) {
     EXPECT_EQ(materialsOf("Axiom: ;(255)F;F;(300)F;(-2)F;(0),F;(2.9)F\n"),
               (std::vector<uint32_t>{255, 0, 44, 254, 255, 2}));
 }
 
 // A grammar's TurtleStyle (set from a vlab object's view file) steps the
 // bare width and colour modules by cpfg's increments instead of ABOP's factor.
-TEST(LsysTurtle, StyleIncrementsStepBareWidthAndColour) {
+TEST(LsysTurtle, StyleIncrementsStepBareWidthAndColor) {
     ParseResult parsed = parseLsystem("width: 5\nAxiom: F!F!F#F;F;F,F\n");
     ASSERT_TRUE(parsed.ok());
     parsed.grammar.style.widthFactor = 1.0;
     parsed.grammar.style.widthIncrement = 2.0;
-    parsed.grammar.style.colourIncrement = 3;
+    parsed.grammar.style.colorIncrement = 3;
     parsed.grammar.style.material = 254;
     const std::vector<Span> spans = spansOf(plantFromGrammar(parsed.grammar, derive(parsed.grammar)));
     ASSERT_EQ(spans.size(), 7u);

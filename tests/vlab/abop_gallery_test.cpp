@@ -217,7 +217,7 @@ TEST_P(AbopGallery, IsAVlabObject) {
     ASSERT_TRUE(files) << problem;
     EXPECT_EQ(files->lsystem.filename().string(), "plant.l");
     EXPECT_EQ(files->view.filename().string(), "plant.v");
-    EXPECT_EQ(files->colourMap.filename().string(), "plant.map");
+    EXPECT_EQ(files->colorMap.filename().string(), "plant.map");
     EXPECT_EQ(fs::file_size(folder() / "plant.map"), 768u); // 256 RGB byte triples
 
     const std::string view = readFile(folder() / "plant.v");

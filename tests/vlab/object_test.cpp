@@ -38,7 +38,7 @@ protected:
     }
 
     // A colour map whose entry i is (i, 255 - i, 7).
-    fs::path writeColourMap(const std::string& name) const {
+    fs::path writeColorMap(const std::string& name) const {
         std::string bytes;
         for (int i = 0; i < 256; ++i) bytes += {static_cast<char>(i), static_cast<char>(255 - i), 7};
         return write(name, bytes);
@@ -59,7 +59,7 @@ TEST_F(VlabObject, SpecificationsNameTheFiles) {
     ASSERT_TRUE(files) << problem;
     EXPECT_EQ(files->lsystem, folder_ / "plant.l");
     EXPECT_EQ(files->view, folder_ / "view.v");
-    EXPECT_EQ(files->colourMap, folder_ / "colours.map");
+    EXPECT_EQ(files->colorMap, folder_ / "colours.map");
     EXPECT_TRUE(files->materials.empty());
     EXPECT_EQ(files->ignored, (std::vector<std::string>{"-e env.e", "anim.a"}));
 }
@@ -75,7 +75,7 @@ TEST_F(VlabObject, WithoutSpecificationsTheFilesBesideTheLsystem) {
     EXPECT_EQ(files->lsystem, folder_ / "tree.l");
     EXPECT_EQ(files->view, folder_ / "tree.v"); // its stem's, among two
     EXPECT_EQ(files->materials, folder_ / "tree.mat");
-    EXPECT_TRUE(files->colourMap.empty());
+    EXPECT_TRUE(files->colorMap.empty());
     EXPECT_TRUE(isVlabObject(folder_ / "tree.l"));
 
     write("second.l", kLsystem);
@@ -99,7 +99,7 @@ TEST_F(VlabObject, TheViewFileDrivesTheTurtle) {
     write("plant.v", "angle factor: 4\ninitial line width: 3\nline width increment: 1\n"
                      "initial color: 10\ncolor increment: 5\ntropism direction: 0,0,-2\n"
                      "initial elasticity: 0.25\n");
-    writeColourMap("plant.map");
+    writeColorMap("plant.map");
     const PlantFile plant = loadObject(folder_);
     ASSERT_TRUE(plant.parsed.ok()) << formatDiagnostics(plant.parsed.diagnostics, plant.source);
     const Grammar& grammar = plant.parsed.grammar;
@@ -107,7 +107,7 @@ TEST_F(VlabObject, TheViewFileDrivesTheTurtle) {
     EXPECT_DOUBLE_EQ(grammar.width, 3.0);
     EXPECT_DOUBLE_EQ(grammar.style.widthFactor, 1.0);
     EXPECT_DOUBLE_EQ(grammar.style.widthIncrement, 1.0);
-    EXPECT_EQ(grammar.style.colourIncrement, 5);
+    EXPECT_EQ(grammar.style.colorIncrement, 5);
     EXPECT_EQ(grammar.style.material, 10u);
     EXPECT_EQ(grammar.style.tropism, glm::vec3(0.0f, 0.0f, -1.0f));
     EXPECT_DOUBLE_EQ(grammar.style.elasticity, 0.25);

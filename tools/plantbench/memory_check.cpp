@@ -12,7 +12,7 @@ uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_
     constexpr uint64_t kPerPlant = sizeof(gpu::FieldInstance) + 3 * LOD_COUNT * 4 + 4 + 4;
     constexpr uint64_t kShadowMap = 2048ull * 2048 * 4; // the frame's map and the cache of static casters
     const uint64_t pixels = uint64_t(width) * height;
-    const uint64_t samples = colourPassSamples(antialiasing);
+    const uint64_t samples = colorPassSamples(antialiasing);
     // The finished colour image and the depth, plus the image the colour pass
     // draws into when it is another (MSAA or FXAA), 4 bytes a sample each.
     const bool drawnApart = samples > 1 || antialiasing.method == AntialiasMethod::fxaa;
@@ -23,7 +23,7 @@ uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_
     const uint64_t pyramid = pixels * 4 * 4 / 3;
     uint64_t bytes = count * kPerPlant + target + capture + pyramid + kShadowMap;
     if (pool) bytes += pool->vertices.size() * sizeof(gpu::FieldVertex) + pool->indices.size() * 4;
-    if (shadows == SunShadows::traced)
+    if (shadows == SunShadows::raytraced)
         bytes += fieldGraphBytes(pool ? *pool : PlantModelPool{}, count) + pixels * (16 + 4 + 4);
     return bytes;
 }

@@ -31,7 +31,7 @@ struct HeapCapacity {
 // field's graph (fieldGraphBytes, the models' triangles when known) and the
 // frame's origins, depth and visibility (24 B a pixel).
 uint64_t estimatedFieldBytes(uint64_t count, const PlantModelPool* pool, uint32_t width, uint32_t height,
-                             const Antialiasing& antialiasing, SunShadows shadows = SunShadows::shadowMap);
+                             const Antialiasing& antialiasing, SunShadows shadows = SunShadows::map);
 
 // Host bytes building a field of `count` plants needs at its peak
 // (kHostBytesPerPlant each, docs/PLANTBENCH.md): placement's grid and

@@ -74,20 +74,19 @@ std::string plotCommand(const std::string& data, bool perThousand, bool naive) {
              << " with linespoints lw 2 dt 2 lc rgb '#000000' pt 6 ps 1.2 title 'naive frame wall time'";
     // Top-level passes solid with filled points, the draw scopes inside
     // "colour" thin and dotted with open ones; a colour of its own each.
-    const char* colours[] = {"#17becf", "#1f77b4", "#ff7f0e", "#d62728", "#2ca02c",
-                             "#9467bd", "#8c564b", "#e377c2", "#bcbd22", "#7f7f7f"};
+    const char* colors[] = {"#17becf", "#1f77b4", "#ff7f0e", "#d62728", "#2ca02c",
+                            "#9467bd", "#8c564b", "#e377c2", "#bcbd22", "#7f7f7f"};
     const int filledPoints[] = {5, 7, 9, 11, 13, 15};
     const int openPoints[] = {4, 6, 8, 10, 12, 14};
     size_t topLevel = 0, nestedCount = 0;
     for (size_t p = 0; p < kPassCount; ++p) {
-        const bool nested = nestedInColour(p);
+        const bool nested = nestedInColor(p);
         const int point = nested ? openPoints[nestedCount++ % std::size(openPoints)]
                                  : filledPoints[topLevel++ % std::size(filledPoints)];
         const bool capture = kBenchPasses[p] == std::string_view(kCapturePass);
         const char* label = nested ? " (inside colour)" : capture ? " (GPU, image to host)" : " (GPU)";
         plot << ", '' using 1:" << y(4 + int(p)) << " with linespoints" << (nested ? " lw 1.5 dt 3" : " lw 2") << " pt "
-             << point << " lc rgb '" << colours[p % std::size(colours)] << "' title '" << kBenchPasses[p] << label
-             << "'";
+             << point << " lc rgb '" << colors[p % std::size(colors)] << "' title '" << kBenchPasses[p] << label << "'";
     }
     return plot.str() + "\n";
 }

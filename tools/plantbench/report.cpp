@@ -193,7 +193,7 @@ nlohmann::json sweepJson(const PlantbenchOptions& o, const SweepResult& result) 
     j["device"] = result.device;
     j["size"] = {o.size.width, o.size.height};
     j["antialiasing"] = antialiasMethodName(o.antialiasing.method);
-    j["samples"] = colourPassSamples(o.antialiasing);
+    j["samples"] = colorPassSamples(o.antialiasing);
     j["shadows"] = sunShadowsName(o.shadows);
     j["occlusion_culling"] = o.occlusionCulling;
     j["time"] = o.pathTimes ? nlohmann::json(nullptr) : nlohmann::json(o.time);

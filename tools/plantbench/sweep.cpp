@@ -38,7 +38,7 @@ size_t slowestTime(const std::vector<CameraTimeResult>& times) {
     return slowest;
 }
 
-bool nestedInColour(size_t pass) { return pass < kFieldScopes.size() && kFieldScopes[pass].insideColour; }
+bool nestedInColor(size_t pass) { return pass < kFieldScopes.size() && kFieldScopes[pass].insideColor; }
 
 namespace {
 

@@ -34,7 +34,7 @@ inline constexpr auto kBenchPasses = [] {
 inline constexpr size_t kPassCount = kBenchPasses.size();
 
 // True for the draw scopes inside "colour" (kFieldScopes' insideColour).
-bool nestedInColour(size_t pass);
+bool nestedInColor(size_t pass);
 
 // Median and 95th percentile of one quantity over the measured frames;
 // nullopt when no frame reported it (no timestamps on the device). p95 is

@@ -163,7 +163,7 @@ pf::OfflineSettings offlineSettings(const RenderArguments& a) {
         if (*a.samples != 2 && *a.samples != 4 && *a.samples != 8) throw py::value_error("samples must be 2, 4 or 8");
         s.render.antialiasing.msaaSamples = *a.samples;
     }
-    s.render.shadows = a.shadows ? pf::SunShadows::shadowMap : pf::SunShadows::none;
+    s.render.shadows = a.shadows ? pf::SunShadows::map : pf::SunShadows::none;
     if (a.lod && *a.lod >= LOD_COUNT) throw py::value_error("lod must be 0 to " + std::to_string(LOD_COUNT - 1));
     s.forcedLod = a.lod;
     s.gpu.validation = a.validation;

@@ -7,13 +7,13 @@
 #include <filesystem>
 #include <fstream>
 
-#include "lsystem/vlab/colour_files.h"
+#include "lsystem/vlab/color_files.h"
 
 namespace lsys::vlab {
 namespace {
 
 // Each test writes its files into a folder of its own, removed afterwards.
-class ColourFiles : public testing::Test {
+class ColorFiles : public testing::Test {
 protected:
     void SetUp() override { std::filesystem::create_directories(folder_); }
     void TearDown() override { std::filesystem::remove_all(folder_); }
@@ -26,7 +26,7 @@ protected:
         ("plantfield_colour_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
 };
 
-void expectColour(const glm::vec3& actual, int red, int green, int blue) {
+void expectColor(const glm::vec3& actual, int red, int green, int blue) {
     EXPECT_FLOAT_EQ(actual.r, red / 255.0f);
     EXPECT_FLOAT_EQ(actual.g, green / 255.0f);
     EXPECT_FLOAT_EQ(actual.b, blue / 255.0f);
@@ -48,83 +48,83 @@ const std::string kLilacMaterials("\x00\x00\x00\x00\x00\x00\x00\x00\xa0\xb9\xff\
                                   "\x04\x00\x17\x17\x17\xff\xff\x00\x00\x00\x00\x00\x00\x00\x10",
                                   75);
 
-TEST_F(ColourFiles, ColourMapBytesAreTheColoursOfTheirIndex) {
-    const ColourReadResult result = readColourMap(file("plant.map", rampMap()));
+TEST_F(ColorFiles, ColorMapBytesAreTheColorsOfTheirIndex) {
+    const ColorReadResult result = readColorMap(file("plant.map", rampMap()));
     ASSERT_FALSE(result.error.has_value()) << result.error->message;
     for (int i : {0, 1, 128, 254, 255}) {
-        const ColourEntry& entry = result.colours[size_t(i)];
-        expectColour(entry.diffuse, i, 255 - i, i / 2);
-        expectColour(entry.ambient, i, 255 - i, i / 2);
-        expectColour(entry.emissive, 0, 0, 0);
+        const ColorEntry& entry = result.colors[size_t(i)];
+        expectColor(entry.diffuse, i, 255 - i, i / 2);
+        expectColor(entry.ambient, i, 255 - i, i / 2);
+        expectColor(entry.emissive, 0, 0, 0);
         EXPECT_EQ(entry.opacity, 1.0f);
     }
-    for (const ColourEntry& entry : result.colours) EXPECT_TRUE(entry.defined);
+    for (const ColorEntry& entry : result.colors) EXPECT_TRUE(entry.defined);
 }
 
-TEST_F(ColourFiles, ColourMapReadsItsFirst256Colours) {
-    const ColourReadResult result = readColourMap(file("long.map", rampMap() + "\x01\x02\x03"));
+TEST_F(ColorFiles, ColorMapReadsItsFirst256Colors) {
+    const ColorReadResult result = readColorMap(file("long.map", rampMap() + "\x01\x02\x03"));
     ASSERT_FALSE(result.error.has_value());
-    expectColour(result.colours[0].diffuse, 0, 255, 0);
-    expectColour(result.colours[255].diffuse, 255, 0, 127);
+    expectColor(result.colors[0].diffuse, 0, 255, 0);
+    expectColor(result.colors[255].diffuse, 255, 0, 127);
 }
 
-TEST_F(ColourFiles, ShortColourMapIsRefused) {
+TEST_F(ColorFiles, ShortColorMapIsRefused) {
     const std::filesystem::path path = file("short.map", rampMap().substr(0, 767));
-    const ColourReadResult result = readColourMap(path);
+    const ColorReadResult result = readColorMap(path);
     ASSERT_TRUE(result.error.has_value());
     EXPECT_EQ(result.error->file, path.string());
     EXPECT_NE(result.error->message.find(path.string()), std::string::npos) << result.error->message;
     EXPECT_NE(result.error->message.find("767"), std::string::npos) << result.error->message;
     EXPECT_NE(result.error->expected.find("768"), std::string::npos) << result.error->expected;
-    EXPECT_TRUE(readColourMap(file("empty.map", "")).error.has_value());
+    EXPECT_TRUE(readColorMap(file("empty.map", "")).error.has_value());
 }
 
-TEST_F(ColourFiles, MaterialRecordsSetTheirIndex) {
-    const ColourReadResult result = readMaterialFile(file("materials.mat", kLilacMaterials));
+TEST_F(ColorFiles, MaterialRecordsSetTheirIndex) {
+    const ColorReadResult result = readMaterialFile(file("materials.mat", kLilacMaterials));
     ASSERT_FALSE(result.error.has_value()) << result.error->message;
-    const ColourEntry& bark = result.colours[1]; // 01 99 3a273f e4c5ff 070707 432f39 10
+    const ColorEntry& bark = result.colors[1]; // 01 99 3a273f e4c5ff 070707 432f39 10
     EXPECT_TRUE(bark.defined);
     EXPECT_FLOAT_EQ(bark.opacity, 1.0f - 0x99 / 255.0f);
-    expectColour(bark.ambient, 0x3a, 0x27, 0x3f);
-    expectColour(bark.diffuse, 0xe4, 0xc5, 0xff);
-    expectColour(bark.emissive, 0x07, 0x07, 0x07);
-    expectColour(bark.specular, 0x43, 0x2f, 0x39);
+    expectColor(bark.ambient, 0x3a, 0x27, 0x3f);
+    expectColor(bark.diffuse, 0xe4, 0xc5, 0xff);
+    expectColor(bark.emissive, 0x07, 0x07, 0x07);
+    expectColor(bark.specular, 0x43, 0x2f, 0x39);
     EXPECT_EQ(bark.shininess, 16.0f); // the byte itself, as cpfg gives it to glMaterialf
-    EXPECT_EQ(result.colours[0].opacity, 1.0f);
-    expectColour(result.colours[4].diffuse, 0xff, 0xff, 0x00);
-    for (size_t i = 0; i < result.colours.size(); ++i) EXPECT_EQ(result.colours[i].defined, i < 5) << i;
+    EXPECT_EQ(result.colors[0].opacity, 1.0f);
+    expectColor(result.colors[4].diffuse, 0xff, 0xff, 0x00);
+    for (size_t i = 0; i < result.colors.size(); ++i) EXPECT_EQ(result.colors[i].defined, i < 5) << i;
     // An index without a record keeps cpfg's default material: white diffuse.
-    expectColour(result.colours[200].diffuse, 255, 255, 255);
-    expectColour(result.colours[200].ambient, 0, 0, 0);
+    expectColor(result.colors[200].diffuse, 255, 255, 255);
+    expectColor(result.colors[200].ambient, 0, 0, 0);
 }
 
-TEST_F(ColourFiles, LaterMaterialRecordReplacesAnEarlierOne) {
+TEST_F(ColorFiles, LaterMaterialRecordReplacesAnEarlierOne) {
     std::string records = kLilacMaterials.substr(15, 15) + kLilacMaterials.substr(15, 15);
     records[15] = char(200); // the second record is index 200
     records[15 + 14] = 100;  // with its own shininess
     records += records.substr(0, 15);
     records[30 + 1] = 0; // and index 1 again, opaque
-    const ColourReadResult result = readMaterialFile(file("twice.mat", records));
+    const ColorReadResult result = readMaterialFile(file("twice.mat", records));
     ASSERT_FALSE(result.error.has_value());
-    EXPECT_EQ(result.colours[1].opacity, 1.0f);
-    EXPECT_TRUE(result.colours[200].defined);
-    EXPECT_EQ(result.colours[200].shininess, 100.0f);
+    EXPECT_EQ(result.colors[1].opacity, 1.0f);
+    EXPECT_TRUE(result.colors[200].defined);
+    EXPECT_EQ(result.colors[200].shininess, 100.0f);
 }
 
-TEST_F(ColourFiles, TruncatedMaterialFileIsRefused) {
+TEST_F(ColorFiles, TruncatedMaterialFileIsRefused) {
     const std::filesystem::path path = file("cut.mat", kLilacMaterials.substr(0, 74));
-    const ColourReadResult result = readMaterialFile(path);
+    const ColorReadResult result = readMaterialFile(path);
     ASSERT_TRUE(result.error.has_value());
     EXPECT_NE(result.error->message.find(path.string()), std::string::npos) << result.error->message;
     EXPECT_NE(result.error->message.find("15"), std::string::npos) << result.error->message;
-    const ColourReadResult empty = readMaterialFile(file("empty.mat", ""));
+    const ColorReadResult empty = readMaterialFile(file("empty.mat", ""));
     ASSERT_FALSE(empty.error.has_value()); // no records: every index keeps the default
-    EXPECT_FALSE(empty.colours[0].defined);
+    EXPECT_FALSE(empty.colors[0].defined);
 }
 
-TEST_F(ColourFiles, MissingFilesAreNamed) {
+TEST_F(ColorFiles, MissingFilesAreNamed) {
     for (const std::filesystem::path& path : {folder_ / "none.map", folder_}) {
-        const ColourReadResult map = readColourMap(path), materials = readMaterialFile(path);
+        const ColorReadResult map = readColorMap(path), materials = readMaterialFile(path);
         ASSERT_TRUE(map.error.has_value() && materials.error.has_value());
         EXPECT_NE(map.error->message.find(path.string()), std::string::npos) << map.error->message;
         EXPECT_NE(materials.error->message.find(path.string()), std::string::npos) << materials.error->message;

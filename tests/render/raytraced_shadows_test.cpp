@@ -1,4 +1,4 @@
-// Ray-traced sun shadows (engine/field/traced_sun_pass.h) on the default
+// Ray-traced sun shadows (engine/field/raytraced_sun_pass.h) on the default
 // forest from inside it: a golden, and the shadows against the shadow map's
 // (plantfield --shadows raytraced against the default --shadows map).
 #include "field_render.h"
@@ -14,7 +14,7 @@
 namespace pf::test {
 namespace {
 
-class TracedShadowsTest : public GpuTest {};
+class RaytracedShadowsTest : public GpuTest {};
 
 // field_render_test.cpp's near view: 5 m up among the trees.
 FieldShot nearShot(SunShadows shadows) {
@@ -36,11 +36,11 @@ std::vector<bool> shadowedPixels(const RgbaImage& lit, const RgbaImage& shadowed
     return inShadow;
 }
 
-TEST_F(TracedShadowsTest, NearViewMatchesGolden) {
-    const FieldShotResult r = renderField(ctx, nearShot(SunShadows::traced));
+TEST_F(RaytracedShadowsTest, NearViewMatchesGolden) {
+    const FieldShotResult r = renderField(ctx, nearShot(SunShadows::raytraced));
     EXPECT_GT(r.stats.plantsPerLod[LOD_FULL] + r.stats.plantsPerLod[LOD_REDUCED], 0u);
     EXPECT_EQ(r.stats.shadowCastersPerLod[LOD_FULL], 0u) << "no shadow map is drawn";
-    EXPECT_TRUE(matchesGolden(r.image, "field_near_traced_320x180", kFieldTolerance, PLANTFIELD_GOLDEN_DIR,
+    EXPECT_TRUE(matchesGolden(r.image, "field_near_raytraced_320x180", kFieldTolerance, PLANTFIELD_GOLDEN_DIR,
                               PLANTFIELD_TEST_OUTPUT_DIR));
 }
 
@@ -51,10 +51,10 @@ TEST_F(TracedShadowsTest, NearViewMatchesGolden) {
 // map of 8192² texels (1.5 cm) — the difference is not the map's
 // resolution. Without the leaf cards' cut-outs or the impostors' origins it
 // falls to 0.61.
-TEST_F(TracedShadowsTest, ShadowsAreWhereTheShadowMapPutsThem) {
+TEST_F(RaytracedShadowsTest, ShadowsAreWhereTheShadowMapPutsThem) {
     const RgbaImage lit = renderField(ctx, nearShot(SunShadows::none)).image;
-    const RgbaImage mapped = renderField(ctx, nearShot(SunShadows::shadowMap)).image;
-    const RgbaImage traced = renderField(ctx, nearShot(SunShadows::traced)).image;
+    const RgbaImage mapped = renderField(ctx, nearShot(SunShadows::map)).image;
+    const RgbaImage traced = renderField(ctx, nearShot(SunShadows::raytraced)).image;
     const std::vector<bool> byMap = shadowedPixels(lit, mapped), byRays = shadowedPixels(lit, traced);
     size_t map = 0, rays = 0, both = 0;
     for (size_t i = 0; i < byMap.size(); ++i) {
@@ -68,17 +68,17 @@ TEST_F(TracedShadowsTest, ShadowsAreWhereTheShadowMapPutsThem) {
     EXPECT_GT(rays, byRays.size() / 10) << "the forest floor and the crowns are largely in shade";
     EXPECT_GT(overlap, 0.8);
     if (overlap <= 0.8) {
-        writePng(std::string(PLANTFIELD_TEST_OUTPUT_DIR) + "/traced_shadows_map.png", mapped);
-        writePng(std::string(PLANTFIELD_TEST_OUTPUT_DIR) + "/traced_shadows_rays.png", traced);
+        writePng(std::string(PLANTFIELD_TEST_OUTPUT_DIR) + "/raytraced_shadows_map.png", mapped);
+        writePng(std::string(PLANTFIELD_TEST_OUTPUT_DIR) + "/raytraced_shadows_rays.png", traced);
     }
 }
 
 // A window's frames change size (a resize, the render scale): a renderer
 // that drew at one size draws the next frame at another as a fresh one does.
-TEST_F(TracedShadowsTest, AFrameOfANewSizeIsAFreshRenderersFrame) {
-    const FieldShot shot = nearShot(SunShadows::traced);
+TEST_F(RaytracedShadowsTest, AFrameOfANewSizeIsAFreshRenderersFrame) {
+    const FieldShot shot = nearShot(SunShadows::raytraced);
     FieldRenderSettings settings;
-    settings.shadows = SunShadows::traced;
+    settings.shadows = SunShadows::raytraced;
     FieldRenderer renderer(ctx, buildFieldContent(loadScene(PLANTFIELD_DATA_DIR "/scenes/" + shot.scene)), settings);
     FieldView view;
     view.camera = *shot.camera;
@@ -91,7 +91,8 @@ TEST_F(TracedShadowsTest, AFrameOfANewSizeIsAFreshRenderersFrame) {
         destroyRenderTarget(target);
     }
     const RgbaImage expected =
-        renderField(ctx, {.scene = shot.scene, .size = {160, 90}, .camera = shot.camera, .shadows = SunShadows::traced})
+        renderField(ctx,
+                    {.scene = shot.scene, .size = {160, 90}, .camera = shot.camera, .shadows = SunShadows::raytraced})
             .image;
     const ImageDiff diff = compareImages(resized, expected, 0);
     EXPECT_TRUE(diff.sameSize);
@@ -99,9 +100,9 @@ TEST_F(TracedShadowsTest, AFrameOfANewSizeIsAFreshRenderersFrame) {
 }
 
 // The rays start from what the frame draws before its colour pass.
-TEST_F(TracedShadowsTest, OcclusionCullingIsRefused) {
+TEST_F(RaytracedShadowsTest, OcclusionCullingIsRefused) {
     FieldRenderSettings settings;
-    settings.shadows = SunShadows::traced;
+    settings.shadows = SunShadows::raytraced;
     settings.occlusionCulling = true;
     try {
         FieldSequence sequence(ctx, "test_culling.json", {64, 64}, settings);

@@ -1,4 +1,4 @@
-#include "engine/field/colour_pass.h"
+#include "engine/field/color_pass.h"
 
 #include "engine/field/field_scopes.h"
 #include "engine/vk/depth_pyramid.h"
@@ -21,7 +21,7 @@
 namespace pf {
 namespace {
 
-SurfacePipelines createColourPipelines(GpuResources& owner, VkPipelineLayout layout, VkSampleCountFlagBits samples) {
+SurfacePipelines createColorPipelines(GpuResources& owner, VkPipelineLayout layout, VkSampleCountFlagBits samples) {
     GpuResources modules(owner.ctx());
     struct Stages {
         VkShaderModule vertex, fragment;
@@ -48,7 +48,7 @@ SurfacePipelines createColourPipelines(GpuResources& owner, VkPipelineLayout lay
         return createGraphicsPipeline(owner, desc);
     };
     SurfacePipelines p;
-    p.pass = FIELD_PASS_COLOUR;
+    p.pass = FIELD_PASS_COLOR;
     // The sky lies on the far plane (depth 1, the clear value): drawn last,
     // it fills what nothing else covered, and writes no depth.
     desc.depthWrite = false;
@@ -67,7 +67,7 @@ SurfacePipelines createColourPipelines(GpuResources& owner, VkPipelineLayout lay
 // Between the colour pass's two renderings: the depth pyramid of what the
 // early phase drew (the terrain the main occluder), the late cull against
 // it, and the plants it found visible drawn into the loaded colour and depth.
-void recordLatePhase(VkCommandBuffer cmd, const ColourPass& pass, const ColourPassFrame& frame,
+void recordLatePhase(VkCommandBuffer cmd, const ColorPass& pass, const ColorPassFrame& frame,
                      const RenderTarget& target, GpuTimer* timer) {
     vkCmdEndRendering(cmd);
     {
@@ -80,7 +80,7 @@ void recordLatePhase(VkCommandBuffer cmd, const ColourPass& pass, const ColourPa
     }
     TimedFieldScope scope(cmd, timer, FieldScope::lateDraws);
     beginTargetPass(cmd, target, TargetPassPart::last);
-    pushFieldPass(cmd, frame.geometry->layout, FIELD_PASS_COLOUR);
+    pushFieldPass(cmd, frame.geometry->layout, FIELD_PASS_COLOR);
     SurfaceLists late;
     late.plants = frame.cull;
     late.phase = CULL_PHASE_LATE;
@@ -89,14 +89,14 @@ void recordLatePhase(VkCommandBuffer cmd, const ColourPass& pass, const ColourPa
 
 } // namespace
 
-ColourPass createColourPass(GpuResources& owner, const ColourPassInputs& inputs) {
-    ColourPass pass;
+ColorPass createColorPass(GpuResources& owner, const ColorPassInputs& inputs) {
+    ColorPass pass;
     const Buffer* lists[] = {inputs.lists, inputs.naiveList};
     const std::vector<VkDescriptorSet> sets = createDrawSets(owner, *inputs.table, lists);
     pass.listsSet = sets[0];
     pass.naiveSet = sets[1];
-    const auto samples = VkSampleCountFlagBits(colourPassSamples(inputs.antialiasing));
-    pass.pipelines = createColourPipelines(owner, inputs.table->layout, samples);
+    const auto samples = VkSampleCountFlagBits(colorPassSamples(inputs.antialiasing));
+    pass.pipelines = createColorPipelines(owner, inputs.table->layout, samples);
     const Scene& scene = *inputs.scene;
     pass.clouds = createCloudPass(owner, scene.clouds, *inputs.frame, samples);
     pass.cloudShadows = createCloudShadowPass(owner, scene.clouds, sunDirection(environmentOf(scene)), *inputs.frame,
@@ -104,7 +104,7 @@ ColourPass createColourPass(GpuResources& owner, const ColourPassInputs& inputs)
     return pass;
 }
 
-void setColourView(ColourPass& pass, const Scene& scene, const TerrainChunks& chunks, const ColourView& view) {
+void setColorView(ColorPass& pass, const Scene& scene, const TerrainChunks& chunks, const ColorView& view) {
     setCloudView(pass.clouds, scene, view.time, view.camera, view.forward);
     pass.cloudDrift = meanWindVelocity(scene.wind) * view.time;
     // The shaders look the shadow up 1.5 texels along the normal (sunMapPosition).
@@ -113,18 +113,18 @@ void setColourView(ColourPass& pass, const Scene& scene, const TerrainChunks& ch
     pass.drawCanopy = view.canopy;
 }
 
-void recordColourPass(VkCommandBuffer cmd, const ColourPass& pass, const ColourPassFrame& frame,
-                      const RenderTarget& target, GpuTimer* timer) {
+void recordColorPass(VkCommandBuffer cmd, const ColorPass& pass, const ColorPassFrame& frame,
+                     const RenderTarget& target, GpuTimer* timer) {
     // The whole pass, anti-aliasing included, is one scope: tiling and CPU
     // rasterisers (lavapipe) shade at the end of the pass, so the draw scopes
     // inside it measure only their share of vertex work and binning there.
     // The FXAA pass (FieldScope::antialias) is a rendering of its own after it.
-    TimedFieldScope colour(cmd, timer, FieldScope::colour);
+    TimedFieldScope color(cmd, timer, FieldScope::color);
     const bool twoParts = !frame.naive && frame.occlusion;
     const VkPipelineLayout layout = frame.geometry->layout;
     bindDrawSet(cmd, layout, frame.naive ? pass.naiveSet : pass.listsSet);
     beginTargetPass(cmd, target, twoParts ? TargetPassPart::first : TargetPassPart::whole);
-    pushFieldPass(cmd, layout, FIELD_PASS_COLOUR);
+    pushFieldPass(cmd, layout, FIELD_PASS_COLOR);
     SurfaceLists lists;
     if (!frame.naive) {
         lists.plants = frame.cull;

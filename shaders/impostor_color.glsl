@@ -1,8 +1,8 @@
 // The colour of an LOD2 billboard's fragment (impostor.frag, and
 // impostor_sunlit.frag for those the sun's shadows cannot reach), shaded
 // like LOD0 (plant.frag).
-#ifndef IMPOSTOR_COLOUR_GLSL
-#define IMPOSTOR_COLOUR_GLSL
+#ifndef IMPOSTOR_COLOR_GLSL
+#define IMPOSTOR_COLOR_GLSL
 #include "impostor_surface.glsl"
 
 layout(location = 0) out vec4 outColor;

@@ -1,4 +1,4 @@
-#include "engine/raytrace/ray_trace_pass.h"
+#include "engine/raytrace/raytrace_pass.h"
 
 #include "engine/vk/pipeline.h"
 
@@ -44,8 +44,8 @@ std::vector<DescriptorBinding> graphBindings(const GpuGraphBuffers& graph, VkSha
             texelBuffer(RAYTRACE_BINDING_TRIANGLES, stages, graph.triangles)};
 }
 
-RayTracePass createRayTracePass(GpuResources& owner, const GpuGraphBuffers& graph, uint32_t capacity) {
-    RayTracePass pass;
+RaytracePass createRaytracePass(GpuResources& owner, const GpuGraphBuffers& graph, uint32_t capacity) {
+    RaytracePass pass;
     pass.capacity = capacity;
     pass.rootNode = graph.rootNode;
     pass.rays = createHostBuffer(owner, std::max<VkDeviceSize>(capacity, 1) * sizeof(gpu::RtRay),
@@ -60,7 +60,7 @@ RayTracePass createRayTracePass(GpuResources& owner, const GpuGraphBuffers& grap
     return pass;
 }
 
-void recordRayTrace(VkCommandBuffer cmd, const RayTracePass& pass, uint32_t rayCount, lsys::HitQuery query) {
+void recordRaytrace(VkCommandBuffer cmd, const RaytracePass& pass, uint32_t rayCount, lsys::HitQuery query) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline);
     bindComputeSet(cmd, pass.set);
     const gpu::RtTracePush push{rayCount, uint32_t(query), pass.rootNode, 0};
@@ -70,13 +70,13 @@ void recordRayTrace(VkCommandBuffer cmd, const RayTracePass& pass, uint32_t rayC
                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
-std::vector<gpu::RtHit> traceRays(const GpuContext& ctx, const RayTracePass& pass, std::span<const gpu::RtRay> rays,
+std::vector<gpu::RtHit> traceRays(const GpuContext& ctx, const RaytracePass& pass, std::span<const gpu::RtRay> rays,
                                   lsys::HitQuery query) {
     if (rays.size() > pass.capacity)
         throw std::invalid_argument(std::to_string(rays.size()) + " rays are more than the pass holds (" +
                                     std::to_string(pass.capacity) + ")");
     std::memcpy(pass.rays.mapped, rays.data(), rays.size_bytes());
-    submitAndWait(ctx, [&](VkCommandBuffer cmd) { recordRayTrace(cmd, pass, uint32_t(rays.size()), query); });
+    submitAndWait(ctx, [&](VkCommandBuffer cmd) { recordRaytrace(cmd, pass, uint32_t(rays.size()), query); });
     const auto* hits = static_cast<const gpu::RtHit*>(pass.hits.mapped);
     return {hits, hits + rays.size()};
 }

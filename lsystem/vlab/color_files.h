@@ -16,7 +16,7 @@
 
 namespace lsys::vlab {
 
-struct ColourEntry {
+struct ColorEntry {
     glm::vec3 diffuse{0.0f}; // the colour a colour map gives; a material's diffuse
     glm::vec3 ambient{0.0f}; // of a material; a colour map's entry has its colour here too
     glm::vec3 emissive{0.0f};
@@ -26,14 +26,14 @@ struct ColourEntry {
     bool defined = false; // a material file may leave indices out
 };
 
-using ColourTable = std::array<ColourEntry, 256>;
+using ColorTable = std::array<ColorEntry, 256>;
 
-struct ColourReadResult {
-    ColourTable colours{};
+struct ColorReadResult {
+    ColorTable colors{};
     std::optional<Diagnostic> error; // the file and what is wrong with it
 };
 
-ColourReadResult readColourMap(const std::filesystem::path& path);
-ColourReadResult readMaterialFile(const std::filesystem::path& path);
+ColorReadResult readColorMap(const std::filesystem::path& path);
+ColorReadResult readMaterialFile(const std::filesystem::path& path);
 
 } // namespace lsys::vlab

@@ -24,7 +24,7 @@ namespace pf {
 
 struct GpuTimer;
 
-struct ColourPassInputs {
+struct ColorPassInputs {
     const DrawTable* table = nullptr;
     const Buffer* lists = nullptr;           // the cull pass's visible lists
     const Buffer* naiveList = nullptr;       // every plant once (naiveVisibleList)
@@ -35,7 +35,7 @@ struct ColourPassInputs {
 };
 
 // What a frame's colour pass draws, set by setColourView.
-struct ColourView {
+struct ColorView {
     glm::mat4 viewProj{1.0f}; // the camera's
     glm::vec3 camera{0.0f};
     glm::vec3 forward{0.0f};     // unit
@@ -48,7 +48,7 @@ struct ColourView {
     bool canopy = false; // some leaf can be far (canopyCanBeDrawn): the canopy's draw is recorded
 };
 
-struct ColourPass {
+struct ColorPass {
     SurfacePipelines pipelines;
     VkDescriptorSet listsSet = VK_NULL_HANDLE; // the draw set of the cull pass's lists
     VkDescriptorSet naiveSet = VK_NULL_HANDLE; // of the naive list
@@ -62,14 +62,14 @@ struct ColourPass {
 };
 
 // What the pass creates is owned by `owner`.
-ColourPass createColourPass(GpuResources& owner, const ColourPassInputs& inputs);
+ColorPass createColorPass(GpuResources& owner, const ColorPassInputs& inputs);
 
 // Per frame, before record: `chunks` the drawn terrain's. Sorts the clouds'
 // billboards into their host buffer, so call it while no frame is in flight.
-void setColourView(ColourPass& pass, const Scene& scene, const TerrainChunks& chunks, const ColourView& view);
+void setColorView(ColorPass& pass, const Scene& scene, const TerrainChunks& chunks, const ColorView& view);
 
 // What one frame's colour pass reads and writes besides the target.
-struct ColourPassFrame {
+struct ColorPassFrame {
     const SurfaceGeometry* geometry = nullptr;
     const CullPass* cull = nullptr;        // its lists drawn; with `occlusion` its late phase recorded inside
     const ClusterPass* clusters = nullptr; // the camera's cut: its far nodes as canopy; null without clusters
@@ -80,7 +80,7 @@ struct ColourPassFrame {
 // Into a target made with the inputs' anti-aliasing; leaves target.color in
 // TRANSFER_SRC_OPTIMAL. With a timer, the scope "colour" and every scope
 // nested in it (field_scopes.h), the late ones empty without occlusion.
-void recordColourPass(VkCommandBuffer cmd, const ColourPass& pass, const ColourPassFrame& frame,
-                      const RenderTarget& target, GpuTimer* timer);
+void recordColorPass(VkCommandBuffer cmd, const ColorPass& pass, const ColorPassFrame& frame,
+                     const RenderTarget& target, GpuTimer* timer);
 
 } // namespace pf

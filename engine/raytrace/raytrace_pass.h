@@ -33,7 +33,7 @@ GpuGraphBuffers uploadGraph(GpuResources& owner, const GpuGraph& graph);
 // includes raytrace_traverse.glsl.
 std::vector<DescriptorBinding> graphBindings(const GpuGraphBuffers& graph, VkShaderStageFlags stages);
 
-struct RayTracePass {
+struct RaytracePass {
     ComputeSet set; // the graph's buffers, rays and hits; RtTracePush
     VkPipeline pipeline = VK_NULL_HANDLE;
     Buffer rays; // host-visible RtRay[capacity]
@@ -43,15 +43,15 @@ struct RayTracePass {
 };
 
 // Room for `capacity` rays a dispatch; owned by `owner`.
-RayTracePass createRayTracePass(GpuResources& owner, const GpuGraphBuffers& graph, uint32_t capacity);
+RaytracePass createRaytracePass(GpuResources& owner, const GpuGraphBuffers& graph, uint32_t capacity);
 
 // Records the trace of the first `rayCount` rays of pass.rays into
 // pass.hits, readable by the host afterwards.
-void recordRayTrace(VkCommandBuffer cmd, const RayTracePass& pass, uint32_t rayCount, lsys::HitQuery query);
+void recordRaytrace(VkCommandBuffer cmd, const RaytracePass& pass, uint32_t rayCount, lsys::HitQuery query);
 
 // Writes the rays (at most pass.capacity, else std::invalid_argument),
 // traces them, waits and returns their hits.
-std::vector<gpu::RtHit> traceRays(const GpuContext& ctx, const RayTracePass& pass, std::span<const gpu::RtRay> rays,
+std::vector<gpu::RtHit> traceRays(const GpuContext& ctx, const RaytracePass& pass, std::span<const gpu::RtRay> rays,
                                   lsys::HitQuery query);
 
 } // namespace pf

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "impostor_surface.glsl"
 
-// The traced-sun pass's origins (engine/field/traced_sun_pass.h) of the LOD2
+// The traced-sun pass's origins (engine/field/raytraced_sun_pass.h) of the LOD2
 // billboards the sun's square reaches: the fragments impostor.frag keeps,
 // each ray from the point of the resting crown it shows, so the crown is
 // shadowed by its own full-detail mesh in the field's graph as the shadow
@@ -11,5 +11,5 @@ layout(location = 0) out vec4 outOrigin;
 
 void main() {
     ImpostorSurface s = impostorSurface();
-    outOrigin = tracedSunOrigin(inRestPos + inDepthAxis * s.relief, s.normal);
+    outOrigin = raytracedSunOrigin(inRestPos + inDepthAxis * s.relief, s.normal);
 }
