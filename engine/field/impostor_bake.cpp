@@ -6,6 +6,8 @@
 // blitted, and the outlines read back.
 #include "engine/field/impostor_atlas.h"
 
+#include "engine/field/impostor_atlas_images.h"
+
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/target_pass.h"
@@ -24,128 +26,12 @@
 namespace pf {
 namespace {
 
-constexpr VkFormat kAtlasColorFormat = VK_FORMAT_R8G8B8A8_SRGB;
-constexpr VkFormat kAtlasNormalFormat = VK_FORMAT_R8G8B8A8_UNORM;
-constexpr VkFormat kShadowFrameFormat = VK_FORMAT_R8G8_UNORM;
 constexpr VkFormat kBakeDepthFormat = VK_FORMAT_D32_SFLOAT;
 // Frames are drawn at this many times the frame's side, one sample a pixel,
 // and filtered down to it: 2×2 supersampling. On lavapipe it takes about two
 // thirds of the time of 4× MSAA at the frame's side, whose per-sample coverage
 // and resolve cost more than shading four times the pixels.
 constexpr uint32_t kBakeSupersampling = 2;
-
-uint32_t mipCount(uint32_t size) {
-    uint32_t levels = 1;
-    while (size > 1) size /= 2, ++levels;
-    return levels;
-}
-
-uint32_t quadsOf(BillboardKind kind) {
-    switch (kind) {
-    case BillboardKind::Single: return 1;
-    case BillboardKind::Double: return 2;
-    case BillboardKind::Triple: return 3;
-    }
-    return 2;
-}
-
-VkImageMemoryBarrier2 atlasBarrier(const Image& image, uint32_t baseMip, uint32_t mips, uint32_t layers,
-                                   const ImageTransition& t) {
-    return imageMemoryBarrier(image.image, {VK_IMAGE_ASPECT_COLOR_BIT, baseMip, mips, 0, layers}, t);
-}
-
-// A linear blit halving a square of `side` texels (none below 1) from the
-// `from` layers into the `to` layers: every destination texel is sampled at
-// the corner its 2×2 source texels share, with weight 1/4 each, a box filter
-// of the premultiplied values and the coverage. The frames' 2:1 filtering
-// and the mip chains both use it.
-VkImageBlit halvingBlit(uint32_t side, const VkImageSubresourceLayers& from, const VkImageSubresourceLayers& to) {
-    const int32_t source = int32_t(std::max(side, 1u)), destination = int32_t(std::max(side / 2, 1u));
-    VkImageBlit blit{};
-    blit.srcSubresource = from;
-    blit.srcOffsets[1] = {source, source, 1};
-    blit.dstSubresource = to;
-    blit.dstOffsets[1] = {destination, destination, 1};
-    return blit;
-}
-
-void pipelineBarrier(VkCommandBuffer cmd, const std::vector<VkImageMemoryBarrier2>& images) {
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.imageMemoryBarrierCount = uint32_t(images.size());
-    dep.pImageMemoryBarriers = images.data();
-    vkCmdPipelineBarrier2(cmd, &dep);
-}
-
-// The colour images' layer count (every model's rings of frames), after
-// checking the atlas fits the device.
-uint32_t atlasLayers(const GpuContext& ctx, const PlantModelPool& pool, const ImpostorSettings& settings) {
-    if (settings.frames == 0 || settings.frameSize == 0)
-        throw std::runtime_error("impostor atlas: frames and frameSize must be positive");
-    const uint64_t layerCount = uint64_t(pool.models.size()) * settings.frames * IMPOSTOR_RINGS;
-    if (layerCount == 0) throw std::runtime_error("impostor atlas: the pool has no models");
-    if (layerCount > ctx.properties.limits.maxImageArrayLayers)
-        throw std::runtime_error(
-            "the impostor atlas would need " + std::to_string(layerCount) + " layers (" +
-            std::to_string(pool.models.size()) + " plant models, the scene's variants of every species, times " +
-            std::to_string(settings.frames * IMPOSTOR_RINGS) + " views), more than this device's " +
-            std::to_string(ctx.properties.limits.maxImageArrayLayers) + ": give the species fewer \"variants\"");
-    if (settings.shadowFrameSize == 0) throw std::runtime_error("impostor atlas: shadowFrameSize must be positive");
-    if (std::max(settings.frameSize, settings.shadowFrameSize) > ctx.properties.limits.maxImageDimension2D)
-        throw std::runtime_error("impostor atlas: frameSize " + std::to_string(settings.frameSize) +
-                                 " or shadowFrameSize " + std::to_string(settings.shadowFrameSize) +
-                                 " exceeds the device's image limit");
-    return uint32_t(layerCount);
-}
-
-// Destination of the frames' filtered targets, source and destination of the mip
-// blits, sampled by the billboards.
-Image createAtlasImage(GpuResources& owner, uint32_t size, VkFormat format, uint32_t layers, uint32_t mips) {
-    return createImage(
-        owner, {.extent = {size, size},
-                .format = format,
-                .usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                .mipLevels = mips,
-                .layers = layers,
-                .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY});
-}
-
-// The three images with their full mip chains (the shadow frames one ring
-// per model), and the billboards' sampler.
-ImpostorAtlas createAtlas(GpuResources& owner, const ImpostorSettings& settings, uint32_t layers) {
-    ImpostorAtlas atlas;
-    atlas.settings = settings;
-    atlas.layers = layers;
-    atlas.shadowLayers = layers / IMPOSTOR_RINGS;
-    atlas.mipLevels = mipCount(settings.frameSize);
-    atlas.color = createAtlasImage(owner, settings.frameSize, kAtlasColorFormat, layers, atlas.mipLevels);
-    atlas.normalDepth = createAtlasImage(owner, settings.frameSize, kAtlasNormalFormat, layers, atlas.mipLevels);
-    atlas.shadowMipLevels = mipCount(settings.shadowFrameSize);
-    atlas.shadow = createAtlasImage(owner, settings.shadowFrameSize, kShadowFrameFormat, atlas.shadowLayers,
-                                    atlas.shadowMipLevels);
-
-    VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    samplerInfo.magFilter = VK_FILTER_LINEAR;
-    samplerInfo.minFilter = VK_FILTER_LINEAR;
-    samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    samplerInfo.maxLod = VK_LOD_CLAMP_NONE;
-    atlas.sampler = createSampler(owner, samplerInfo);
-    return atlas;
-}
-
-// Each model's first colour and shadow layers, frames, quads per billboard
-// and baked box.
-void assignImpostorLayers(PlantModelPool& pool, const ImpostorSettings& settings) {
-    for (size_t m = 0; m < pool.models.size(); ++m) {
-        gpu::PlantModel& model = pool.models[m].gpu;
-        const uint32_t shadowFirst = uint32_t(m) * settings.frames;
-        model.impostor = {shadowFirst * IMPOSTOR_RINGS, settings.frames, quadsOf(pool.models[m].billboard),
-                          shadowFirst};
-        model.impostorQuad = impostorQuadOf(model);
-    }
-}
 
 // An image every frame of a ring is drawn into, one layer each,
 // kBakeSupersampling times the frame's side, and a view of each layer. A
@@ -401,95 +287,6 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
         }
         downsampleBakeRing(cmd, {{&targets.shadow, &atlas.shadow}}, targets.shadowSize, model.gpu.impostor.w, frames);
     }
-}
-
-// Mips of `images` (size² at level 0, `mips` levels, `layers` layers): level
-// k is blitted from level k-1 (premultiplied values and coverage average
-// correctly); then every level is left for the billboards' fragment shaders.
-void recordMipChain(VkCommandBuffer cmd, std::initializer_list<const Image*> images, uint32_t size, uint32_t mips,
-                    uint32_t layers) {
-    // The frames' blits into level 0 must be done before the first mip blit
-    // reads it; the other levels hold nothing yet.
-    const ImageTransition bakedToSource{VK_PIPELINE_STAGE_2_BLIT_BIT,         VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                        VK_PIPELINE_STAGE_2_BLIT_BIT,         VK_ACCESS_2_TRANSFER_READ_BIT,
-                                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
-    const ImageTransition emptyToDestination{VK_PIPELINE_STAGE_2_NONE,     VK_ACCESS_2_NONE,
-                                             VK_PIPELINE_STAGE_2_BLIT_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                             VK_IMAGE_LAYOUT_UNDEFINED,    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
-    std::vector<VkImageMemoryBarrier2> toBlit;
-    for (const Image* image : images) {
-        toBlit.push_back(atlasBarrier(*image, 0, 1, layers, bakedToSource));
-        if (mips > 1) toBlit.push_back(atlasBarrier(*image, 1, mips - 1, layers, emptyToDestination));
-    }
-    pipelineBarrier(cmd, toBlit);
-
-    for (uint32_t level = 1; level < mips; ++level) {
-        const VkImageBlit blit = halvingBlit(size >> (level - 1), {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, layers},
-                                             {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, layers});
-        for (const Image* image : images)
-            vkCmdBlitImage(cmd, image->image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image->image,
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
-        // This level is the next blit's source: its writes must land first.
-        const ImageTransition writtenToSource{
-            VK_PIPELINE_STAGE_2_BLIT_BIT,  VK_ACCESS_2_TRANSFER_WRITE_BIT,       VK_PIPELINE_STAGE_2_BLIT_BIT,
-            VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
-        std::vector<VkImageMemoryBarrier2> written;
-        for (const Image* image : images) written.push_back(atlasBarrier(*image, level, 1, layers, writtenToSource));
-        pipelineBarrier(cmd, written);
-    }
-
-    // Every level is now a blit source (the last one also just written):
-    // billboards sample them from fragment shaders.
-    const ImageTransition toSampled{VK_PIPELINE_STAGE_2_BLIT_BIT,
-                                    VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                                    VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
-                                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    std::vector<VkImageMemoryBarrier2> sampled;
-    for (const Image* image : images) sampled.push_back(atlasBarrier(*image, 0, mips, layers, toSampled));
-    pipelineBarrier(cmd, sampled);
-}
-
-// Reads the coverage of every layer back at mip kOutlineMip (or the last)
-// and makes each layer's outline. The atlas is sampled before and after.
-std::vector<ImpostorOutline> readOutlines(const GpuContext& ctx, const ImpostorAtlas& atlas) {
-    const uint32_t mip = std::min(kOutlineMip, atlas.mipLevels - 1);
-    const uint32_t size = std::max(atlas.settings.frameSize >> mip, 1u);
-    const VkDeviceSize layerBytes = VkDeviceSize(size) * size * 4;
-    GpuResources scratch(ctx);
-    Buffer readback = createHostBuffer(scratch, layerBytes * atlas.layers, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-    submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-        const ImageTransition toSource{VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                                       VK_ACCESS_2_NONE,
-                                       VK_PIPELINE_STAGE_2_COPY_BIT,
-                                       VK_ACCESS_2_TRANSFER_READ_BIT,
-                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
-        pipelineBarrier(cmd, {atlasBarrier(atlas.color, mip, 1, atlas.layers, toSource)});
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, 0, atlas.layers};
-        region.imageExtent = {size, size, 1};
-        vkCmdCopyImageToBuffer(cmd, atlas.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1,
-                               &region);
-        const ImageTransition toSampled{VK_PIPELINE_STAGE_2_COPY_BIT,
-                                        VK_ACCESS_2_NONE,
-                                        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                                        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
-                                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-        pipelineBarrier(cmd, {atlasBarrier(atlas.color, mip, 1, atlas.layers, toSampled)});
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
-                      VK_ACCESS_2_HOST_READ_BIT);
-    });
-    std::vector<ImpostorOutline> outlines(atlas.layers);
-    std::vector<uint8_t> alpha(size_t(size) * size);
-    const auto* texels = static_cast<const uint8_t*>(readback.mapped);
-    for (uint32_t layer = 0; layer < atlas.layers; ++layer) {
-        for (size_t t = 0; t < alpha.size(); ++t) alpha[t] = texels[layer * layerBytes + t * 4 + 3];
-        outlines[layer] = impostorOutline(alpha, size, kOutlineMargin);
-    }
-    return outlines;
 }
 
 } // namespace
