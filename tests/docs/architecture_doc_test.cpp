@@ -45,7 +45,8 @@ std::vector<Section> readSections(const fs::path& map) {
             for (std::string word; words >> word;) {
                 while (!word.empty() && word.back() == '/') word.pop_back();
                 sections.back().names.insert(word);
-                if (word.size() > 2 && word.ends_with(".h")) sections.back().names.insert(word.substr(0, word.size() - 2));
+                if (word.size() > 2 && word.ends_with(".h"))
+                    sections.back().names.insert(word.substr(0, word.size() - 2));
             }
             open = line.find('`', close + 1);
         }
@@ -59,9 +60,9 @@ bool headingNames(const std::string& heading, const std::string& folder) {
     for (size_t at = heading.find(folder); at != std::string::npos; at = heading.find(folder, at + 1)) {
         const size_t end = at + folder.size();
         const bool startsWord = at == 0 || heading[at - 1] == ' ' || heading[at - 1] == '`';
-        const bool endsWord = end == heading.size() || heading[end] == ' ' || heading[end] == '`' ||
-                              (heading[end] == '/' && (end + 1 == heading.size() || heading[end + 1] == ' ' ||
-                                                       heading[end + 1] == '`'));
+        const bool endsWord =
+            end == heading.size() || heading[end] == ' ' || heading[end] == '`' ||
+            (heading[end] == '/' && (end + 1 == heading.size() || heading[end + 1] == ' ' || heading[end + 1] == '`'));
         if (startsWord && endsWord) return true;
     }
     return false;
