@@ -53,9 +53,10 @@ std::optional<std::string> cgroupPathOf(std::string_view procSelfCgroup, std::st
         const size_t first = line.find(':'), second = line.find(':', first + 1);
         if (first == std::string_view::npos || second == std::string_view::npos) continue;
         const std::string_view controllers = line.substr(first + 1, second - first - 1);
-        const bool named = controller.empty() ? controllers.empty()
-                                              : ("," + std::string(controllers) + ",")
-                                                        .find("," + std::string(controller) + ",") != std::string::npos;
+        const bool named =
+            controller.empty()
+                ? controllers.empty()
+                : ("," + std::string(controllers) + ",").find("," + std::string(controller) + ",") != std::string::npos;
         if (named) return std::string(line.substr(second + 1));
     }
     return std::nullopt;
@@ -98,8 +99,8 @@ std::optional<uint64_t> cgroupHeadroom(std::string_view procSelfCgroup, const st
             headroom = tighter(headroom, headroomUpFrom(mount, *unified, "memory.max", "memory.current"));
     }
     if (const std::optional<std::string> v1 = cgroupPathOf(procSelfCgroup, "memory"))
-        headroom = tighter(headroom, headroomUpFrom(cgroupRoot / "memory", *v1, "memory.limit_in_bytes",
-                                                    "memory.usage_in_bytes"));
+        headroom = tighter(
+            headroom, headroomUpFrom(cgroupRoot / "memory", *v1, "memory.limit_in_bytes", "memory.usage_in_bytes"));
     return headroom;
 }
 
@@ -110,7 +111,8 @@ std::optional<uint64_t> rlimitHeadroom(uint64_t softLimit, uint64_t used) {
 
 std::optional<uint64_t> budgetBytesFrom(const MemoryHeadroom& headroom) {
     std::optional<uint64_t> smallest;
-    for (const std::optional<uint64_t>& room : {headroom.available, headroom.cgroup, headroom.addressSpace, headroom.data})
+    for (const std::optional<uint64_t>& room :
+         {headroom.available, headroom.cgroup, headroom.addressSpace, headroom.data})
         smallest = tighter(smallest, room);
     if (!smallest) return std::nullopt;
     return *smallest / 4 * 3;

@@ -13,6 +13,7 @@
 #include <plantfield_version.h>
 
 #include "lsystem/turtle/turtle_commands.h"
+#include "tools/crash_report.h"
 #include "tools/lsys/check_command.h"
 #include "tools/lsys/derive_command.h"
 #include "tools/lsys/export_command.h"
@@ -22,6 +23,7 @@
 #include "tools/lsys/render_command.h"
 
 int main(int argc, char** argv) {
+    tools::reportCrashes("lsys");
     CLI::App app{
         "lsys: derive, check, instance, export and render L-systems written in the .lsys notation or a dialect "
         "(docs/DIALECTS.md)"};

@@ -7,6 +7,7 @@
 
 #include "engine/scene/scene.h"
 
+#include "tools/crash_report.h"
 #include <exception>
 #include <iostream>
 #include <new>
@@ -64,6 +65,7 @@ int run(const PlantbenchOptions& o) {
 } // namespace pf
 
 int main(int argc, char** argv) {
+    tools::reportCrashes("plantbench");
     try {
         int exitCode = 0;
         const std::optional<pf::PlantbenchOptions> options = pf::parsePlantbenchOptions(argc, argv, &exitCode);

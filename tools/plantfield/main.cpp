@@ -11,6 +11,7 @@
 #include <new>
 
 #include "lsystem/common/memory_budget.h"
+#include "tools/crash_report.h"
 
 namespace pf {
 namespace {
@@ -54,6 +55,7 @@ int runExport(const PlantfieldOptions& o) {
 } // namespace pf
 
 int main(int argc, char** argv) {
+    tools::reportCrashes("plantfield");
     try {
         int exitCode = 0;
         const std::optional<pf::PlantfieldOptions> options = pf::parsePlantfieldOptions(argc, argv, &exitCode);
