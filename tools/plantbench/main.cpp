@@ -6,6 +6,7 @@
 #include "sweep.h"
 
 #include "engine/scene/scene.h"
+#include "lsystem/common/file_reader.h"
 
 #include <exception>
 #include <iostream>
@@ -64,6 +65,8 @@ int run(const PlantbenchOptions& o) {
 } // namespace pf
 
 int main(int argc, char** argv) {
+    // Every file the run reads, which no output may replace (outputsProblem).
+    const lsys::ReadFileLog runInputs;
     try {
         int exitCode = 0;
         const std::optional<pf::PlantbenchOptions> options = pf::parsePlantbenchOptions(argc, argv, &exitCode);
