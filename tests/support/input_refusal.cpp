@@ -25,6 +25,14 @@ std::filesystem::path emptyTestFolder(std::string_view area) {
     return folder;
 }
 
+std::filesystem::path bushScene(const std::filesystem::path& dir, const std::filesystem::path& data) {
+    std::filesystem::copy(data / "plants" / "stochastic_bush.lsys", dir / "bush.lsys");
+    std::ofstream(dir / "scene.json") << R"({ "terrain": { "size": 20, "resolution": 17 }, "species": [ )"
+                                      << R"({ "name": "bush", "lsystem": "bush.lsys", "steps": 2, )"
+                                      << R"("placement": { "count": 2 } } ] })";
+    return dir / "scene.json";
+}
+
 void expectRefusedAsInput(const std::string& command, const std::filesystem::path& input) {
     const std::string before = bytesOf(input);
     ASSERT_FALSE(before.empty()) << input << " is missing or empty: nothing to protect";

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-namespace pf::test {
+namespace pf::test::lsys_outputs {
 namespace {
 
 namespace fs = std::filesystem;
@@ -75,4 +75,4 @@ TEST(LsysOutputs, RamifyOntoItsRamificationFileIsRefused) {
 }
 
 } // namespace
-} // namespace pf::test
+} // namespace pf::test::lsys_outputs

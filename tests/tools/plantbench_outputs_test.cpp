@@ -7,10 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
-namespace pf::test {
+namespace pf::test::plantbench_outputs {
 namespace {
 
 namespace fs = std::filesystem;
@@ -19,23 +18,14 @@ const std::string kPlantbench = PLANTBENCH_BIN;
 const fs::path kData = PLANTFIELD_DATA_DIR;
 const std::string kQuick = " --counts 10 --frames 1 --warmup 0 --size 64x36";
 
-// scene.json in `dir`, bushes of the bush.lsys beside it; its path.
-fs::path smallScene(const fs::path& dir) {
-    fs::copy(kData / "plants" / "stochastic_bush.lsys", dir / "bush.lsys");
-    std::ofstream(dir / "scene.json") << R"({ "terrain": { "size": 20, "resolution": 17 }, "species": [ )"
-                                      << R"({ "name": "bush", "lsystem": "bush.lsys", "steps": 2, )"
-                                      << R"("placement": { "count": 2 } } ] })";
-    return dir / "scene.json";
-}
-
 TEST(PlantbenchOutputs, JsonOntoTheSceneIsRefused) {
-    const fs::path scene = smallScene(emptyTestFolder("plantbench_outputs"));
+    const fs::path scene = bushScene(emptyTestFolder("plantbench_outputs"), kData);
     expectRefusedAsInput(kPlantbench + " " + scene.string() + kQuick + " --json " + scene.string(), scene);
 }
 
 TEST(PlantbenchOutputs, CsvThroughALinkToTheSceneIsRefused) {
     const fs::path dir = emptyTestFolder("plantbench_outputs");
-    const fs::path scene = smallScene(dir);
+    const fs::path scene = bushScene(dir, kData);
     fs::create_symlink(scene, dir / "sweep.csv");
     expectRefusedAsInput(kPlantbench + " " + scene.string() + kQuick + " --csv " + (dir / "sweep.csv").string(), scene);
 }
@@ -43,11 +33,11 @@ TEST(PlantbenchOutputs, CsvThroughALinkToTheSceneIsRefused) {
 // Known only once the field is built: checked again before it is measured.
 TEST(PlantbenchOutputs, JsonOntoASpeciesPlantFileIsRefused) {
     const fs::path dir = emptyTestFolder("plantbench_outputs");
-    const fs::path scene = smallScene(dir);
+    const fs::path scene = bushScene(dir, kData);
     fs::create_hard_link(dir / "bush.lsys", dir / "sweep.json");
     expectRefusedAsInput(kPlantbench + " " + scene.string() + kQuick + " --json " + (dir / "sweep.json").string(),
                          dir / "bush.lsys");
 }
 
 } // namespace
-} // namespace pf::test
+} // namespace pf::test::plantbench_outputs

@@ -7,10 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
-namespace pf::test {
+namespace pf::test::plantfield_outputs {
 namespace {
 
 namespace fs = std::filesystem;
@@ -18,23 +17,14 @@ namespace fs = std::filesystem;
 const std::string kPlantfield = PLANTFIELD_BIN;
 const fs::path kData = PLANTFIELD_DATA_DIR;
 
-// scene.json in `dir`, two bushes of the bush.lsys beside it; its path.
-fs::path smallScene(const fs::path& dir) {
-    fs::copy(kData / "plants" / "stochastic_bush.lsys", dir / "bush.lsys");
-    std::ofstream(dir / "scene.json") << R"({ "terrain": { "size": 20, "resolution": 17 }, "species": [ )"
-                                      << R"({ "name": "bush", "lsystem": "bush.lsys", "steps": 2, )"
-                                      << R"("placement": { "count": 2 } } ] })";
-    return dir / "scene.json";
-}
-
 TEST(PlantfieldOutputs, CaptureOntoTheSceneIsRefused) {
-    const fs::path scene = smallScene(emptyTestFolder("plantfield_outputs"));
+    const fs::path scene = bushScene(emptyTestFolder("plantfield_outputs"), kData);
     expectRefusedAsInput(kPlantfield + " " + scene.string() + " --size 64x64 --capture " + scene.string(), scene);
 }
 
 TEST(PlantfieldOutputs, OutputsThroughALinkToTheSceneAreRefused) {
     const fs::path dir = emptyTestFolder("plantfield_outputs");
-    const fs::path scene = smallScene(dir);
+    const fs::path scene = bushScene(dir, kData);
     for (const std::string& output : {"--frames 2 --size 64x64 --video link.mp4", "--export link.glb",
                                       "--export-placements link.csv", "--export-placements link.json"}) {
         const fs::path link = dir / output.substr(output.find("link"));
@@ -47,7 +37,7 @@ TEST(PlantfieldOutputs, OutputsThroughALinkToTheSceneAreRefused) {
 // Known only once the scene is loaded: checked again before any work.
 TEST(PlantfieldOutputs, OutputsOntoASpeciesPlantFileAreRefused) {
     const fs::path dir = emptyTestFolder("plantfield_outputs");
-    const fs::path scene = smallScene(dir);
+    const fs::path scene = bushScene(dir, kData);
     fs::create_symlink(dir / "bush.lsys", dir / "bush.csv");
     expectRefusedAsInput(kPlantfield + " " + scene.string() + " --export-placements " + (dir / "bush.csv").string(),
                          dir / "bush.lsys");
@@ -70,4 +60,4 @@ TEST(PlantfieldOutputs, PreviewOntoAVlabObjectsViewOrColourMapIsRefused) {
 }
 
 } // namespace
-} // namespace pf::test
+} // namespace pf::test::plantfield_outputs
