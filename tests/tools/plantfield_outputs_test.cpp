@@ -1,5 +1,5 @@
 // plantfield never writes over a file it reads (tools/plantfield/output_check.h):
-// --capture, --video, --export and --export-placements onto the scene, through
+// --capture, --video, --export, --export-placements and --out-dir's frames onto the scene, through
 // a link to it, onto a species' plant file or a vlab object's view and colour
 // map are refused with exit 2 before any frame, the input left as it was.
 #include "input_refusal.h"
@@ -32,6 +32,16 @@ TEST(PlantfieldOutputs, OutputsThroughALinkToTheSceneAreRefused) {
         const std::string flags = output.substr(0, output.find("link"));
         expectRefusedAsInput(kPlantfield + " " + scene.string() + " " + flags + link.string(), scene);
     }
+}
+
+TEST(PlantfieldOutputs, SequenceFrameOntoTheSceneIsRefused) {
+    const fs::path dir = emptyTestFolder("plantfield_outputs");
+    const fs::path scene = bushScene(dir, kData);
+    fs::create_directory(dir / "seq");
+    fs::create_symlink(scene, dir / "seq" / "frame_0001.png");
+    expectRefusedAsInput(
+        kPlantfield + " " + scene.string() + " --frames 2 --size 64x64 --out-dir " + (dir / "seq").string(), scene);
+    EXPECT_FALSE(fs::exists(dir / "seq" / "frame_0000.png")); // refused before any frame
 }
 
 // Known only once the scene is loaded: checked again before any work.
