@@ -14,7 +14,9 @@ const char* reportingTool = "";
 
 // The handler may only call async-signal-safe functions: write, and
 // backtrace once libgcc is loaded (reportCrashes loads it).
-void writeText(const char* text) { [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, text, std::strlen(text)); }
+void writeText(const char* text) {
+    [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, text, std::strlen(text));
+}
 
 const char* signalName(int signal) {
     switch (signal) {

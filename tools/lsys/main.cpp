@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 #include <plantfield_version.h>
 
+#include "lsystem/common/file_reader.h"
 #include "lsystem/turtle/turtle_commands.h"
 #include "tools/crash_report.h"
 #include "tools/lsys/check_command.h"
@@ -47,6 +48,8 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& error) {
         return app.exit(error) == 0 ? 0 : tools::kBadInput;
     }
+    // Every file the command reads, which no output may replace (tools/lsys/output_check.h).
+    const lsys::ReadFileLog runInputs;
     try {
         // The app requires one command: exactly one was parsed.
         return std::ranges::find_if(commands, [](const tools::Command& command) { return command.command->parsed(); })
