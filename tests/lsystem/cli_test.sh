@@ -72,7 +72,9 @@ expect_run instance-missing 2 'cannot read file' -- "$LSYS" instance "$WORK/does
 # A folder is read as a vlab object: without a .l it is an error naming the folder.
 mkdir "$WORK/empty"
 expect_run check-folder 2 'empty: error: the vlab object holds no cpfg L-system' -- "$LSYS" check "$WORK/empty"
-expect_run check-endless-device 2 'is larger than 64 MiB' -- "$LSYS" check /dev/zero
+expect_run check-device 2 'is not a regular file' -- "$LSYS" check /dev/zero
+mkfifo "$WORK/fifo.lsys"
+expect_run derive-fifo 2 'fifo.lsys.*is not a regular file (a fifo, a device or a socket)' -- "$LSYS" derive "$WORK/fifo.lsys"
 expect_run instance-bad-randomness 2 'randomness' -- "$LSYS" instance "$DATA/plants/stochastic.lsys" --randomness -1
 expect_run instance-help 0 'instances = references to objects' -- "$LSYS" instance --help
 expect_run export 0 '625 primitives, 625 joints' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/koch.glb"
