@@ -64,8 +64,8 @@ TEST(SceneSizes, AHugeUnknownKeyIsNamedWithoutASuggestion) {
         FAIL() << "loaded an unknown key";
     } catch (const SceneError& e) {
         const std::string what = e.what();
-        EXPECT_EQ(what.rfind(file.string() + ":3:1: /" + key + " is an unknown key (expected one of \"description\"", 0),
-                  0u)
+        EXPECT_EQ(
+            what.rfind(file.string() + ":3:1: /" + key + " is an unknown key (expected one of \"description\"", 0), 0u)
             << what.substr(0, 200);
         EXPECT_EQ(what.find("did you mean"), std::string::npos);
     }
@@ -74,15 +74,33 @@ TEST(SceneSizes, AHugeUnknownKeyIsNamedWithoutASuggestion) {
 // 100 000 species: a repeated name is found without comparing every pair.
 TEST(SceneSizes, ARepeatedNameAmongAHundredThousandSpeciesIsFound) {
     std::string text = "{\"species\": [\n";
-    for (int i = 0; i < 100'000; ++i)
-        text += "{\"name\": \"s" + std::to_string(i) + "\", " PF_BUSH_LSYSTEM "},\n";
+    for (int i = 0; i < 100'000; ++i) text += "{\"name\": \"s" + std::to_string(i) + "\", " PF_BUSH_LSYSTEM "},\n";
     text += PF_SPECIES_NAMED("s17") "\n]}\n";
     const std::filesystem::path file = test::writeFile("many_species.json", text);
     try {
         loadScene(file);
         FAIL() << "loaded a repeated name";
     } catch (const SceneError& e) {
-        EXPECT_EQ(std::string(e.what()), file.string() + ":100002:10: /species/100000/name repeats the name of /species/17");
+        EXPECT_EQ(std::string(e.what()),
+                  file.string() + ":100002:10: /species/100000/name repeats the name of /species/17");
+    }
+}
+
+// Densities of 10¹² plants a square metre and of 5 000 (5·10⁷ a hectare,
+// within the sampling grid's bound: the old sampling ran past 100 s and
+// 2.6 GB on a 100 m terrain): the sampling's grids and plants are counted
+// from the density and refused before any plant is sampled.
+TEST(SceneSizes, APlacementDensityPastTheMemoryBudgetIsRefusedBeforeSampling) {
+    for (const char* density : {"1e16", "5e7"}) { // per hectare
+        const Scene scene = loadScene(test::writeFile(
+            "dense.json", std::string("{\"terrain\": {\"size\": 100}, \"species\": [{\"name\": \"a\", ") +
+                              PF_BUSH_LSYSTEM + ", \"placement\": {\"density\": " + density + "}}]}"));
+        try {
+            placeField(scene, std::nullopt, lsys::MemoryBudget{uint64_t(1) << 30});
+            FAIL() << "placed " << density << " plants a hectare within 1 GiB";
+        } catch (const lsys::MemoryBudgetError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind("memory budget: placement needs ", 0), 0u) << e.what();
+        }
     }
 }
 
