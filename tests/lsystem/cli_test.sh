@@ -101,7 +101,7 @@ printf 'Axiom: F(1) F(0/0)\n' > "$WORK/nan.lsys"
 expect_run export-not-a-number 2 "the turtle's F got NaN" -- "$LSYS" export "$WORK/nan.lsys" -o "$WORK/nan.glb"
 [ -e "$WORK/nan.glb" ] && fail "export-not-a-number: a file was written"
 printf 'Axiom: F(3e38) F(3e38) F(3e38)\n' > "$WORK/overflow.lsys"
-expect_run export-past-float-range 2 'holds a position that is not a finite number' -- "$LSYS" export "$WORK/overflow.lsys" -o "$WORK/overflow.glb"
+expect_run export-past-float-range 2 "the turtle's F moved it past the float range" -- "$LSYS" export "$WORK/overflow.lsys" -o "$WORK/overflow.glb"
 [ -e "$WORK/overflow.glb" ] && fail "export-past-float-range: a file was written"
 # The memory budget: each stage refuses before it allocates, naming itself, the need and the limit.
 expect_run export-memory-budget 2 'export .*budget.glb: memory budget: export needs 208.0 MiB, the limit is 16.0 MiB (set with --memory-budget)' -- "$LSYS" export "$DATA/plants/fractal_bush.lsys" -n 5 -o "$WORK/budget.glb" --memory-budget 16M
