@@ -299,7 +299,8 @@ ComponentGraph readGraph(const JsonSource& source) {
         const JsonNode& node = nodes[i];
         Component component;
         component.name = node.path.back();
-        component.location = locations.at(component.name) + ": " + node.pointer();
+        const auto located = locations.find(component.name); // found unless the text walk disagrees with the parse
+        component.location = (located != locations.end() ? located->second : locationOf(node)) + ": " + node.pointer();
         if (!kinds[i]) failAt(node, "needs \"kind\": one of \"stem\", \"leaf\", \"tree\", \"radial\"");
         const std::string kind = readString(*kinds[i]);
         if (kind == "stem")
