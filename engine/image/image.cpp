@@ -9,6 +9,13 @@
 #include <stdexcept>
 
 namespace pf {
+namespace {
+
+// Past any heightmap or texture the renderer reads (a 16384² PNG is far less),
+// and within stb's int lengths.
+constexpr size_t kMaxImageFileBytes = size_t(1) << 30;
+
+} // namespace
 
 void writePng(const std::string& path, const RgbaImage& image) {
     lsys::OutputFile file(path);
@@ -23,13 +30,20 @@ void writePng(const std::string& path, const RgbaImage& image) {
 }
 
 RgbaImage readPng(const std::string& path, const lsys::MemoryBudget& memory) {
-    lsys::noteFileRead(path); // stb opens it, not readFileUpTo: logged here for the loads that list their files
+    // Read through readFileUpTo rather than opened by stb, so that a fifo or a
+    // device is refused instead of blocking or never ending.
+    const lsys::FileBytes file = lsys::readFileUpTo(path, kMaxImageFileBytes);
+    if (file.problem != lsys::FileProblem::None)
+        throw std::runtime_error("cannot read image '" + path + "': it " +
+                                 lsys::fileProblemText(file.problem, kMaxImageFileBytes));
+    const auto* bytes = reinterpret_cast<const stbi_uc*>(file.bytes.data());
+    const int length = int(file.bytes.size());
     int w = 0, h = 0, channels = 0;
-    if (!stbi_info(path.c_str(), &w, &h, &channels))
+    if (!stbi_info_from_memory(bytes, length, &w, &h, &channels))
         throw std::runtime_error("cannot read image '" + path + "': " + stbi_failure_reason());
     // stb's decoded copy and ours, 4 bytes a pixel each.
     lsys::need(memory, "image", lsys::bytesTimes(uint64_t(w) * uint64_t(h), 8));
-    stbi_uc* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
+    stbi_uc* data = stbi_load_from_memory(bytes, length, &w, &h, &channels, 4);
     if (!data) throw std::runtime_error("cannot read image '" + path + "': " + stbi_failure_reason());
     RgbaImage image{uint32_t(w), uint32_t(h), std::vector<uint8_t>(data, data + size_t(w) * size_t(h) * 4)};
     stbi_image_free(data);

@@ -9,8 +9,8 @@ void applySceneOverrides(Scene& scene, const SceneOverrides& overrides) {
     if (overrides.jointBudget) scene.physics.jointBudget = *overrides.jointBudget;
 }
 
-Scene loadScene(const std::filesystem::path& file, const SceneOverrides& overrides) {
-    Scene scene = loadScene(file);
+Scene loadScene(const std::filesystem::path& file, const SceneOverrides& overrides, const lsys::MemoryBudget& memory) {
+    Scene scene = loadScene(file, memory);
     applySceneOverrides(scene, overrides);
     return scene;
 }

@@ -20,6 +20,7 @@ struct SceneOverrides {
 void applySceneOverrides(Scene& scene, const SceneOverrides& overrides);
 
 // loadScene (SceneError naming file:line:column) with `overrides` applied.
-Scene loadScene(const std::filesystem::path& file, const SceneOverrides& overrides);
+Scene loadScene(const std::filesystem::path& file, const SceneOverrides& overrides,
+                const lsys::MemoryBudget& memory = {});
 
 } // namespace pf

@@ -118,7 +118,7 @@ PlacedField placeField(const Scene& scene, std::optional<PlantCount> count, cons
         field.heightfield = terrainOf(scene, memory);
         if (!rules.empty())
             generated = count ? scaleToCount(field.heightfield, rules, count->plants, seed)
-                              : placeSpecies(field.heightfield, rules, seed);
+                              : placeSpecies(field.heightfield, rules, seed, memory);
     }
 
     // Group by species in scene order: generated plants are already grouped

@@ -35,7 +35,7 @@ Terrain grownTerrain(const Terrain& terrain, float side, size_t maxSamples) {
 NaturalField placeAtNaturalDensity(const Scene& scene, std::span<const PlacementRule> rules, size_t count,
                                    uint64_t seed, const lsys::MemoryBudget& memory) {
     NaturalField field{scene.terrain, terrainOf(scene, memory), {}, {}};
-    const std::vector<PlantInstance> natural = placeSpecies(field.heightfield, rules, seed);
+    const std::vector<PlantInstance> natural = placeSpecies(field.heightfield, rules, seed, memory);
     if (natural.empty()) throw std::runtime_error("placement: the rules admit no plant on this terrain");
     if (count <= natural.size()) {
         field.plants = keepCentralSquare(natural, count);
@@ -57,7 +57,7 @@ NaturalField placeAtNaturalDensity(const Scene& scene, std::span<const Placement
         grown.terrain = grownTerrain(scene.terrain, float(side), maxSamples);
         field.terrain = grown.terrain;
         field.heightfield = terrainOf(grown, memory);
-        std::vector<PlantInstance> placed = placeSpecies(field.heightfield, rules, seed);
+        std::vector<PlantInstance> placed = placeSpecies(field.heightfield, rules, seed, memory);
         if (placed.size() >= count) {
             field.plants = keepCentralSquare(placed, count);
             return field;

@@ -235,9 +235,24 @@ std::vector<PlantInstance> placePoissonDisk(const Heightfield& terrain, const Pl
     return placeSpecies(terrain, std::span(&rule, 1), seed);
 }
 
-std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<const PlacementRule> rules,
-                                        uint64_t seed) {
+uint64_t placementSamplingBytes(const Heightfield& terrain, std::span<const PlacementRule> rules) {
+    uint64_t bytes = 0;
+    for (const PlacementRule& rule : rules) {
+        const double r = ruleDistance(rule);
+        const double cellsPerSide = std::ceil(double(terrain.size) * std::numbers::sqrt2 / r);
+        const double plants = double(unlimitedCount(terrain, float(r)));
+        // Kept and ghost grids; each plant in a grid's list, the active list and as an instance.
+        const double ruleBytes = cellsPerSide * cellsPerSide * 2.0 * sizeof(glm::vec2) +
+                                 plants * (3.0 * sizeof(glm::vec2) + sizeof(PlantInstance));
+        bytes = lsys::bytesPlus(bytes, ruleBytes < 0x1p64 ? uint64_t(ruleBytes) : UINT64_MAX);
+    }
+    return bytes;
+}
+
+std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<const PlacementRule> rules, uint64_t seed,
+                                        const lsys::MemoryBudget& memory) {
     for (size_t i = 0; i < rules.size(); ++i) validate(rules[i], i);
+    lsys::need(memory, "placement", placementSamplingBytes(terrain, rules));
     // Large plants claim their ground first; ties keep the order of `rules`.
     std::vector<size_t> sampling(rules.size());
     for (size_t i = 0; i < rules.size(); ++i) sampling[i] = i;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "engine/scene/terrain.h"
+#include "lsystem/common/memory_budget.h"
 
 #include <glm/vec3.hpp>
 
@@ -52,9 +53,15 @@ std::vector<PlantInstance> placePoissonDisk(const Heightfield& terrain, const Pl
 // Several rules on one terrain: rules are sampled from the largest distance to
 // the smallest, and a plant is kept only where it stands at least
 // max(clearanceA, clearanceB) from every plant of the rules sampled before it.
-// Output is grouped by rule, in the order of `rules`.
-std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<const PlacementRule> rules,
-                                        uint64_t seed);
+// Output is grouped by rule, in the order of `rules`. Throws
+// lsys::MemoryBudgetError (stage "placement") before sampling when what the
+// rules' distances ask for, placementSamplingBytes, would not fit `memory`.
+std::vector<PlantInstance> placeSpecies(const Heightfield& terrain, std::span<const PlacementRule> rules, uint64_t seed,
+                                        const lsys::MemoryBudget& memory = {});
+// At most what sampling the rules takes on `terrain`, from their distances
+// alone: each rule's two grids of cells, and as many plants as open flat
+// ground holds at its distance, with their instances.
+uint64_t placementSamplingBytes(const Heightfield& terrain, std::span<const PlacementRule> rules);
 
 // Exactly `count` plants for the same rules (`plantfield --instances N` must
 // render exactly N): the rules with every distance and clearance scaled by one

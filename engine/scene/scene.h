@@ -5,6 +5,7 @@
 
 #include "engine/scene/camera.h"
 #include "engine/scene/cloud_spheres.h"
+#include "lsystem/common/memory_budget.h"
 #include "lsystem/landscape/terrain_bumps.h"
 
 #include <glm/glm.hpp>
@@ -237,8 +238,9 @@ struct Scene {
 };
 
 // Reads and validates a scene file; throws SceneError naming file:line:column,
-// the JSON pointer of the value at fault and what was expected.
-Scene loadScene(const std::filesystem::path& file);
+// the JSON pointer of the value at fault and what was expected, and
+// lsys::MemoryBudgetError when the parsed file would not fit `memory`.
+Scene loadScene(const std::filesystem::path& file, const lsys::MemoryBudget& memory = {});
 
 // The camera on the path at time t (seconds): a Catmull-Rom spline through the
 // keyframes with tangents from the neighbouring keys' times, held at the first

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 
 namespace pf {
 // The located JSON reader (lsystem/common/json_reader.h).
@@ -398,15 +399,15 @@ void readClouds(const JsonNode& node, const std::filesystem::path& sceneFolder, 
 }
 
 void requireUniqueNames(const std::vector<Species>& species, const std::vector<JsonNode>& elements) {
+    std::map<std::string_view, size_t> first; // each name's first species
     for (size_t i = 0; i < species.size(); ++i)
-        for (size_t j = 0; j < i; ++j)
-            if (species[i].name == species[j].name)
-                failAt(*member(elements[i], "name"), "repeats the name of /species/" + std::to_string(j));
+        if (const auto [named, added] = first.try_emplace(species[i].name, i); !added)
+            failAt(*member(elements[i], "name"), "repeats the name of /species/" + std::to_string(named->second));
 }
 
-Scene readScene(const std::filesystem::path& file) {
+Scene readScene(const std::filesystem::path& file, const lsys::MemoryBudget& memory) {
     // A million explicitly placed plants take about 60 MB of JSON.
-    const JsonSource source = readJsonFile(file, {"scene", size_t(256) << 20});
+    const JsonSource source = readJsonFile(file, {"scene", size_t(256) << 20}, memory);
     const JsonNode root = rootNode(source);
     requireObject(root, {"description", "seed", "terrain", "species", "placement", "sun", "sky", "fog", "wind",
                          "physics", "camera", "clouds"});
@@ -438,9 +439,9 @@ Scene readScene(const std::filesystem::path& file) {
 
 } // namespace
 
-Scene loadScene(const std::filesystem::path& file) {
+Scene loadScene(const std::filesystem::path& file, const lsys::MemoryBudget& memory) {
     try {
-        return readScene(file);
+        return readScene(file, memory);
     } catch (const JsonError& error) {
         throw SceneError(error.what());
     }

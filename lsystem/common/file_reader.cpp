@@ -1,12 +1,24 @@
 #include "lsystem/common/file_reader.h"
 
 #include <algorithm>
-#include <fstream>
+#include <cerrno>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace lsys {
 namespace {
 
 thread_local ReadFileLog* innermostReadLog = nullptr;
+
+// Closes the descriptor on every way out of readFileUpTo.
+struct OpenFile {
+    int descriptor = -1;
+    ~OpenFile() {
+        if (descriptor >= 0) ::close(descriptor);
+    }
+};
 
 } // namespace
 
@@ -29,28 +41,38 @@ std::vector<std::filesystem::path> loggedFileReads() {
 
 FileBytes readFileUpTo(const std::filesystem::path& path, size_t maxBytes) {
     noteFileRead(path);
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) return {{}, FileProblem::Folder};
-    const bool regular = std::filesystem::is_regular_file(path, ec);
-    const uintmax_t size = regular ? std::filesystem::file_size(path, ec) : 0;
-    if (regular && !ec && size > maxBytes) return {{}, FileProblem::TooLarge};
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return {{}, FileProblem::CannotOpen};
-    FileBytes file;
-    if (regular && !ec) file.bytes.reserve(static_cast<size_t>(size));
-    char piece[1 << 16];
-    while (in.read(piece, sizeof piece) || in.gcount() > 0) {
-        file.bytes.append(piece, static_cast<size_t>(in.gcount()));
-        if (file.bytes.size() > maxBytes) return {{}, FileProblem::TooLarge}; // grew while read, or no end
+    // O_NONBLOCK: opening a fifo without a writer returns at once instead of
+    // waiting for one; the file's type is then read from the descriptor.
+    const OpenFile file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
+    struct stat status {};
+    if (file.descriptor < 0) {
+        // A socket cannot be opened at all: name it from its path.
+        const bool exists = ::stat(path.c_str(), &status) == 0;
+        if (exists && S_ISDIR(status.st_mode)) return {{}, FileProblem::Folder};
+        return {{}, exists && !S_ISREG(status.st_mode) ? FileProblem::NotRegular : FileProblem::CannotOpen};
     }
-    if (in.bad()) return {{}, FileProblem::CannotRead};
-    return file;
+    if (::fstat(file.descriptor, &status) != 0) return {{}, FileProblem::CannotRead};
+    if (S_ISDIR(status.st_mode)) return {{}, FileProblem::Folder};
+    if (!S_ISREG(status.st_mode)) return {{}, FileProblem::NotRegular};
+    if (uintmax_t(status.st_size) > maxBytes) return {{}, FileProblem::TooLarge};
+    FileBytes read;
+    read.bytes.reserve(size_t(status.st_size));
+    char piece[1 << 16];
+    for (;;) {
+        const ssize_t got = ::read(file.descriptor, piece, sizeof piece);
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0) return {{}, FileProblem::CannotRead};
+        if (got == 0) return read;
+        read.bytes.append(piece, size_t(got));
+        if (read.bytes.size() > maxBytes) return {{}, FileProblem::TooLarge}; // grew while read
+    }
 }
 
 std::string fileProblemText(FileProblem problem, size_t maxBytes) {
     switch (problem) {
     case FileProblem::None: return {};
     case FileProblem::Folder: return "is a folder";
+    case FileProblem::NotRegular: return "is not a regular file (a fifo, a device or a socket)";
     case FileProblem::CannotOpen: return "is missing or cannot be opened";
     case FileProblem::TooLarge: return "is larger than " + std::to_string(maxBytes >> 20) + " MiB";
     case FileProblem::CannotRead: return "cannot be read";

@@ -15,21 +15,24 @@
 
 namespace lsys {
 
-enum class FileProblem : unsigned char { None, Folder, CannotOpen, TooLarge, CannotRead };
+enum class FileProblem : unsigned char { None, Folder, NotRegular, CannotOpen, TooLarge, CannotRead };
 
 struct FileBytes {
     std::string bytes; // empty unless problem is None
     FileProblem problem = FileProblem::None;
 };
 
-// The file's bytes, at most maxBytes: a regular file larger than that is
-// refused from its size, anything else (a device, a fifo) is read in pieces
-// and refused once it passes the limit, so /dev/zero stops there.
+// The file's bytes, at most maxBytes: a file larger than that is refused
+// from its size. Only regular files are read: a fifo, a device or a socket is
+// refused without reading (a fifo with no writer would block the open, a
+// device such as /dev/zero never ends), judged from the opened file itself so
+// that nothing can be swapped in between.
 FileBytes readFileUpTo(const std::filesystem::path& path, size_t maxBytes);
 
 // What is wrong with a file readFileUpTo(path, maxBytes) refused, to follow
-// its name: "is a folder", "is missing or cannot be opened", "is larger than 4 MiB",
-// "cannot be read"; empty for FileProblem::None.
+// its name: "is a folder", "is not a regular file (a fifo, a device or a
+// socket)", "is missing or cannot be opened", "is larger than 4 MiB", "cannot
+// be read"; empty for FileProblem::None.
 std::string fileProblemText(FileProblem problem, size_t maxBytes);
 
 // The text of a `kind` file ("surface", "function", "view"), or nullopt with

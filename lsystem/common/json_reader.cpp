@@ -164,6 +164,9 @@ bool inRange(double value, Range range) {
     return aboveMin && belowMax;
 }
 
+// Past the longest key or name any of our formats has.
+constexpr size_t kMaxSuggestedLength = 64;
+
 size_t editDistance(std::string_view a, std::string_view b) {
     std::vector<size_t> row(b.size() + 1);
     for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
@@ -259,14 +262,48 @@ JsonError::JsonError(Diagnostic located)
                          ": " + located.message),
       diagnostic(std::move(located)) {}
 
-JsonSource readJsonFile(const std::filesystem::path& file, const JsonDocumentKind& kind) {
-    const std::string unreadable = "cannot read the " + kind.name + " file (not a regular file)";
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) failFile(file, unreadable);
+uint64_t parsedJsonBytes(std::string_view text) {
+    uint64_t objects = 0, arrays = 0, members = 0, commas = 0, strings = 0;
+    for (size_t pos = 0; pos < text.size();) {
+        const char c = text[pos];
+        if (c == '"') {
+            ++strings;
+            pos = skipString(text, pos);
+            continue;
+        }
+        objects += c == '{';
+        arrays += c == '[';
+        members += c == ':';
+        commas += c == ',';
+        ++pos;
+    }
+    // Every value follows a comma or opens its container (or is the root).
+    const uint64_t values = commas + objects + arrays + 1;
+    // A heap block's own bookkeeping; a std::map node's links and colour.
+    constexpr uint64_t kAllocation = 16, kMapNode = 32;
+    // Values twice: an array's vector grows to up to twice its elements.
+    const uint64_t valueBytes = values * 2 * sizeof(nlohmann::json);
+    const uint64_t objectBytes = objects * (sizeof(nlohmann::json::object_t) + kAllocation);
+    const uint64_t arrayBytes = arrays * (sizeof(nlohmann::json::array_t) + kAllocation);
+    // A member: its map node with the key and value, and the key again in
+    // the parse's check for repeated keys (a set of the object's keys).
+    const uint64_t memberBytes =
+        members * (kMapNode + sizeof(std::string) + sizeof(nlohmann::json) + kAllocation + kMapNode + 16 + kAllocation);
+    const uint64_t stringBytes = strings * (sizeof(std::string) + kAllocation);
+    // The text, and its characters again in the strings and keys parsed from it.
+    return bytesPlus(bytesTimes(text.size(), 2), bytesPlus(bytesPlus(valueBytes, objectBytes),
+                                                           bytesPlus(bytesPlus(arrayBytes, memberBytes), stringBytes)));
+}
+
+JsonSource readJsonFile(const std::filesystem::path& file, const JsonDocumentKind& kind, const MemoryBudget& memory) {
     FileBytes read = readFileUpTo(file, kind.maxBytes);
-    if (read.problem == FileProblem::TooLarge)
+    if (read.problem != FileProblem::None)
         failFile(file, "the " + kind.name + " file " + fileProblemText(read.problem, kind.maxBytes));
-    if (read.problem != FileProblem::None) failFile(file, unreadable);
+    try {
+        need(memory, kind.name + " file", parsedJsonBytes(read.bytes));
+    } catch (const MemoryBudgetError& error) {
+        throw MemoryBudgetError(file.string() + ": " + error.what());
+    }
     return parseJsonText(std::move(read.bytes), file, kind);
 }
 
@@ -326,6 +363,29 @@ Diagnostic diagnosticOf(const JsonNode& node, bool atKey, std::string message) {
 std::string locationOf(const JsonNode& node, bool atKey) {
     const Diagnostic at = diagnosticOf(node, atKey, {});
     return at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column);
+}
+
+std::map<std::string, std::string, std::less<>> memberLocations(const JsonNode& object) {
+    std::map<std::string, std::string, std::less<>> locations;
+    const std::string_view text = object.source->text;
+    size_t pos = locate(text, object.path).valueOffset;
+    if (!object.value->is_object() || pos >= text.size() || text[pos] != '{') return locations;
+    // Lines counted on from the last member, not from the start each time.
+    size_t counted = 0, lineStart = 0;
+    int line = 1;
+    const std::string file = object.source->file.string();
+    for (pos = skipSpace(text, pos + 1); pos < text.size() && text[pos] == '"'; pos = nextEntry(text, pos)) {
+        const size_t keyEnd = skipString(text, pos);
+        const std::string key = decodeKey(text.substr(pos, keyEnd - pos));
+        pos = skipSpace(text, skipSpace(text, keyEnd) + 1); // past ':'
+        for (; counted < pos; ++counted)
+            if (text[counted] == '\n') {
+                ++line;
+                lineStart = counted + 1;
+            }
+        locations.emplace(key, file + ":" + std::to_string(line) + ":" + std::to_string(pos - lineStart + 1));
+    }
+    return locations;
 }
 
 void failAt(const JsonNode& node, std::string_view message, bool atKey) {
@@ -441,9 +501,17 @@ void readField(const JsonNode& object, std::string_view key, bool& out) {
 
 std::string didYouMean(std::string_view word, const std::vector<std::string_view>& known) {
     // A typo changes a few characters: allow 2 edits, more in long words.
+    // The edit distance takes the product of the lengths, so words past
+    // kMaxSuggestedLength (names no one types, from a generated or hostile
+    // file) get no suggestion, and a candidate whose length alone differs by
+    // too many edits is not measured: the cost stays bounded per candidate.
+    if (word.size() > kMaxSuggestedLength) return "";
     size_t best = std::max<size_t>(2, word.size() / 3) + 1;
     std::string closest;
     for (std::string_view candidate : known) {
+        const size_t lengthDifference =
+            candidate.size() > word.size() ? candidate.size() - word.size() : word.size() - candidate.size();
+        if (lengthDifference >= best) continue;
         const size_t distance = editDistance(word, candidate);
         if (distance < best) {
             best = distance;

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <limits>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -22,6 +23,7 @@
 #include <glm/vec3.hpp>
 
 #include "lsystem/common/error.h"
+#include "lsystem/common/memory_budget.h"
 
 namespace lsys {
 
@@ -55,8 +57,14 @@ struct JsonSource {
 };
 
 // Throws JsonError when the file cannot be read, is not JSON, nests deeper
-// than kind.maxDepth or repeats a key in one object.
-JsonSource readJsonFile(const std::filesystem::path& file, const JsonDocumentKind& kind);
+// than kind.maxDepth or repeats a key in one object; MemoryBudgetError (stage
+// "KIND file") when the parsed document would not fit `memory`, judged from
+// the text before parsing it.
+JsonSource readJsonFile(const std::filesystem::path& file, const JsonDocumentKind& kind,
+                        const MemoryBudget& memory = {});
+// At most what parsing `text` takes: the text, and nlohmann::json's values,
+// objects, members, arrays and strings, counted in one scan of it.
+uint64_t parsedJsonBytes(std::string_view text);
 // The same for text already read (kind.maxBytes is not checked); `file`
 // names it in errors.
 JsonSource parseJsonText(std::string text, const std::filesystem::path& file, const JsonDocumentKind& kind);
@@ -74,6 +82,11 @@ JsonNode rootNode(const JsonSource& source);
 
 // Where the value (or, with atKey, its key) starts: "file:line:column".
 std::string locationOf(const JsonNode& node, bool atKey = false);
+
+// "file:line:column" of every member's value of an object, by key, found in
+// one walk of the text (locationOf for each member would walk the text again
+// for each: quadratic in a large object). Empty when node is no object.
+std::map<std::string, std::string, std::less<>> memberLocations(const JsonNode& object);
 
 // JsonError("file:line:column: /pointer message").
 [[noreturn]] void failAt(const JsonNode& node, std::string_view message, bool atKey = false);

@@ -76,6 +76,13 @@ public:
 private:
     void draw(uint32_t index, const Placement& at) {
         const Component& component = graph_.components[index];
+        // Each value is bounded as read, but scales multiply down a chain of
+        // components and may pass the float range: refused where it happens.
+        const glm::vec3& p = at.frame.position;
+        if (!std::isfinite(at.scale) || !std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            throw ComponentError(component.location +
+                                 " is drawn at a size or place past the float range: the scales of the components "
+                                 "drawing it multiply past it");
         std::visit([&](const auto& kind) { drawKind(component, kind, at); }, component.kind);
     }
 

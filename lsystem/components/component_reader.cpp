@@ -23,6 +23,14 @@ constexpr uint32_t kMaxNodes = 10'000;
 // before the budget stopped it.
 constexpr uint32_t kMaxBudget = 100'000'000;
 
+// Coordinates, lengths, radii and scales: a million is any plant many times
+// over, and far enough below float's limit that a size times a scale stays
+// finite (deeper products are checked as the plant is drawn).
+constexpr double kMaxMagnitude = 1e6;
+Range magnitude() { return between(-kMaxMagnitude, kMaxMagnitude); }
+Range size() { return between(0.0, kMaxMagnitude); }
+Range positiveSize() { return {.min = 0.0, .max = kMaxMagnitude, .minOpen = true}; }
+
 const std::vector<std::string_view> kKinds = {"stem", "leaf", "tree", "radial"};
 
 // Names of components and materials, for references.
@@ -65,10 +73,10 @@ Spline readCurve(const JsonNode& node, std::string_view expected) {
         SplinePoint point;
         if (object) {
             requireObject(element, {"at", "tangent"});
-            point.position = toVec3(readVector<N>(requireMember(element, "at", "the point"), anyNumber()));
-            point.tangent = toVec3(readVector<N>(requireMember(element, "tangent", "the direction"), anyNumber()));
+            point.position = toVec3(readVector<N>(requireMember(element, "at", "the point"), magnitude()));
+            point.tangent = toVec3(readVector<N>(requireMember(element, "tangent", "the direction"), magnitude()));
         } else {
-            point.position = toVec3(readVector<N>(element, anyNumber()));
+            point.position = toVec3(readVector<N>(element, magnitude()));
         }
         spline.points.push_back(point);
     }
@@ -107,8 +115,8 @@ Stem readStem(const JsonNode& node, const Names& names) {
         stem.shape = readCurve<3>(*shape, "an array of [x, y, z] points");
     else
         stem.shape.points = {{{0, 0, 0}, {0, 1, 0}}, {{0, 1, 0}, {0, 1, 0}}};
-    readField(node, "length", stem.length, above(0.0));
-    readAttributeField(node, "radius", stem.radius, atLeast(0.0));
+    readField(node, "length", stem.length, positiveSize());
+    readAttributeField(node, "radius", stem.radius, size());
     readField(node, "detail", stem.detail, between(1, kMaxDetail));
     readField(node, "stiffness", stem.stiffness, atLeast(0.0));
     readMaterialField(node, names, stem.material);
@@ -126,7 +134,7 @@ Leaf readLeaf(const JsonNode& node, const Names& names) {
     if (polygon) {
         const std::vector<JsonNode> points = arrayElements(*polygon, "an array of [x, y] points");
         if (points.size() < 3) failAt(*polygon, "needs at least 3 points");
-        for (const JsonNode& point : points) leaf.polygon.push_back(glm::vec3(readVector<2>(point, anyNumber()), 0.0f));
+        for (const JsonNode& point : points) leaf.polygon.push_back(glm::vec3(readVector<2>(point, magnitude()), 0.0f));
     } else if (outline) {
         leaf.halfOutline = readCurve<2>(*outline, "an array of [x, y] points");
     } else {
@@ -134,7 +142,7 @@ Leaf readLeaf(const JsonNode& node, const Names& names) {
         leaf.halfOutline.points = {
             {{0, 0, 0}, {0.5f, 0.2f, 0}}, {{0.3f, 0.4f, 0}, {0, 0.4f, 0}}, {{0, 1, 0}, {-0.2f, 0.3f, 0}}};
     }
-    readField(node, "length", leaf.length, above(0.0));
+    readField(node, "length", leaf.length, positiveSize());
     readField(node, "detail", leaf.detail, between(2, kMaxDetail));
     readField(node, "fold", leaf.fold, between(-90, 90));
     readMaterialField(node, names, leaf.material);
@@ -157,7 +165,7 @@ Tree readTree(const JsonNode& node, const Names& names, const std::vector<std::o
     readAttributeField(node, "phyllotaxis", tree.phyllotaxis, between(-360, 360));
     readField(node, "azimuth", tree.azimuth, between(-360, 360));
     readField(node, "twist", tree.twist, between(-360, 360));
-    readAttributeField(node, "scale", tree.scale, atLeast(0.0));
+    readAttributeField(node, "scale", tree.scale, size());
     readField(node, "scale_variation", tree.scaleVariation, between(0, 1));
     readField(node, "angle_variation", tree.angleVariation, between(0, 180));
     return tree;
@@ -202,30 +210,56 @@ std::vector<Material> readMaterials(const std::optional<JsonNode>& node, Names& 
 // tree's stem), each with where the file names it.
 using Edges = std::vector<std::vector<std::pair<uint32_t, JsonNode>>>;
 
-// Depth-first from every component: a component reached again while still on
-// the path closes a cycle, which would draw forever.
-void requireAcyclic(const ComponentGraph& graph, const Edges& edges) {
+// Past any plant's nesting (a tree's branches' leaves are three levels
+// deep): drawing and counting walk the graph recursively, so a deeper graph
+// is refused here, before they would run out of stack.
+constexpr uint32_t kMaxNesting = 1000;
+
+// Depth-first from every component, with a stack of its own: a component
+// reached again while still on the path closes a cycle, which would draw
+// forever; one that starts a chain of more than kMaxNesting components nests
+// too deep. Each component and reference is visited once.
+void requireAcyclic(const ComponentGraph& graph, const Edges& edges, const std::vector<JsonNode>& nodes) {
     enum class Mark : uint8_t { Unvisited, OnPath, Done };
     std::vector<Mark> marks(graph.components.size(), Mark::Unvisited);
-    std::vector<uint32_t> path;
-    auto visit = [&](auto& self, uint32_t index) -> void {
-        marks[index] = Mark::OnPath;
-        path.push_back(index);
-        for (const auto& [child, reference] : edges[index]) {
-            if (marks[child] == Mark::OnPath) {
-                std::string cycle;
-                for (auto it = std::find(path.begin(), path.end(), child); it != path.end(); ++it)
-                    cycle += graph.components[*it].name + " → ";
-                failAt(reference,
-                       "makes a cycle (" + cycle + graph.components[child].name + "): the plant would never end");
-            }
-            if (marks[child] == Mark::Unvisited) self(self, child);
-        }
-        path.pop_back();
-        marks[index] = Mark::Done;
+    std::vector<uint32_t> chain(graph.components.size(), 0); // the longest chain a component starts
+    struct Visit {
+        uint32_t index;
+        size_t nextEdge = 0;
     };
-    for (uint32_t i = 0; i < graph.components.size(); ++i)
-        if (marks[i] == Mark::Unvisited) visit(visit, i);
+    std::vector<Visit> path;
+    for (uint32_t start = 0; start < graph.components.size(); ++start) {
+        if (marks[start] != Mark::Unvisited) continue;
+        marks[start] = Mark::OnPath;
+        path.push_back({start});
+        while (!path.empty()) {
+            const uint32_t index = path.back().index;
+            if (path.back().nextEdge < edges[index].size()) {
+                const auto& [child, reference] = edges[index][path.back().nextEdge++];
+                if (marks[child] == Mark::OnPath) {
+                    std::string cycle;
+                    for (auto it =
+                             std::find_if(path.begin(), path.end(), [&](const Visit& v) { return v.index == child; });
+                         it != path.end(); ++it)
+                        cycle += graph.components[it->index].name + " → ";
+                    failAt(reference,
+                           "makes a cycle (" + cycle + graph.components[child].name + "): the plant would never end");
+                }
+                if (marks[child] == Mark::Unvisited) {
+                    marks[child] = Mark::OnPath;
+                    path.push_back({child});
+                }
+                continue;
+            }
+            chain[index] = 1;
+            for (const auto& [child, reference] : edges[index]) chain[index] = std::max(chain[index], chain[child] + 1);
+            if (chain[index] > kMaxNesting)
+                failAt(nodes[index], "starts a chain of more than " + std::to_string(kMaxNesting) +
+                                         " components, each drawing the next: deeper than any plant nests");
+            marks[index] = Mark::Done;
+            path.pop_back();
+        }
+    }
 }
 
 ComponentGraph readGraph(const JsonSource& source) {
@@ -259,12 +293,14 @@ ComponentGraph readGraph(const JsonSource& source) {
     }
     if (nodes.empty()) failAt(list, "must name at least one component");
 
+    const std::map<std::string, std::string, std::less<>> locations = memberLocations(list);
     Edges edges(nodes.size());
     for (size_t i = 0; i < nodes.size(); ++i) {
         const JsonNode& node = nodes[i];
         Component component;
         component.name = node.path.back();
-        component.location = locationOf(node) + ": " + node.pointer();
+        const auto located = locations.find(component.name); // found unless the text walk disagrees with the parse
+        component.location = (located != locations.end() ? located->second : locationOf(node)) + ": " + node.pointer();
         if (!kinds[i]) failAt(node, "needs \"kind\": one of \"stem\", \"leaf\", \"tree\", \"radial\"");
         const std::string kind = readString(*kinds[i]);
         if (kind == "stem")
@@ -288,7 +324,7 @@ ComponentGraph readGraph(const JsonSource& source) {
     }
     graph.root = reference(requireMember(root, "root", "the name of the component the plant grows from"),
                            names.components, "component");
-    requireAcyclic(graph, edges);
+    requireAcyclic(graph, edges, nodes);
 
     return graph;
 }

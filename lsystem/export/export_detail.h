@@ -18,6 +18,12 @@ std::string materialName(const std::vector<Material>& materials, uint32_t index)
 // message: a MemoryBudgetError as one, anything else as std::runtime_error.
 [[noreturn]] void rethrowNaming(const std::filesystem::path& path);
 
+// Throws std::runtime_error when a position or normal of `mesh` is NaN or
+// infinite: a file that holds one is no model (glTF 2.0 §3.6.2.4 asks for
+// finite accessor bounds) and viewers fail on it, so nothing is written.
+void requireFinite(const TriangleMesh& mesh);
+void requireFinite(const Frame& frame, const std::string& what);
+
 // The extension in lower case, e.g. ".glb": it decides the format.
 std::string lowercaseExtension(const std::filesystem::path& path);
 

@@ -28,6 +28,7 @@ GltfBuilder::GltfBuilder(const std::vector<Material>& materials) {
 
 bool GltfBuilder::addPrimitive(const TriangleMesh& mesh, uint32_t material, tinygltf::Primitive& primitive) {
     if (mesh.indices.empty()) return false;
+    requireFinite(mesh);
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
     primitive.material = int(material);
     glm::vec3 low = mesh.positions.front(), high = low;
@@ -64,6 +65,7 @@ int GltfBuilder::addMesh(const std::vector<TriangleMesh>& byMaterial, std::strin
 }
 
 int GltfBuilder::addNode(std::string name, int parent, const Frame& local, int mesh) {
+    requireFinite(local, "node '" + name + "'");
     tinygltf::Node node;
     node.name = std::move(name);
     node.mesh = mesh;

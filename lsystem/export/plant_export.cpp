@@ -30,6 +30,26 @@ void rethrowNaming(const std::filesystem::path& path) {
     }
 }
 
+void requireFinite(const TriangleMesh& mesh) {
+    const auto finite = [](const glm::vec3& v) {
+        return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    };
+    const bool positions = std::all_of(mesh.positions.begin(), mesh.positions.end(), finite);
+    if (!positions || !std::all_of(mesh.normals.begin(), mesh.normals.end(), finite))
+        throw std::runtime_error(std::string("the plant's geometry holds a ") + (positions ? "normal" : "position") +
+                                 " that is not a finite number (NaN or infinity): its sizes or scales are past "
+                                 "the float range");
+}
+
+void requireFinite(const Frame& frame, const std::string& what) {
+    const glm::vec3& p = frame.position;
+    const glm::quat& r = frame.rotation;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(r.x) ||
+        !std::isfinite(r.y) || !std::isfinite(r.z) || !std::isfinite(r.w))
+        throw std::runtime_error(what + " is placed at a position or rotation that is not a finite number (NaN or "
+                                        "infinity): the plant's sizes or scales are past the float range");
+}
+
 std::string lowercaseExtension(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
@@ -137,6 +157,7 @@ float exportPlant(const PlantAsset& asset, const std::filesystem::path& path, co
              extension == ".obj" ? objBytes(meshes)
                                  : gltfBytes(meshes, options.skeleton ? asset.joints.size() : 0, extension == ".glb"));
         std::vector<TriangleMesh> flat = flatMeshes(asset, options);
+        for (const TriangleMesh& mesh : flat) requireFinite(mesh);
         if (options.height > 0.0f) scale = scaleToHeight(flat, options.height);
         if (extension == ".obj") {
             const std::filesystem::path mtlPath = exportedFiles(path).back();

@@ -57,6 +57,10 @@ void applyModule(const TurtleCommand& command, std::span<const float> parameters
                                       (std::isnan(value) ? "NaN" : "an infinite value") +
                                       " as a parameter (an expression divides by zero or leaves its domain)");
     definition.apply({command, parameters, settings, state, stack, out});
+    // Finite steps can still add up past the float range (F(3e38) twice).
+    if (!std::isfinite(state.position.x) || !std::isfinite(state.position.y) || !std::isfinite(state.position.z))
+        throw DerivationError("the turtle's " + std::string(definition.symbol) +
+                              " moved it past the float range: its position is no longer a finite number");
 }
 
 void interpretModules(const ModuleString& string, std::span<const TurtleCommand> commands,

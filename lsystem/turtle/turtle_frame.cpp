@@ -23,10 +23,16 @@ void orthonormalise(TurtleState& s) {
 
 // ABOP §2.4: after a segment, H turns toward T by e * |H x T| about H x T.
 void bendAsAbop(TurtleState& s) {
-    const glm::vec3 axis = glm::cross(s.heading, s.tropism);
+    // |H x T| squares T's size: past about 1.8e19 that overflows to an
+    // infinite sine and a NaN frame, so such a T is taken in units of its
+    // largest component (smaller ones as they are, their frames unchanged).
+    constexpr float kLargestSquarable = 1e18f;
+    const float largest = std::max({std::abs(s.tropism.x), std::abs(s.tropism.y), std::abs(s.tropism.z)});
+    const float unit = largest > kLargestSquarable ? largest : 1.0f;
+    const glm::vec3 axis = glm::cross(s.heading, s.tropism / unit);
     const float sine = glm::length(axis);
-    if (!(sine > 1e-6f)) return; // parallel to T (or NaN): no defined bend
-    rotate(s, axis / sine, glm::degrees(s.elasticity * sine));
+    if (!(sine * unit > 1e-6f)) return; // parallel to T (or NaN): no defined bend
+    rotate(s, axis / sine, glm::degrees(s.elasticity * sine * unit));
 }
 
 // Turns heading toward `toward` by the angle whose sine is `sine`, turning

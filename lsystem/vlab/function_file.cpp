@@ -192,15 +192,15 @@ double bisect(const VlabFunction& function, double x) {
 
 // cpfg precomputes `samples` values when there are more than 2 and
 // otherwise evaluates the curve on every call. Every sample is a bisection,
-// so a file, or a set's functions together, may ask for kMaxFunctionSamples
-// at most: `budget` is what is left of them (a set of a thousand functions
-// of 65536 samples each would take many minutes).
+// so a file, or a set's or an object's functions together, may ask for
+// kMaxFunctionSamples at most: `budget` is what is left of them (a set of a
+// thousand functions of 65536 samples each would take many minutes).
 bool prepare(Lines& lines, const Cursor& at, VlabFunction& function, int samples, int& budget) {
     if (samples <= 2) return true;
     if (samples > budget)
         return lines.fail(at, "the function asks for " + std::to_string(samples) + " samples, too many",
                           "at most " + std::to_string(kMaxFunctionSamples) +
-                              " for a file, or a set's functions in all");
+                              " for a file, or a set's or an object's functions in all");
     budget -= samples;
     function.samples.resize(samples);
     for (int i = 0; i < samples; ++i) function.samples[i] = bisect(function, double(i) / double(samples - 1));
@@ -294,17 +294,26 @@ FunctionTable functionTable(std::vector<VlabFunction> functions) {
 }
 
 FunctionReadResult readFunctionFile(const std::filesystem::path& path, int samples) {
+    int samplesLeft = kMaxFunctionSamples;
+    return readFunctionFile(path, samples, samplesLeft);
+}
+
+FunctionReadResult readFunctionFile(const std::filesystem::path& path, int samples, int& samplesLeft) {
     FunctionReadResult result;
     std::optional<std::string> text = readTextFileOf("function", path, kMaxFunctionFileBytes, result.diagnostics);
     if (!text) return result;
     Lines lines(*text, path.string(), result.diagnostics);
-    int budget = kMaxFunctionSamples;
-    if (std::optional<VlabFunction> read = function(lines, samples, budget)) result.function = std::move(*read);
+    if (std::optional<VlabFunction> read = function(lines, samples, samplesLeft)) result.function = std::move(*read);
     if (result.function.name.empty()) result.function.name = path.stem().string();
     return result;
 }
 
 FunctionSetReadResult readFunctionSet(const std::filesystem::path& path) {
+    int samplesLeft = kMaxFunctionSamples;
+    return readFunctionSet(path, samplesLeft);
+}
+
+FunctionSetReadResult readFunctionSet(const std::filesystem::path& path, int& samplesLeft) {
     FunctionSetReadResult result;
     std::optional<std::string> text = readTextFileOf("function", path, kMaxFunctionFileBytes, result.diagnostics);
     if (!text) return result;
@@ -317,9 +326,8 @@ FunctionSetReadResult readFunctionSet(const std::filesystem::path& path) {
         return result;
     }
     const std::optional<int> items = labelledCount(lines, "items:", 0, kMaxSetItems);
-    int budget = kMaxFunctionSamples; // shared by the set's functions
     for (int i = 0; items && i < *items; ++i) {
-        std::optional<VlabFunction> read = function(lines, kSetSamples, budget);
+        std::optional<VlabFunction> read = function(lines, kSetSamples, samplesLeft);
         if (!read) return result;
         result.functions.push_back(std::move(*read));
     }

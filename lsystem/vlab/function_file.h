@@ -44,6 +44,9 @@ struct FunctionReadResult {
 // As in cpfg, only the "range:" format uses it; an "fver" file's own
 // "samples:" line decides for that format.
 FunctionReadResult readFunctionFile(const std::filesystem::path& path, int samples = -1);
+// The same, taking the samples it prepares from `samplesLeft`, which an
+// object's function files and set share (see kMaxFunctionSamples).
+FunctionReadResult readFunctionFile(const std::filesystem::path& path, int samples, int& samplesLeft);
 
 struct FunctionSetReadResult {
     std::vector<VlabFunction> functions; // func(i, x) reads functions[i - 1]
@@ -57,10 +60,12 @@ struct FunctionSetReadResult {
 // PreprocessLsystem), so that func(NAME, x) reads it. (The manual, §8.1.6,
 // says this of every function file, in capitals; cpfg 6.6 does not.)
 FunctionSetReadResult readFunctionSet(const std::filesystem::path& path);
+FunctionSetReadResult readFunctionSet(const std::filesystem::path& path, int& samplesLeft);
 
 // Most points a function may have (multiplicities included), and most
-// samples one file, or all the functions of a set together, may be
-// prepared with.
+// samples one file, or all the functions of a set or of a vlab object
+// together, may be prepared with: each sample is a bisection, so an object
+// of hundreds of files of as many samples each would take minutes.
 inline constexpr size_t kMaxFunctionPoints = 4096;
 inline constexpr int kMaxFunctionSamples = 1 << 16;
 

@@ -187,9 +187,9 @@ bool isIdentifier(const std::string& name) {
 // PreprocessLsystem). cpfg's preprocessor rejects a -D whose name is no C
 // identifier, which then names nothing.
 void readSet(const ViewFunctionSet& set, const ObjectFiles& files, ObjectLook& object,
-             std::vector<VlabFunction>& functions, PlantFile& plant) {
+             std::vector<VlabFunction>& functions, int& samplesLeft, PlantFile& plant) {
     if (missing(set.file, files, set.line, "function set", "it adds no functions", plant)) return;
-    FunctionSetReadResult read = readFunctionSet(files.lsystem.parent_path() / set.file);
+    FunctionSetReadResult read = readFunctionSet(files.lsystem.parent_path() / set.file, samplesLeft);
     append(plant.parsed.diagnostics, std::move(read.diagnostics));
     for (VlabFunction& function : read.functions) {
         functions.push_back(std::move(function));
@@ -217,14 +217,15 @@ ObjectLook readObjectLook(const ObjectFiles& files, PlantFile& plant) {
     }
     const fs::path folder = files.lsystem.parent_path();
     std::vector<VlabFunction> functions;
-    if (object.view.functionSet) readSet(*object.view.functionSet, files, object, functions, plant);
+    int samplesLeft = kMaxFunctionSamples; // shared by all the object's functions
+    if (object.view.functionSet) readSet(*object.view.functionSet, files, object, functions, samplesLeft, plant);
     for (const ViewFunction& function : object.view.functions) {
         const fs::path path = folder / function.file;
         if (missing(function.file, files, function.line, "function", "its function is 0 everywhere", plant)) {
             functions.push_back(VlabFunction{.name = path.stem().string()});
             continue;
         }
-        FunctionReadResult read = readFunctionFile(path, function.samples);
+        FunctionReadResult read = readFunctionFile(path, function.samples, samplesLeft);
         append(errors, std::move(read.diagnostics));
         functions.push_back(std::move(read.function));
     }

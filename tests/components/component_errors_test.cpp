@@ -53,7 +53,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"out_of_range", ONE_STEM(", \"detail\": 0"), "4:33",
                 "/components/s/detail must be an integer in [1, 256] (got 0)"},
         BadFile{"negative_radius_in_spline", ONE_STEM(", \"radius\": [0.1, -0.2]"), "4:39",
-                "/components/s/radius/1 must be a number ≥ 0"},
+                "/components/s/radius/1 must be a number in [0, 1000000]"},
+        BadFile{"length_near_the_float_maximum", ONE_STEM(", \"length\": 3e38"), "4:33",
+                "/components/s/length must be a number in (0, 1000000] (got 3e38)"},
+        BadFile{"shape_point_near_the_float_maximum", ONE_STEM(", \"shape\": [[0, 0, 0], [0, 3.4e38, 0]]"), "4:44",
+                "/components/s/shape/1 must be an array of 3 numbers in [-1000000, 1000000]"},
         BadFile{"too_few_shape_points", ONE_STEM(", \"shape\": [[0, 0, 0]]"), "4:32",
                 "/components/s/shape needs at least 2 control points"},
         BadFile{"mixed_tangents", ONE_STEM(", \"shape\": [[0, 0, 0], {\"at\": [0, 1, 0], \"tangent\": [0, 1, 0]}]"),
@@ -124,6 +128,29 @@ TEST(ComponentFile, AGraphOfATrillionLeavesIsRefusedBeforeDrawing) {
     } catch (const ComponentError& e) {
         EXPECT_NE(std::string(e.what()).find("/components/l is drawn 1000000000000 times"), std::string::npos)
             << e.what();
+    }
+}
+
+// Every value within 10⁶, but scales of 10⁶ multiplied down eight trees
+// pass the float range: refused at the first component drawn past it
+// instead of a plant of infinities and NaNs. That is t5, at scale 10³⁰: the
+// length of t4's stem segment (10²⁴ long) squares past float's limit, so
+// the place along it where t5 is drawn is no number.
+TEST(ComponentFile, ScalesMultipliedPastTheFloatRangeAreRefusedWhereTheyPassIt) {
+    std::string components = "\"s\": {\"kind\": \"stem\", \"detail\": 1},\n\"l\": {\"kind\": \"leaf\"}";
+    for (int i = 0; i < 8; ++i)
+        components += ",\n\"t" + std::to_string(i) +
+                      "\": {\"kind\": \"tree\", \"stem\": \"s\", \"count\": 1, \"scale\": 1e6, \"children\": [\"" +
+                      (i < 7 ? "t" + std::to_string(i + 1) : std::string("l")) + "\"]}";
+    const std::filesystem::path file = test::writeComponentFile(
+        "huge_scales.comp.json", "{\n\"root\": \"t0\",\n\"components\": {\n" + components + "\n}\n}\n");
+    try {
+        loadComponentPlant(file);
+        FAIL() << "drew a plant at scales up to 1e42";
+    } catch (const ComponentError& e) {
+        EXPECT_EQ(std::string(e.what()), file.string() + ":11:7: /components/t5 is drawn at a size or place past the "
+                                                         "float range: the scales of the components drawing it "
+                                                         "multiply past it");
     }
 }
 

@@ -4,6 +4,7 @@
 // differ by a rotation about T) — exactly with G = 0, within cells of pi/G
 // otherwise.
 
+#include <cmath>
 #include <cstdio>
 
 #include "instance_graph_test_support.h"
@@ -67,7 +68,9 @@ TEST(InstanceGraphTropism, GranularityTradesObjectsForABoundedError) {
     }
 }
 
-// Tropism vectors of any value, finite or not, key without failing.
+// Tropism vectors of any finite value key without failing, and bend the
+// plant without leaving the float range (|H x T| of T = 1e30 squared past it:
+// a NaN frame).
 TEST(InstanceGraphTropism, DegenerateTropismVectorsStillFlatten) {
     for (const char* vector : {"0,0,0", "1e30,0,0"}) {
         SCOPED_TRACE(vector);
@@ -77,6 +80,11 @@ TEST(InstanceGraphTropism, DegenerateTropismVectorsStillFlatten) {
             options.orientationGranularity = granularity;
             const InstanceGraph graph = graphOf(grammar, 3, options);
             EXPECT_EQ(flatten(graph).primitives.size(), turtlePlant(grammar, 3).primitives.size());
+        }
+        for (const Primitive& primitive : turtlePlant(grammar, 3).primitives) {
+            const Frame& frame = primitive.frame;
+            EXPECT_TRUE(std::isfinite(frame.position.x) && std::isfinite(frame.position.y) &&
+                        std::isfinite(frame.position.z) && std::isfinite(frame.rotation.w));
         }
     }
 }

@@ -72,7 +72,9 @@ expect_run instance-missing 2 'cannot read file' -- "$LSYS" instance "$WORK/does
 # A folder is read as a vlab object: without a .l it is an error naming the folder.
 mkdir "$WORK/empty"
 expect_run check-folder 2 'empty: error: the vlab object holds no cpfg L-system' -- "$LSYS" check "$WORK/empty"
-expect_run check-endless-device 2 'is larger than 64 MiB' -- "$LSYS" check /dev/zero
+expect_run check-device 2 'is not a regular file' -- "$LSYS" check /dev/zero
+mkfifo "$WORK/fifo.lsys"
+expect_run derive-fifo 2 'fifo.lsys.*is not a regular file (a fifo, a device or a socket)' -- "$LSYS" derive "$WORK/fifo.lsys"
 expect_run instance-bad-randomness 2 'randomness' -- "$LSYS" instance "$DATA/plants/stochastic.lsys" --randomness -1
 expect_run instance-help 0 'instances = references to objects' -- "$LSYS" instance --help
 expect_run export 0 '625 primitives, 625 joints' -- "$LSYS" export "$DATA/plants/koch_curve.lsys" -o "$WORK/koch.glb"
@@ -98,6 +100,9 @@ expect_run export-fifo 2 'is a fifo' -- "$LSYS" export "$DATA/plants/koch_curve.
 printf 'Axiom: F(1) F(0/0)\n' > "$WORK/nan.lsys"
 expect_run export-not-a-number 2 "the turtle's F got NaN" -- "$LSYS" export "$WORK/nan.lsys" -o "$WORK/nan.glb"
 [ -e "$WORK/nan.glb" ] && fail "export-not-a-number: a file was written"
+printf 'Axiom: F(3e38) F(3e38) F(3e38)\n' > "$WORK/overflow.lsys"
+expect_run export-past-float-range 2 "the turtle's F moved it past the float range" -- "$LSYS" export "$WORK/overflow.lsys" -o "$WORK/overflow.glb"
+[ -e "$WORK/overflow.glb" ] && fail "export-past-float-range: a file was written"
 # The memory budget: each stage refuses before it allocates, naming itself, the need and the limit.
 expect_run export-memory-budget 2 'export .*budget.glb: memory budget: export needs 208.0 MiB, the limit is 16.0 MiB (set with --memory-budget)' -- "$LSYS" export "$DATA/plants/fractal_bush.lsys" -n 5 -o "$WORK/budget.glb" --memory-budget 16M
 [ -e "$WORK/budget.glb" ] && fail "export-memory-budget: a file was written"

@@ -69,5 +69,17 @@ TEST(LsysTurtleCommands, ANonFiniteParameterStopsTheTurtleNamingTheCommand) {
     EXPECT_EQ(plantOf("Axiom: A(0/0) F(1)\n").primitives.size(), 1u);
 }
 
+// Each step finite, their sum not: stopped at the step that passes the float
+// range, not exported as infinities.
+TEST(LsysTurtleCommands, StepsAddingUpPastTheFloatRangeStopTheTurtleNamingTheCommand) {
+    try {
+        (void)plantOf("Axiom: F(3e38) f(3e38) F(1)\n");
+        ADD_FAILURE() << "a plant was built";
+    } catch (const DerivationError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "the turtle's f moved it past the float range: its position is no longer a finite number");
+    }
+}
+
 } // namespace
 } // namespace lsys::test

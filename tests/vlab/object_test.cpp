@@ -236,5 +236,26 @@ TEST_F(VlabObject, MissingFilesOfTheViewAreWarnedOfAndDrawNothing) {
     EXPECT_NEAR(glm::length(drawn.primitives[2].frame.position - drawn.primitives[0].frame.position), 1.0f, 1e-6f);
 }
 
+// Each sample a function is prepared with is a bisection: an object's
+// function files share one bound on them, as a set's functions do, so 300
+// files of 60000 samples each (about a minute apiece before) are refused at
+// the first file past it, at its view file's samples, quickly.
+TEST_F(VlabObject, AnObjectsFunctionFilesShareTheBoundOnSamples) {
+    write("plant.l", lsystemWith("B(func(1, 0.5))"));
+    std::string view;
+    for (int i = 0; i < 300; ++i) {
+        const std::string name = "f" + std::to_string(i) + ".func";
+        write(name, kHalf);
+        view += "function: " + name + " 60000\n";
+    }
+    write("plant.v", view);
+    const PlantFile plant = loadObject(folder_);
+    const std::vector<Diagnostic>& errors = plant.parsed.diagnostics;
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(errors[0].file, (folder_ / "f1.func").string());
+    EXPECT_NE(errors[0].message.find("asks for 60000 samples, too many"), std::string::npos) << errors[0].message;
+    EXPECT_EQ(errors.size(), 299u); // every file after the first
+}
+
 } // namespace
 } // namespace lsys::vlab

@@ -32,7 +32,7 @@ int run(const PlantbenchOptions& o) {
     SweepResult result;
     int exitCode = 0;
     try {
-        Scene scene = loadScene(o.scenePath); // before the device: a bad scene is bad input
+        Scene scene = loadScene(o.scenePath, o.memory); // before the device: a bad scene is bad input
         if (o.seed) scene.seed = *o.seed;
         createHeadlessContext(ctx, gpu);
         runSweep(o, scene, ctx, result);

@@ -19,7 +19,7 @@ const std::string& inputName(const PlantfieldOptions& o) { return o.plantPath.em
 
 Scene loadSceneOf(const PlantfieldOptions& o) {
     if (!o.plantPath.empty()) return previewScene(o);
-    return loadScene(o.scenePath, SceneOverrides{o.seed, o.windSpeed, o.windDirectionDegrees, o.jointBudget});
+    return loadScene(o.scenePath, SceneOverrides{o.seed, o.windSpeed, o.windDirectionDegrees, o.jointBudget}, o.memory);
 }
 
 FieldContent loadFieldContent(const PlantfieldOptions& o, std::optional<PreviewOrbit>* orbit, ModelAssets assets) {
