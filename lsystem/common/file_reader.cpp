@@ -21,6 +21,12 @@ void noteFileRead(const std::filesystem::path& path) {
             log->paths_.push_back(normal);
 }
 
+std::vector<std::filesystem::path> loggedFileReads() {
+    const ReadFileLog* outermost = innermostReadLog;
+    while (outermost && outermost->outer_) outermost = outermost->outer_;
+    return outermost ? outermost->paths_ : std::vector<std::filesystem::path>{};
+}
+
 FileBytes readFileUpTo(const std::filesystem::path& path, size_t maxBytes) {
     noteFileRead(path);
     std::error_code ec;

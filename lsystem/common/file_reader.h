@@ -56,11 +56,17 @@ public:
 
 private:
     friend void noteFileRead(const std::filesystem::path& path);
+    friend std::vector<std::filesystem::path> loggedFileReads();
     std::vector<std::filesystem::path> paths_;
     ReadFileLog* outer_;
 };
 
 // Adds `path` to the thread's open ReadFileLogs (none: does nothing).
 void noteFileRead(const std::filesystem::path& path);
+
+// Every path the thread's open ReadFileLogs hold (the outermost sees every
+// read of the inner ones): the files the run has read so far, which no output
+// may replace (lsystem/common/output_file.h). Empty when no log is open.
+std::vector<std::filesystem::path> loggedFileReads();
 
 } // namespace lsys

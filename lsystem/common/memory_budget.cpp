@@ -1,31 +1,16 @@
 #include "lsystem/common/memory_budget.h"
 
+#include "lsystem/common/machine_memory.h"
+
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 namespace lsys {
 
-std::optional<MemoryBudget> memoryBudgetFromMeminfo(std::string_view meminfo) {
-    constexpr std::string_view key = "MemAvailable:";
-    const size_t at = meminfo.find(key);
-    if (at == std::string_view::npos) return std::nullopt;
-    std::string_view rest = meminfo.substr(at + key.size());
-    while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
-    uint64_t kilobytes = 0;
-    const auto [end, error] = std::from_chars(rest.data(), rest.data() + rest.size(), kilobytes);
-    if (error != std::errc() || end == rest.data()) return std::nullopt;
-    return MemoryBudget{bytesTimes(kilobytes, 1024) / 4 * 3};
-}
-
 MemoryBudget machineMemoryBudget() {
-    std::ifstream file("/proc/meminfo");
-    std::ostringstream text;
-    text << file.rdbuf();
-    return memoryBudgetFromMeminfo(text.str()).value_or(MemoryBudget{kFallbackMemoryBudget});
+    return {budgetBytesFrom(machineMemoryHeadroom()).value_or(kFallbackMemoryBudget)};
 }
 
 uint64_t bytesTimes(uint64_t count, uint64_t bytesEach) {

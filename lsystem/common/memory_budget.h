@@ -27,13 +27,11 @@ struct MemoryBudgetError : DerivationError {
     using DerivationError::DerivationError;
 };
 
-// 3/4 of MemAvailable in /proc/meminfo (the rest left to the system and to
-// what the stages do not count), or kFallbackMemoryBudget where that cannot
-// be read.
+// 3/4 of the smallest of the available memory, the cgroup memory limit and
+// RLIMIT_AS/RLIMIT_DATA, each less what is used (machine_memory.h), or
+// kFallbackMemoryBudget where none can be read.
 inline constexpr uint64_t kFallbackMemoryBudget = 4ull << 30;
 MemoryBudget machineMemoryBudget();
-// The same from the text of a /proc/meminfo; nullopt without a MemAvailable line.
-std::optional<MemoryBudget> memoryBudgetFromMeminfo(std::string_view meminfo);
 
 // Throws MemoryBudgetError, "memory budget: STAGE needs 265.7 GiB, the limit
 // is 5.4 GiB (set with --memory-budget)", when bytes > budget.limitBytes.

@@ -1,11 +1,14 @@
 #include "lsystem/common/output_file.h"
 
+#include "lsystem/common/file_reader.h"
+
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <vector>
 
 namespace lsys {
 namespace fs = std::filesystem;
@@ -40,9 +43,30 @@ const char* kindOf(fs::file_type type) {
     }
 }
 
+// Same device and inode, links followed: a hard link, a symbolic link or a
+// path spelt differently (../x, ./x) is the same file. A path that names
+// nothing is no file's.
+bool sameFile(const fs::path& a, const fs::path& b) {
+    struct stat first {
+    }, second{};
+    return stat(a.c_str(), &first) == 0 && stat(b.c_str(), &second) == 0 && first.st_dev == second.st_dev &&
+           first.st_ino == second.st_ino;
+}
+
+std::string inputProblem(const fs::path& path, std::span<const fs::path> inputs) {
+    std::vector<fs::path> all(inputs.begin(), inputs.end());
+    const std::vector<fs::path> logged = loggedFileReads();
+    all.insert(all.end(), logged.begin(), logged.end());
+    for (const fs::path& input : all)
+        if (sameFile(path, input))
+            return inQuotes(path) + " is the input " + inQuotes(input) +
+                   ": an output never replaces a file the run reads";
+    return {};
+}
+
 } // namespace
 
-std::string outputPathProblem(const fs::path& path) {
+std::string outputPathProblem(const fs::path& path, std::span<const fs::path> inputs) {
     if (path.empty()) return "the output path is empty";
     std::string problem;
     const fs::path target = resolvedTarget(path, problem);
@@ -54,6 +78,7 @@ std::string outputPathProblem(const fs::path& path) {
             return inQuotes(path) + " is " + kindOf(status.type()) + ": only regular files are written";
         const fs::perms writable = fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write;
         if ((status.permissions() & writable) == fs::perms::none) return inQuotes(path) + " is read-only";
+        if (std::string clash = inputProblem(path, inputs); !clash.empty()) return clash;
     }
     const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
     if (!fs::is_directory(parent, ec)) return "folder " + inQuotes(parent) + " does not exist";

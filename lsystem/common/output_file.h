@@ -7,23 +7,35 @@
 // read-only file); a symbolic link is followed and stays a link. Devices,
 // fifos, sockets and folders are refused: renaming over them would replace
 // them (a capture to /dev/full would leave a PNG named /dev/full).
+// An output is never one of the run's inputs: a target that is, links
+// followed, the same file (device and inode) as a file the run reads is
+// refused, so `--capture scene.json` or an .mtl landing on a plant file
+// fails before any work instead of destroying what it was made from. The
+// inputs are the paths a caller passes (those named on its command line,
+// known before loading) and every file the thread's open ReadFileLogs
+// recorded (lsystem/common/file_reader.h: the files its loads read, known
+// only after loading), so a tool checks before loading, again after, and
+// OutputFile once more when it opens the target.
 #pragma once
 
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <string>
 
 namespace lsys {
 
 // Empty when `path` can be written as described above, otherwise the reason
-// it cannot ("'x' is a folder", "folder 'y' does not exist", ...). Tools
-// check it before any long work.
-std::string outputPathProblem(const std::filesystem::path& path);
+// it cannot ("'x' is a folder", "folder 'y' does not exist", "'x' is the
+// input 'y'", ...). Tools check it before any long work. `inputs` adds to the
+// files the thread's ReadFileLogs recorded.
+std::string outputPathProblem(const std::filesystem::path& path, std::span<const std::filesystem::path> inputs = {});
 
 class OutputFile {
 public:
-    // Throws std::runtime_error with outputPathProblem's reason, or when the
-    // temporary file cannot be created.
+    // Throws std::runtime_error with outputPathProblem's reason (the inputs
+    // being the thread's ReadFileLogs'), or when the temporary file cannot be
+    // created.
     explicit OutputFile(const std::filesystem::path& target);
     OutputFile(const OutputFile&) = delete;
     OutputFile& operator=(const OutputFile&) = delete;

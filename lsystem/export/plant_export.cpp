@@ -117,6 +117,13 @@ float scaleToHeight(std::vector<TriangleMesh>& meshes, float height) {
 
 } // namespace
 
+std::vector<std::filesystem::path> exportedFiles(const std::filesystem::path& path) {
+    if (export_detail::lowercaseExtension(path) != ".obj") return {path};
+    std::filesystem::path mtlPath = path;
+    mtlPath.replace_extension(".mtl");
+    return {path, mtlPath};
+}
+
 float exportPlant(const PlantAsset& asset, const std::filesystem::path& path, const ExportOptions& options) {
     using namespace export_detail;
     float scale = 1.0f;
@@ -132,8 +139,7 @@ float exportPlant(const PlantAsset& asset, const std::filesystem::path& path, co
         std::vector<TriangleMesh> flat = flatMeshes(asset, options);
         if (options.height > 0.0f) scale = scaleToHeight(flat, options.height);
         if (extension == ".obj") {
-            std::filesystem::path mtlPath = path;
-            mtlPath.replace_extension(".mtl");
+            const std::filesystem::path mtlPath = exportedFiles(path).back();
             OutputFile mtl(mtlPath), obj(path);
             writeObj(asset.materials, flat, obj.stream(), mtl.stream(), mtlPath.filename().string());
             mtl.commit();

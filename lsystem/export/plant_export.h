@@ -7,6 +7,7 @@
 // lsystem/export/graph_export.h. docs/EXPORT.md describes what each form contains.
 
 #include <filesystem>
+#include <vector>
 
 #include "lsystem/common/memory_budget.h"
 #include "lsystem/mesh/primitive_mesh.h"
@@ -43,6 +44,10 @@ struct ExportOptions {
 // With options.height, a plant whose meshes have no y extent is refused
 // likewise. Returns the scale applied (1 without options.height).
 float exportPlant(const PlantAsset& asset, const std::filesystem::path& path, const ExportOptions& options = {});
+
+// The files exportPlant writes for `path`: the file itself, and for .obj the
+// .mtl beside it, so a caller can check them all before the work.
+std::vector<std::filesystem::path> exportedFiles(const std::filesystem::path& path);
 
 // The box of every vertex meshesByMaterial bakes for the turtle's geometry,
 // each primitive or segment chain built and dropped in turn, where

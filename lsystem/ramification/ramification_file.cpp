@@ -13,8 +13,6 @@ namespace {
 constexpr size_t kMaxRamificationFileBytes = size_t(1) << 20;
 // A .ram.json file nests 3 levels (the object, "p", its rows).
 constexpr uint32_t kMaxRamificationDepth = 8;
-// A budget past this would let a tree outgrow memory long before it stopped it.
-constexpr uint64_t kMaxRamificationBranches = uint64_t(1) << 40;
 
 const JsonDocumentKind kRamificationDocument{"ramification tree", kMaxRamificationFileBytes, kMaxRamificationDepth};
 

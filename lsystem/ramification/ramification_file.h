@@ -4,6 +4,7 @@
 // lsystem/ramification/ramification_generate.h. The format is in docs/RAMIFICATION.md;
 // what `lsys ramify --json` prints is such a file.
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -13,6 +14,10 @@
 #include "lsystem/ramification/ramification_generate.h"
 
 namespace lsys {
+
+// The largest branch budget ('max_branches', lsys ramify --max-branches): a
+// budget past this would let a tree outgrow memory long before it stopped it.
+inline constexpr uint64_t kMaxRamificationBranches = uint64_t(1) << 40;
 
 // Rows a matrix may have: a tree of depth 64 would hold at least 2^63 branches.
 inline constexpr uint32_t kMaxRamificationOrders = 64;

@@ -1,8 +1,9 @@
 // lsys::OutputFile and outputPathProblem: files written whole, only over
 // regular files, links followed, never a device, fifo, folder or read-only
-// file replaced.
+// file replaced, and never a file the run reads.
 #include "gltf_reading.h"
 
+#include "lsystem/common/file_reader.h"
 #include "lsystem/common/output_file.h"
 
 #include <gtest/gtest.h>
@@ -105,6 +106,33 @@ TEST_F(OutputFileTest, RefusesALinkToNothingAndAMissingFolder) {
     EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir / "dangling.png")));
     EXPECT_NE(failureOf(dir / "missing" / "x.png").find("does not exist"), std::string::npos);
     EXPECT_NE(lsys::outputPathProblem("").find("empty"), std::string::npos);
+}
+
+TEST_F(OutputFileTest, RefusesAnInputByAnyName) {
+    write(dir / "scene.json", "{}");
+    fs::create_directory(dir / "sub");
+    fs::create_symlink(dir / "scene.json", dir / "link.json");
+    fs::create_hard_link(dir / "scene.json", dir / "hard.json");
+    const std::vector<fs::path> inputs{dir / "sub" / ".." / "scene.json"};
+    for (const fs::path& output : {dir / "scene.json", dir / "link.json", dir / "hard.json"})
+        EXPECT_NE(lsys::outputPathProblem(output, inputs).find("is the input"), std::string::npos) << output;
+    EXPECT_EQ(lsys::outputPathProblem(dir / "other.json", inputs), "");
+}
+
+TEST_F(OutputFileTest, RefusesAFileTheThreadsReadLogRecorded) {
+    write(dir / "plant.lsys", "axiom: F");
+    fs::create_directory(dir / "sub");
+    EXPECT_EQ(lsys::outputPathProblem(dir / "plant.lsys"), ""); // no log open: nothing read yet
+    const lsys::ReadFileLog run;
+    {
+        const lsys::ReadFileLog load; // a load nested in the run, closed before the output opens
+        lsys::readFileUpTo(dir / "plant.lsys", 1 << 10);
+    }
+    for (const fs::path& output : {dir / "plant.lsys", dir / "sub" / ".." / "plant.lsys"})
+        EXPECT_NE(failureOf(output).find("never replaces a file the run reads"), std::string::npos) << output;
+    EXPECT_EQ(contentOf(dir / "plant.lsys"), "axiom: F");
+    write(dir / "image.png", "written"); // outputs that are not inputs are written
+    EXPECT_EQ(contentOf(dir / "image.png"), "written");
 }
 
 } // namespace

@@ -84,17 +84,6 @@ TEST(MemoryBudget, ByteArithmeticSaturates) {
     EXPECT_EQ(bytesPlus(2, 3), 5u);
 }
 
-TEST(MemoryBudget, DefaultIsThreeQuartersOfAvailableMemory) {
-    EXPECT_EQ(memoryBudgetFromMeminfo("MemTotal:       32768000 kB\nMemFree:         1000 kB\n"
-                                      "MemAvailable:   24000000 kB\nBuffers:          100 kB\n")
-                  ->limitBytes,
-              24000000ull * 1024 / 4 * 3);
-    EXPECT_EQ(memoryBudgetFromMeminfo("MemTotal:       32768000 kB\n"), std::nullopt);
-    EXPECT_EQ(memoryBudgetFromMeminfo(""), std::nullopt);
-    EXPECT_GT(machineMemoryBudget().limitBytes, 0u);
-    EXPECT_LT(machineMemoryBudget().limitBytes, UINT64_MAX);
-}
-
 TEST(MemoryBudget, DerivationCountsBytesNotOnlyModules) {
     const Grammar bush = loadOk("plants/fractal_bush.lsys"); // D0L: step 6 gives 711 532 modules
     DeriveOptions options = stepsOf(6);

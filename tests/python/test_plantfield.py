@@ -163,3 +163,98 @@ def test_ramified_tree_errors(tmp_path):
     assert error.value.diagnostics[0][3] == '/twst is an unknown key; did you mean "twist"?'
     with pytest.raises(plantfield.RamificationBudgetError):
         plantfield.ramified_tree(DATA / "ramified" / "oak.ram.json", max_branches=10)
+
+
+# Every function's arguments: a wrong type is a TypeError naming the argument
+# where the module checks it (pybind11's own lists the signature), a value out
+# of range a ValueError, never a crash (derive(None) was a null pointer).
+def export_to_nowhere(grammar, **arguments):
+    plantfield.export(grammar, "never_written.glb", **arguments)
+
+
+GRAMMAR_FUNCTIONS = [plantfield.derive, plantfield.instance_stats, plantfield.ramify, export_to_nowhere]
+
+
+@pytest.mark.parametrize("function", GRAMMAR_FUNCTIONS)
+@pytest.mark.parametrize("bad", [None, 3, "fractal_bush.lsys", plantfield])
+def test_grammar_must_be_a_grammar(function, bad):
+    with pytest.raises(TypeError, match="grammar must be a plantfield.Grammar"):
+        function(bad)
+    assert not Path("never_written.glb").exists()
+
+
+@pytest.mark.parametrize("function", GRAMMAR_FUNCTIONS)
+@pytest.mark.parametrize("arguments, error", [
+    ({"steps": -1}, ValueError), ({"steps": 10**7}, ValueError), ({"steps": 2**40}, TypeError),
+    ({"steps": "3"}, TypeError), ({"seed": -1}, TypeError), ({"seed": 1.5}, TypeError),
+    ({"max_modules": None}, TypeError), ({"max_modules": -1}, TypeError),
+])
+def test_derivation_arguments_are_checked(function, arguments, error):
+    grammar = plantfield.parse("Axiom: F\nF --> F F\n")
+    with pytest.raises(error, match="steps must be 0 to 1000000" if error is ValueError else None):
+        function(grammar, **arguments)
+
+
+@pytest.mark.parametrize("call, error, message", [
+    (lambda: plantfield.load(None), TypeError, "path"),
+    (lambda: plantfield.load(3), TypeError, "path"),
+    (lambda: plantfield.load(PLANTS / "koch_curve.lsys", defines=None), TypeError, "defines"),
+    (lambda: plantfield.load(PLANTS / "koch_curve.lsys", defines={"x": float("nan")}), ValueError, "finite"),
+    (lambda: plantfield.load(PLANTS / "koch_curve.lsys", dialect=3), TypeError, "dialect"),
+    (lambda: plantfield.parse(None), TypeError, "text"),
+    (lambda: plantfield.parse("Axiom: F\n", file=None), TypeError, "file"),
+    (lambda: plantfield.parse("Axiom: F\n", defines={"x": float("inf")}), ValueError, "finite"),
+    (lambda: plantfield.parse("Axiom: F\n", defines={3: 1.0}), TypeError, "defines"),
+    (lambda: plantfield.ramified_tree(None), TypeError, "path"),
+    (lambda: plantfield.ramified_tree(DATA / "ramified" / "oak.ram.json", max_branches=0), ValueError, "max_branches"),
+    (lambda: plantfield.ramified_tree(DATA / "ramified" / "oak.ram.json", max_branches=2**41), ValueError,
+     "max_branches"),
+    (lambda: plantfield.ramified_tree(DATA / "ramified" / "oak.ram.json", seed=-1), TypeError, "seed"),
+])
+def test_loading_arguments_are_checked(call, error, message):
+    with pytest.raises(error, match=message):
+        call()
+
+
+@pytest.mark.parametrize("arguments, error, message", [
+    ({"path": None}, TypeError, "path"), ({"path": 3}, TypeError, "path"),
+    ({"sides": 2}, ValueError, "sides"), ({"sides": -8}, TypeError, "sides"),
+    ({"instanced": None}, TypeError, "instanced"), ({"skeleton": "yes"}, TypeError, "skeleton"),
+    ({"geometry": None}, TypeError, "geometry"), ({"geometry": "cones"}, ValueError, "geometry"),
+])
+def test_export_arguments_are_checked(output_dir, arguments, error, message):
+    arguments = {"path": output_dir / "checked.glb", **arguments}
+    with pytest.raises(error, match=message):
+        plantfield.export(plantfield.parse("Axiom: F\n"), **arguments)
+
+
+# The output rule (docs/PYTHON.md): no writer replaces a folder or a file the
+# session has read, by any name.
+def test_export_never_replaces_an_input(tmp_path):
+    plant = tmp_path / "bush.lsys"
+    plant.write_bytes((PLANTS / "fractal_bush.lsys").read_bytes())
+    grammar = plantfield.load(plant)
+    mtl_plant = tmp_path / "twin.mtl"
+    mtl_plant.write_bytes(plant.read_bytes())
+    twin = plantfield.load(mtl_plant)
+    (tmp_path / "link.glb").symlink_to(plant)
+    (tmp_path / "folder.glb").mkdir()
+    for path, read in [(plant, grammar), (tmp_path / "link.glb", grammar), (tmp_path / "twin.obj", twin)]:
+        with pytest.raises(ValueError, match="never replaces a file the run reads"):
+            plantfield.export(read, path, steps=2)
+    with pytest.raises(ValueError, match="is a folder"):
+        plantfield.export(grammar, tmp_path / "folder.glb", steps=2)
+    assert plant.read_bytes() == (PLANTS / "fractal_bush.lsys").read_bytes()
+    assert mtl_plant.read_bytes() == plant.read_bytes()
+    assert not (tmp_path / "twin.obj").exists()
+    plantfield.export(grammar, tmp_path / "bush.obj", steps=2)  # its own .mtl is no input
+    assert (tmp_path / "bush.mtl").exists()
+
+
+def test_ramified_tree_file_is_an_input(tmp_path):
+    oak = tmp_path / "oak.ram.json"
+    oak.write_bytes((DATA / "ramified" / "oak.ram.json").read_bytes())
+    tree = plantfield.ramified_tree(oak, seed=2)
+    with pytest.raises(ValueError, match="never replaces a file the run reads"):
+        plantfield.export(tree, oak)
+    assert oak.read_bytes() == (DATA / "ramified" / "oak.ram.json").read_bytes()

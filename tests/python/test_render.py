@@ -140,6 +140,104 @@ def test_given_camera_replaces_the_path():
         from_above = renderer.render(0.0, camera=above)
     assert not numpy.array_equal(on_path, from_above)
     assert numpy.array_equal(plantfield.render(scene, size=(64, 36), camera=above), from_above)
-    for bad in [((0, 1, 2),), ((0, 1, 2), (0, 1, 2)), ((0, 1), (0, 0, 0)), ((0, 9, 9), (0, 0, 0), 180.0), "camera"]:
+    for bad in [((0, 1, 2),), ((0, 1, 2), (0, 1, 2)), ((0, 1), (0, 0, 0)), ((0, 9, 9), (0, 0, 0), 180.0)]:
         with pytest.raises(ValueError, match="camera must be"):
             plantfield.render(scene, size=(64, 36), camera=bad)
+
+
+# write_png and read_png: the image must be uint8 (a float array was
+# converted silently), the paths must be paths, and no writer replaces a
+# folder or a file the session read (docs/PYTHON.md, the output rule).
+@pytest.mark.parametrize("image, message", [
+    (numpy.zeros((3, 5, 4), dtype=numpy.float32), "image must be a uint8 array"),
+    (numpy.zeros((3, 5, 4), dtype=numpy.int64), "image must be a uint8 array"),
+    ([[[0, 0, 0, 0]]], "image must be a numpy.ndarray"),
+    (None, "image must be a numpy.ndarray"),
+])
+def test_write_png_takes_only_uint8_arrays(tmp_path, image, message):
+    with pytest.raises(TypeError, match=message):
+        plantfield.write_png(tmp_path / "typed.png", image)
+    assert not (tmp_path / "typed.png").exists()
+
+
+def test_png_paths_are_checked(tmp_path):
+    image = numpy.zeros((2, 2, 4), dtype=numpy.uint8)
+    with pytest.raises(TypeError, match="path"):
+        plantfield.write_png(None, image)
+    with pytest.raises(TypeError, match="path"):
+        plantfield.read_png(None)
+    (tmp_path / "folder.png").mkdir()
+    with pytest.raises(ValueError, match="is a folder"):
+        plantfield.write_png(tmp_path / "folder.png", image)
+    with pytest.raises(ValueError, match="cannot read image"):
+        plantfield.read_png(tmp_path / "folder.png")
+    (tmp_path / "text.png").write_text("not a png")
+    with pytest.raises(ValueError, match="cannot read image"):
+        plantfield.read_png(tmp_path / "text.png")
+    with pytest.raises(ValueError, match="RGBA"):
+        plantfield.write_png(tmp_path / "strided.png", numpy.zeros((2, 2, 3), dtype=numpy.uint8))
+    strided = numpy.arange(4 * 6 * 4, dtype=numpy.uint8).reshape(4, 6, 4)[:, ::2]
+    plantfield.write_png(tmp_path / "strided.png", strided)
+    assert numpy.array_equal(plantfield.read_png(tmp_path / "strided.png"), strided)
+
+
+def test_writers_never_replace_what_the_session_read(tmp_path):
+    # Copies only: were the rule broken, the repository's files would be replaced.
+    scene = tmp_path / "scenes" / "scene.json"
+    scene.parent.mkdir()
+    scene.write_bytes((DATA / "scenes" / "test_small.json").read_bytes())
+    (tmp_path / "plants").mkdir()
+    for plant in ["stochastic_bush.lsys", "abop_1_24c.lsys"]:
+        (tmp_path / "plants" / plant).write_bytes((DATA / "plants" / plant).read_bytes())
+    image = plantfield.render(scene, size=(32, 18))
+    (tmp_path / "link.png").symlink_to(scene)
+    for path in [scene, tmp_path / "link.png", tmp_path / "plants" / "stochastic_bush.lsys"]:
+        with pytest.raises(ValueError, match="never replaces a file the run reads"):
+            plantfield.write_png(path, image)
+    assert scene.read_bytes() == (DATA / "scenes" / "test_small.json").read_bytes()
+    assert (tmp_path / "plants" / "stochastic_bush.lsys").read_bytes() == \
+        (DATA / "plants" / "stochastic_bush.lsys").read_bytes()
+    plantfield.write_png(tmp_path / "frame.png", image)
+    plantfield.read_png(tmp_path / "frame.png")
+    with pytest.raises(ValueError, match="never replaces a file the run reads"):
+        plantfield.write_png(tmp_path / "frame.png", image)
+
+
+@pytest.mark.parametrize("arguments, error, message", [
+    ({"scene": 3}, TypeError, "scene"), ({"size": None}, TypeError, "size"), ({"size": (64,)}, TypeError, "size"),
+    ({"size": (64.5, 36)}, TypeError, "size"), ({"time": None}, TypeError, "time"), ({"time": "0"}, TypeError, "time"),
+    ({"time": float("inf")}, ValueError, "time must be"), ({"seed": -1}, TypeError, "seed"),
+    ({"wind": "gale"}, TypeError, "wind"), ({"wind": (5.0, float("nan"))}, ValueError, "wind direction"),
+    ({"wind": float("nan")}, ValueError, "wind speed"), ({"antialiasing": None}, TypeError, "antialiasing"),
+    ({"samples": -4}, TypeError, "samples"), ({"shadows": None}, TypeError, "shadows"),
+    ({"shadows": "no"}, TypeError, "shadows"), ({"lod": -1}, TypeError, "lod"),
+    ({"validation": None}, TypeError, "validation"), ({"device": 3}, TypeError, "device"),
+    ({"camera": 3}, TypeError, "camera must be"), ({"camera": "camera"}, TypeError, "camera must be"),
+    ({"camera": ((0, 1, 2), (0, 0, 0), "wide")}, ValueError, "camera must be"),
+])
+def test_render_arguments_are_checked(arguments, error, message):
+    with pytest.raises(error, match=message):
+        plantfield.render(**{"scene": DATA / "scenes" / "test_small.json", "size": SIZE, **arguments})
+
+
+@pytest.mark.parametrize("arguments, error, message", [
+    ({"start": None}, TypeError, "start"), ({"start": -1.0}, ValueError, "start must be"),
+    ({"fps": 0.0}, ValueError, "fps must be"), ({"fps": float("nan")}, ValueError, "fps must be"),
+    ({"fps": "30"}, TypeError, "fps"),
+])
+def test_renderer_arguments_are_checked(arguments, error, message):
+    with pytest.raises(error, match=message):
+        plantfield.Renderer(DATA / "scenes" / "test_small.json", size=SIZE, **arguments)
+
+
+def test_renderer_methods_check_their_arguments():
+    with plantfield.Renderer(DATA / "scenes" / "test_small.json", size=(32, 18)) as renderer:
+        for call, error in [(lambda: renderer.render(None), TypeError), (lambda: renderer.render(-1.0), ValueError),
+                            (lambda: renderer.render(0.0, camera=5), TypeError),
+                            (lambda: renderer.frame(None), TypeError), (lambda: renderer.frame(-1), TypeError)]:
+            with pytest.raises(error):
+                call()
+    with pytest.raises(RuntimeError, match="closed"):
+        renderer.render(0.0)
+    with pytest.raises(RuntimeError, match="closed"):
+        renderer.stats()

@@ -68,9 +68,11 @@ TEST(PlantfieldCli, CaptureWritesPngOfRequestedSize) {
 
 TEST(PlantfieldCli, SameInputsGiveBitIdenticalPng) {
     const fs::path dir = scratchDir("determinism");
-    for (const char* name : {"a.png", "b.png"})
-        ASSERT_EQ(runCommand(kPlantfield + " --capture " + (dir / name).string() + " --size 320x200 --time 2").exitCode,
-                  0);
+    for (const char* name : {"a.png", "b.png"}) {
+        const CommandResult r =
+            runCommand(kPlantfield + " --capture " + (dir / name).string() + " --size 320x200 --time 2");
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
     const auto read = [](const fs::path& p) {
         std::ifstream in(p, std::ios::binary);
         return std::string(std::istreambuf_iterator<char>(in), {});

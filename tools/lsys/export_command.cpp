@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -10,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "lsystem/common/memory_budget.h"
 #include "lsystem/components/component_graph.h"
@@ -23,6 +25,7 @@
 #include "lsystem/rewriting/rewriter.h"
 #include "lsystem/turtle/surfaces.h"
 #include "tools/lsys/graph_options.h"
+#include "tools/lsys/output_check.h"
 #include "tools/lsys/plant_loading.h"
 
 namespace tools {
@@ -150,10 +153,13 @@ int runExport(const ExportArguments& arguments) {
                   << " is built, not derived (--seed replaces its file's seed)\n";
         return 1;
     }
+    const std::vector<std::filesystem::path> outputs = lsys::exportedFiles(arguments.output);
+    if (outputRefused(outputs, arguments.file)) return kBadInput;
     std::optional<lsys::Grammar> grammar;
     if (!components && !ramified) {
         grammar = loadGrammar(arguments);
-        if (!grammar) return kBadInput;
+        // Again now that its includes and a vlab object's files are read.
+        if (!grammar || outputRefused(outputs, arguments.file)) return kBadInput;
         if (arguments.instanced) return exportGraph(arguments, *grammar);
     }
     auto start = std::chrono::steady_clock::now();
@@ -161,6 +167,7 @@ int runExport(const ExportArguments& arguments) {
     try {
         if (components) {
             lsys::components::ComponentGraph graph = lsys::components::readComponentGraph(arguments.file);
+            if (outputRefused(outputs, arguments.file)) return kBadInput; // its component files read
             if (arguments.seed) graph.seed = *arguments.seed;
             plant = lsys::components::buildComponentPlant(graph, arguments.memory);
         } else if (ramified) {

@@ -12,7 +12,9 @@
 #include <CLI/CLI.hpp>
 #include <plantfield_version.h>
 
+#include "lsystem/common/file_reader.h"
 #include "lsystem/turtle/turtle_commands.h"
+#include "tools/crash_report.h"
 #include "tools/lsys/check_command.h"
 #include "tools/lsys/derive_command.h"
 #include "tools/lsys/export_command.h"
@@ -22,6 +24,7 @@
 #include "tools/lsys/render_command.h"
 
 int main(int argc, char** argv) {
+    tools::reportCrashes("lsys");
     CLI::App app{
         "lsys: derive, check, instance, export and render L-systems written in the .lsys notation or a dialect "
         "(docs/DIALECTS.md)"};
@@ -45,6 +48,8 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& error) {
         return app.exit(error) == 0 ? 0 : tools::kBadInput;
     }
+    // Every file the command reads, which no output may replace (tools/lsys/output_check.h).
+    const lsys::ReadFileLog runInputs;
     try {
         // The app requires one command: exactly one was parsed.
         return std::ranges::find_if(commands, [](const tools::Command& command) { return command.command->parsed(); })

@@ -1,10 +1,12 @@
 #include "tools/lsys/ramify_command.h"
 
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -20,6 +22,7 @@
 #include "lsystem/turtle/surfaces.h"
 #include "lsystem/turtle/turtle.h"
 #include "lsystem/vlab/object.h"
+#include "tools/lsys/output_check.h"
 #include "tools/lsys/plant_loading.h"
 #include "tools/memory_budget_option.h"
 
@@ -103,10 +106,8 @@ int compilePlant(const RamifyArguments& arguments) {
 int generate(const RamifyArguments& arguments, lsys::RamificationTree tree) {
     if (arguments.seed) tree.seed = *arguments.seed;
     if (arguments.maxBranches) tree.maxBranches = *arguments.maxBranches;
-    if (const std::string problem = lsys::outputPathProblem(arguments.output); !problem.empty()) {
-        std::cerr << "lsys: error: " << problem << '\n';
-        return kBadInput;
-    }
+    const std::vector<std::filesystem::path> outputs = lsys::exportedFiles(arguments.output);
+    if (outputRefused(outputs, arguments.file)) return kBadInput;
     const auto start = std::chrono::steady_clock::now();
     try {
         const lsys::GeneratedTree generated = lsys::generateTree(tree);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -17,7 +18,6 @@
 #include "engine/image/image.h"
 #include "engine/scene/camera.h"
 #include "lsystem/common/error.h"
-#include "lsystem/common/output_file.h"
 #include "lsystem/components/component_graph.h"
 #include "lsystem/instancing/bgrammar.h"
 #include "lsystem/instancing/instance_graph.h"
@@ -29,6 +29,7 @@
 #include "lsystem/raytrace/render.h"
 #include "lsystem/turtle/surfaces.h"
 #include "lsystem/turtle/turtle.h"
+#include "tools/lsys/output_check.h"
 #include "tools/lsys/plant_loading.h"
 
 namespace tools {
@@ -273,12 +274,11 @@ int runRender(const RenderArguments& arguments) {
                      "tree has none (lsys export writes it as a mesh)\n";
         return kBadInput;
     }
-    if (const std::string problem = lsys::outputPathProblem(arguments.output); !problem.empty()) {
-        std::cerr << "lsys: error: " << problem << '\n';
-        return kBadInput;
-    }
+    const std::filesystem::path output[] = {arguments.output};
+    if (outputRefused(output, arguments.file)) return kBadInput;
     const std::optional<lsys::Grammar> grammar = loadGrammar(arguments);
-    if (!grammar) return kBadInput;
+    // Again now that its includes and a vlab object's files are read.
+    if (!grammar || outputRefused(output, arguments.file)) return kBadInput;
     const lsys::SurfaceLibrary surfaces(lsys::meshDirectoriesFor(arguments.file));
     try {
         lsys::need(arguments.memory, "image", lsys::bytesTimes(uint64_t(arguments.width) * arguments.height, 4));

@@ -6,7 +6,9 @@
 #include "sweep.h"
 
 #include "engine/scene/scene.h"
+#include "lsystem/common/file_reader.h"
 
+#include "tools/crash_report.h"
 #include <exception>
 #include <iostream>
 #include <new>
@@ -64,6 +66,9 @@ int run(const PlantbenchOptions& o) {
 } // namespace pf
 
 int main(int argc, char** argv) {
+    tools::reportCrashes("plantbench");
+    // Every file the run reads, which no output may replace (outputsProblem).
+    const lsys::ReadFileLog runInputs;
     try {
         int exitCode = 0;
         const std::optional<pf::PlantbenchOptions> options = pf::parsePlantbenchOptions(argc, argv, &exitCode);

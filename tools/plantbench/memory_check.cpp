@@ -44,7 +44,7 @@ std::string hostMemoryProblem(uint64_t count, uint64_t bytes, const lsys::Memory
     if (bytes <= budget.limitBytes) return {};
     return std::to_string(count) + " plants need about " + lsys::formatBytes(bytes) +
            " of host memory to build the field, but the memory budget is " + lsys::formatBytes(budget.limitBytes) +
-           " (--memory-budget; by default 3/4 of MemAvailable): measure fewer plants";
+           " (--memory-budget; by default 3/4 of the memory this process may use): measure fewer plants";
 }
 
 } // namespace pf

@@ -149,14 +149,20 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
     }
     if (!std::filesystem::is_regular_file(o.scenePath))
         return fail("scene file '" + o.scenePath + "' does not exist or is not a file");
-    for (auto [flag, path] : {std::pair{"--json", &o.jsonPath}, {"--csv", &o.csvPath}, {"--plot", &o.plotPath}}) {
-        if (path->empty()) continue;
-        const std::string pathProblem = lsys::outputPathProblem(*path);
-        if (!pathProblem.empty()) return fail(std::string("cannot write ") + flag + " file: " + pathProblem);
-    }
+    if (const std::string outputProblem = outputsProblem(o); !outputProblem.empty()) return fail(outputProblem);
     if (!o.plotPath.empty() && !onPath("gnuplot"))
         return fail("--plot needs gnuplot, which is not on PATH: install Debian's gnuplot-nox (tools/deps.sh)");
     return o;
+}
+
+std::string outputsProblem(const PlantbenchOptions& o) {
+    const std::filesystem::path scene = o.scenePath;
+    for (auto [flag, path] : {std::pair{"--json", &o.jsonPath}, {"--csv", &o.csvPath}, {"--plot", &o.plotPath}}) {
+        if (path->empty()) continue;
+        if (const std::string problem = lsys::outputPathProblem(*path, {&scene, 1}); !problem.empty())
+            return std::string("cannot write ") + flag + " file: " + problem;
+    }
+    return {};
 }
 
 } // namespace pf

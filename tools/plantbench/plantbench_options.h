@@ -42,4 +42,11 @@ struct PlantbenchOptions : FieldToolOptions {
 // program should exit with *exitCode.
 std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, int* exitCode);
 
+// "cannot write --json file: REASON" for the first of --json, --csv and
+// --plot that cannot be written or is a file the run reads (the scene, and
+// every file the thread's ReadFileLogs recorded: the output rule of
+// lsystem/common/output_file.h); empty when none. Checked while parsing and
+// again once the field is built, before it is measured.
+std::string outputsProblem(const PlantbenchOptions& o);
+
 } // namespace pf

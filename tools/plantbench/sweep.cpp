@@ -195,6 +195,8 @@ CountResult measureCount(const PlantbenchOptions& o, GpuContext& ctx, const Scen
                              ")");
         },
         o.memory);
+    // The scene's plants and includes are known now: no output may replace them.
+    if (const std::string problem = outputsProblem(o); !problem.empty()) throw SceneError(problem);
     r.buildSeconds = std::chrono::duration<double>(Clock::now() - buildStart).count();
     r.terrainSize = content.scene.terrain.size;
     r.placementNote = content.note;

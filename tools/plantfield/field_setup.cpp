@@ -1,4 +1,5 @@
 #include "field_setup.h"
+#include "output_check.h"
 
 #include <chrono>
 #include <cstdio>
@@ -39,6 +40,7 @@ FieldContent loadFieldContent(const PlantfieldOptions& o, std::optional<PreviewO
             if (done == all) std::fprintf(stderr, "\r\x1b[K");
         },
         o.memory, assets);
+    checkOutputsAfterLoad(o); // the scene's plants, includes and textures are known now
     if (!o.plantPath.empty()) {
         const PreviewOrbit framed = framePreview(content, o);
         if (orbit) *orbit = framed;

@@ -2,6 +2,7 @@
 // the offline renderer (engine/offline/offline_renderer.h).
 #include "field_setup.h"
 #include "modes.h"
+#include "output_check.h"
 
 #include "engine/image/image.h"
 #include "engine/image/video_encoder.h"
@@ -15,15 +16,6 @@
 #include <unistd.h>
 
 namespace pf {
-namespace {
-
-std::string framePath(const std::string& dir, uint32_t index) {
-    char name[32];
-    std::snprintf(name, sizeof(name), "frame_%04u.png", index);
-    return (std::filesystem::path(dir) / name).string();
-}
-
-} // namespace
 
 int runHeadless(const PlantfieldOptions& o) {
     // Started before the field is built, so a machine without ffmpeg says so at once.
@@ -39,8 +31,7 @@ int runHeadless(const PlantfieldOptions& o) {
     // are drawn as the whole run draws them, only not read back or written:
     // frame A carries their state (offline_renderer.h), so it is the whole
     // run's bit for bit.
-    const uint32_t first = o.frameRange ? o.frameRange->first : 0;
-    const uint32_t end = o.frameRange ? o.frameRange->last + 1 : frames;
+    const auto [first, end] = writtenFrames(o);
     const bool terminal = isatty(fileno(stderr));
     for (uint32_t i = 0; i < end; ++i) {
         if (i < first) {

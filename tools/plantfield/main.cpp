@@ -10,7 +10,9 @@
 #include <iostream>
 #include <new>
 
+#include "lsystem/common/file_reader.h"
 #include "lsystem/common/memory_budget.h"
+#include "tools/crash_report.h"
 
 namespace pf {
 namespace {
@@ -54,6 +56,9 @@ int runExport(const PlantfieldOptions& o) {
 } // namespace pf
 
 int main(int argc, char** argv) {
+    tools::reportCrashes("plantfield");
+    // Every file the run reads, which no output may replace (output_check.h).
+    const lsys::ReadFileLog runInputs;
     try {
         int exitCode = 0;
         const std::optional<pf::PlantfieldOptions> options = pf::parsePlantfieldOptions(argc, argv, &exitCode);

@@ -1,7 +1,7 @@
 #include "options.h"
+#include "output_check.h"
 
 #include "engine/image/video_encoder.h"
-#include "lsystem/common/output_file.h"
 #include "shaders/shared/field_layouts.h"
 
 #include <CLI/CLI.hpp>
@@ -233,16 +233,8 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
                         "' does not exist: --plant takes an L-system file or a vlab object folder");
     } else if (!std::filesystem::is_regular_file(o.scenePath))
         return fail("scene file '" + o.scenePath + "' does not exist or is not a file");
-    if (!o.capturePath.empty()) {
-        const std::string problem = lsys::outputPathProblem(o.capturePath);
-        if (!problem.empty()) return fail("cannot write --capture file: " + problem);
-    }
-    if (!o.videoPath.empty()) {
-        if (!videoMuxerFor(o.videoPath))
-            return fail("--video '" + o.videoPath + "': unknown extension (expected .mp4, .mkv or .mov)");
-        const std::string problem = lsys::outputPathProblem(o.videoPath);
-        if (!problem.empty()) return fail("cannot write --video file: " + problem);
-    }
+    if (!o.videoPath.empty() && !videoMuxerFor(o.videoPath))
+        return fail("--video '" + o.videoPath + "': unknown extension (expected .mp4, .mkv or .mov)");
     const auto extensionIn = [](const std::string& path, std::initializer_list<const char*> allowed) {
         std::string extension = std::filesystem::path(path).extension().string();
         for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -250,18 +242,11 @@ std::optional<PlantfieldOptions> parsePlantfieldOptions(int argc, char** argv, i
             if (extension == a) return true;
         return false;
     };
-    if (!o.exportPath.empty()) {
-        if (!extensionIn(o.exportPath, {".glb", ".gltf"}))
-            return fail("invalid --export file '" + o.exportPath + "': expected a .glb or .gltf file");
-        const std::string problem = lsys::outputPathProblem(o.exportPath);
-        if (!problem.empty()) return fail("cannot write --export file: " + problem);
-    }
-    if (!o.placementsPath.empty()) {
-        if (!extensionIn(o.placementsPath, {".csv", ".json"}))
-            return fail("invalid --export-placements file '" + o.placementsPath + "': expected a .csv or .json file");
-        const std::string problem = lsys::outputPathProblem(o.placementsPath);
-        if (!problem.empty()) return fail("cannot write --export-placements file: " + problem);
-    }
+    if (!o.exportPath.empty() && !extensionIn(o.exportPath, {".glb", ".gltf"}))
+        return fail("invalid --export file '" + o.exportPath + "': expected a .glb or .gltf file");
+    if (!o.placementsPath.empty() && !extensionIn(o.placementsPath, {".csv", ".json"}))
+        return fail("invalid --export-placements file '" + o.placementsPath + "': expected a .csv or .json file");
+    if (const std::string problem = outputsProblem(o); !problem.empty()) return fail(problem);
     return o;
 }
 

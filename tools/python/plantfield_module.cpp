@@ -17,6 +17,7 @@
 
 #include <plantfield_version.h>
 
+#include "arguments.h"
 #include "render_bindings.h"
 
 #include "lsystem/common/error.h"
@@ -97,6 +98,7 @@ std::optional<lsys::Dialect> dialectArgument(const std::optional<std::string>& n
 std::shared_ptr<PyGrammar> load(const std::filesystem::path& path,
                                 const std::unordered_map<std::string, double>& defines,
                                 const std::optional<std::string>& dialect) {
+    pyargs::checkDefines(defines);
     lsys::ParseOptions options;
     options.file = path.string();
     options.defines = defines;
@@ -104,6 +106,7 @@ std::shared_ptr<PyGrammar> load(const std::filesystem::path& path,
     lsys::vlab::PlantFile plant;
     {
         py::gil_scoped_release release;
+        const pyargs::SessionReads read;
         plant = lsys::vlab::loadPlant(path, given, options);
     }
     return finish(plant.parsed, path.string(), std::move(plant.source), true);
@@ -112,6 +115,7 @@ std::shared_ptr<PyGrammar> load(const std::filesystem::path& path,
 std::shared_ptr<PyGrammar> parse(const std::string& text, const std::string& file,
                                  const std::unordered_map<std::string, double>& defines,
                                  const std::optional<std::string>& dialect) {
+    pyargs::checkDefines(defines);
     lsys::ParseOptions options;
     options.file = file;
     options.defines = defines;
@@ -124,7 +128,13 @@ lsys::SurfaceLibrary surfacesFor(const PyGrammar& grammar) {
     return grammar.fromFile ? lsys::SurfaceLibrary(lsys::meshDirectoriesFor(grammar.file)) : lsys::SurfaceLibrary();
 }
 
+// Every plant argument: a None or a number instead is a TypeError, not a null pointer.
+std::shared_ptr<PyGrammar> grammarArgument(const py::object& grammar) {
+    return pyargs::objectArgument<PyGrammar>(grammar, "grammar", "a plantfield.Grammar (load, parse or ramified_tree)");
+}
+
 lsys::DeriveOptions deriveOptions(std::optional<int> steps, std::optional<uint64_t> seed, size_t maxModules) {
+    pyargs::checkSteps(steps);
     lsys::DeriveOptions options;
     options.steps = steps;
     options.seed = seed;
@@ -133,6 +143,7 @@ lsys::DeriveOptions deriveOptions(std::optional<int> steps, std::optional<uint64
 }
 
 lsys::BGrammarOptions bgrammarOptions(std::optional<int> steps, std::optional<uint64_t> seed, size_t maxModules) {
+    pyargs::checkSteps(steps);
     lsys::BGrammarOptions options;
     options.steps = steps;
     options.seed = seed;
@@ -141,12 +152,14 @@ lsys::BGrammarOptions bgrammarOptions(std::optional<int> steps, std::optional<ui
     return options;
 }
 
-PyDerived derive(std::shared_ptr<PyGrammar> grammar, std::optional<int> steps, std::optional<uint64_t> seed,
+PyDerived derive(const py::object& grammarObject, std::optional<int> steps, std::optional<uint64_t> seed,
                  size_t maxModules) {
+    std::shared_ptr<PyGrammar> grammar = grammarArgument(grammarObject);
+    const lsys::DeriveOptions options = deriveOptions(steps, seed, maxModules);
     PyDerived out;
     {
         py::gil_scoped_release release;
-        out.string = lsys::derive(grammar->grammar, deriveOptions(steps, seed, maxModules));
+        out.string = lsys::derive(grammar->grammar, options);
     }
     out.grammar = std::move(grammar);
     return out;
@@ -159,12 +172,15 @@ py::dict counts(const PyDerived& derived) {
     return out;
 }
 
-py::dict instanceStats(const PyGrammar& grammar, std::optional<int> steps, std::optional<uint64_t> seed,
+py::dict instanceStats(const py::object& grammarObject, std::optional<int> steps, std::optional<uint64_t> seed,
                        size_t maxModules) {
+    const PyGrammar& grammar = *grammarArgument(grammarObject);
+    const lsys::BGrammarOptions options = bgrammarOptions(steps, seed, maxModules);
     lsys::InstanceGraphStats stats;
     {
         py::gil_scoped_release release;
-        const lsys::BGrammar bgrammar = lsys::buildBGrammar(grammar.grammar, bgrammarOptions(steps, seed, maxModules));
+        const pyargs::SessionReads read; // its meshes
+        const lsys::BGrammar bgrammar = lsys::buildBGrammar(grammar.grammar, options);
         stats = lsys::instanceGraphStats(lsys::buildInstanceGraph(bgrammar, grammar.grammar, {}, surfacesFor(grammar)));
     }
     py::dict out;
@@ -173,9 +189,12 @@ py::dict instanceStats(const PyGrammar& grammar, std::optional<int> steps, std::
     return out;
 }
 
-void exportPlant(const PyGrammar& grammar, const std::filesystem::path& path, std::optional<int> steps,
+void exportPlant(const py::object& grammarObject, const std::filesystem::path& path, std::optional<int> steps,
                  std::optional<uint64_t> seed, bool instanced, uint32_t sides, bool skeleton, size_t maxModules,
                  const std::string& geometry) {
+    const PyGrammar& grammar = *grammarArgument(grammarObject);
+    pyargs::checkSteps(steps);
+    for (const std::filesystem::path& file : lsys::exportedFiles(path)) pyargs::checkOutput(file, "path");
     if (sides < 3 || sides > 1024) throw py::value_error("sides must be between 3 and 1024");
     if (geometry != "drawn" && geometry != "frusta" && geometry != "tubes")
         throw py::value_error("geometry must be 'drawn', 'frusta' or 'tubes', not '" + geometry + "'");
@@ -184,6 +203,7 @@ void exportPlant(const PyGrammar& grammar, const std::filesystem::path& path, st
     const lsys::SegmentGeometry segments =
         geometry == "tubes" ? lsys::SegmentGeometry::GeneralizedCylinders : lsys::SegmentGeometry::Frusta;
     py::gil_scoped_release release;
+    const pyargs::SessionReads read; // its meshes, which the files opened are checked against too
     const lsys::SurfaceLibrary surfaces = surfacesFor(grammar);
     if (instanced) {
         const lsys::InstanceGraph graph =
@@ -207,11 +227,15 @@ void exportPlant(const PyGrammar& grammar, const std::filesystem::path& path, st
 }
 
 // As `lsys ramify --json` prints it for a plant: {"orders": K, "a": [...], "p": [[...], ...]}.
-py::dict ramify(const PyGrammar& grammar, std::optional<int> steps, std::optional<uint64_t> seed, size_t maxModules) {
+py::dict ramify(const py::object& grammarObject, std::optional<int> steps, std::optional<uint64_t> seed,
+                size_t maxModules) {
+    const PyGrammar& grammar = *grammarArgument(grammarObject);
+    const lsys::DeriveOptions options = deriveOptions(steps, seed, maxModules);
     lsys::CompiledRamification compiled;
     {
         py::gil_scoped_release release;
-        const lsys::ModuleString string = lsys::derive(grammar.grammar, deriveOptions(steps, seed, maxModules));
+        const pyargs::SessionReads read; // its meshes
+        const lsys::ModuleString string = lsys::derive(grammar.grammar, options);
         compiled = lsys::compileRamification(lsys::plantFromGrammar(grammar.grammar, string, surfacesFor(grammar)));
     }
     const lsys::RamificationMatrix matrix = lsys::ramificationMatrix(compiled.counts);
@@ -226,7 +250,12 @@ py::dict ramify(const PyGrammar& grammar, std::optional<int> steps, std::optiona
 // tree.lsys` writes: a Grammar like any loaded one.
 std::shared_ptr<PyGrammar> ramifiedTree(const std::filesystem::path& path, std::optional<uint64_t> seed,
                                         std::optional<uint64_t> maxBranches) {
-    lsys::RamificationFile file = lsys::readRamificationFile(path);
+    if (maxBranches && (*maxBranches < 1 || *maxBranches > lsys::kMaxRamificationBranches))
+        throw py::value_error("max_branches must be 1 to " + std::to_string(lsys::kMaxRamificationBranches));
+    lsys::RamificationFile file = [&path] {
+        const pyargs::SessionReads read;
+        return lsys::readRamificationFile(path);
+    }();
     if (!file.tree) {
         lsys::ParseResult failed;
         failed.diagnostics = std::move(file.diagnostics);
@@ -308,8 +337,8 @@ PYBIND11_MODULE(plantfield, m) {
           py::arg("seed") = py::none(), py::arg("max_modules") = kMaxModules,
           "The instance graph's statistics, as `lsys instance --json` prints them");
     m.def("export", &exportPlant, py::arg("grammar"), py::arg("path"), py::arg("steps") = py::none(),
-          py::arg("seed") = py::none(), py::arg("instanced") = false, py::arg("sides") = 8, py::arg("skeleton") = true,
-          py::arg("max_modules") = kMaxModules, py::arg("geometry") = "drawn",
+          py::arg("seed") = py::none(), py::arg("instanced").noconvert() = false, py::arg("sides") = 8,
+          py::arg("skeleton").noconvert() = true, py::arg("max_modules") = kMaxModules, py::arg("geometry") = "drawn",
           "Writes the plant as .glb, .gltf or .obj, as `lsys export` does (geometry: 'drawn', the plant as "
           "plantfield draws it, or the turtle's 'frusta' or 'tubes'; flat and instanced)");
     m.def("ramify", &ramify, py::arg("grammar"), py::arg("steps") = py::none(), py::arg("seed") = py::none(),

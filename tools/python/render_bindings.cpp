@@ -1,5 +1,7 @@
 #include "render_bindings.h"
 
+#include "arguments.h"
+
 #include "tools/data_dir.h"
 #include "tools/field_options.h"
 
@@ -7,6 +9,7 @@
 #include "engine/offline/frame_stats_json.h"
 #include "engine/offline/offline_renderer.h"
 #include "engine/offline/scene_overrides.h"
+#include "lsystem/common/error.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -74,21 +77,34 @@ py::array_t<uint8_t> imageArray(const pf::RgbaImage& image) {
 
 py::array_t<uint8_t> readPng(const std::filesystem::path& path) {
     pf::RgbaImage image;
-    {
+    try {
         py::gil_scoped_release release;
+        const pyargs::SessionReads read;
         image = pf::readPng(path.string());
+    } catch (const lsys::DerivationError&) { // past the memory budget: MemoryBudgetError
+        throw;
+    } catch (const std::runtime_error& error) { // not a PNG, or no file: a bad path
+        throw py::value_error(error.what());
     }
     return imageArray(image);
 }
 
-void writePng(const std::filesystem::path& path,
-              const py::array_t<uint8_t, py::array::c_style | py::array::forcecast>& array) {
+// Only uint8 pixels: a float image converted silently would be clipped or
+// wrapped into other colours.
+void writePng(const std::filesystem::path& path, const py::object& image) {
+    if (!py::isinstance<py::array>(image))
+        throw py::type_error("image must be a numpy.ndarray of uint8, not " + pyargs::typeName(image));
+    const py::array array = image.cast<py::array>();
+    if (!array.dtype().is(py::dtype::of<uint8_t>()))
+        throw py::type_error("image must be a uint8 array, not " + std::string(py::str(array.dtype())));
     if (array.ndim() != 3 || array.shape(2) != 4 || array.shape(0) < 1 || array.shape(1) < 1)
         throw py::value_error("write_png takes a (height, width, 4) uint8 RGBA array");
-    pf::RgbaImage image{uint32_t(array.shape(1)), uint32_t(array.shape(0)),
-                        std::vector<uint8_t>(array.data(), array.data() + array.size())};
+    pyargs::checkOutput(path, "path");
+    const auto pixels = py::array_t<uint8_t, py::array::c_style>::ensure(array); // a contiguous copy if strided
+    pf::RgbaImage rgba{uint32_t(array.shape(1)), uint32_t(array.shape(0)),
+                       std::vector<uint8_t>(pixels.data(), pixels.data() + pixels.size())};
     py::gil_scoped_release release;
-    pf::writePng(path.string(), image);
+    pf::writePng(path.string(), rgba);
 }
 
 // camera=(position, target) or (position, target, fov_degrees), in metres
@@ -99,18 +115,24 @@ std::optional<pf::Camera> cameraArgument(const py::object& camera) {
                            "and target (x, y, z) apart and fov_degrees between 0 and 180";
     std::vector<py::object> parts;
     std::array<float, 3> position{}, target{};
+    std::optional<float> fov;
     try {
         parts = camera.cast<std::vector<py::object>>();
+    } catch (const py::cast_error&) { // not a sequence: a wrong type
+        throw py::type_error(std::string(expected) + ", not " + pyargs::typeName(camera));
+    }
+    try {
         if (parts.size() != 2 && parts.size() != 3) throw py::value_error(expected);
         position = parts[0].cast<std::array<float, 3>>();
         target = parts[1].cast<std::array<float, 3>>();
+        if (parts.size() == 3) fov = parts[2].cast<float>();
     } catch (const py::cast_error&) {
         throw py::value_error(expected);
     }
     pf::Camera c;
     c.position = {position[0], position[1], position[2]};
     c.target = {target[0], target[1], target[2]};
-    if (parts.size() == 3) c.fovYDegrees = parts[2].cast<float>();
+    if (fov) c.fovYDegrees = *fov;
     const auto finite3 = [](const glm::vec3& v) { return !glm::any(glm::isnan(v)) && !glm::any(glm::isinf(v)); };
     const bool finite = finite3(c.position) && finite3(c.target);
     if (!finite || c.position == c.target || !(c.fovYDegrees > 0.0f && c.fovYDegrees < 180.0f))
@@ -187,6 +209,7 @@ public:
         pf::FieldContent content;
         {
             py::gil_scoped_release release;
+            const pyargs::SessionReads read; // the scene's files, which no writer of the session replaces
             content = pf::buildFieldContent(pf::loadScene(scene_, overrides));
         }
         warnAbout(content);
@@ -324,8 +347,8 @@ void bindRender(py::module_& m) {
              }),
              py::arg("scene") = py::none(), py::arg("size") = std::make_tuple(int64_t(1280), int64_t(720)),
              py::arg("start") = 0.0, py::arg("fps") = 30.0, py::arg("seed") = py::none(), py::arg("wind") = py::none(),
-             py::arg("antialiasing") = "fxaa", py::arg("samples") = py::none(), py::arg("shadows") = true,
-             py::arg("lod") = py::none(), py::arg("validation") = false, py::arg("device") = py::none())
+             py::arg("antialiasing") = "fxaa", py::arg("samples") = py::none(), py::arg("shadows").noconvert() = true,
+             py::arg("lod") = py::none(), py::arg("validation").noconvert() = false, py::arg("device") = py::none())
         .def("render", &PyRenderer::render, py::arg("time"), py::arg("camera") = py::none(),
              "The frame at scene time `time` (not before the last frame's) as a (height, width, 4) uint8 RGBA array; "
              "camera=(position, target[, fov_degrees]) in place of the scene's camera path")
@@ -359,8 +382,8 @@ void bindRender(py::module_& m) {
         },
         py::arg("scene") = py::none(), py::arg("size") = std::make_tuple(int64_t(1280), int64_t(720)),
         py::arg("time") = 0.0, py::arg("seed") = py::none(), py::arg("wind") = py::none(),
-        py::arg("antialiasing") = "fxaa", py::arg("samples") = py::none(), py::arg("shadows") = true,
-        py::arg("lod") = py::none(), py::arg("validation") = false, py::arg("device") = py::none(),
+        py::arg("antialiasing") = "fxaa", py::arg("samples") = py::none(), py::arg("shadows").noconvert() = true,
+        py::arg("lod") = py::none(), py::arg("validation").noconvert() = false, py::arg("device") = py::none(),
         py::arg("camera") = py::none(),
         "One frame of the scene (default: the default scene) at scene time `time`, as plantfield --capture "
         "renders it: a (height, width, 4) uint8 RGBA array; camera=(position, target[, fov_degrees]) in place of "
