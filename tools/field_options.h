@@ -6,6 +6,7 @@
 #pragma once
 
 #include "engine/field/sun_shadows.h"
+#include "engine/scene/scene.h"
 #include "engine/vk/antialiasing.h"
 #include "lsystem/common/memory_budget.h"
 
@@ -45,10 +46,6 @@ std::optional<T> finiteNumber(std::string_view text) {
 // Range and NonNegativeNumber compare with < and >, which NaN passes, and
 // infinity passes an open upper end.
 void checkFiniteIn(CLI::Option& option, double min, double max);
-
-// The latest scene time --time takes: the shaders' float time still steps by
-// under 10 ms there (2^-7 s at 10^5 s), so the wind's motion stays smooth.
-inline constexpr double kMaxSceneTime = 100000.0;
 
 // The scene a tool renders when none is named: scenes/default.json of the
 // data folder (tools/data_dir.h: PLANTFIELD_DATA_DIR, an installed tree's

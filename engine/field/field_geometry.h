@@ -12,7 +12,6 @@
 #include "engine/vk/resources.h"
 
 #include <array>
-#include <stdexcept>
 #include <vector>
 
 namespace pf {
@@ -23,10 +22,10 @@ namespace pf {
 constexpr VkBufferUsageFlags kStorageAndTexels =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
 
-// A device-local buffer holding `data`, owned by `owner`; throws when it is empty.
+// A device-local buffer holding `data`, owned by `owner` (kSmallestBufferBytes
+// of zeros when it is empty: the instances of a field with no plant).
 template <class T>
 Buffer uploadFieldVector(GpuResources& owner, const std::vector<T>& data, VkBufferUsageFlags usage) {
-    if (data.empty()) throw std::runtime_error("field renderer: nothing to upload");
     return createDeviceBufferWithData(owner, data.data(), data.size() * sizeof(T), usage);
 }
 

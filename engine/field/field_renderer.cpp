@@ -3,6 +3,8 @@
 #include "engine/field/cluster_cut.h"
 #include "engine/field/cull_uniforms.h"
 #include "engine/field/draw_templates.h"
+#include "engine/field/impostor_atlas_images.h"
+#include "engine/field/impostor_sources.h"
 #include "engine/field/visible_lists.h"
 #include "engine/vk/gpu_timer.h"
 #include "shaders/shared/lod_select.h"
@@ -23,9 +25,8 @@ struct FieldUniformBlock {
 } // namespace
 
 FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const FieldRenderSettings& settings)
-    : ctx_(ctx), content_(std::move(content)), settings_(settings), resources_(ctx) {
+    : ctx_(ctx), content_(std::move(content)), fieldBox_(fieldBox(content_)), settings_(settings), resources_(ctx) {
     settings_.antialiasing = supportedAntialiasing(ctx_, settings.antialiasing);
-    if (content_.plants.empty()) throw std::runtime_error("the scene places no plant");
     if (content_.plants.size() > FIELD_MAX_INSTANCES)
         throw std::runtime_error("at most " + std::to_string(FIELD_MAX_INSTANCES) + " plants can be drawn");
     // The traced pass runs before the colour pass, over the plants the cull
@@ -35,6 +36,9 @@ FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const 
         throw std::runtime_error("ray-traced shadows and occlusion culling do not go together: the rays start from "
                                  "what a frame draws before its colour pass, and occlusion culling draws more in it");
     lsys::need(settings_.memory, "GPU uploads", fieldUploadBytes(content_));
+    // More species than the impostor atlas holds are refused here, before any upload; the bake shares frames
+    // between variants the same way.
+    impostorSources(content_.models, impostorModelCapacity(ctx_, settings_.impostors));
     requireBindableVertexPool(ctx_, content_.models.vertices.size());
     uniforms_ = createHostBuffer(resources_, sizeof(FieldUniformBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     geometry_ = createFieldGeometry(resources_, content_, settings_.impostors);
@@ -82,15 +86,17 @@ void replaceFieldContent(std::unique_ptr<FieldRenderer>& renderer, FieldContent 
 // wind), the shadow passes' plan, the physics plan, the cull's and the
 // camera's cut's, and what the colour pass draws.
 void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
+    // From far away the scene's near plane would leave every depth rounded to the far plane.
+    const Camera camera = withDepthRangeFor(view.camera, fieldBox_);
     const Environment env = environmentOf(content_.scene);
     const glm::vec3 sun = sunDirection(env);
     const glm::uvec2 viewport(extent.width, extent.height);
     FieldUniformBlock block{};
-    block.frame = makeFrameUniforms(view.camera, env, viewport, view.time);
+    block.frame = makeFrameUniforms(camera, env, viewport, view.time);
     const glm::mat4& viewProj = block.frame.viewProj;
     if (settings_.shadows != SunShadows::none) {
-        const ShadowView frame = shadowViewAhead(view.camera, sun, settings_.shadowRadius, shadowMap_.size,
-                                                 extent.height, view.forcedLod.value_or(LOD_NOT_FORCED));
+        const ShadowView frame = shadowViewAhead(camera, sun, settings_.shadowRadius, shadowMap_.size, extent.height,
+                                                 view.forcedLod.value_or(LOD_NOT_FORCED));
         // Ray-traced shadows use the square only to choose the terrain chunks
         // whose pixels trace (visibleTerrainRanges): no map, no casters.
         if (settings_.shadows == SunShadows::raytraced)
@@ -108,7 +114,7 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
         const VkDescriptorSet sets[] = {color_.listsSet, color_.naiveSet, shadows_.cache.set, shadows_.frame.set};
         writeRaytracedSunVisibility(ctx_, sets, raytracedSun_);
     }
-    advanceFieldMotion(motion_, view.time, view.firstFrame, view.camera.position, view.realTime);
+    advanceFieldMotion(motion_, view.time, view.firstFrame, camera.position, view.realTime);
     // The physics pass's wind field, for the shaders that sway without a skeleton.
     const gpu::PhysicsUniforms wind =
         makePhysicsUniforms(motion_.wind, motion_.settings, view.time, motion_.settings.subStep, 0, 0, 0);
@@ -116,7 +122,7 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
     block.field.windDetail = glm::vec4(wind.windDetail.x, wind.windDetail.y, wind.wind.w, settings_.impostorSway);
     std::memcpy(uniforms_.mapped, &block, sizeof(block));
 
-    const gpu::CullUniforms cull = cameraCullUniforms(viewProj, view.camera, viewport, view.deltaTime, view.firstFrame,
+    const gpu::CullUniforms cull = cameraCullUniforms(viewProj, camera, viewport, view.deltaTime, view.firstFrame,
                                                       view.forcedLod.value_or(LOD_NOT_FORCED));
     setCullUniforms(cull_, cull);
     const uint32_t cut = view.forcedCut.value_or(CLUSTER_CUT_AUTO);
@@ -127,8 +133,8 @@ void FieldRenderer::setView(const FieldView& view, VkExtent2D extent) {
 
     ColorView color;
     color.viewProj = viewProj;
-    color.camera = view.camera.position;
-    color.forward = glm::normalize(view.camera.target - view.camera.position);
+    color.camera = camera.position;
+    color.forward = glm::normalize(camera.target - camera.position);
     color.pixelsPerMetre = cull.camera.w;
     color.time = view.time;
     if (settings_.shadows != SunShadows::none) color.sunViewProj = block.field.sunViewProj;

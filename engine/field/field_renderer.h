@@ -102,6 +102,7 @@ public:
 private:
     const GpuContext& ctx_;
     FieldContent content_;
+    SceneBox fieldBox_; // of content_: every frame's depth range holds it
     FieldRenderSettings settings_;
     GpuResources resources_; // everything below is created into it
 
@@ -119,7 +120,8 @@ private:
     ShadowPass shadows_;                    // its casters' passes are made (and cost memory) whatever the shadows
     RaytracedOriginsPass raytracedOrigins_; // with ray-traced shadows
 
-    bool clustered() const { return settings_.clusters.enabled; }
+    // A field with no plant has no quadtree to cut: its terrain and sky are drawn without one.
+    bool clustered() const { return settings_.clusters.enabled && !content_.plants.empty(); }
     SurfaceGeometry surfaceGeometry() const;
     void recordSunShadows(VkCommandBuffer cmd, bool naive) const;
     void recordColor(VkCommandBuffer cmd, const RenderTarget& target, bool naive, GpuTimer* timer) const;

@@ -62,23 +62,21 @@ void pipelineBarrier(VkCommandBuffer cmd, const std::vector<VkImageMemoryBarrier
     vkCmdPipelineBarrier2(cmd, &dep);
 }
 
-uint32_t atlasLayers(const GpuContext& ctx, const PlantModelPool& pool, const ImpostorSettings& settings) {
-    if (settings.frames == 0 || settings.frameSize == 0)
-        throw std::runtime_error("impostor atlas: frames and frameSize must be positive");
-    const uint64_t layerCount = uint64_t(pool.models.size()) * settings.frames * IMPOSTOR_RINGS;
-    if (layerCount == 0) throw std::runtime_error("impostor atlas: the pool has no models");
-    if (layerCount > ctx.properties.limits.maxImageArrayLayers)
-        throw std::runtime_error(
-            "the impostor atlas would need " + std::to_string(layerCount) + " layers (" +
-            std::to_string(pool.models.size()) + " plant models, the scene's variants of every species, times " +
-            std::to_string(settings.frames * IMPOSTOR_RINGS) + " views), more than this device's " +
-            std::to_string(ctx.properties.limits.maxImageArrayLayers) + ": give the species fewer \"variants\"");
-    if (settings.shadowFrameSize == 0) throw std::runtime_error("impostor atlas: shadowFrameSize must be positive");
+uint32_t impostorModelCapacity(const GpuContext& ctx, const ImpostorSettings& settings) {
+    if (settings.frames == 0 || settings.frameSize == 0 || settings.shadowFrameSize == 0)
+        throw std::runtime_error("impostor atlas: frames, frameSize and shadowFrameSize must be positive");
     if (std::max(settings.frameSize, settings.shadowFrameSize) > ctx.properties.limits.maxImageDimension2D)
         throw std::runtime_error("impostor atlas: frameSize " + std::to_string(settings.frameSize) +
                                  " or shadowFrameSize " + std::to_string(settings.shadowFrameSize) +
                                  " exceeds the device's image limit");
-    return uint32_t(layerCount);
+    return ctx.properties.limits.maxImageArrayLayers / (settings.frames * IMPOSTOR_RINGS);
+}
+
+uint32_t atlasLayers(const std::vector<uint32_t>& sources, const ImpostorSettings& settings) {
+    uint32_t baked = 0;
+    for (size_t m = 0; m < sources.size(); ++m) baked += sources[m] == m;
+    if (baked == 0) throw std::runtime_error("impostor atlas: the pool has no models");
+    return baked * settings.frames * IMPOSTOR_RINGS;
 }
 
 ImpostorAtlas createAtlas(GpuResources& owner, const ImpostorSettings& settings, uint32_t layers) {
@@ -105,10 +103,19 @@ ImpostorAtlas createAtlas(GpuResources& owner, const ImpostorSettings& settings,
     return atlas;
 }
 
-void assignImpostorLayers(PlantModelPool& pool, const ImpostorSettings& settings) {
+void assignImpostorLayers(PlantModelPool& pool, const ImpostorSettings& settings,
+                          const std::vector<uint32_t>& sources) {
+    uint32_t baked = 0;
     for (size_t m = 0; m < pool.models.size(); ++m) {
         gpu::PlantModel& model = pool.models[m].gpu;
-        const uint32_t shadowFirst = uint32_t(m) * settings.frames;
+        if (sources[m] != m) {
+            // A source comes first among its species' variants, so it is assigned already.
+            const gpu::PlantModel& source = pool.models[sources[m]].gpu;
+            model.impostor = source.impostor;
+            model.impostorQuad = source.impostorQuad;
+            continue;
+        }
+        const uint32_t shadowFirst = baked++ * settings.frames;
         model.impostor = {shadowFirst * IMPOSTOR_RINGS, settings.frames, quadsOf(pool.models[m].billboard),
                           shadowFirst};
         model.impostorQuad = impostorQuadOf(model);

@@ -18,17 +18,22 @@ inline constexpr VkFormat kAtlasColorFormat = VK_FORMAT_R8G8B8A8_SRGB;
 inline constexpr VkFormat kAtlasNormalFormat = VK_FORMAT_R8G8B8A8_UNORM;
 inline constexpr VkFormat kShadowFrameFormat = VK_FORMAT_R8G8_UNORM;
 
-// The colour images' layer count (every model's rings of frames); throws
-// when the atlas would not fit the device.
-uint32_t atlasLayers(const GpuContext& ctx, const PlantModelPool& pool, const ImpostorSettings& settings);
+// How many models' rings of frames the device's image array layers hold
+// (impostorSources shares frames past it); throws on settings the device
+// cannot make images of.
+uint32_t impostorModelCapacity(const GpuContext& ctx, const ImpostorSettings& settings);
+
+// The colour images' layer count: the rings of frames of every model that
+// shows its own (impostor_sources.h).
+uint32_t atlasLayers(const std::vector<uint32_t>& sources, const ImpostorSettings& settings);
 
 // The three images with their full mip chains (the shadow frames one ring
 // per model), and the billboards' sampler.
 ImpostorAtlas createAtlas(GpuResources& owner, const ImpostorSettings& settings, uint32_t layers);
 
 // Each model's first colour and shadow layers, frames, quads per billboard
-// and baked box.
-void assignImpostorLayers(PlantModelPool& pool, const ImpostorSettings& settings);
+// and baked box: those of the model whose frames it shows (`sources`).
+void assignImpostorLayers(PlantModelPool& pool, const ImpostorSettings& settings, const std::vector<uint32_t>& sources);
 
 // A barrier over mips [baseMip, baseMip + mips) of an atlas image's first
 // `layers` layers, and a dependency recording the image barriers given.

@@ -7,6 +7,7 @@
 #include "engine/field/impostor_atlas.h"
 
 #include "engine/field/impostor_atlas_images.h"
+#include "engine/field/impostor_sources.h"
 
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
@@ -248,7 +249,8 @@ void downsampleBakeRing(VkCommandBuffer cmd, std::initializer_list<BakeDownsampl
 // Every model from every direction into mip 0 of its layers: the colour
 // frames of every ring, then the shadow frames.
 void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const BakeTargets& targets,
-                      const BakePipeline& bake, const PlantModelPool& pool, const Buffer& indices, float sunElevation) {
+                      const BakePipeline& bake, const PlantModelPool& pool, const std::vector<uint32_t>& sources,
+                      const Buffer& indices, float sunElevation) {
     // Level 0 of every layer receives one frame's filtered target; its old
     // contents are discarded.
     const ImageTransition toDestination{VK_PIPELINE_STAGE_2_NONE,     VK_ACCESS_2_NONE,
@@ -262,7 +264,9 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
     vkCmdBindIndexBuffer(cmd, indices.buffer, 0, VK_INDEX_TYPE_UINT32);
     const uint32_t frames = atlas.settings.frames;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.pipeline);
-    for (const PlantModelInfo& model : pool.models) {
+    for (size_t m = 0; m < pool.models.size(); ++m) {
+        if (sources[m] != m) continue; // it shows another variant's frames
+        const PlantModelInfo& model = pool.models[m];
         for (uint32_t ring = 0; ring < IMPOSTOR_RINGS; ++ring) {
             prepareBakeRing(cmd, {&targets.color, &targets.normalDepth}, targets.depth, frames);
             for (uint32_t f = 0; f < frames; ++f) {
@@ -277,7 +281,9 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
         }
     }
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bake.shadowPipeline);
-    for (const PlantModelInfo& model : pool.models) {
+    for (size_t m = 0; m < pool.models.size(); ++m) {
+        if (sources[m] != m) continue;
+        const PlantModelInfo& model = pool.models[m];
         prepareBakeRing(cmd, {&targets.shadow}, targets.shadowDepth, frames);
         for (uint32_t f = 0; f < frames; ++f) {
             beginBakeFrame(cmd, {&targets.shadow}, targets.shadowDepth, targets.shadowSize, f);
@@ -294,15 +300,16 @@ void recordBakeFrames(VkCommandBuffer cmd, const ImpostorAtlas& atlas, const Bak
 ImpostorAtlas bakeImpostorAtlas(GpuResources& owner, PlantModelPool& pool, const Buffer& vertices,
                                 const Buffer& indices, float sunElevation, const ImpostorSettings& settings) {
     const GpuContext& ctx = owner.ctx();
-    ImpostorAtlas atlas = createAtlas(owner, settings, atlasLayers(ctx, pool, settings));
-    assignImpostorLayers(pool, settings);
+    const std::vector<uint32_t> sources = impostorSources(pool, impostorModelCapacity(ctx, settings));
+    ImpostorAtlas atlas = createAtlas(owner, settings, atlasLayers(sources, settings));
+    assignImpostorLayers(pool, settings, sources);
     {
         GpuResources scratch(ctx); // the targets and pipeline only the bake uses
         const BakeTargets targets = createBakeTargets(scratch, settings);
         const BakePipeline bake = createBakePipeline(scratch, vertices);
         // All models and frames in one submission.
         submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-            recordBakeFrames(cmd, atlas, targets, bake, pool, indices, sunElevation);
+            recordBakeFrames(cmd, atlas, targets, bake, pool, sources, indices, sunElevation);
             recordMipChain(cmd, {&atlas.color, &atlas.normalDepth}, settings.frameSize, atlas.mipLevels, atlas.layers);
             recordMipChain(cmd, {&atlas.shadow}, settings.shadowFrameSize, atlas.shadowMipLevels, atlas.shadowLayers);
         });

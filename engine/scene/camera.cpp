@@ -1,8 +1,35 @@
 #include "engine/scene/camera.h"
 
+#include "lsystem/common/view_up.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+
 namespace pf {
+
+namespace {
+
+// Up to this many near planes away the scene's own depth range still
+// resolves a metre at the field (two float steps of depth at 1 km from a
+// 0.1 m near plane), and ordinary cameras keep their planes.
+constexpr float kNearPlanesResolved = 1e4f;
+// Past that, the near plane at this share of the distance to the box: a
+// metre there still spans a few float steps of depth from 10^6 m.
+constexpr float kNearShare = 0.5f;
+
+} // namespace
+
+Camera withDepthRangeFor(const Camera& camera, const SceneBox& box) {
+    const glm::vec3 outside = glm::max(box.min - camera.position, camera.position - box.max);
+    const float nearest = glm::length(glm::max(outside, glm::vec3(0.0f)));
+    if (!(nearest > kNearPlanesResolved * camera.nearPlane)) return camera;
+    const glm::vec3 farthest = glm::max(glm::abs(box.min - camera.position), glm::abs(box.max - camera.position));
+    Camera fitted = camera;
+    fitted.nearPlane = kNearShare * nearest;
+    fitted.farPlane = std::max(camera.farPlane, glm::length(farthest));
+    return fitted;
+}
 
 glm::vec3 sunDirection(const Environment& env) {
     const float elevation = glm::radians(env.sunElevationDegrees);
@@ -11,7 +38,10 @@ glm::vec3 sunDirection(const Environment& env) {
                                     -std::cos(azimuth) * std::cos(elevation)));
 }
 
-glm::mat4 viewMatrix(const Camera& camera) { return glm::lookAtRH(camera.position, camera.target, glm::vec3(0, 1, 0)); }
+glm::mat4 viewMatrix(const Camera& camera) {
+    return glm::lookAtRH(camera.position, camera.target,
+                         lsys::viewUp(camera.target - camera.position, glm::vec3(0, 1, 0)));
+}
 
 glm::mat4 projectionMatrix(const Camera& camera, glm::uvec2 viewport) {
     const float aspect = float(viewport.x) / float(viewport.y);

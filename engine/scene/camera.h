@@ -26,10 +26,26 @@ struct Environment {
     float groundHalfSize = 400.0f; // metres
 };
 
+// An axis-aligned box in world metres: what a frame may show (the field's
+// terrain and plants, fieldBox in engine/scene/field_content.h).
+struct SceneBox {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+};
+
+// The camera with a depth range that holds `box` however far away it looks
+// from: a depth buffer of floats resolves depths only down to about n/d of
+// 1e-7, so from millions of metres with the scene's near plane every depth
+// rounds to the far plane. A camera within 10^4 near planes of the box (or
+// inside it) is returned unchanged; farther out, the near plane moves to half
+// the distance to the box and the far plane to at least its farthest corner.
+Camera withDepthRangeFor(const Camera& camera, const SceneBox& box);
+
 // Unit vector toward the sun.
 glm::vec3 sunDirection(const Environment& env);
 
-// World → view space (right-handed, looking down −z).
+// World → view space (right-handed, looking down −z), the image's up from
+// lsys::viewUp: world +y, or north (−z) looking straight down.
 glm::mat4 viewMatrix(const Camera& camera);
 // Perspective for a viewport of `viewport` pixels (width, height): standard
 // depth, 0 at the near plane and 1 at the far plane (perspectiveRH_ZO).

@@ -5,6 +5,8 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
+
 #include <numbers>
 
 namespace pf {
@@ -156,6 +158,23 @@ std::vector<gpu::FieldInstance> fieldInstancesOf(const FieldContent& content) {
         instances.push_back({glm::vec4(p.position, p.scale), glm::vec4(p.rotation, p.windPhase, 0.0f, 0.0f),
                              glm::uvec4(content.models.modelOf(p.species, p.variant), p.species, p.variant, 0u)});
     return instances;
+}
+
+SceneBox fieldBox(const FieldContent& content) {
+    const Heightfield& terrain = content.terrain;
+    const auto [lowest, highest] = std::minmax_element(terrain.heights.begin(), terrain.heights.end());
+    SceneBox box;
+    box.min = glm::vec3(-0.5f * terrain.size, lowest == terrain.heights.end() ? 0.0f : *lowest, -0.5f * terrain.size);
+    box.max = glm::vec3(0.5f * terrain.size, highest == terrain.heights.end() ? 0.0f : *highest, 0.5f * terrain.size);
+    // Each plant within its model's bounding sphere turned about the plant's axis: a sphere about the plant's
+    // base as wide as the sphere's centre is far from it, plus its radius.
+    for (const PlantInstance& plant : content.plants) {
+        const glm::vec4 sphere = content.models.models[content.models.modelOf(plant.species, plant.variant)].gpu.sphere;
+        const float reach = (glm::length(glm::vec3(sphere)) + sphere.w) * plant.scale;
+        box.min = glm::min(box.min, plant.position - reach);
+        box.max = glm::max(box.max, plant.position + reach);
+    }
+    return box;
 }
 
 } // namespace pf

@@ -2,6 +2,7 @@
 // standing on it, ready for the GPU (engine/field/field_renderer.h).
 #pragma once
 
+#include "engine/scene/camera.h"
 #include "engine/scene/placement.h"
 #include "engine/scene/plant_models.h"
 #include "engine/scene/scene.h"
@@ -74,5 +75,9 @@ FieldContent buildFieldContent(const Scene& scene, std::optional<PlantCount> cou
 // The plants as the GPU holds them (FieldInstance, shaders/shared/field_layouts.h),
 // in content order: position and scale, yaw and wind phase, model and ids.
 std::vector<gpu::FieldInstance> fieldInstancesOf(const FieldContent& content);
+
+// A box holding the terrain and every plant, however it is turned: what a
+// camera's depth range must hold (withDepthRangeFor, engine/scene/camera.h).
+SceneBox fieldBox(const FieldContent& content);
 
 } // namespace pf

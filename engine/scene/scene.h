@@ -193,6 +193,18 @@ struct PhysicsSettings {
     bool operator==(const PhysicsSettings&) const = default;
 };
 
+// The latest scene time --time takes, and the widest a camera key's time may
+// be either side of 0: the shaders' float time still steps by under 10 ms
+// there (2^-7 s at 10^5 s), so the wind's motion stays smooth.
+inline constexpr double kMaxSceneTime = 100000.0;
+// How far from the origin a camera key's position and target may be: float
+// positions there are still a metre apart, so a field of a few hundred metres
+// is still placed in view (and depth) from there.
+inline constexpr float kMaxCameraCoordinate = 1e7f;
+// The least time between two camera keys: the spline's tangents, position
+// differences over key spacings, then stay far inside float's range.
+inline constexpr double kMinKeyframeSpacing = 1e-3;
+
 struct CameraKeyframe {
     double time = 0.0; // seconds, strictly increasing along the path
     glm::vec3 position{0.0f};

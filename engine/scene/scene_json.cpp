@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <sstream>
 
 namespace pf {
 // The located JSON reader (lsystem/common/json_reader.h).
@@ -343,9 +344,10 @@ const Range kFov = {.min = 0.0, .max = 180.0, .minOpen = true, .maxOpen = true};
 CameraKeyframe readKeyframe(const JsonNode& node) {
     requireObject(node, {"time", "position", "target", "fov"});
     CameraKeyframe key;
-    key.time = readNumber(requireMember(node, "time", "seconds"), anyNumber());
-    key.position = readVector<3>(requireMember(node, "position", "[x, y, z] in metres"), anyNumber());
-    key.target = readVector<3>(requireMember(node, "target", "[x, y, z] in metres"), anyNumber());
+    key.time = readNumber(requireMember(node, "time", "seconds"), between(-kMaxSceneTime, kMaxSceneTime));
+    const Range coordinate = between(-kMaxCameraCoordinate, kMaxCameraCoordinate);
+    key.position = readVector<3>(requireMember(node, "position", "[x, y, z] in metres"), coordinate);
+    key.target = readVector<3>(requireMember(node, "target", "[x, y, z] in metres"), coordinate);
     readField(node, "fov", key.fovYDegrees, kFov);
     if (key.position == key.target) failAt(*member(node, "target"), "must differ from position");
     return key;
@@ -360,8 +362,10 @@ CameraPath readCamera(const JsonNode& node) {
     if (const std::optional<JsonNode> keyframes = member(node, "keyframes")) {
         for (const JsonNode& element : arrayElements(*keyframes, "an array of keyframes")) {
             CameraKeyframe key = readKeyframe(element);
-            if (!camera.keyframes.empty() && key.time <= camera.keyframes.back().time)
-                failAt(*member(element, "time"), "must be later than the previous keyframe's time");
+            if (!camera.keyframes.empty() && !(key.time >= camera.keyframes.back().time + kMinKeyframeSpacing))
+                failAt(*member(element, "time"), "must be at least " +
+                                                     (std::ostringstream() << kMinKeyframeSpacing).str() +
+                                                     " s later than the previous keyframe's time");
             camera.keyframes.push_back(key);
         }
     }

@@ -1,5 +1,7 @@
 #include "lsystem/raytrace/render.h"
 
+#include "lsystem/common/view_up.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -33,7 +35,7 @@ struct CameraBasis {
 
 CameraBasis basisOf(const PinholeCamera& camera, float aspect) {
     const glm::vec3 forward = glm::normalize(camera.target - camera.position);
-    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::vec3 right = glm::normalize(glm::cross(forward, viewUp(camera.target - camera.position, camera.up)));
     const float halfHeight = std::tan(glm::radians(camera.fovYDegrees) * 0.5f);
     return {camera.position, forward, right, glm::cross(right, forward), halfHeight * aspect, halfHeight};
 }

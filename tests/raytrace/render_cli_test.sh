@@ -22,6 +22,12 @@ expect_run flat 0 'flat tracer' -- "$LSYS" render "$BUSH" -n 4 -o "$WORK/flat.pn
 expect_run options 0 'camera.png: 40x30' -- "$LSYS" render "$BUSH" -n 3 -o "$WORK/camera.png" --size 40x30 \
     --camera 30,20,40,0,10,0,30 --sun 90,60 --samples 2 --no-shadows --no-ground -D X=1
 expect_run view 0 'view.png' -- "$LSYS" render "$BUSH" -n 3 -o "$WORK/view.png" --size 40x30 --view 0,10
+# Straight down from above the bush: the plant on the ground, so another
+# plant gives another picture (a NaN basis gave one colour whatever the plant).
+expect_run camera-vertical 0 'down.png: 40x30' -- "$LSYS" render "$BUSH" -n 3 -o "$WORK/down.png" --size 40x30 \
+    --camera 0,70,0,0,0,0
+"$LSYS" render "$BUSH" -n 1 -o "$WORK/down-n1.png" --size 40x30 --camera 0,70,0,0,0,0 2> /dev/null
+cmp -s "$WORK/down.png" "$WORK/down-n1.png" && fail "camera-vertical: the same bytes for two different plants"
 
 # The lazy tracer: the same bytes whether its cache holds nothing (1 byte),
 # evicts (2 KiB of 484 objects' expansions) or holds everything (1 GiB), and
@@ -45,7 +51,9 @@ expect_run lazy-default 0 'held of a 256.0 MiB cache budget' -- \
 expect_run size 2 "'1280' is not a size" -- "$LSYS" render "$BUSH" -o "$WORK/x.png" --size 1280
 expect_run size-zero 2 "'0x720' is not a size" -- "$LSYS" render "$BUSH" -o "$WORK/x.png" --size 0x720
 expect_run camera 2 "'1,2,3' is not a camera" -- "$LSYS" render "$BUSH" -o "$WORK/x.png" --camera 1,2,3
-expect_run camera-vertical 2 "is not a camera" -- "$LSYS" render "$BUSH" -o "$WORK/x.png" --camera 0,5,0,0,0,0
+expect_run camera-at-target 2 "is not a camera" -- "$LSYS" render "$BUSH" -o "$WORK/x.png" --camera 1,5,0,1,5,0
+expect_run camera-too-far 2 'camera is 1e+20 from the plant.s box, more than 100000 times the plant.s size' -- \
+    "$LSYS" render "$BUSH" -n 3 -o "$WORK/x.png" --size 40x30 --camera 0,1e20,0,0,0,0
 expect_run sun 2 "'10,95' is not AZ,EL" -- "$LSYS" render "$BUSH" -o "$WORK/x.png" --sun 10,95
 expect_run unknown-flag 2 '--shiny' -- "$LSYS" render "$BUSH" -o "$WORK/x.png" --shiny
 expect_run tracer 2 'tracer' -- "$LSYS" render "$BUSH" -o "$WORK/x.png" --tracer bvh

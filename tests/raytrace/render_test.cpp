@@ -85,6 +85,20 @@ TEST(CameraRay, PassesThroughTheProjectedPoint) {
     EXPECT_NEAR(glm::length(ray.direction), 1.0f, 1e-6f);
 }
 
+// Straight down the look-at basis has no right vector of its own
+// (lsystem/common/view_up.h): +x is right and -z is up in the image.
+TEST(CameraRay, LookingStraightDownPutsXRightAndMinusZUp) {
+    const PinholeCamera camera{{2, 10, 3}, {2, 0, 3}};
+    const Ray centre = cameraRay(camera, 200, 100, 100.0f, 50.0f);
+    const Ray right = cameraRay(camera, 200, 100, 190.0f, 50.0f);
+    const Ray top = cameraRay(camera, 200, 100, 100.0f, 5.0f);
+    EXPECT_NEAR(centre.direction.y, -1.0f, 1e-6f);
+    EXPECT_GT(right.direction.x, 0.1f);
+    EXPECT_NEAR(right.direction.z, 0.0f, 1e-6f);
+    EXPECT_LT(top.direction.z, -0.1f);
+    EXPECT_NEAR(top.direction.x, 0.0f, 1e-6f);
+}
+
 RenderOptions smallImage(const Bounds& bounds, uint32_t width, uint32_t height) {
     RenderOptions options;
     options.width = width;
@@ -140,6 +154,23 @@ TEST(RenderImage, TheGroundUnderTheSphereIsInItsShadow) {
     const RenderedImage unshadowed = renderImage(traceOf(tracer), plant.materials, 2.0f, options);
     EXPECT_EQ(brightness(unshadowed, shadowed), brightness(unshadowed, beside));
     EXPECT_EQ(unshadowed.shadowRays, 0u);
+}
+
+// Seen from straight above, the sphere is a disc in the middle of the ground.
+TEST(RenderImage, LookingStraightDownShowsTheSphereOnTheGround) {
+    PlantAsset plant;
+    plant.materials = defaultPalette();
+    plant.primitives.push_back({Frame{glm::vec3(0, 1, 0)}, PrimitiveKind::Sphere, 3, -1, 0, 0.0f, 0.5f, 0.5f});
+    const FlatTracer tracer = buildFlatTracer(plant);
+    RenderOptions options;
+    options.width = 64;
+    options.height = 48;
+    options.camera = {{0, 8, 0}, {0, 0, 0}};
+    options.light = defaultLight();
+    options.groundHeight = 0.0f;
+    const RenderedImage image = renderImage(traceOf(tracer), plant.materials, 2.0f, options);
+    EXPECT_NE(brightness(image, {32, 24}), brightness(image, {4, 4})) << "the sphere, not the ground";
+    EXPECT_EQ(brightness(image, {4, 4}), brightness(image, {60, 44})) << "the ground in both corners";
 }
 
 // The graph and its flattened plant hold the same primitives a few ulps

@@ -6,6 +6,9 @@
 #include "field_render.h"
 #include "gpu_test.h"
 
+#include "engine/field/impostor_atlas.h"
+#include "shaders/shared/impostor_frame.h"
+
 #include <gtest/gtest.h>
 
 namespace pf::test {
@@ -63,10 +66,16 @@ TEST_F(ContentReplaceTest, AFailedReplacementKeepsTheOldRendererDrawing) {
     RenderTarget target = createRenderTarget(ctx, kSize, live->antialiasing());
     const RgbaImage first = frame(*live, target, viewAt(content.scene, 1.0, true));
 
-    FieldContent empty = content;
-    empty.plants.clear();
+    // More species than the impostor atlas holds models (engine/field/impostor_sources.h): refused.
+    FieldContent tooManySpecies = content;
+    PlantModelPool& pool = tooManySpecies.models;
+    const uint32_t capacity = ctx.properties.limits.maxImageArrayLayers / (ImpostorSettings{}.frames * IMPOSTOR_RINGS);
+    while (pool.firstModel.size() <= capacity) {
+        pool.firstModel.push_back(uint32_t(pool.models.size()));
+        pool.models.push_back(pool.models.front());
+    }
     const FieldRenderer* kept = live.get();
-    EXPECT_THROW(replaceFieldContent(live, std::move(empty)), std::runtime_error);
+    EXPECT_THROW(replaceFieldContent(live, std::move(tooManySpecies)), SceneError);
     ASSERT_EQ(live.get(), kept);
     const RgbaImage again = frame(*live, target, viewAt(content.scene, 1.0, true));
     destroyRenderTarget(target);

@@ -120,7 +120,22 @@ INSTANTIATE_TEST_SUITE_P(
                           "    { \"time\": 2, \"position\": [0, 1, 0], \"target\": [1, 1, 0] },\n"
                           "    { \"time\": 1, \"position\": [0, 1, 5], \"target\": [1, 1, 0] } ] }"),
                  "1, \"position\": [0, 1, 5]",
-                 "/camera/keyframes/1/time must be later than the previous keyframe's time"},
+                 "/camera/keyframes/1/time must be at least 0.001 s later than the previous keyframe's time"},
+        // Key times near float's largest: the spline's spans and tangents would overflow.
+        BadScene{"keyframe_time_absurd",
+                 PF_SCENE(",\n  \"camera\": { \"keyframes\": [\n"
+                          "    { \"time\": 0, \"position\": [0, 1, 0], \"target\": [1, 1, 0] },\n"
+                          "    { \"time\": 3e38, \"position\": [0, 1, 5], \"target\": [1, 1, 0] } ] }"),
+                 "3e38", "/camera/keyframes/1/time must be a number in [-100000, 100000] (got 3e38)"},
+        BadScene{"keyframes_too_close",
+                 PF_SCENE(",\n  \"camera\": { \"keyframes\": [\n"
+                          "    { \"time\": 1, \"position\": [0, 1, 0], \"target\": [1, 1, 0] },\n"
+                          "    { \"time\": 1.00000001, \"position\": [0, 1, 5], \"target\": [1, 1, 0] } ] }"),
+                 "1.00000001", "/camera/keyframes/1/time must be at least 0.001 s later"},
+        BadScene{"keyframe_position_absurd",
+                 PF_SCENE(",\n  \"camera\": { \"keyframes\": [\n"
+                          "    { \"time\": 0, \"position\": [0, 3e30, 0], \"target\": [1, 1, 0] } ] }"),
+                 "[0, 3e30, 0]", "/camera/keyframes/0/position must be an array of 3 numbers in [-10000000, 10000000]"},
         BadScene{"fov_out_of_range", PF_SCENE(",\n  \"camera\": { \"fov\": 180 }"), "180",
                  "/camera/fov must be a number in (0, 180) (got 180)"},
         BadScene{"repeated_key", "{\n  \"seed\": 1,\n  \"seed\": 2\n}", "\"seed\": 2",

@@ -1,5 +1,6 @@
 #include "tools/lsys/render_command.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -43,6 +44,12 @@ constexpr uint32_t kMaxSamples = 256;
 // plant's unless its single objects are large, and is a small share of the
 // memory of a machine that renders.
 constexpr uint64_t kDefaultCacheBudget = uint64_t{256} << 20;
+
+// How many times the plant's size --camera may be from its box: float rays
+// from there still place a hit within a hundredth of the plant's size (a
+// float's 6e-8 of the distance), and farther out the plant is under a pixel
+// at any --size and a field of view above a few degrees.
+constexpr double kMaxCameraDistanceInSizes = 1e5;
 
 enum class TracerKind { Graph, Flat, Lazy };
 
@@ -95,9 +102,8 @@ std::optional<lsys::PinholeCamera> parseCamera(const std::string& text) {
     if (!n) return std::nullopt;
     lsys::PinholeCamera camera{{(*n)[0], (*n)[1], (*n)[2]}, {(*n)[3], (*n)[4], (*n)[5]}};
     if (n->size() == 7) camera.fovYDegrees = (*n)[6];
-    const glm::vec3 view = camera.target - camera.position;
-    const bool vertical = glm::length(glm::cross(view, camera.up)) <= 1e-6f * glm::dot(view, view);
-    if (vertical || !(camera.fovYDegrees > 0.0f && camera.fovYDegrees < 180.0f)) return std::nullopt;
+    if (camera.target == camera.position || !(camera.fovYDegrees > 0.0f && camera.fovYDegrees < 180.0f))
+        return std::nullopt;
     return camera;
 }
 
@@ -142,11 +148,40 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The distance from `point` to the box, in double: a --camera 10^20 away
+// squares past float's range.
+double distanceToBox(const glm::vec3& point, const lsys::Bounds& bounds) {
+    double squared = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double outside =
+            std::max({double(bounds.min[axis]) - point[axis], double(point[axis]) - bounds.max[axis], 0.0});
+        squared += outside * outside;
+    }
+    return std::sqrt(squared);
+}
+
+// An empty string when --camera (if any) is near enough to the plant's box
+// for its rays to resolve the plant, else why not.
+std::string cameraDistanceProblem(const RenderArguments& arguments, const lsys::Bounds& bounds) {
+    if (!arguments.camera) return {};
+    const double size = glm::length(glm::dvec3(bounds.max) - glm::dvec3(bounds.min));
+    const double distance = distanceToBox(arguments.camera->position, bounds);
+    if (distance <= kMaxCameraDistanceInSizes * size) return {};
+    std::ostringstream text;
+    text << "--camera is " << distance << " from the plant's box, more than " << kMaxCameraDistanceInSizes
+         << " times the plant's size (" << size << "): float rays cannot resolve the plant from there";
+    return text.str();
+}
+
 // Traces the image through `trace` and writes it; prints the rays, their
 // rate, and the time since `begun` (the plant read, its graph and tracer built).
 int renderAndWrite(const RenderArguments& arguments, const lsys::PlantTrace& trace,
                    const std::vector<lsys::Material>& materials, const lsys::Bounds& bounds, const char* tracerName,
                    std::chrono::steady_clock::time_point begun) {
+    if (const std::string problem = cameraDistanceProblem(arguments, bounds); !problem.empty()) {
+        std::cerr << "lsys: error: " << problem << '\n';
+        return kBadInput;
+    }
     lsys::RenderOptions options;
     options.width = arguments.width;
     options.height = arguments.height;
@@ -285,10 +320,11 @@ void addOptions(CLI::App& command, RenderArguments& arguments) {
         .add_option_function<std::string>(
             "--camera", [&arguments](const std::string& text) { arguments.camera = parseCamera(text); },
             "Camera position and target in plant space, and the vertical field of view in degrees (default 45); "
-            "default: framed from --view around the plant's box")
+            "looking straight down, +x is right and -z up in the image; default: framed from --view around the "
+            "plant's box")
         ->type_name("EX,EY,EZ,TX,TY,TZ[,FOV]")
-        ->check(accepting(parseCamera, "is not a camera: expected 6 or 7 numbers, the target not straight above "
-                                       "or below, the field of view between 0 and 180 degrees"));
+        ->check(accepting(parseCamera, "is not a camera: expected 6 or 7 numbers, the target not the position, the "
+                                       "field of view between 0 and 180 degrees"));
     command
         .add_option_function<std::string>(
             "--view",
