@@ -1,6 +1,7 @@
 #include "tools/field_options.h"
 
 #include "engine/vk/device.h"
+#include "lsystem/common/output_file.h"
 #include "tools/data_dir.h"
 #include "tools/memory_budget_option.h"
 
@@ -119,6 +120,15 @@ bool parseToolCommandLine(CLI::App& app, int argc, char** argv, const char* prog
 void reportBadOption(const char* program, const std::string& message, int* exitCode) {
     std::cerr << program << ": error: " << message << "\n";
     *exitCode = 2;
+}
+
+std::string flaggedOutputsProblem(std::initializer_list<FlaggedOutput> outputs, const std::filesystem::path& input) {
+    for (const FlaggedOutput& output : outputs) {
+        if (output.path->empty()) continue;
+        if (const std::string problem = lsys::outputPathProblem(*output.path, {&input, 1}); !problem.empty())
+            return std::string("cannot write ") + output.flag + " file: " + problem;
+    }
+    return {};
 }
 
 } // namespace pf

@@ -13,6 +13,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -96,5 +98,16 @@ bool parseToolCommandLine(CLI::App& app, int argc, char** argv, const char* prog
 
 // Prints "PROGRAM: error: MESSAGE" and sets *exitCode to 2 (bad input).
 void reportBadOption(const char* program, const std::string& message, int* exitCode);
+
+// An output file as its flag names it: {"--capture", &o.capturePath}.
+struct FlaggedOutput {
+    const char* flag;
+    const std::string* path; // empty: not asked for
+};
+
+// "cannot write FLAG file: REASON" for the first output the output rule
+// (lsystem/common/output_file.h) refuses against `input` and the files the
+// run has read; empty when every one may be written.
+std::string flaggedOutputsProblem(std::initializer_list<FlaggedOutput> outputs, const std::filesystem::path& input);
 
 } // namespace pf

@@ -25,8 +25,8 @@ TEST(PlantfieldOutputs, CaptureOntoTheSceneIsRefused) {
 TEST(PlantfieldOutputs, OutputsThroughALinkToTheSceneAreRefused) {
     const fs::path dir = emptyTestFolder("plantfield_outputs");
     const fs::path scene = bushScene(dir, kData);
-    for (const std::string& output : {"--frames 2 --size 64x64 --video link.mp4", "--export link.glb",
-                                      "--export-placements link.csv", "--export-placements link.json"}) {
+    for (const std::string output : {"--frames 2 --size 64x64 --video link.mp4", "--export link.glb",
+                                     "--export-placements link.csv", "--export-placements link.json"}) {
         const fs::path link = dir / output.substr(output.find("link"));
         fs::create_symlink(scene, link);
         const std::string flags = output.substr(0, output.find("link"));

@@ -1,6 +1,5 @@
 #include "plantbench_options.h"
 
-#include "lsystem/common/output_file.h"
 #include "shaders/shared/field_layouts.h"
 #include "tools/field_options.h"
 
@@ -156,13 +155,8 @@ std::optional<PlantbenchOptions> parsePlantbenchOptions(int argc, char** argv, i
 }
 
 std::string outputsProblem(const PlantbenchOptions& o) {
-    const std::filesystem::path scene = o.scenePath;
-    for (auto [flag, path] : {std::pair{"--json", &o.jsonPath}, {"--csv", &o.csvPath}, {"--plot", &o.plotPath}}) {
-        if (path->empty()) continue;
-        if (const std::string problem = lsys::outputPathProblem(*path, {&scene, 1}); !problem.empty())
-            return std::string("cannot write ") + flag + " file: " + problem;
-    }
-    return {};
+    return flaggedOutputsProblem({{"--json", &o.jsonPath}, {"--csv", &o.csvPath}, {"--plot", &o.plotPath}},
+                                 o.scenePath);
 }
 
 } // namespace pf

@@ -23,14 +23,13 @@ FrameSpan writtenFrames(const PlantfieldOptions& o) {
 
 std::string outputsProblem(const PlantfieldOptions& o) {
     const std::filesystem::path input = o.plantPath.empty() ? o.scenePath : o.plantPath;
-    for (const auto& [flag, path] : {std::pair{"--capture", &o.capturePath},
-                                     {"--video", &o.videoPath},
-                                     {"--export", &o.exportPath},
-                                     {"--export-placements", &o.placementsPath}}) {
-        if (path->empty()) continue;
-        if (const std::string problem = lsys::outputPathProblem(*path, {&input, 1}); !problem.empty())
-            return std::string("cannot write ") + flag + " file: " + problem;
-    }
+    if (std::string problem = flaggedOutputsProblem({{"--capture", &o.capturePath},
+                                                     {"--video", &o.videoPath},
+                                                     {"--export", &o.exportPath},
+                                                     {"--export-placements", &o.placementsPath}},
+                                                    input);
+        !problem.empty())
+        return problem;
     // Only frames already there can be an input; the folder is created if missing.
     std::error_code error;
     if (o.outDir.empty() || !std::filesystem::is_directory(o.outDir, error)) return {};
