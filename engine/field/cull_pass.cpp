@@ -46,8 +46,8 @@ uint32_t regionOf(uint32_t phase) { return phase == CULL_PHASE_LATE ? 1u : 0u; }
 CullPass createCullPass(GpuResources& owner, const CullPassInputs& inputs) {
     const GpuContext& ctx = owner.ctx();
     if (inputs.instanceCount > FIELD_MAX_INSTANCES)
-        throw std::runtime_error("field of " + std::to_string(inputs.instanceCount) + " instances exceeds " +
-                                 std::to_string(FIELD_MAX_INSTANCES));
+        throw DeviceLimitError("field of " + std::to_string(inputs.instanceCount) + " instances exceeds " +
+                               std::to_string(FIELD_MAX_INSTANCES));
     CullPass pass;
     pass.instanceCount = inputs.instanceCount;
     pass.modelCount = inputs.modelCount;

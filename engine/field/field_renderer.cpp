@@ -28,7 +28,7 @@ FieldRenderer::FieldRenderer(const GpuContext& ctx, FieldContent content, const 
     : ctx_(ctx), content_(std::move(content)), fieldBox_(fieldBox(content_)), settings_(settings), resources_(ctx) {
     settings_.antialiasing = supportedAntialiasing(ctx_, settings.antialiasing);
     if (content_.plants.size() > FIELD_MAX_INSTANCES)
-        throw std::runtime_error("at most " + std::to_string(FIELD_MAX_INSTANCES) + " plants can be drawn");
+        throw DeviceLimitError("at most " + std::to_string(FIELD_MAX_INSTANCES) + " plants can be drawn");
     // The traced pass runs before the colour pass, over the plants the cull
     // lists then; occlusion culling adds plants between the colour pass's parts.
     const bool traced = settings_.shadows == SunShadows::raytraced;

@@ -22,7 +22,7 @@ void requireBindableVertexPool(const GpuContext& ctx, size_t vertices) {
     const uint64_t texels = bytes / (4 * sizeof(uint32_t));
     if (bytes <= limits.maxStorageBufferRange && texels <= limits.maxTexelBufferElements) return;
     const auto mib = [](uint64_t b) { return std::to_string((b + (1 << 20) - 1) >> 20) + " MiB"; };
-    throw std::runtime_error(
+    throw DeviceLimitError(
         "the plant models' vertex pool (" + std::to_string(vertices) + " vertices, " + mib(bytes) +
         ") is larger than this device binds as one buffer (" +
         mib(std::min<uint64_t>(limits.maxStorageBufferRange, uint64_t(limits.maxTexelBufferElements) * 16)) +

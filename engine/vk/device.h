@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,14 @@ struct GpuOptions {
     std::string deviceName;
     std::vector<std::string> instanceExtensions; // e.g. what GLFW needs
     bool echoValidation = true;
+};
+
+// Work the device cannot take — an image past its largest side, an
+// allocation past its heap, a buffer past its binding range, more plants than
+// a pass draws: the size of the input, not a fault of the program, so the
+// tools report it as they report bad input (exit 2).
+struct DeviceLimitError : std::runtime_error {
+    using std::runtime_error::runtime_error;
 };
 
 struct GpuContext {

@@ -42,9 +42,9 @@ VkDeviceMemory GpuResources::allocate(const VkMemoryRequirements& requirements, 
     const VkMemoryHeap& heap =
         ctx_->memoryProperties.memoryHeaps[ctx_->memoryProperties.memoryTypes[info.memoryTypeIndex].heapIndex];
     if (requirements.size > heap.size)
-        throw std::runtime_error("the GPU would need " + std::to_string(requirements.size >> 20) +
-                                 " MiB in one allocation, more than its memory heap of " +
-                                 std::to_string(heap.size >> 20) + " MiB");
+        throw DeviceLimitError("the GPU would need " + std::to_string(requirements.size >> 20) +
+                               " MiB in one allocation, more than its memory heap of " +
+                               std::to_string(heap.size >> 20) + " MiB");
     VkDeviceMemory memory;
     VK_CHECK(vkAllocateMemory(ctx_->device, &info, nullptr, &memory));
     owned_.push_back({VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<uint64_t>(memory), requirements.size});

@@ -18,9 +18,8 @@ Antialiasing supportedAntialiasing(const GpuContext& ctx, Antialiasing wanted) {
 RenderTarget createRenderTarget(const GpuContext& ctx, VkExtent2D extent, Antialiasing antialiasing) {
     const uint32_t maxSize = ctx.properties.limits.maxImageDimension2D;
     if (extent.width == 0 || extent.height == 0 || extent.width > maxSize || extent.height > maxSize)
-        throw std::runtime_error("image size " + std::to_string(extent.width) + "x" + std::to_string(extent.height) +
-                                 " is outside what the device supports (1 to " + std::to_string(maxSize) +
-                                 " per side)");
+        throw DeviceLimitError("image size " + std::to_string(extent.width) + "x" + std::to_string(extent.height) +
+                               " is outside what the device supports (1 to " + std::to_string(maxSize) + " per side)");
     RenderTarget target;
     target.resources = GpuResources(ctx);
     target.extent = extent;

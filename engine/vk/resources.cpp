@@ -87,8 +87,8 @@ VkBufferView createTexelView(GpuResources& owner, const Buffer& buffer, VkFormat
     const VkDeviceSize texels = buffer.size / texelBytes;
     const uint32_t limit = owner.ctx().properties.limits.maxTexelBufferElements;
     if (texels > limit)
-        throw std::runtime_error("a texel buffer of " + std::to_string(texels) + " texels is more than this device's " +
-                                 "maxTexelBufferElements (" + std::to_string(limit) + ")");
+        throw DeviceLimitError("a texel buffer of " + std::to_string(texels) + " texels is more than this device's " +
+                               "maxTexelBufferElements (" + std::to_string(limit) + ")");
     VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
     info.buffer = buffer.buffer;
     info.format = format;

@@ -88,7 +88,7 @@ std::string outputPathProblem(const fs::path& path, std::span<const fs::path> in
 
 OutputFile::OutputFile(const fs::path& target) : target_(target) {
     if (const std::string problem = outputPathProblem(target); !problem.empty())
-        throw std::runtime_error("cannot write " + inQuotes(target) + ": " + problem);
+        throw OutputRefusedError("cannot write " + inQuotes(target) + ": " + problem);
     std::string ignored;
     resolved_ = resolvedTarget(target, ignored);
     // mkstemp: a new file of our own, never an existing one of that name.

@@ -21,9 +21,16 @@
 #include <filesystem>
 #include <fstream>
 #include <span>
+#include <stdexcept>
 #include <string>
 
 namespace lsys {
+
+// A target refused for where it points (outputPathProblem's reason): bad
+// input, as a bad flag is, where a failed write is the machine's fault.
+struct OutputRefusedError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 // Empty when `path` can be written as described above, otherwise the reason
 // it cannot ("'x' is a folder", "folder 'y' does not exist", "'x' is the
@@ -33,9 +40,9 @@ std::string outputPathProblem(const std::filesystem::path& path, std::span<const
 
 class OutputFile {
 public:
-    // Throws std::runtime_error with outputPathProblem's reason (the inputs
-    // being the thread's ReadFileLogs'), or when the temporary file cannot be
-    // created.
+    // Throws OutputRefusedError with outputPathProblem's reason (the inputs
+    // being the thread's ReadFileLogs'), std::runtime_error when the
+    // temporary file cannot be created.
     explicit OutputFile(const std::filesystem::path& target);
     OutputFile(const OutputFile&) = delete;
     OutputFile& operator=(const OutputFile&) = delete;

@@ -27,10 +27,11 @@ protected:
         file.commit();
     }
     // The message of writing to `path`, which must fail.
+    // A refusal is OutputRefusedError, which the tools report as bad input (exit 2).
     std::string failureOf(const fs::path& path) const {
         try {
             write(path, "new");
-        } catch (const std::runtime_error& error) {
+        } catch (const lsys::OutputRefusedError& error) {
             return error.what();
         }
         ADD_FAILURE() << "writing " << path << " did not fail";

@@ -55,7 +55,8 @@ TEST_F(GpuBytesTest, UploadsPastTheMemoryBudgetAreRefusedBeforeAllocating) {
 
 // A vertex pool larger than the device binds as one storage buffer is
 // refused with its size, before any device memory is allocated (bound
-// anyway, it is undefined behaviour the validation layer reports).
+// anyway, it is undefined behaviour the validation layer reports), as a
+// DeviceLimitError, which the tools report as bad input (exit 2).
 TEST_F(GpuBytesTest, AVertexPoolPastTheDevicesBufferRangeIsRefused) {
     const Scene scene = loadScene(std::string(PLANTFIELD_DATA_DIR) + "/scenes/test_small.json");
     FieldContent content = buildFieldContent(scene);
@@ -66,7 +67,7 @@ TEST_F(GpuBytesTest, AVertexPoolPastTheDevicesBufferRangeIsRefused) {
     try {
         FieldRenderer renderer(ctx, std::move(content), FieldRenderSettings{});
         FAIL() << "expected the vertex pool to be refused";
-    } catch (const std::runtime_error& error) {
+    } catch (const DeviceLimitError& error) {
         EXPECT_NE(std::string(error.what()).find("vertex pool (" + std::to_string(range / 64 + 1) + " vertices"),
                   std::string::npos)
             << error.what();

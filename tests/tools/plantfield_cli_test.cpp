@@ -110,6 +110,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadInvocation{"DensifyWithoutInstances", "--capture OUT --densify", "--densify needs --instances"},
         BadInvocation{"LodOutOfRange", "--capture OUT --lod 3", "--lod"},
         BadInvocation{"FramesWithoutOutDir", "--frames 5", "--out-dir"},
+        BadInvocation{"OutDirIsAFile", "--frames 2 --out-dir /dev/null",
+                      "cannot write --out-dir: '/dev/null' is not a folder"},
+        BadInvocation{"OutDirBelowAFile", "--frames 2 --out-dir /dev/null/frames",
+                      "cannot write --out-dir: '/dev/null' is in the way: not a folder"},
         BadInvocation{"FrameRangeWithoutFrames", "--capture OUT --frame-range 0:1", "--frame-range needs"},
         BadInvocation{"FrameRangeInAWindow", "--window --frames 4 --frame-range 0:1", "--frame-range needs"},
         BadInvocation{"MalformedFrameRange", "--frames 4 --out-dir OUT --frame-range 1-2", "expected A:B"},
@@ -426,8 +430,11 @@ TEST(PlantfieldCli, VideoHoldsTheSequencesFrames) {
     for (size_t v = 0; v < 3; ++v) {
         const double own = meanDifference(v, pngs[v]);
         EXPECT_LT(own, 5.0) << "video frame " << v;
-        for (size_t other = 0; other < 3; ++other)
-            if (other != v) EXPECT_LT(own, meanDifference(v, pngs[other])) << "video frame " << v << " vs " << other;
+        for (size_t other = 0; other < 3; ++other) {
+            if (other != v) {
+                EXPECT_LT(own, meanDifference(v, pngs[other])) << "video frame " << v << " vs " << other;
+            }
+        }
     }
 }
 

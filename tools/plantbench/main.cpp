@@ -7,6 +7,7 @@
 
 #include "engine/scene/scene.h"
 #include "lsystem/common/file_reader.h"
+#include "lsystem/common/output_file.h"
 
 #include "tools/crash_report.h"
 #include <exception>
@@ -42,6 +43,9 @@ int run(const PlantbenchOptions& o) {
     } catch (const lsys::DerivationError& e) { // past a budget (memory, modules), like a scene too large
         std::cerr << "\nplantbench: error: " << e.what() << "\n";
         exitCode = 2;
+    } catch (const DeviceLimitError& e) { // work the device cannot take, like a scene too large
+        std::cerr << "\nplantbench: error: " << e.what() << "\n";
+        exitCode = 2;
     } catch (const std::bad_alloc&) { // a stage the memory budget does not count
         std::cerr << "\nplantbench: error: out of memory (measure fewer plants or set a lower --memory-budget)\n";
         exitCode = 2;
@@ -74,6 +78,9 @@ int main(int argc, char** argv) {
         const std::optional<pf::PlantbenchOptions> options = pf::parsePlantbenchOptions(argc, argv, &exitCode);
         if (!options) return exitCode;
         return pf::run(*options);
+    } catch (const lsys::OutputRefusedError& e) { // writing the outputs: onto an input, a folder or a device
+        std::cerr << "plantbench: error: " << e.what() << "\n";
+        return 2;
     } catch (const std::bad_alloc&) { // writing the outputs
         std::cerr << "plantbench: error: out of memory\n";
         return 2;

@@ -278,12 +278,13 @@ void runSweep(const PlantbenchOptions& o, const Scene& scene, GpuContext& ctx, S
             throw lsys::MemoryBudgetError("at " + std::to_string(o.counts[i]) +
                                           " plants the host ran out of memory: measure fewer plants or lower "
                                           "--memory-budget");
+        } catch (const DeviceLimitError& e) { // more than the device takes: bad input, exit 2
+            throw DeviceLimitError("at " + std::to_string(o.counts[i]) + " plants " + e.what());
         } catch (const std::runtime_error& e) {
-            const bool outOfGpuMemory = std::strstr(e.what(), "VK_ERROR_OUT_OF_DEVICE_MEMORY") != nullptr;
-            throw std::runtime_error(
-                "at " + std::to_string(o.counts[i]) + " plants " +
-                (outOfGpuMemory ? "the device ran out of GPU memory (measure fewer plants): " : "the frame failed: ") +
-                e.what());
+            const std::string at = "at " + std::to_string(o.counts[i]) + " plants ";
+            if (std::strstr(e.what(), "VK_ERROR_OUT_OF_DEVICE_MEMORY") != nullptr)
+                throw DeviceLimitError(at + "the device ran out of GPU memory (measure fewer plants): " + e.what());
+            throw std::runtime_error(at + "the frame failed: " + e.what());
         }
         finishCount(progress, result.counts.back());
     }

@@ -38,6 +38,9 @@ std::optional<FieldBuild> pollReload(FieldReloader& reloader, const PlantfieldOp
     if (reloader.building.valid()) {
         if (reloader.building.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
         FieldBuild build = reloader.building.get();
+        // The rebuild read them on its own thread: noted on this one too, the
+        // run's, so the window's outputs (--capture) never replace them.
+        for (const std::filesystem::path& file : build.files) lsys::noteFileRead(file);
         rewatchFiles(reloader.watch, build.files);
         return build;
     }

@@ -12,6 +12,7 @@
 
 #include "lsystem/common/file_reader.h"
 #include "lsystem/common/memory_budget.h"
+#include "lsystem/common/output_file.h"
 #include "tools/crash_report.h"
 
 namespace pf {
@@ -71,6 +72,12 @@ int main(int argc, char** argv) {
         std::cerr << "plantfield: error: " << e.what() << "\n";
         return 2;
     } catch (const lsys::DerivationError& e) { // past a budget (memory, modules), like a scene too large
+        std::cerr << "plantfield: error: " << e.what() << "\n";
+        return 2;
+    } catch (const lsys::OutputRefusedError& e) { // an output onto an input, a folder or a device
+        std::cerr << "plantfield: error: " << e.what() << "\n";
+        return 2;
+    } catch (const pf::DeviceLimitError& e) { // work the device cannot take, like a scene too large
         std::cerr << "plantfield: error: " << e.what() << "\n";
         return 2;
     } catch (const std::bad_alloc&) { // a stage the memory budget does not count

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <utility>
 
+#include <unistd.h>
+
 #include "engine/scene/scene.h"
 #include "lsystem/common/output_file.h"
 
@@ -21,6 +23,21 @@ FrameSpan writtenFrames(const PlantfieldOptions& o) {
     return {0, std::max(o.frames, 1u)};
 }
 
+std::string folderProblem(const std::filesystem::path& folder) {
+    // The folder, or the nearest of its parents that exists: create_directories makes the rest.
+    std::filesystem::path existing = folder;
+    std::error_code error;
+    while (!std::filesystem::exists(std::filesystem::symlink_status(existing, error)) && existing.has_relative_path() &&
+           existing.has_parent_path() && existing.parent_path() != existing)
+        existing = existing.parent_path();
+    if (existing.empty()) existing = ".";
+    if (!std::filesystem::exists(existing, error)) return {};
+    if (!std::filesystem::is_directory(existing, error))
+        return "'" + existing.string() + "' is " + (existing == folder ? "" : "in the way: ") + "not a folder";
+    if (access(existing.c_str(), W_OK) != 0) return "folder '" + existing.string() + "' is not writable";
+    return {};
+}
+
 std::string outputsProblem(const PlantfieldOptions& o) {
     const std::filesystem::path input = o.plantPath.empty() ? o.scenePath : o.plantPath;
     if (std::string problem = flaggedOutputsProblem({{"--capture", &o.capturePath},
@@ -30,9 +47,11 @@ std::string outputsProblem(const PlantfieldOptions& o) {
                                                     input);
         !problem.empty())
         return problem;
+    if (o.outDir.empty()) return {};
+    if (std::string problem = folderProblem(o.outDir); !problem.empty()) return "cannot write --out-dir: " + problem;
     // Only frames already there can be an input; the folder is created if missing.
     std::error_code error;
-    if (o.outDir.empty() || !std::filesystem::is_directory(o.outDir, error)) return {};
+    if (!std::filesystem::is_directory(o.outDir, error)) return {};
     const FrameSpan frames = writtenFrames(o);
     for (uint32_t i = frames.first; i < frames.end; ++i) {
         const std::string frame = framePath(o.outDir, i);

@@ -11,6 +11,7 @@
 #include "options.h"
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 
 namespace pf {
@@ -23,6 +24,12 @@ struct FrameSpan {
     uint32_t first = 0, end = 0;
 };
 FrameSpan writtenFrames(const PlantfieldOptions& o);
+
+// Why files cannot be written into `folder`, made with its missing parents
+// (create_directories), before any work: the folder or the nearest parent
+// that exists is not a folder ("'s.json' is not a folder") or not writable.
+// Empty when they can.
+std::string folderProblem(const std::filesystem::path& folder);
 
 // "cannot write --capture file: REASON" for the first output refused; empty
 // when every output may be written.
