@@ -201,6 +201,15 @@ inline constexpr double kMaxSceneTime = 100000.0;
 // positions there are still a metre apart, so a field of a few hundred metres
 // is still placed in view (and depth) from there.
 inline constexpr float kMaxCameraCoordinate = 1e7f;
+// The bounds of a scene's other numbers (scene_json.cpp): lengths and sizes
+// in metres up to 10^6 (a terrain 1 000 km across), angles in degrees within
+// ±10^6, and scales, rates, intensities and physical constants up to 10^6
+// (Young's modulus, in pascals, has a bound of its own). A product of a few
+// of them — a drag force is density times speed squared times a coefficient —
+// stays far inside float's 3.4·10^38.
+inline constexpr double kMaxSceneLength = 1e6;
+inline constexpr double kMaxSceneAngle = 1e6;
+inline constexpr double kMaxSceneFactor = 1e6;
 // The least time between two camera keys: the spline's tangents, position
 // differences over key spacings, then stay far inside float's range.
 inline constexpr double kMinKeyframeSpacing = 1e-3;

@@ -14,13 +14,27 @@
 
 namespace pf {
 // The located JSON reader (lsystem/common/json_reader.h).
-using lsys::above, lsys::anyNumber, lsys::arrayElements, lsys::atLeast, lsys::between, lsys::didYouMean, lsys::failAt,
+using lsys::anyNumber, lsys::arrayElements, lsys::atLeast, lsys::between, lsys::didYouMean, lsys::failAt,
     lsys::JsonError, lsys::JsonNode, lsys::JsonSource, lsys::member, lsys::Range, lsys::readField, lsys::readJsonFile,
     lsys::readNumber, lsys::readString, lsys::readVector, lsys::requireMap, lsys::requireMember, lsys::requireObject,
     lsys::rootNode;
 namespace {
 
-const Range kColor = atLeast(0.0); // linear RGB; above 1 is allowed for bright light
+// Every number of a scene has a bound, so that what is computed from it —
+// squares, products of a few, a light times a colour — stays far inside
+// float's range and no NaN or infinity reaches a frame, a statistic or an
+// export. The bounds are orders of magnitude past any forest.
+const Range kColor = between(0.0, kMaxSceneFactor); // linear RGB; above 1 is allowed for bright light
+// A position or an offset, in metres: as far out as a camera may be.
+const Range kCoordinate = between(-kMaxCameraCoordinate, kMaxCameraCoordinate);
+// A length, a height, a distance or a size, in metres.
+const Range kLength = Range{.min = 0.0, .max = kMaxSceneLength, .minOpen = true};
+const Range kLengthOrZero = between(0.0, kMaxSceneLength);
+// An angle, in degrees: any turn, within what float holds to a degree.
+const Range kAngle = between(-kMaxSceneAngle, kMaxSceneAngle);
+// A scale, a rate, an intensity or a physical constant: positive or zero.
+const Range kFactor = Range{.min = 0.0, .max = kMaxSceneFactor, .minOpen = true};
+const Range kFactorOrZero = between(0.0, kMaxSceneFactor);
 
 // A file (or, where `folders` allows, a folder: a vlab object) that exists,
 // relative to the scene file's folder.
@@ -49,9 +63,9 @@ NoiseHeightfield readNoise(const JsonNode& node) {
     NoiseHeightfield noise;
     readField(node, "seed", noise.seed, anyNumber());
     readField(node, "octaves", noise.octaves, between(1, 16));
-    readField(node, "amplitude", noise.amplitude, atLeast(0.0));
-    readField(node, "frequency", noise.frequency, above(0.0));
-    readField(node, "lacunarity", noise.lacunarity, atLeast(1.0));
+    readField(node, "amplitude", noise.amplitude, kLengthOrZero);
+    readField(node, "frequency", noise.frequency, kFactor);
+    readField(node, "lacunarity", noise.lacunarity, between(1.0, 16.0)); // 16^15 at 16 octaves
     readField(node, "gain", noise.gain, between(0.0, 1.0));
     return noise;
 }
@@ -60,7 +74,7 @@ ImageHeightfield readImage(const JsonNode& node, const std::filesystem::path& sc
     requireObject(node, {"path", "height_scale"});
     ImageHeightfield image;
     image.path = existingFile(requireMember(node, "path", "a greyscale PNG file"), sceneFolder);
-    readField(node, "height_scale", image.heightScale, atLeast(0.0));
+    readField(node, "height_scale", image.heightScale, kLengthOrZero);
     return image;
 }
 
@@ -93,10 +107,10 @@ TerrainLsystem readTerrainLsystem(const JsonNode& node, const std::filesystem::p
     } else {
         requireObject(node, {"path", "origin", "heading", "scale", "max_height", "seed"});
         lsystem.path = existingFile(requireMember(node, "path", "an L-system file"), sceneFolder, true);
-        readField(node, "origin", lsystem.origin, anyNumber());
-        readField(node, "heading", lsystem.headingDegrees, anyNumber());
-        readField(node, "scale", lsystem.scale, above(0.0));
-        readField(node, "max_height", lsystem.maxHeight, above(0.0));
+        readField(node, "origin", lsystem.origin, kCoordinate);
+        readField(node, "heading", lsystem.headingDegrees, kAngle);
+        readField(node, "scale", lsystem.scale, kLength);
+        readField(node, "max_height", lsystem.maxHeight, kLength);
         readField(node, "seed", lsystem.seed, anyNumber());
     }
     lsystem.bumps = mountainsOf(lsystem, node);
@@ -106,7 +120,7 @@ TerrainLsystem readTerrainLsystem(const JsonNode& node, const std::filesystem::p
 Terrain readTerrain(const JsonNode& node, const std::filesystem::path& sceneFolder) {
     requireObject(node, {"size", "resolution", "noise", "image", "lsystem", "albedo"});
     Terrain terrain;
-    readField(node, "size", terrain.size, above(0.0));
+    readField(node, "size", terrain.size, kLength);
     readField(node, "resolution", terrain.resolution, between(2, kMaxTerrainResolution));
     readField(node, "albedo", terrain.albedo, between(0.0, 1.0));
     const std::optional<JsonNode> noise = member(node, "noise");
@@ -125,9 +139,9 @@ Terrain readTerrain(const JsonNode& node, const std::filesystem::path& sceneFold
 PlacedPlant readPlacedPlant(const JsonNode& node) {
     requireObject(node, {"position", "rotation", "scale"});
     PlacedPlant plant;
-    plant.position = readVector<2>(requireMember(node, "position", "[x, z] in metres"), anyNumber());
-    readField(node, "rotation", plant.rotationDegrees, anyNumber());
-    readField(node, "scale", plant.scale, above(0.0));
+    plant.position = readVector<2>(requireMember(node, "position", "[x, z] in metres"), kCoordinate);
+    readField(node, "rotation", plant.rotationDegrees, kAngle);
+    readField(node, "scale", plant.scale, kFactor);
     return plant;
 }
 
@@ -153,17 +167,17 @@ Placement readPlacement(const JsonNode& node, Placement inherited) {
         placement.mode = PlacementMode(mode);
         placement.instances.clear(); // only an explicit placement keeps a list
     }
-    readField(node, "density", placement.densityPerHectare, atLeast(0.0));
-    readField(node, "min_distance", placement.minDistance, above(0.0));
+    readField(node, "density", placement.densityPerHectare, between(0.0, 1e8)); // one plant a cm²
+    readField(node, "min_distance", placement.minDistance, kLength);
     readField(node, "count", placement.count, anyNumber());
     if (const std::optional<JsonNode> instances = member(node, "instances")) {
         for (const JsonNode& element : arrayElements(*instances, "an array of plants"))
             placement.instances.push_back(readPlacedPlant(element));
     }
-    readField(node, "clearance", placement.clearance, atLeast(0.0));
+    readField(node, "clearance", placement.clearance, kLengthOrZero);
     readField(node, "max_slope", placement.maxSlopeDegrees, between(0.0, 90.0));
-    readInterval(node, "height_range", placement.heightRange, anyNumber());
-    readInterval(node, "scale", placement.scaleRange, above(0.0));
+    readInterval(node, "height_range", placement.heightRange, kCoordinate);
+    readInterval(node, "scale", placement.scaleRange, kFactor);
     readField(node, "seed", placement.seed, anyNumber());
     return placement;
 }
@@ -182,9 +196,9 @@ LodHints readLod(const JsonNode& node) {
                    "must be \"single\", \"double\" or \"triple\" (got \"" + name + "\")" + didYouMean(name, names));
         lod.billboard = BillboardKind(it - names.begin());
     }
-    readField(node, "reduced_below_px", lod.reducedBelowPixels, above(0.0));
-    readField(node, "impostor_below_px", lod.impostorBelowPixels, above(0.0));
-    readField(node, "hidden_below_px", lod.hiddenBelowPixels, atLeast(0.0));
+    readField(node, "reduced_below_px", lod.reducedBelowPixels, kFactor);
+    readField(node, "impostor_below_px", lod.impostorBelowPixels, kFactor);
+    readField(node, "hidden_below_px", lod.hiddenBelowPixels, kFactorOrZero);
     if (lod.impostorBelowPixels > lod.reducedBelowPixels)
         failAt(node, "needs impostor_below_px ≤ reduced_below_px (impostors are the farthest level)");
     if (lod.hiddenBelowPixels > lod.impostorBelowPixels)
@@ -276,7 +290,7 @@ Species readSpecies(const JsonNode& node, const std::filesystem::path& sceneFold
     readPlantSource(node, sceneFolder, species);
     readField(node, "variants", species.variants, between(1, 1024));
     readField(node, "seed", species.seed, anyNumber());
-    readField(node, "height", species.height, above(0.0));
+    readField(node, "height", species.height, kLength);
     if (auto lod = member(node, "lod")) species.lod = readLod(*lod);
     if (auto materials = member(node, "materials")) species.materials = readMaterials(*materials);
     const std::optional<JsonNode> placement = member(node, "placement");
@@ -288,9 +302,9 @@ Sun readSun(const JsonNode& node) {
     requireObject(node, {"elevation", "azimuth", "colour", "intensity"});
     Sun sun;
     readField(node, "elevation", sun.elevationDegrees, between(-90.0, 90.0));
-    readField(node, "azimuth", sun.azimuthDegrees, anyNumber());
+    readField(node, "azimuth", sun.azimuthDegrees, kAngle);
     readField(node, "colour", sun.color, kColor);
-    readField(node, "intensity", sun.intensity, atLeast(0.0));
+    readField(node, "intensity", sun.intensity, kFactorOrZero);
     return sun;
 }
 
@@ -305,17 +319,17 @@ Sky readSky(const JsonNode& node) {
 Fog readFog(const JsonNode& node) {
     requireObject(node, {"density"});
     Fog fog;
-    readField(node, "density", fog.density, atLeast(0.0));
+    readField(node, "density", fog.density, kFactorOrZero);
     return fog;
 }
 
 Wind readWind(const JsonNode& node) {
     requireObject(node, {"speed", "direction", "gust_strength", "gust_speed", "turbulence"});
     Wind wind;
-    readField(node, "speed", wind.speed, atLeast(0.0));
-    readField(node, "direction", wind.directionDegrees, anyNumber());
-    readField(node, "gust_strength", wind.gustStrength, atLeast(0.0));
-    readField(node, "gust_speed", wind.gustSpeed, atLeast(0.0));
+    readField(node, "speed", wind.speed, kFactorOrZero);
+    readField(node, "direction", wind.directionDegrees, kAngle);
+    readField(node, "gust_strength", wind.gustStrength, kFactorOrZero);
+    readField(node, "gust_speed", wind.gustSpeed, kFactorOrZero);
     readField(node, "turbulence", wind.turbulence, between(0.0, 1.0));
     return wind;
 }
@@ -324,14 +338,15 @@ PhysicsSettings readPhysics(const JsonNode& node) {
     requireObject(node, {"wood_density", "youngs_modulus", "stiffness_scale", "damping_ratio", "gravity", "air_density",
                          "drag_coefficient", "leaf_drag", "sub_step", "joint_budget", "shared_phases"});
     PhysicsSettings physics;
-    readField(node, "wood_density", physics.woodDensity, above(0.0));
-    readField(node, "youngs_modulus", physics.youngsModulus, above(0.0));
-    readField(node, "stiffness_scale", physics.stiffnessScale, above(0.0));
+    readField(node, "wood_density", physics.woodDensity, kFactor);
+    readField(node, "youngs_modulus", physics.youngsModulus,
+              Range{.min = 0.0, .max = 1e13, .minOpen = true}); // steel: 2·10^11 Pa
+    readField(node, "stiffness_scale", physics.stiffnessScale, kFactor);
     readField(node, "damping_ratio", physics.dampingRatio, between(0.0, 10.0));
-    readField(node, "gravity", physics.gravity, atLeast(0.0));
-    readField(node, "air_density", physics.airDensity, atLeast(0.0));
-    readField(node, "drag_coefficient", physics.dragCoefficient, atLeast(0.0));
-    readField(node, "leaf_drag", physics.leafDrag, atLeast(0.0));
+    readField(node, "gravity", physics.gravity, kFactorOrZero);
+    readField(node, "air_density", physics.airDensity, kFactorOrZero);
+    readField(node, "drag_coefficient", physics.dragCoefficient, kFactorOrZero);
+    readField(node, "leaf_drag", physics.leafDrag, kFactorOrZero);
     // Above 1/30 s a frame would need less than one step; below 1/10000 s a frame costs hundreds.
     readField(node, "sub_step", physics.subStep, between(1.0 / 10000.0, 1.0 / 30.0));
     readField(node, "joint_budget", physics.jointBudget, between(0.0, double(kMaxJointBudget)));
@@ -357,8 +372,8 @@ CameraPath readCamera(const JsonNode& node) {
     requireObject(node, {"fov", "near", "far", "keyframes"});
     CameraPath camera;
     readField(node, "fov", camera.fovYDegrees, kFov);
-    readField(node, "near", camera.nearPlane, above(0.0));
-    readField(node, "far", camera.farPlane, above(camera.nearPlane));
+    readField(node, "near", camera.nearPlane, kLength);
+    readField(node, "far", camera.farPlane, Range{.min = camera.nearPlane, .max = kMaxSceneLength, .minOpen = true});
     if (const std::optional<JsonNode> keyframes = member(node, "keyframes")) {
         for (const JsonNode& element : arrayElements(*keyframes, "an array of keyframes")) {
             CameraKeyframe key = readKeyframe(element);
@@ -379,8 +394,8 @@ Cloud readCloud(const JsonNode& node, const std::filesystem::path& sceneFolder) 
     Cloud cloud;
     const JsonNode lsystem = requireMember(node, "lsystem", "the cloud's L-system file (data/clouds)");
     cloud.lsystem = existingFile(lsystem, sceneFolder);
-    cloud.position = readVector<3>(requireMember(node, "position", "[x, y, z] in metres"), anyNumber());
-    readField(node, "size", cloud.size, above(0.0));
+    cloud.position = readVector<3>(requireMember(node, "position", "[x, y, z] in metres"), kCoordinate);
+    readField(node, "size", cloud.size, kLength);
     readField(node, "seed", cloud.seed, anyNumber());
     readField(node, "shadow", cloud.shadow);
     try {

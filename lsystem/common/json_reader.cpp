@@ -438,7 +438,7 @@ Range between(double min, double max) { return {.min = min, .max = max}; }
 
 double readNumber(const JsonNode& node, Range range) {
     if (!node.value->is_number() || !inRange(node.value->get<double>(), range))
-        failExpected(node, "a number" + describe(range));
+        failExpected(node, "a number" + describe(range, std::numeric_limits<float>::max()));
     return node.value->get<double>();
 }
 

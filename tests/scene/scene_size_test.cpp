@@ -91,7 +91,7 @@ TEST(SceneSizes, ARepeatedNameAmongAHundredThousandSpeciesIsFound) {
 // 2.6 GB on a 100 m terrain): the sampling's grids and plants are counted
 // from the density and refused before any plant is sampled.
 TEST(SceneSizes, APlacementDensityPastTheMemoryBudgetIsRefusedBeforeSampling) {
-    for (const char* density : {"1e16", "5e7"}) { // per hectare
+    for (const char* density : {"1e8", "5e7"}) { // per hectare: the most a scene takes, and half
         const Scene scene = loadScene(test::writeFile(
             "dense.json", std::string("{\"terrain\": {\"size\": 100}, \"species\": [{\"name\": \"a\", ") +
                               PF_BUSH_LSYSTEM + ", \"placement\": {\"density\": " + density + "}}]}"));
