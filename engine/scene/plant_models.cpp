@@ -174,12 +174,56 @@ void fillBounds(gpu::PlantModel& model, const DrawnLods& lods) {
     model.boxMax = glm::vec4(hi, 0.0f);
 }
 
+// What the pool holds so far: each model is built within what is left of
+// the budget after it, and the pool itself is counted, so that many models
+// each within the budget cannot together pass it.
+uint64_t poolBytes(const PlantModelPool& pool) {
+    uint64_t bytes = lsys::bytesPlus(lsys::bytesTimes(pool.vertices.capacity(), sizeof(gpu::FieldVertex)),
+                                     lsys::bytesTimes(pool.indices.capacity(), sizeof(uint32_t)));
+    bytes = lsys::bytesPlus(bytes, lsys::bytesTimes(pool.joints.capacity(), sizeof(gpu::JointParams)));
+    bytes = lsys::bytesPlus(bytes, lsys::bytesTimes(pool.models.capacity(), sizeof(PlantModelInfo)));
+    for (const PlantModelAsset& kept : pool.assets) {
+        const lsys::PlantAsset& asset = kept.asset;
+        bytes = lsys::bytesPlus(bytes, lsys::bytesTimes(asset.primitives.size(), sizeof(lsys::Primitive)));
+        bytes = lsys::bytesPlus(bytes, lsys::bytesTimes(asset.joints.size(), sizeof(lsys::Joint)));
+        for (const lsys::SurfaceMesh& surface : asset.surfaces) {
+            const uint64_t perVertex = sizeof(glm::vec3) * 2 + sizeof(glm::vec2); // position, normal, uv
+            bytes = lsys::bytesPlus(bytes, lsys::bytesTimes(surface.positions.size(), perVertex));
+            bytes = lsys::bytesPlus(bytes, lsys::bytesTimes(surface.indices.size(), sizeof(uint32_t)));
+        }
+    }
+    return bytes;
+}
+
+// Grows the pool's vertex and index arrays to take `vertices` and `indices`
+// more, refusing first when the arrays, old and new alive at once while they
+// move, would pass the budget (a vector doubling would otherwise jump past it).
+void reservePool(PlantModelPool& pool, size_t vertices, size_t indices, const lsys::MemoryBudget& memory,
+                 const std::string& model) {
+    const auto grown = [](size_t capacity, size_t needed) {
+        return needed <= capacity ? capacity : std::max(needed, capacity + capacity / 2);
+    };
+    const size_t vertexCapacity = grown(pool.vertices.capacity(), pool.vertices.size() + vertices);
+    const size_t indexCapacity = grown(pool.indices.capacity(), pool.indices.size() + indices);
+    uint64_t moving = 0;
+    if (vertexCapacity != pool.vertices.capacity())
+        moving = lsys::bytesPlus(moving, lsys::bytesTimes(vertexCapacity, sizeof(gpu::FieldVertex)));
+    if (indexCapacity != pool.indices.capacity())
+        moving = lsys::bytesPlus(moving, lsys::bytesTimes(indexCapacity, sizeof(uint32_t)));
+    lsys::need(memory, "plant models (" + model + " and the " + std::to_string(pool.models.size()) + " before it)",
+               lsys::bytesPlus(poolBytes(pool), moving));
+    pool.vertices.reserve(vertexCapacity);
+    pool.indices.reserve(indexCapacity);
+}
+
 PlantModelInfo buildModel(PlantModelPool& pool, const Scene& scene, uint32_t speciesIndex, uint32_t variant,
                           const PlantSource& source, const lsys::SurfaceLibrary& surfaces,
                           const lsys::MemoryBudget& memory, ModelAssets assets) {
     const Species& species = scene.species[speciesIndex];
     const uint64_t seed = uint64_t(speciesSeed(scene, speciesIndex)) + variant;
-    lsys::PlantAsset asset = speciesPlant(species, source, surfaces, seed, memory);
+    const uint64_t held = poolBytes(pool); // the plant is made within what the pool leaves
+    lsys::PlantAsset asset = speciesPlant(species, source, surfaces, seed,
+                                          lsys::MemoryBudget{memory.limitBytes > held ? memory.limitBytes - held : 0});
     applyMaterialOverrides(asset, species.materials);
     DrawnLods lods = lsys::drawnLods(asset);
     const float scale = species.height ? scaleToHeight(lods, *species.height) : 1.0f;
@@ -194,6 +238,13 @@ PlantModelInfo buildModel(PlantModelPool& pool, const Scene& scene, uint32_t spe
     const std::vector<gpu::JointParams> skeleton = buildJointParams(asset, scale, scene.physics);
     pool.joints.insert(pool.joints.end(), skeleton.begin(), skeleton.end());
     info.billboard = species.lod.billboard;
+    size_t vertices = 0, indices = 0;
+    for (const lsys::DrawnClasses& meshes : lods)
+        for (const lsys::DrawnMesh& mesh : meshes) {
+            vertices += mesh.vertices.size();
+            indices += mesh.indices.size();
+        }
+    reservePool(pool, vertices, indices, memory, info.name);
     for (uint32_t lod = 0; lod < kMeshLodCount; ++lod)
         for (uint32_t drawClass = 0; drawClass < kMeshClassCount; ++drawClass)
             info.meshes[lod][drawClass] = appendToPool(pool, lods[lod][drawClass], asset.materials);
@@ -217,6 +268,10 @@ PlantModelPool buildPlantModels(const Scene& scene, const ModelProgress& progres
         pool.firstModel.push_back(uint32_t(pool.models.size()));
         for (uint32_t variant = 0; variant < scene.species[s].variants; ++variant) {
             pool.models.push_back(buildModel(pool, scene, s, variant, source, surfaces, memory, assets));
+            lsys::need(memory,
+                       "plant models (" + pool.models.back().name + " and the " +
+                           std::to_string(pool.models.size() - 1) + " before it)",
+                       poolBytes(pool));
             if (progress) progress(pool.models.size(), total, pool.models.back().name);
         }
     }

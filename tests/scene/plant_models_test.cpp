@@ -293,4 +293,25 @@ TEST(PlantModels, StochasticVariantsAreDistinctMeshes) {
     EXPECT_EQ(meshes.size(), 3u);
 }
 
+// Each variant within the budget, all of them together past it: the pool is
+// counted too, before it grows, so the run is refused by name instead of
+// climbing to the machine's limit (1 024 variants of a matrix oak did).
+TEST(PlantModels, ModelsTogetherPastTheBudgetAreRefusedBeforeThePoolGrowsPastIt) {
+    const pf::Scene one = sceneOf(kData / "plants" / "stochastic_bush.lsys", 1);
+    const pf::PlantModelPool single = pf::buildPlantModels(one);
+    const uint64_t modelBytes = single.vertices.size() * sizeof(gpu::FieldVertex) +
+                                single.indices.size() * sizeof(uint32_t) +
+                                single.joints.size() * sizeof(gpu::JointParams);
+    const lsys::MemoryBudget budget{modelBytes * 20};
+    EXPECT_NO_THROW(pf::buildPlantModels(sceneOf(kData / "plants" / "stochastic_bush.lsys", 4), {}, budget));
+    try {
+        pf::buildPlantModels(sceneOf(kData / "plants" / "stochastic_bush.lsys", 64), {}, budget);
+        FAIL() << "64 variants of about 1/20 of the budget each were built";
+    } catch (const lsys::MemoryBudgetError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("memory budget: plant models (probe#"), std::string::npos) << message;
+        EXPECT_NE(message.find("before it) needs"), std::string::npos) << message;
+    }
+}
+
 } // namespace
