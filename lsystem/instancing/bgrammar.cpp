@@ -19,6 +19,7 @@ BGrammar buildUnguarded(const Grammar& grammar, const BGrammarOptions& options) 
     derivation.seed = options.seed;
     derivation.maxModules = options.maxModules;
     derivation.memory = options.memory;
+    derivation.onStep = options.onStep;
     ModuleString word = derive(grammar, derivation);
     if (options.interpreted) word = applyInterpretation(grammar, word, derivation);
     need(options.memory, "b-grammar", bytesPlus(moduleStringBytes(word), compressionBytes(word)));

@@ -118,6 +118,8 @@ struct BGrammarOptions {
     // The derivation's strings, the keys a memoised build rewrites and the
     // draft, or SEQUITUR's grammar of a derived word (stage "b-grammar").
     MemoryBudget memory = machineMemoryBudget();
+    // As DeriveOptions::onStep, when the word is derived first.
+    std::function<void(int, int, size_t)> onStep;
 };
 
 // The b-grammar of the grammar's derivation, without expanding the word when

@@ -513,6 +513,7 @@ ModuleString deriveUnguarded(const Grammar& grammar, const DeriveOptions& option
             std::swap(current, next);
         }
         runGlobalBlock(grammar.endEachBlock, state);
+        if (options.onStep) options.onStep(step, steps, current.size());
     }
     runGlobalBlock(grammar.endBlock, state);
     if (grammar.queries) answerQueries(grammar, current); // as cpfg's drawing of the string answers them

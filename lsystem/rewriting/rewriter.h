@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 
@@ -21,6 +22,10 @@ struct DeriveOptions {
     MemoryBudget memory = machineMemoryBudget();
     int threads = 2;
     size_t parallelThreshold = 65'536; // strings shorter than this are rewritten on one thread
+    // Called after each step with (step, steps, modules in the string): a
+    // derivation may run for hours within its budgets (a large word rewritten
+    // for a million steps), and tools show how far it is.
+    std::function<void(int, int, size_t)> onStep;
 };
 
 // Where a module's random draws come from: derive() uses its seed, the pass

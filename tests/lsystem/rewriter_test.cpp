@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
+#include <vector>
 
 #include "lsystem/common/error.h"
 #include "test_support.h"
@@ -139,6 +141,18 @@ TEST(LsysRewriter, FastPathMatchesGeneralPath) {
     Grammar a = parseOk(rules);
     Grammar b = parseOk(general);
     EXPECT_EQ(toString(derive(a, stepsOf(6)), a.symbols), toString(derive(b, stepsOf(6)), b.symbols));
+}
+
+// Tools show a long derivation's progress from this: every step, in order,
+// with the string's size after it.
+TEST(LsysRewriter, EachStepIsReportedWithTheStringsSize) {
+    Grammar grammar = parseOk("Axiom: A\nA --> AB\n");
+    DeriveOptions options = stepsOf(4);
+    std::vector<std::tuple<int, int, size_t>> reported;
+    options.onStep = [&](int step, int steps, size_t modules) { reported.emplace_back(step, steps, modules); };
+    EXPECT_EQ(derive(grammar, options).size(), 5u);
+    const std::vector<std::tuple<int, int, size_t>> expected{{1, 4, 2}, {2, 4, 3}, {3, 4, 4}, {4, 4, 5}};
+    EXPECT_EQ(reported, expected);
 }
 
 TEST(LsysRewriter, ZeroStepsGiveTheAxiom) {

@@ -1,7 +1,10 @@
 #include "tools/lsys/plant_loading.h"
 
+#include <chrono>
 #include <cstdlib>
 #include <iostream>
+#include <memory>
+#include <string>
 #include <unordered_map>
 
 #include "lsystem/common/error.h"
@@ -75,8 +78,29 @@ int failed(const DerivationArguments& arguments, const std::exception& error) {
     return kBadInput;
 }
 
+std::function<void(int, int, size_t)> derivationProgress() {
+    using Clock = std::chrono::steady_clock;
+    constexpr auto kInterval = std::chrono::seconds(5);
+    const Clock::time_point start = Clock::now();
+    auto last = std::make_shared<Clock::time_point>(start);
+    return [start, last, kInterval](int step, int steps, size_t modules) {
+        const Clock::time_point now = Clock::now();
+        if (now - *last < kInterval || step == steps) return;
+        *last = now;
+        const double perStep = std::chrono::duration<double>(now - start).count() / step;
+        const auto left = static_cast<long long>(perStep * (steps - step));
+        const std::string eta = left >= 3600
+                                    ? std::to_string(left / 3600) + " h " + std::to_string(left % 3600 / 60) + " min"
+                                : left >= 60 ? std::to_string(left / 60) + " min"
+                                             : std::to_string(left) + " s";
+        std::cerr << "lsys: step " << step << " of " << steps << ", " << modules << " modules, about " << eta
+                  << " left\n";
+    };
+}
+
 lsys::DeriveOptions deriveOptions(const DerivationArguments& arguments) {
     lsys::DeriveOptions options;
+    options.onStep = derivationProgress();
     options.steps = arguments.steps;
     options.seed = arguments.seed;
     options.maxModules = arguments.maxModules;
@@ -86,6 +110,7 @@ lsys::DeriveOptions deriveOptions(const DerivationArguments& arguments) {
 
 lsys::BGrammarOptions bgrammarOptions(const DerivationArguments& arguments) {
     lsys::BGrammarOptions options;
+    options.onStep = derivationProgress();
     options.steps = arguments.steps;
     options.seed = arguments.seed;
     options.interpreted = true; // the word the turtle reads

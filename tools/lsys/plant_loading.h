@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,11 +51,17 @@ std::optional<lsys::Grammar> loadGrammar(const DerivationArguments& arguments);
 // Prints what went wrong with the file, and the way out of a budget; kBadInput.
 int failed(const DerivationArguments& arguments, const std::exception& error);
 
-// -n, --seed, --max-modules and --memory-budget, as derive() takes them.
+// Prints how far a long derivation is to stderr, every 5 s once it has run
+// 5 s ("lsys: step 120 of 1000000, 524288 modules, about 2 h 10 min left"),
+// so that a derivation of hours is seen to be one (Ctrl+C stops it).
+std::function<void(int, int, size_t)> derivationProgress();
+
+// -n, --seed, --max-modules and --memory-budget, as derive() takes them, and
+// derivationProgress.
 lsys::DeriveOptions deriveOptions(const DerivationArguments& arguments);
 
 // The options of the b-grammar of the word the turtle reads, as lsys
-// instance, export --instanced and render build it.
+// instance, export --instanced and render build it, and derivationProgress.
 lsys::BGrammarOptions bgrammarOptions(const DerivationArguments& arguments);
 
 } // namespace tools

@@ -85,6 +85,7 @@ std::optional<lsys::PlantAsset> plantToCompile(const RamifyArguments& arguments)
         derive.steps = arguments.steps;
         derive.seed = arguments.seed;
         derive.memory = arguments.memory;
+        derive.onStep = derivationProgress();
         return lsys::plantFromGrammar(grammar, lsys::derive(grammar, derive),
                                       lsys::SurfaceLibrary(lsys::meshDirectoriesFor(arguments.file)), arguments.memory);
     } catch (const std::runtime_error& error) { // DerivationError, SurfaceError
