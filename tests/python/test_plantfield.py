@@ -166,8 +166,8 @@ def test_ramified_tree_errors(tmp_path):
 
 
 # Every function's arguments: a wrong type is a TypeError naming the argument
-# where the module checks it (pybind11's own lists the signature), a value out
-# of range a ValueError, never a crash (derive(None) was a null pointer).
+# and what it must be (pybind11's own would list the whole signature), a value
+# out of range a ValueError, never a crash (derive(None) was a null pointer).
 def export_to_nowhere(grammar, **arguments):
     plantfield.export(grammar, "never_written.glb", **arguments)
 
@@ -191,25 +191,53 @@ def test_grammar_must_be_a_grammar(function, bad):
 ])
 def test_derivation_arguments_are_checked(function, arguments, error):
     grammar = plantfield.parse("Axiom: F\nF --> F F\n")
-    with pytest.raises(error, match="steps must be 0 to 1000000" if error is ValueError else None):
+    name = next(iter(arguments))
+    with pytest.raises(error, match="steps must be 0 to 1000000" if error is ValueError else f"\\(\\): {name} must be"):
         function(grammar, **arguments)
 
 
+def test_type_errors_say_what_the_argument_must_be_and_was():
+    grammar = plantfield.parse("Axiom: F\n")
+    with pytest.raises(TypeError, match=r"^derive\(\): steps must be None or an integer -2147483648 to 2147483647, "
+                                        r"not str$"):
+        plantfield.derive(grammar, steps="3")
+    with pytest.raises(TypeError, match=r"^derive\(\): seed must be None or an integer 0 to 18446744073709551615, "
+                                        r"not -1$"):
+        plantfield.derive(grammar, seed=-1)
+    with pytest.raises(TypeError, match=r"^derive\(\) got an unexpected keyword argument 'stpes'$"):
+        plantfield.derive(grammar, stpes=3)
+    with pytest.raises(TypeError, match=r"^derive\(\) missing required argument 'grammar'$"):
+        plantfield.derive()
+    with pytest.raises(TypeError, match=r"^derive\(\) takes at most 4 arguments \(5 given\)$"):
+        plantfield.derive(grammar, 1, 2, 3, 4)
+    with pytest.raises(TypeError, match=r"^derive\(\) got multiple values for argument 'steps'$"):
+        plantfield.derive(grammar, 1, steps=2)
+    # Conversions pybind11 makes still happen: an integer for a float, a str path.
+    assert len(plantfield.derive(grammar, steps=0)) == 1
+    assert plantfield.load(str(PLANTS / "koch_curve.lsys")).file.endswith("koch_curve.lsys")
+
+
+def test_help_shows_the_typed_signature():
+    assert plantfield.derive.__doc__.startswith("derive(grammar: object, steps: Optional[int] = None")
+    assert "Overloaded" not in plantfield.derive.__doc__
+    assert "*args" not in plantfield.export.__doc__
+
+
 @pytest.mark.parametrize("call, error, message", [
-    (lambda: plantfield.load(None), TypeError, "path"),
-    (lambda: plantfield.load(3), TypeError, "path"),
-    (lambda: plantfield.load(PLANTS / "koch_curve.lsys", defines=None), TypeError, "defines"),
+    (lambda: plantfield.load(None), TypeError, "path must be"),
+    (lambda: plantfield.load(3), TypeError, "path must be"),
+    (lambda: plantfield.load(PLANTS / "koch_curve.lsys", defines=None), TypeError, "defines must be"),
     (lambda: plantfield.load(PLANTS / "koch_curve.lsys", defines={"x": float("nan")}), ValueError, "finite"),
-    (lambda: plantfield.load(PLANTS / "koch_curve.lsys", dialect=3), TypeError, "dialect"),
-    (lambda: plantfield.parse(None), TypeError, "text"),
-    (lambda: plantfield.parse("Axiom: F\n", file=None), TypeError, "file"),
+    (lambda: plantfield.load(PLANTS / "koch_curve.lsys", dialect=3), TypeError, "dialect must be"),
+    (lambda: plantfield.parse(None), TypeError, "text must be"),
+    (lambda: plantfield.parse("Axiom: F\n", file=None), TypeError, "file must be"),
     (lambda: plantfield.parse("Axiom: F\n", defines={"x": float("inf")}), ValueError, "finite"),
-    (lambda: plantfield.parse("Axiom: F\n", defines={3: 1.0}), TypeError, "defines"),
-    (lambda: plantfield.ramified_tree(None), TypeError, "path"),
+    (lambda: plantfield.parse("Axiom: F\n", defines={3: 1.0}), TypeError, "defines must be"),
+    (lambda: plantfield.ramified_tree(None), TypeError, "path must be"),
     (lambda: plantfield.ramified_tree(DATA / "ramified" / "oak.ram.json", max_branches=0), ValueError, "max_branches"),
     (lambda: plantfield.ramified_tree(DATA / "ramified" / "oak.ram.json", max_branches=2**41), ValueError,
      "max_branches"),
-    (lambda: plantfield.ramified_tree(DATA / "ramified" / "oak.ram.json", seed=-1), TypeError, "seed"),
+    (lambda: plantfield.ramified_tree(DATA / "ramified" / "oak.ram.json", seed=-1), TypeError, "seed must be"),
 ])
 def test_loading_arguments_are_checked(call, error, message):
     with pytest.raises(error, match=message):
@@ -217,10 +245,10 @@ def test_loading_arguments_are_checked(call, error, message):
 
 
 @pytest.mark.parametrize("arguments, error, message", [
-    ({"path": None}, TypeError, "path"), ({"path": 3}, TypeError, "path"),
-    ({"sides": 2}, ValueError, "sides"), ({"sides": -8}, TypeError, "sides"),
-    ({"instanced": None}, TypeError, "instanced"), ({"skeleton": "yes"}, TypeError, "skeleton"),
-    ({"geometry": None}, TypeError, "geometry"), ({"geometry": "cones"}, ValueError, "geometry"),
+    ({"path": None}, TypeError, "path must be"), ({"path": 3}, TypeError, "path must be"),
+    ({"sides": 2}, ValueError, "sides"), ({"sides": -8}, TypeError, "sides must be"),
+    ({"instanced": None}, TypeError, "instanced must be"), ({"skeleton": "yes"}, TypeError, "skeleton must be"),
+    ({"geometry": None}, TypeError, "geometry must be"), ({"geometry": "cones"}, ValueError, "geometry"),
 ])
 def test_export_arguments_are_checked(output_dir, arguments, error, message):
     arguments = {"path": output_dir / "checked.glb", **arguments}

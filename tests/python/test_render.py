@@ -204,14 +204,14 @@ def test_writers_never_replace_what_the_session_read(tmp_path):
 
 
 @pytest.mark.parametrize("arguments, error, message", [
-    ({"scene": 3}, TypeError, "scene"), ({"size": None}, TypeError, "size"), ({"size": (64,)}, TypeError, "size"),
-    ({"size": (64.5, 36)}, TypeError, "size"), ({"time": None}, TypeError, "time"), ({"time": "0"}, TypeError, "time"),
-    ({"time": float("inf")}, ValueError, "time must be"), ({"seed": -1}, TypeError, "seed"),
-    ({"wind": "gale"}, TypeError, "wind"), ({"wind": (5.0, float("nan"))}, ValueError, "wind direction"),
-    ({"wind": float("nan")}, ValueError, "wind speed"), ({"antialiasing": None}, TypeError, "antialiasing"),
-    ({"samples": -4}, TypeError, "samples"), ({"shadows": None}, TypeError, "shadows"),
-    ({"shadows": "no"}, TypeError, "shadows"), ({"lod": -1}, TypeError, "lod"),
-    ({"validation": None}, TypeError, "validation"), ({"device": 3}, TypeError, "device"),
+    ({"scene": 3}, TypeError, "scene must be"), ({"size": None}, TypeError, "size must be"), ({"size": (64,)}, TypeError, "size must be"),
+    ({"size": (64.5, 36)}, TypeError, "size must be"), ({"time": None}, TypeError, "time must be"), ({"time": "0"}, TypeError, "time must be"),
+    ({"time": float("inf")}, ValueError, "time must be"), ({"seed": -1}, TypeError, "seed must be"),
+    ({"wind": "gale"}, TypeError, "wind must be"), ({"wind": (5.0, float("nan"))}, ValueError, "wind direction"),
+    ({"wind": float("nan")}, ValueError, "wind speed"), ({"antialiasing": None}, TypeError, "antialiasing must be"),
+    ({"samples": -4}, TypeError, "samples must be"), ({"shadows": None}, TypeError, "shadows must be"),
+    ({"shadows": "no"}, TypeError, "shadows must be"), ({"lod": -1}, TypeError, "lod must be"),
+    ({"validation": None}, TypeError, "validation must be"), ({"device": 3}, TypeError, "device must be"),
     ({"camera": 3}, TypeError, "camera must be"), ({"camera": "camera"}, TypeError, "camera must be"),
     ({"camera": ((0, 1, 2), (0, 0, 0), "wide")}, ValueError, "camera must be"),
 ])
@@ -221,9 +221,9 @@ def test_render_arguments_are_checked(arguments, error, message):
 
 
 @pytest.mark.parametrize("arguments, error, message", [
-    ({"start": None}, TypeError, "start"), ({"start": -1.0}, ValueError, "start must be"),
+    ({"start": None}, TypeError, "start must be"), ({"start": -1.0}, ValueError, "start must be"),
     ({"fps": 0.0}, ValueError, "fps must be"), ({"fps": float("nan")}, ValueError, "fps must be"),
-    ({"fps": "30"}, TypeError, "fps"),
+    ({"fps": "30"}, TypeError, "fps must be"),
 ])
 def test_renderer_arguments_are_checked(arguments, error, message):
     with pytest.raises(error, match=message):

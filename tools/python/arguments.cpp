@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <mutex>
 #include <vector>
 
@@ -23,6 +25,50 @@ std::vector<std::filesystem::path>& sessionInputs() {
 } // namespace
 
 std::string typeName(py::handle value) { return py::str(py::type::handle_of(value).attr("__name__")); }
+
+std::string givenValue(py::handle value) {
+    return py::isinstance<py::int_>(value) && !py::isinstance<py::bool_>(value) ? std::string(py::repr(value))
+                                                                                : typeName(value);
+}
+
+BoundArguments bindArguments(const std::string& function, const std::vector<Parameter>& parameters,
+                             const py::args& args, const py::kwargs& kwargs, size_t skip) {
+    BoundArguments bound{std::vector<py::handle>(parameters.size()), std::vector<bool>(parameters.size(), false)};
+    const size_t positional = args.size() > skip ? args.size() - skip : 0;
+    if (positional > parameters.size())
+        throw py::type_error(function + "() takes at most " + std::to_string(parameters.size()) + " arguments (" +
+                             std::to_string(positional) + " given)");
+    for (size_t i = 0; i < positional; ++i) {
+        bound.values[i] = args[skip + i];
+        bound.given[i] = true;
+    }
+    for (const auto& [key, value] : kwargs) {
+        const std::string name = py::str(key);
+        const auto at = std::find_if(parameters.begin(), parameters.end(),
+                                     [&](const Parameter& parameter) { return parameter.name == name; });
+        if (at == parameters.end())
+            throw py::type_error(function + "() got an unexpected keyword argument '" + name + "'");
+        const size_t i = size_t(at - parameters.begin());
+        if (bound.given[i]) throw py::type_error(function + "() got multiple values for argument '" + name + "'");
+        bound.values[i] = value;
+        bound.given[i] = true;
+    }
+    for (size_t i = 0; i < parameters.size(); ++i)
+        if (parameters[i].required && !bound.given[i])
+            throw py::type_error(function + "() missing required argument '" + parameters[i].name + "'");
+    return bound;
+}
+
+void setDocstring(py::handle function, py::handle typed) {
+    const std::string doc = py::str(typed.attr("__doc__"));
+    PyObject* object = function.ptr();
+    if (PyInstanceMethod_Check(object)) object = PyInstanceMethod_GET_FUNCTION(object);
+    if (!PyCFunction_Check(object)) return;
+    auto* cfunction = reinterpret_cast<PyCFunctionObject*>(object);
+    // pybind11 strdup'ed the one it installed, and frees it if an overload is chained later.
+    std::free(const_cast<char*>(cfunction->m_ml->ml_doc));
+    cfunction->m_ml->ml_doc = strdup(doc.c_str());
+}
 
 void checkSteps(const std::optional<int>& steps) {
     if (steps && (*steps < 0 || *steps > lsys::kMaxDerivationLength))

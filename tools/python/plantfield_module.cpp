@@ -323,32 +323,35 @@ PYBIND11_MODULE(plantfield, m) {
             "to_cpfg", [](const PyDerived& d) { return lsys::toCpfgString(d.string, d.grammar->grammar.symbols); },
             "The string as cpfg writes it (its -str output)");
 
-    m.def("load", &load, py::arg("path"), py::arg("defines") = std::unordered_map<std::string, double>{},
-          py::arg("dialect") = py::none(),
-          "Reads a plant file (any dialect: its 'dialect:' line, else cpfg for .l, else native) or a vlab "
-          "object folder; raises LsystemError with every diagnostic");
-    m.def("parse", &parse, py::arg("text"), py::arg("file") = "<string>",
-          py::arg("defines") = std::unordered_map<std::string, double>{}, py::arg("dialect") = py::none(),
-          "Parses plant text; raises LsystemError with every diagnostic");
-    m.def("derive", &derive, py::arg("grammar"), py::arg("steps") = py::none(), py::arg("seed") = py::none(),
-          py::arg("max_modules") = kMaxModules,
-          "Derives the plant (steps: default the grammar's derivation length; seed: default the grammar's)");
-    m.def("instance_stats", &instanceStats, py::arg("grammar"), py::arg("steps") = py::none(),
-          py::arg("seed") = py::none(), py::arg("max_modules") = kMaxModules,
-          "The instance graph's statistics, as `lsys instance --json` prints them");
-    m.def("export", &exportPlant, py::arg("grammar"), py::arg("path"), py::arg("steps") = py::none(),
-          py::arg("seed") = py::none(), py::arg("instanced").noconvert() = false, py::arg("sides") = 8,
-          py::arg("skeleton").noconvert() = true, py::arg("max_modules") = kMaxModules, py::arg("geometry") = "drawn",
-          "Writes the plant as .glb, .gltf or .obj, as `lsys export` does (geometry: 'drawn', the plant as "
-          "plantfield draws it, or the turtle's 'frusta' or 'tubes'; flat and instanced)");
-    m.def("ramify", &ramify, py::arg("grammar"), py::arg("steps") = py::none(), py::arg("seed") = py::none(),
-          py::arg("max_modules") = kMaxModules,
-          "The plant's ramification matrix (Tankard 2001, section 2.2) as `lsys ramify --json` prints it: "
-          "{'orders': K, 'a': [a_1, ...], 'p': [[p_11], [p_21, p_22], ...]}");
-    m.def("ramified_tree", &ramifiedTree, py::arg("path"), py::arg("seed") = py::none(),
-          py::arg("max_branches") = py::none(),
-          "The tree a .ram.json file generates (seed, max_branches: default the file's), as a Grammar; raises "
-          "LsystemError for a malformed file and RamificationBudgetError past the branch budget");
+    pyargs::defChecked(m, "load", &load, py::arg("path"),
+                       py::arg("defines") = std::unordered_map<std::string, double>{}, py::arg("dialect") = py::none(),
+                       "Reads a plant file (any dialect: its 'dialect:' line, else cpfg for .l, else native) or a vlab "
+                       "object folder; raises LsystemError with every diagnostic");
+    pyargs::defChecked(m, "parse", &parse, py::arg("text"), py::arg("file") = "<string>",
+                       py::arg("defines") = std::unordered_map<std::string, double>{}, py::arg("dialect") = py::none(),
+                       "Parses plant text; raises LsystemError with every diagnostic");
+    pyargs::defChecked(
+        m, "derive", &derive, py::arg("grammar"), py::arg("steps") = py::none(), py::arg("seed") = py::none(),
+        py::arg("max_modules") = kMaxModules,
+        "Derives the plant (steps: default the grammar's derivation length; seed: default the grammar's)");
+    pyargs::defChecked(m, "instance_stats", &instanceStats, py::arg("grammar"), py::arg("steps") = py::none(),
+                       py::arg("seed") = py::none(), py::arg("max_modules") = kMaxModules,
+                       "The instance graph's statistics, as `lsys instance --json` prints them");
+    pyargs::defChecked(
+        m, "export", &exportPlant, py::arg("grammar"), py::arg("path"), py::arg("steps") = py::none(),
+        py::arg("seed") = py::none(), py::arg("instanced").noconvert() = false, py::arg("sides") = 8,
+        py::arg("skeleton").noconvert() = true, py::arg("max_modules") = kMaxModules, py::arg("geometry") = "drawn",
+        "Writes the plant as .glb, .gltf or .obj, as `lsys export` does (geometry: 'drawn', the plant as "
+        "plantfield draws it, or the turtle's 'frusta' or 'tubes'; flat and instanced)");
+    pyargs::defChecked(m, "ramify", &ramify, py::arg("grammar"), py::arg("steps") = py::none(),
+                       py::arg("seed") = py::none(), py::arg("max_modules") = kMaxModules,
+                       "The plant's ramification matrix (Tankard 2001, section 2.2) as `lsys ramify --json` prints it: "
+                       "{'orders': K, 'a': [a_1, ...], 'p': [[p_11], [p_21, p_22], ...]}");
+    pyargs::defChecked(
+        m, "ramified_tree", &ramifiedTree, py::arg("path"), py::arg("seed") = py::none(),
+        py::arg("max_branches") = py::none(),
+        "The tree a .ram.json file generates (seed, max_branches: default the file's), as a Grammar; raises "
+        "LsystemError for a malformed file and RamificationBudgetError past the branch budget");
 
     bindRender(m);
 }

@@ -332,30 +332,32 @@ void bindRender(py::module_& m) {
         return a;
     };
 
-    py::class_<PyRenderer>(m, "Renderer",
-                           "A scene's field on a Vulkan device, rendering frame after frame (docs/PYTHON.md)")
-        .def(py::init([arguments](std::optional<std::filesystem::path> scene, std::tuple<int64_t, int64_t> size,
-                                  double start, double fps, std::optional<uint32_t> seed,
-                                  std::optional<std::variant<float, std::tuple<float, float>>> wind,
-                                  std::string antialiasing, std::optional<uint32_t> samples, bool shadows,
-                                  std::optional<uint32_t> lod, bool validation, std::optional<std::string> device) {
-                 RenderArguments a =
-                     arguments(size, seed, wind, std::move(antialiasing), samples, shadows, lod, validation, device);
-                 a.start = start;
-                 a.fps = fps;
-                 return std::make_unique<PyRenderer>(scene, a);
-             }),
-             py::arg("scene") = py::none(), py::arg("size") = std::make_tuple(int64_t(1280), int64_t(720)),
-             py::arg("start") = 0.0, py::arg("fps") = 30.0, py::arg("seed") = py::none(), py::arg("wind") = py::none(),
-             py::arg("antialiasing") = "fxaa", py::arg("samples") = py::none(), py::arg("shadows").noconvert() = true,
-             py::arg("lod") = py::none(), py::arg("validation").noconvert() = false, py::arg("device") = py::none())
-        .def("render", &PyRenderer::render, py::arg("time"), py::arg("camera") = py::none(),
-             "The frame at scene time `time` (not before the last frame's) as a (height, width, 4) uint8 RGBA array; "
-             "camera=(position, target[, fov_degrees]) in place of the scene's camera path")
-        .def("frame", &PyRenderer::frame, py::arg("index"),
-             "Frame `index` of the sequence at start + index / fps, as plantfield --frames writes frame_INDEX.png; "
-             "frames go forward")
-        .def("stats", &PyRenderer::stats, "The last frame's statistics, as plantfield --stats prints them")
+    py::class_<PyRenderer, std::shared_ptr<PyRenderer>> renderer(
+        m, "Renderer", "A scene's field on a Vulkan device, rendering frame after frame (docs/PYTHON.md)");
+    pyargs::defCheckedInit(
+        renderer, "Renderer",
+        [arguments](std::optional<std::filesystem::path> scene, std::tuple<int64_t, int64_t> size, double start,
+                    double fps, std::optional<uint32_t> seed,
+                    std::optional<std::variant<float, std::tuple<float, float>>> wind, std::string antialiasing,
+                    std::optional<uint32_t> samples, bool shadows, std::optional<uint32_t> lod, bool validation,
+                    std::optional<std::string> device) {
+            RenderArguments a =
+                arguments(size, seed, wind, std::move(antialiasing), samples, shadows, lod, validation, device);
+            a.start = start;
+            a.fps = fps;
+            return std::make_shared<PyRenderer>(scene, a);
+        },
+        py::arg("scene") = py::none(), py::arg("size") = std::make_tuple(int64_t(1280), int64_t(720)),
+        py::arg("start") = 0.0, py::arg("fps") = 30.0, py::arg("seed") = py::none(), py::arg("wind") = py::none(),
+        py::arg("antialiasing") = "fxaa", py::arg("samples") = py::none(), py::arg("shadows").noconvert() = true,
+        py::arg("lod") = py::none(), py::arg("validation").noconvert() = false, py::arg("device") = py::none());
+    pyargs::defChecked(renderer, "render", &PyRenderer::render, py::arg("time"), py::arg("camera") = py::none(),
+                       "The frame at scene time `time` (not before the last frame's) as a (height, width, 4) uint8 "
+                       "RGBA array; camera=(position, target[, fov_degrees]) in place of the scene's camera path");
+    pyargs::defChecked(renderer, "frame", &PyRenderer::frame, py::arg("index"),
+                       "Frame `index` of the sequence at start + index / fps, as plantfield --frames writes "
+                       "frame_INDEX.png; frames go forward");
+    renderer.def("stats", &PyRenderer::stats, "The last frame's statistics, as plantfield --stats prints them")
         .def("close", &PyRenderer::close, "Releases the device; raises ValidationError for any validation message")
         .def(
             "__enter__", [](PyRenderer& r) -> PyRenderer& { return r; }, py::return_value_policy::reference)
@@ -365,8 +367,8 @@ void bindRender(py::module_& m) {
         .def_property_readonly("device", &PyRenderer::device)
         .def_property_readonly("frames_drawn", &PyRenderer::framesDrawn);
 
-    m.def(
-        "render",
+    pyargs::defChecked(
+        m, "render",
         [arguments](std::optional<std::filesystem::path> scene, std::tuple<int64_t, int64_t> size, double time,
                     std::optional<uint32_t> seed, std::optional<std::variant<float, std::tuple<float, float>>> wind,
                     std::string antialiasing, std::optional<uint32_t> samples, bool shadows,
@@ -389,7 +391,7 @@ void bindRender(py::module_& m) {
         "renders it: a (height, width, 4) uint8 RGBA array; camera=(position, target[, fov_degrees]) in place of "
         "the scene's camera path");
 
-    m.def("read_png", &readPng, py::arg("path"), "A PNG file as a (height, width, 4) uint8 RGBA array");
-    m.def("write_png", &writePng, py::arg("path"), py::arg("image"),
-          "Writes a (height, width, 4) uint8 RGBA array as a PNG file (whole or not at all)");
+    pyargs::defChecked(m, "read_png", &readPng, py::arg("path"), "A PNG file as a (height, width, 4) uint8 RGBA array");
+    pyargs::defChecked(m, "write_png", &writePng, py::arg("path"), py::arg("image"),
+                       "Writes a (height, width, 4) uint8 RGBA array as a PNG file (whole or not at all)");
 }
