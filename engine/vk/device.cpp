@@ -209,6 +209,7 @@ void createDevice(GpuContext& ctx, const GpuOptions& options, VkSurfaceKHR surfa
             "no usable Vulkan 1.3 device" + (wanted.empty() ? std::string() : " matching '" + wanted + "'") +
             (surface ? " that can present to the window" : "") + " (found: " + (seen.empty() ? "none" : seen) + ")");
     vkGetPhysicalDeviceMemoryProperties(ctx.physicalDevice, &ctx.memoryProperties);
+    ctx.hostMemoryLimit = options.hostMemoryLimit;
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

@@ -4,6 +4,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -34,6 +35,11 @@ struct GpuOptions {
     std::string deviceName;
     std::vector<std::string> instanceExtensions; // e.g. what GLFW needs
     bool echoValidation = true;
+    // On a device that is the CPU (lavapipe), device memory is host memory:
+    // all of it held at once is counted against this (the tools' memory
+    // budget, lsystem/common/memory_budget.h), so a frame too large for the
+    // machine is refused by name instead of ending in the kernel's OOM killer.
+    uint64_t hostMemoryLimit = UINT64_MAX;
 };
 
 // Work the device cannot take — an image past its largest side, an
@@ -58,6 +64,10 @@ struct GpuContext {
     bool drawIndirectCount = false; // vkCmdDrawIndexedIndirectCount usable
     bool multiDrawIndirect = false; // indirect draws with drawCount > 1
     std::unique_ptr<ValidationLog> validationLog;
+    // GpuOptions::hostMemoryLimit, and the device memory held now (counted by
+    // GpuResources on a CPU device).
+    uint64_t hostMemoryLimit = UINT64_MAX;
+    std::shared_ptr<std::atomic<uint64_t>> hostMemoryHeld = std::make_shared<std::atomic<uint64_t>>(0);
 };
 
 // Step 1: the instance (and the messenger when validation is on).

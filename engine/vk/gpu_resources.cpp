@@ -1,6 +1,7 @@
 #include "engine/vk/gpu_resources.h"
 
 #include "engine/vk/vk_check.h"
+#include "lsystem/common/memory_budget.h"
 
 #include <stdexcept>
 #include <string>
@@ -45,9 +46,17 @@ VkDeviceMemory GpuResources::allocate(const VkMemoryRequirements& requirements, 
         throw DeviceLimitError("the GPU would need " + std::to_string(requirements.size >> 20) +
                                " MiB in one allocation, more than its memory heap of " +
                                std::to_string(heap.size >> 20) + " MiB");
+    // A CPU device's memory is the machine's: counted, all of it together, against the memory budget.
+    const bool hostMemory = ctx_->properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    if (hostMemory)
+        lsys::need(lsys::MemoryBudget{ctx_->hostMemoryLimit},
+                   std::string("device memory (") + ctx_->properties.deviceName +
+                       " is the CPU: its memory is the host's)",
+                   lsys::bytesPlus(*ctx_->hostMemoryHeld, requirements.size));
     VkDeviceMemory memory;
     VK_CHECK(vkAllocateMemory(ctx_->device, &info, nullptr, &memory));
     owned_.push_back({VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<uint64_t>(memory), requirements.size});
+    if (hostMemory) *ctx_->hostMemoryHeld += requirements.size;
     return memory;
 }
 
@@ -61,7 +70,10 @@ void GpuResources::destroy() {
     for (auto it = owned_.rbegin(); it != owned_.rend(); ++it) {
         VkDevice device = ctx_->device;
         switch (it->type) {
-        case VK_OBJECT_TYPE_DEVICE_MEMORY: vkFreeMemory(device, as<VkDeviceMemory>(it->handle), nullptr); break;
+        case VK_OBJECT_TYPE_DEVICE_MEMORY:
+            vkFreeMemory(device, as<VkDeviceMemory>(it->handle), nullptr);
+            if (ctx_->properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) *ctx_->hostMemoryHeld -= it->bytes;
+            break;
         case VK_OBJECT_TYPE_BUFFER: vkDestroyBuffer(device, as<VkBuffer>(it->handle), nullptr); break;
         case VK_OBJECT_TYPE_BUFFER_VIEW: vkDestroyBufferView(device, as<VkBufferView>(it->handle), nullptr); break;
         case VK_OBJECT_TYPE_IMAGE: vkDestroyImage(device, as<VkImage>(it->handle), nullptr); break;

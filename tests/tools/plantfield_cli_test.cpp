@@ -150,7 +150,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadInvocation{"ZeroMemoryBudget", "--capture OUT --memory-budget 0", "--memory-budget"},
         // A million plants need about 122 MiB to place: refused before placing.
         BadInvocation{"InstancesPastTheMemoryBudget", "--capture OUT --instances 1000000 --memory-budget 64M",
-                      "memory budget: placement needs 122.1 MiB, the limit is 64.0 MiB"}),
+                      "memory budget: placement needs 122.1 MiB, the limit is 64.0 MiB"},
+        // lavapipe's device memory is the machine's: a frame too large for the budget is refused by name
+        // (a 16384x16384 capture was killed by the kernel in a 4 GiB container).
+        BadInvocation{"DeviceMemoryPastTheMemoryBudget",
+                      "--capture OUT --device llvmpipe --size 8192x8192 --memory-budget 256M",
+                      "memory budget: device memory (llvmpipe"}),
     invocationName);
 
 TEST(PlantfieldCli, MalformedSceneNamesFileLineAndColumn) {

@@ -30,6 +30,7 @@ int run(const PlantbenchOptions& o) {
     GpuOptions gpu;
     gpu.validation = o.validation;
     gpu.deviceName = o.deviceName;
+    gpu.hostMemoryLimit = o.memory.limitBytes;
     SweepResult result;
     int exitCode = 0;
     try {

@@ -10,6 +10,7 @@
 #include "engine/offline/offline_renderer.h"
 #include "engine/offline/scene_overrides.h"
 #include "lsystem/common/error.h"
+#include "lsystem/common/memory_budget.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -191,6 +192,7 @@ pf::OfflineSettings offlineSettings(const RenderArguments& a) {
     s.gpu.validation = a.validation;
     s.gpu.echoValidation = false; // raised as ValidationError instead
     s.gpu.deviceName = a.device;
+    s.gpu.hostMemoryLimit = lsys::machineMemoryBudget().limitBytes; // as the tools' default --memory-budget
     checkTime("start", a.start);
     // The range of plantfield --fps.
     if (!(a.fps >= 0.1 && a.fps <= 1000.0)) throw py::value_error("fps must be 0.1 to 1000 frames a scene second");
