@@ -1,5 +1,7 @@
 #include "engine/scene/natural_density.h"
 
+#include "engine/scene/scene.h"
+
 #include "engine/scene/field_content.h"
 
 #include <algorithm>
@@ -36,7 +38,8 @@ NaturalField placeAtNaturalDensity(const Scene& scene, std::span<const Placement
                                    uint64_t seed, const lsys::MemoryBudget& memory) {
     NaturalField field{scene.terrain, terrainOf(scene, memory), {}, {}};
     const std::vector<PlantInstance> natural = placeSpecies(field.heightfield, rules, seed, memory);
-    if (natural.empty()) throw std::runtime_error("placement: the rules admit no plant on this terrain");
+    if (natural.empty())
+        throw SceneError("placement: the rules admit no plant on this terrain"); // the scene's fault: exit 2
     if (count <= natural.size()) {
         field.plants = keepCentralSquare(natural, count);
         return field;
@@ -64,9 +67,8 @@ NaturalField placeAtNaturalDensity(const Scene& scene, std::span<const Placement
         }
         side *= std::sqrt(double(count) / double(std::max<size_t>(placed.size(), 1))) * kGrowthMargin;
     }
-    throw std::runtime_error("placement: no terrain grown up to " +
-                             std::to_string(int(std::lround(field.terrain.size))) + " m holds " + countText(count) +
-                             " at the scene's densities");
+    throw SceneError("placement: no terrain grown up to " + std::to_string(int(std::lround(field.terrain.size))) +
+                     " m holds " + countText(count) + " at the scene's densities");
 }
 
 } // namespace pf

@@ -1,5 +1,7 @@
 #include "engine/scene/placement.h"
 
+#include "engine/scene/scene.h"
+
 #include "lsystem/common/random.h"
 
 #include <glm/geometric.hpp>
@@ -326,7 +328,8 @@ std::vector<PlantInstance> scaleToCount(const Heightfield& terrain, std::span<co
     float scale = std::max(1.0f, std::sqrt(unlimited / kPilotPlants));
     std::vector<PlantInstance> placed = placeScaled(scale);
     for (bool pilot = true; pilot || placed.size() < count; pilot = false) {
-        if (placed.empty()) throw std::runtime_error("placement: the rules admit no plant on this terrain");
+        if (placed.empty())
+            throw SceneError("placement: the rules admit no plant on this terrain"); // the scene's fault: exit 2
         // 2 % more than needed, so one placement after the pilot nearly always suffices.
         scale *= std::sqrt(float(placed.size()) / float(count)) * 0.99f;
         placed = placeScaled(scale);

@@ -45,5 +45,17 @@ TEST(EmptyPlacement, RequestedCountsFillOnlyTheSpeciesThatHavePlants) {
     }
 }
 
+// A count asked of rules that admit no plant anywhere (every species above
+// the terrain's heights) is the scene's fault: a SceneError, which the tools
+// report as bad input (exit 2), not a failure of the program.
+TEST(EmptyPlacement, ACountOfRulesThatAdmitNoPlantIsASceneError) {
+    const Scene scene = loadScene(test::writeFile("nowhere.json", R"({
+  "terrain": { "size": 80, "resolution": 33 },
+  "species": [ { "name": "alpine", )" PF_BUSH_LSYSTEM R"(, "placement": { "height_range": [5000, 6000] } } ]
+})"));
+    for (CountMode mode : {CountMode::NaturalDensity, CountMode::Densify})
+        EXPECT_THROW(placeField(scene, PlantCount{400, mode}), SceneError);
+}
+
 } // namespace
 } // namespace pf
