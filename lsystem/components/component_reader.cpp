@@ -238,8 +238,8 @@ void requireAcyclic(const ComponentGraph& graph, const Edges& edges, const std::
                 const auto& [child, reference] = edges[index][path.back().nextEdge++];
                 if (marks[child] == Mark::OnPath) {
                     std::string cycle;
-                    for (auto it =
-                             std::find_if(path.begin(), path.end(), [&](const Visit& v) { return v.index == child; });
+                    for (auto it = std::find_if(path.begin(), path.end(),
+                                                [c = child](const Visit& v) { return v.index == c; });
                          it != path.end(); ++it)
                         cycle += graph.components[it->index].name + " → ";
                     failAt(reference,

@@ -119,7 +119,11 @@ std::vector<TerrainBump> mountainBumps(const ModuleString& word, const SymbolTab
         } else if (commands[symbol].action == TurtleAction::Cut) {
             i = endOfBranch(word, i + 1) - 1;
         } else {
-            applyModule(commands[symbol], word.parameters(i), settings, state, stack, ignored);
+            try {
+                applyModule(commands[symbol], word.parameters(i), settings, state, stack, ignored);
+            } catch (const SurfaceError& error) { // a mountain word has no meshes beside it
+                throw MountainError("module " + std::to_string(i) + " of the mountain word: " + error.what());
+            }
         }
     }
     checkPeaks(bumps, modules, placement);

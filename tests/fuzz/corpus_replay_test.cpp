@@ -2,8 +2,10 @@
 // fixed) and every shipped file of each kind through its fuzz target: plant
 // files and terrain L-systems through parser, rewriter and turtle, scene files through the scene
 // loader, component plants through their reader and builder, glTF files through the surface loader, a vlab object's
-// view, function, surface and colour files through their readers. Under the regular build this proves none of them
-// crash or hang any more; under the sanitizer build (tools/sanitize.sh) that none reads or writes out of bounds.
+// view, function, surface and colour files through their readers, ramification matrices through generation and
+// the turtle, terrain L-systems into mountains and cloud L-systems into spheres. Under the regular build this proves
+// none of them crash or hang any more; under the sanitizer build (tools/sanitize.sh) that none reads or writes out of
+// bounds.
 #include "fuzz_targets.h"
 
 #include <gtest/gtest.h>
@@ -92,5 +94,27 @@ TEST(FuzzCorpus, EveryColorCorpusInputRunsToCompletion) {
 TEST(FuzzCorpus, EveryShippedColorMapRunsToCompletion) {
     replay(pf::fuzz::runColorInput, kData / "plants", 10, ".map");
 }
+
+TEST(FuzzCorpus, EveryRamificationCorpusInputRunsToCompletion) {
+    replay(pf::fuzz::runRamificationInput, kFuzz / "corpus/ramification", 10);
+}
+
+TEST(FuzzCorpus, EveryShippedRamificationMatrixRunsToCompletion) {
+    replay(pf::fuzz::runRamificationInput, kData / "ramified", 3);
+}
+
+TEST(FuzzCorpus, EveryTerrainCorpusInputRunsToCompletion) {
+    replay(pf::fuzz::runTerrainInput, kFuzz / "corpus/terrain", 10);
+}
+
+TEST(FuzzCorpus, EveryPastTerrainCrasherRunsToCompletion) {
+    replay(pf::fuzz::runTerrainInput, kFuzz / "crashers/terrain", 1);
+}
+
+TEST(FuzzCorpus, EveryShippedTerrainLsystemMakesMountains) { replay(pf::fuzz::runTerrainInput, kData / "terrain", 3); }
+
+TEST(FuzzCorpus, EveryCloudCorpusInputRunsToCompletion) { replay(pf::fuzz::runCloudInput, kFuzz / "corpus/cloud", 10); }
+
+TEST(FuzzCorpus, EveryShippedCloudRunsToCompletion) { replay(pf::fuzz::runCloudInput, kData / "clouds", 3); }
 
 } // namespace

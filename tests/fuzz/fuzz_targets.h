@@ -17,7 +17,7 @@ void runLsysInput(const uint8_t* data, size_t size);
 // derive its placement rules.
 void runSceneInput(const uint8_t* data, size_t size);
 // Load as a component plant (lsystem/components, docs/COMPONENTS.md) and
-// build it under a 256 MiB memory budget.
+// build it under a 64 MiB memory budget.
 void runComponentsInput(const uint8_t* data, size_t size);
 // Load as a glTF surface mesh (.glb when it starts with the binary magic).
 void runGltfInput(const uint8_t* data, size_t size);
@@ -28,5 +28,15 @@ void runViewInput(const uint8_t* data, size_t size);
 void runFuncInput(const uint8_t* data, size_t size);
 void runSurfaceInput(const uint8_t* data, size_t size);
 void runColorInput(const uint8_t* data, size_t size);
+// Parse as a ramification matrix file (lsystem/ramification,
+// docs/RAMIFICATION.md); when it parses, generate the tree within 500
+// branches and draw it under a 64 MiB memory budget.
+void runRamificationInput(const uint8_t* data, size_t size);
+// Parse as a terrain L-system (docs/TERRAIN_LSYSTEMS.md), derive its
+// mountains under a 256 MiB budget and raise them on a small height field.
+void runTerrainInput(const uint8_t* data, size_t size);
+// Load as a cloud L-system (engine/scene/cloud_spheres.h): derive, interpret,
+// keep its spheres and fit them to a cloud's box.
+void runCloudInput(const uint8_t* data, size_t size);
 
 } // namespace pf::fuzz

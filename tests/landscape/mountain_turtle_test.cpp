@@ -120,6 +120,13 @@ TEST(MountainTurtle, BadMountainParametersAreRefused) {
               std::string::npos);
 }
 
+// A surface the word draws has no mesh folder to come from: a located
+// MountainError, not a SurfaceError escaping the scene loader.
+TEST(MountainTurtle, ASurfaceThatIsNotBuiltInIsAMountainError) {
+    EXPECT_NE(errorOf("module Hill\nAxiom: F(1) ~ch Hill\n").find("module 1 of the mountain word: unknown surface ~ch"),
+              std::string::npos);
+}
+
 TEST(MountainTurtle, AWordPastTheModuleOrMemoryBudgetIsRefused) {
     // 2^20 modules after 20 steps: past kMaxMountainModules.
     EXPECT_THROW(mountainBumpsOf(grammarOf("derivation length: 20\nAxiom: F\nF --> F F\n"), {}), ModuleBudgetError);
